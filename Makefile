@@ -1,0 +1,175 @@
+# sepax — build, test, install.
+#
+#   make                      build/libsepax.a and build/libsepax.so
+#   make test                 build and run every cmocka test (float build)
+#   make test SX_REAL=double  the same with sx_real = double
+#   make test SAN=1           the tests under AddressSanitizer + UBSan
+#   make bench                benchmarks (installs the peers it compares with)
+#   make install PREFIX=/usr/local
+#   make clean
+#
+# Variants build out of tree: the default float build in build/, the others
+# in build/<variant>/ (double, san, double-san), so they never mix objects.
+# Missing dependencies are installed by scripts/deps.sh (Debian packages when
+# run as root, otherwise a message naming the package).
+
+SX_REAL ?= float
+SAN ?= 0
+PREFIX ?= /usr/local
+
+CC ?= cc
+CXX ?= c++
+
+VARIANT :=
+DEFS :=
+ifeq ($(SX_REAL),double)
+  VARIANT := double
+  DEFS += -DSX_DOUBLE
+else ifneq ($(SX_REAL),float)
+  $(error SX_REAL must be float or double)
+endif
+SANFLAGS :=
+ifeq ($(SAN),1)
+  VARIANT := $(if $(VARIANT),$(VARIANT)-san,san)
+  SANFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+endif
+OUT := build$(if $(VARIANT),/$(VARIANT))
+
+# Strict flags for our code. -ffp-contract=off keeps results bit-identical
+# across optimisation levels (no fused multiply-add contraction).
+WARNINGS := -Wall -Wextra -pedantic -Wshadow -Wmissing-prototypes -Wstrict-prototypes \
+            -Wold-style-definition -Wdouble-promotion -Wfloat-conversion -Wundef \
+            -Wpointer-arith -Wvla -Wcast-qual -Wwrite-strings -Werror
+OPT ?= -O2 -g
+BASE_CFLAGS := -std=c99 $(OPT) -ffp-contract=off -fPIC $(WARNINGS) $(SANFLAGS) $(DEFS) \
+               -Iinclude -MMD -MP
+CFLAGS_ALL = $(BASE_CFLAGS) $(CFLAGS)
+LDLIBS_ALL := -lm
+
+SRCS := $(sort $(wildcard src/*.c))
+OBJS := $(SRCS:src/%.c=$(OUT)/obj/src/%.o)
+LIB_A := $(OUT)/libsepax.a
+LIB_SO := $(OUT)/libsepax.so
+
+TEST_SRCS := $(sort $(wildcard tests/test_*.c))
+TEST_SUPPORT := $(sort $(wildcard tests/support/*.c))
+TEST_SUPPORT_OBJS := $(TEST_SUPPORT:tests/support/%.c=$(OUT)/obj/tests/support/%.o)
+TEST_BINS := $(TEST_SRCS:tests/%.c=$(OUT)/tests/%)
+CMOCKA_CFLAGS = $(shell pkg-config --cflags cmocka 2>/dev/null)
+CMOCKA_LIBS = $(shell pkg-config --libs cmocka 2>/dev/null || echo -lcmocka)
+
+.PHONY: all lib test test-run check-headers readme-example deps-test install clean bench \
+        bench-smoke format format-check
+.DEFAULT_GOAL := all
+.SECONDARY:
+
+all: lib
+lib: $(LIB_A) $(LIB_SO)
+
+$(OUT)/obj/src/%.o: src/%.c | $(OUT)/obj/src
+	$(CC) $(CFLAGS_ALL) -c $< -o $@
+
+$(LIB_A): $(OBJS)
+	rm -f $@
+	ar rcs $@ $^
+
+$(LIB_SO): $(OBJS)
+	$(CC) -shared $(SANFLAGS) -o $@ $^ $(LDLIBS_ALL)
+
+$(OUT)/obj/src $(OUT)/obj/tests $(OUT)/obj/tests/support $(OUT)/tests $(OUT)/obj/bench $(OUT)/bench:
+	mkdir -p $@
+
+# ---- tests ------------------------------------------------------------------
+
+deps-test:
+	@sh scripts/deps.sh cmocka
+
+$(OUT)/obj/tests/support/%.o: tests/support/%.c | $(OUT)/obj/tests/support deps-test
+	$(CC) $(CFLAGS_ALL) $(CMOCKA_CFLAGS) -Itests/support -c $< -o $@
+
+$(OUT)/obj/tests/%.o: tests/%.c | $(OUT)/obj/tests deps-test
+	$(CC) $(CFLAGS_ALL) $(CMOCKA_CFLAGS) -Itests/support -c $< -o $@
+
+$(OUT)/tests/%: $(OUT)/obj/tests/%.o $(TEST_SUPPORT_OBJS) $(LIB_A) | $(OUT)/tests
+	$(CC) $(SANFLAGS) -o $@ $< $(TEST_SUPPORT_OBJS) $(LIB_A) $(CMOCKA_LIBS) $(LDLIBS_ALL)
+
+# Public headers must compile as C++ too.
+check-headers:
+	@echo "sepax: compiling the public headers as C++"
+	@printf '#include <sepax/sepax.h>\nint main() { sx_vec2 v = sx_v2(1, 2); return (int)sx_length(v) - 2; }\n' \
+	  | $(CXX) -std=c++11 -Wall -Wextra -pedantic -Werror $(DEFS) -Iinclude -x c++ -fsyntax-only -
+
+# The README's code example is compiled and run, so it stays true.
+README_EXAMPLE := $(OUT)/readme_example
+readme-example: $(LIB_A)
+	@mkdir -p $(OUT)
+	@awk '/<!-- readme-example:begin -->/{f=1;next} /<!-- readme-example:end -->/{f=0} f' README.md \
+	  | sed '/^```/d' > $(README_EXAMPLE).c
+	@test -s $(README_EXAMPLE).c || { echo "sepax: README example block not found"; exit 1; }
+	$(CC) $(CFLAGS_ALL) -o $(README_EXAMPLE) $(README_EXAMPLE).c $(LIB_A) $(LDLIBS_ALL)
+	@./$(README_EXAMPLE) > $(README_EXAMPLE).out
+	@echo "sepax: README example ran: $$(head -c 200 $(README_EXAMPLE).out)"
+
+test: lib check-headers readme-example $(TEST_BINS)
+	@failed=0; total=0; \
+	for t in $(TEST_BINS); do \
+	  total=$$((total + 1)); \
+	  echo "== $$t"; \
+	  if ! ./$$t; then failed=$$((failed + 1)); echo "FAILED: $$t"; fi; \
+	done; \
+	echo "sepax [$(SX_REAL)$(if $(filter 1,$(SAN)), san)]: $$((total - failed)) of $$total test programs passed"; \
+	test $$failed -eq 0
+
+# ---- benchmarks --------------------------------------------------------------
+
+BENCH_SRCS := $(sort $(wildcard bench/*.c))
+BENCH_CXX_SRCS := $(sort $(wildcard bench/*.cpp))
+BENCH_OBJS := $(BENCH_SRCS:bench/%.c=$(OUT)/obj/bench/%.o) \
+              $(BENCH_CXX_SRCS:bench/%.cpp=$(OUT)/obj/bench/%.o)
+BENCH_BIN := $(OUT)/bench/sepax_bench
+BENCH_CFLAGS = $(filter-out -O2 -g,$(CFLAGS_ALL)) -O2 -DNDEBUG -Ibench -Itests/support
+
+deps-bench:
+	@sh scripts/deps.sh box2d chipmunk
+
+$(OUT)/obj/bench/%.o: bench/%.c | $(OUT)/obj/bench deps-bench
+	$(CC) $(BENCH_CFLAGS) -c $< -o $@
+
+# The peer engines are C++ (Box2D 2.4): compiled with relaxed flags.
+$(OUT)/obj/bench/%.o: bench/%.cpp | $(OUT)/obj/bench deps-bench
+	$(CXX) -std=c++17 -O2 -DNDEBUG $(DEFS) -Iinclude -Ibench -Itests/support -MMD -MP -c $< -o $@
+
+$(BENCH_BIN): $(BENCH_OBJS) $(OUT)/obj/tests/support/reference.o $(LIB_A) | $(OUT)/bench
+	$(CXX) -o $@ $(BENCH_OBJS) $(OUT)/obj/tests/support/reference.o $(LIB_A) -lbox2d -lchipmunk $(LDLIBS_ALL)
+
+bench: $(BENCH_BIN)
+	./$(BENCH_BIN) --out build/bench
+
+bench-smoke: $(BENCH_BIN)
+	./$(BENCH_BIN) --smoke --out $(OUT)/bench-smoke
+
+# ---- install -----------------------------------------------------------------
+
+install: lib
+	install -d $(DESTDIR)$(PREFIX)/include/sepax $(DESTDIR)$(PREFIX)/lib/pkgconfig
+	install -m 644 include/sepax/*.h $(DESTDIR)$(PREFIX)/include/sepax/
+	install -m 644 $(LIB_A) $(DESTDIR)$(PREFIX)/lib/
+	install -m 755 $(LIB_SO) $(DESTDIR)$(PREFIX)/lib/
+	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@CFLAGS@|$(DEFS)|g' \
+	    -e 's|@VERSION@|$(shell sed -n 's/^#define SX_VERSION_\(MAJOR\|MINOR\|PATCH\) \([0-9]*\)/\2/p' include/sepax/base.h | paste -sd.)|g' \
+	    scripts/sepax.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/sepax.pc
+
+# ---- housekeeping --------------------------------------------------------------
+
+FORMAT_FILES = $(wildcard include/sepax/*.h src/*.c src/*.h tests/*.c tests/*.h tests/support/*.c \
+                 tests/support/*.h samples/*.c bench/*.c bench/*.h ecs/*.c ecs/*.h)
+format:
+	clang-format -i $(FORMAT_FILES)
+format-check:
+	clang-format --dry-run --Werror $(FORMAT_FILES)
+
+clean:
+	rm -rf build
+
+-include $(OBJS:.o=.d) $(TEST_SRCS:tests/%.c=$(OUT)/obj/tests/%.d) \
+         $(TEST_SUPPORT_OBJS:.o=.d) $(BENCH_OBJS:.o=.d)

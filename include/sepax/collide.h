@@ -1,0 +1,237 @@
+/* sepax — the narrowphase: for every pair of shapes, a boolean overlap test,
+ * the minimum translation vector (MTV) by the separating axis theorem, the
+ * contact manifold the solver needs, and the point, segment and ray queries.
+ *
+ * Every pair is solved in shape A's local frame: B is moved into A's frame
+ * first (sx_xform_inv_mul), the work happens near the origin, and the results
+ * are turned back to world space. That keeps precision when both shapes are
+ * far from the world origin. Circles, segments and capsules are treated as
+ * rounded convex cores (a point or a segment, plus a radius), and polygons as
+ * convex cores plus their rounding radius, so every pair reduces to one of a
+ * few core routines; cheap pairs (circle-circle, axis-aligned boxes) take fast
+ * paths ahead of the general SAT. Nothing here allocates or keeps state.
+ *
+ * Conventions used throughout:
+ * - "Touching counts": shapes whose boundaries meet overlap, with a zero MTV.
+ * - The MTV is the shortest translation of A that separates it from B; it
+ *   points away from B. sx_mtv(b, a) is exactly -sx_mtv(a, b).
+ * - A manifold's normal is a unit vector from A towards B, the direction in
+ *   which B must move to separate (so MTV = -normal * max depth). Depth is
+ *   positive for overlap, negative for a gap.
+ * - Non-finite transforms or shapes never crash and never produce NaN: the
+ *   overlap and MTV tests answer false with a zero MTV, collide answers 0
+ *   contacts. */
+#ifndef SEPAX_COLLIDE_H
+#define SEPAX_COLLIDE_H
+
+#include "base.h"
+#include "math.h"
+#include "shape.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- contact manifold --------------------------------------------------- */
+
+/** Feature id of a manifold point: identifies which features of A and B
+ *  produced it, so the solver can match a point across steps (warm starting).
+ *  Layout: bits 0-7 the reference feature index, bits 8-15 the incident
+ *  feature index, bit 16 set when B supplied the reference face. Stable for
+ *  as long as the same features touch. */
+#define SX_FEATURE_ID(ref_index, inc_index, flipped)                                               \
+    ((uint32_t)((uint32_t)((ref_index) & 0xFF) | ((uint32_t)((inc_index) & 0xFF) << 8) |           \
+                ((uint32_t)((flipped) ? 1 : 0) << 16)))
+
+/** One contact point. */
+typedef struct sx_manifold_point {
+    /** World-space point midway between the two surfaces along the normal. */
+    sx_vec2 point;
+    /** Overlap along the normal, in metres: > 0 overlapping, < 0 a gap. */
+    sx_real depth;
+    /** Feature id (SX_FEATURE_ID). */
+    uint32_t id;
+} sx_manifold_point;
+
+/** Up to two contact points sharing one normal. */
+typedef struct sx_manifold {
+    /** World-space unit normal from A towards B (zero when count is 0). */
+    sx_vec2 normal;
+    sx_manifold_point points[2];
+    /** Number of valid points, 0..2. */
+    int count;
+} sx_manifold;
+
+/* ---- generic entry points (dispatch through one table) ------------------ */
+
+/** True if the shapes overlap; touching counts. The fast path: returns at the
+ *  first separating axis and builds no manifold. Invalid or non-finite input
+ *  answers false. */
+bool sx_overlap(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb);
+
+/** True if the shapes overlap (touching counts). When mtv is not NULL it
+ *  receives the shortest translation of A that separates it from B (the zero
+ *  vector when they do not overlap or merely touch). sx_mtv(b, ..., a, ...)
+ *  gives exactly the negated vector. Computed by SAT over normalised axes:
+ *  the edge normals of both polygons, the segment normal for segments and
+ *  capsules, the centre-to-closest-feature axis for circles and rounded
+ *  corners, and x/y only for two axis-aligned boxes. */
+bool sx_mtv(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_vec2 *mtv);
+
+/** The contact manifold of two overlapping or touching shapes: returns the
+ *  number of points (0..2) and fills *out (out->count too). The normal is
+ *  unit, from A to B; each point carries its depth (>= 0 here) and a feature
+ *  id stable across frames. For polygon faces the reference face is the one
+ *  of least penetration, with hysteresis: B's face is preferred over A's only
+ *  when it is better by more than 0.1 x SX_LINEAR_SLOP, so the manifold does
+ *  not flip between two near-equal faces. The deepest point's depth equals
+ *  the MTV's length up to that hysteresis. */
+int sx_collide(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_manifold *out);
+
+/** As sx_collide, but also reports speculative points of shapes that are
+ *  within `margin` metres of touching (depth >= -margin). The solver uses a
+ *  margin of SX_SPECULATIVE_DISTANCE. margin < 0 or non-finite is taken as 0. */
+int sx_collide_ex(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_real margin,
+                  sx_manifold *out);
+
+/* ---- pair functions (for callers who know their types) ------------------ */
+
+/* Each pair exists in one argument order below (the "larger" type first);
+ * the generic functions above cover the other order. Semantics are those of
+ * sx_overlap, sx_mtv and sx_collide_ex. Boxes are polygons; a point is a
+ * circle of radius 0. */
+
+bool sx_overlap_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb);
+bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb, sx_vec2 *mtv);
+int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                       sx_real margin, sx_manifold *out);
+
+bool sx_overlap_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb);
+bool sx_mtv_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb, sx_vec2 *mtv);
+int sx_collide_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                              sx_real margin, sx_manifold *out);
+
+bool sx_overlap_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb);
+bool sx_mtv_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb, sx_vec2 *mtv);
+int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
+                        sx_real margin, sx_manifold *out);
+
+bool sx_overlap_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb);
+bool sx_mtv_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb, sx_vec2 *mtv);
+int sx_collide_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                              sx_real margin, sx_manifold *out);
+
+bool sx_overlap_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb);
+bool sx_mtv_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb, sx_vec2 *mtv);
+int sx_collide_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb,
+                               sx_real margin, sx_manifold *out);
+
+bool sx_overlap_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb);
+bool sx_mtv_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb, sx_vec2 *mtv);
+int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
+                        sx_real margin, sx_manifold *out);
+
+bool sx_overlap_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb);
+bool sx_mtv_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb, sx_vec2 *mtv);
+int sx_collide_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                              sx_real margin, sx_manifold *out);
+
+bool sx_overlap_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb);
+bool sx_mtv_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb, sx_vec2 *mtv);
+int sx_collide_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb,
+                               sx_real margin, sx_manifold *out);
+
+bool sx_overlap_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb);
+bool sx_mtv_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb, sx_vec2 *mtv);
+int sx_collide_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
+                               sx_real margin, sx_manifold *out);
+
+bool sx_overlap_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb);
+bool sx_mtv_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb, sx_vec2 *mtv);
+int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
+                        sx_real margin, sx_manifold *out);
+/* ---- point queries ------------------------------------------------------ */
+
+/** True if p (world) is inside the shape placed by x, or on its boundary
+ *  (within SX_LINEAR_SLOP x 1e-3). Polygons use the cross-product test on
+ *  their CCW edges; segments contain only points on them. */
+bool sx_contains_point(const sx_shape *s, sx_xform x, sx_vec2 p);
+
+/** The point of segment a-b closest to p; *t (may be NULL) receives its
+ *  parameter in [0, 1] (a + t (b - a)). A zero-length segment gives a, t 0. */
+sx_vec2 sx_closest_point_on_segment(sx_vec2 a, sx_vec2 b, sx_vec2 p, sx_real *t);
+
+/** The point of the solid shape closest to p (world): p itself when p is
+ *  inside. */
+sx_vec2 sx_closest_point(const sx_shape *s, sx_xform x, sx_vec2 p);
+
+/** Signed distance from p (world) to the shape's boundary: negative inside.
+ *  *boundary_point (may be NULL) receives the closest boundary point and
+ *  *normal (may be NULL) the outward unit normal there (for p exactly on a
+ *  segment's line or at a circle's centre, a documented fallback: the
+ *  segment's left normal, or +x). Non-finite input returns SX_REAL_MAX with
+ *  zero vectors. */
+sx_real sx_shape_distance_to_point(const sx_shape *s, sx_xform x, sx_vec2 p, sx_vec2 *boundary_point,
+                                   sx_vec2 *normal);
+
+/* ---- segment-segment intersection --------------------------------------- */
+
+typedef enum sx_segment_relation {
+    SX_SEGMENTS_DISJOINT = 0,      /**< not parallel, no common point */
+    SX_SEGMENTS_INTERSECT,         /**< exactly one common point */
+    SX_SEGMENTS_PARALLEL,          /**< parallel on distinct lines */
+    SX_SEGMENTS_COLLINEAR_DISJOINT, /**< on one line, no common point */
+    SX_SEGMENTS_OVERLAP,           /**< on one line, sharing a sub-segment (or one point) */
+    SX_SEGMENTS_DEGENERATE         /**< an input was non-finite */
+} sx_segment_relation;
+
+typedef struct sx_segment_intersection {
+    sx_segment_relation relation;
+    /** INTERSECT: the point, with p = p1 + t (p2 - p1) = q1 + u (q2 - q1).
+     *  OVERLAP: point = start of the shared part, t/u its parameters. */
+    sx_vec2 point;
+    sx_real t, u;
+    /** OVERLAP: the shared sub-segment [overlap_start, overlap_end] along
+     *  p1 -> p2 (equal for a single shared end point). */
+    sx_vec2 overlap_start, overlap_end;
+} sx_segment_intersection;
+
+/** Intersects segments p1-p2 and q1-q2 by the parametric method: solves
+ *  p1 + t r = q1 + u s with r = p2 - p1, s = q2 - q1 via the cross product
+ *  r x s. When |r x s| is within a relative tolerance of zero the segments
+ *  are parallel, and the collinear case projects q's end points on r to find
+ *  the shared interval. A zero-length segment is treated as a point (on the
+ *  other segment or not). out may be NULL. Returns the relation. */
+sx_segment_relation sx_intersect_segments(sx_vec2 p1, sx_vec2 p2, sx_vec2 q1, sx_vec2 q2,
+                                          sx_segment_intersection *out);
+
+/* ---- ray casts ---------------------------------------------------------- */
+
+/** A ray from `origin` along `translation`, tested up to `max_fraction` of the
+ *  translation (usually 1: the segment origin .. origin + translation). */
+typedef struct sx_ray_input {
+    sx_vec2 origin;
+    sx_vec2 translation;
+    sx_real max_fraction;
+} sx_ray_input;
+
+/** Where a ray first meets a shape. */
+typedef struct sx_ray_hit {
+    sx_vec2 point;    /**< world hit point */
+    sx_vec2 normal;   /**< world unit surface normal at the hit, facing the ray */
+    sx_real fraction; /**< hit = origin + fraction * translation */
+    bool hit;
+} sx_ray_hit;
+
+/** Casts a ray against a shape placed by x. Returns true and fills *out on a
+ *  hit with fraction in [0, max_fraction]. A ray starting inside a solid shape
+ *  hits at fraction 0 with the normal opposite to the ray direction. A zero
+ *  translation, a non-finite input or max_fraction < 0 returns false. Segments
+ *  are hit from either side. */
+bool sx_ray_cast(const sx_shape *s, sx_xform x, const sx_ray_input *ray, sx_ray_hit *out);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SEPAX_COLLIDE_H */

@@ -1,0 +1,11 @@
+/* sepax — umbrella header: 2D collision detection (SAT + MTV) and impulse
+ * physics in plain C99. Include this, link libsepax. */
+#ifndef SEPAX_H
+#define SEPAX_H
+
+#include "base.h"
+#include "math.h"
+#include "shape.h"
+#include "collide.h"
+
+#endif /* SEPAX_H */

@@ -1,0 +1,170 @@
+/* sepax — shapes: plain values in local coordinates, placed by an sx_xform.
+ *
+ * A shape is a type tag and a named union. Circles, segments and capsules are
+ * built by value and can be checked with sx_shape_validate(); convex polygons
+ * go through a builder (sx_polygon_shape) that takes any point cloud, computes
+ * its convex hull, welds near-duplicates, drops collinear points and returns a
+ * status when nothing usable is left. Boxes and oriented boxes are polygons
+ * with four vertices; a point is a circle of radius zero. Every shape has mass
+ * properties and an AABB under a transform. No function here allocates. */
+#ifndef SEPAX_SHAPE_H
+#define SEPAX_SHAPE_H
+
+#include "base.h"
+#include "math.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Most vertices a convex polygon may have (compile-time setting, >= 3). */
+#ifndef SX_MAX_POLYGON_VERTICES
+#define SX_MAX_POLYGON_VERTICES 8
+#endif
+
+typedef enum sx_shape_type {
+    SX_SHAPE_CIRCLE = 0, /**< also the point: a circle of radius 0 */
+    SX_SHAPE_SEGMENT,
+    SX_SHAPE_CAPSULE,
+    SX_SHAPE_POLYGON, /**< convex, CCW, optionally rounded; boxes are polygons */
+    SX_SHAPE_TYPE_COUNT
+} sx_shape_type;
+
+/** A disc. radius 0 is a point. */
+typedef struct sx_circle {
+    sx_vec2 center;
+    sx_real radius;
+} sx_circle;
+
+/** A line segment from a to b (two-sided, no thickness). */
+typedef struct sx_segment {
+    sx_vec2 a, b;
+} sx_segment;
+
+/** The set of points within `radius` of the segment a-b. */
+typedef struct sx_capsule {
+    sx_vec2 a, b;
+    sx_real radius;
+} sx_capsule;
+
+/** A convex polygon: vertices in counter-clockwise order, no three collinear;
+ *  normals[i] is the outward unit normal of the edge vertices[i] ->
+ *  vertices[i+1]. `radius` > 0 rounds it (the Minkowski sum with a disc).
+ *  Build it with sx_polygon_shape / sx_box_shape; the fields are read-only
+ *  for users. */
+typedef struct sx_polygon {
+    sx_vec2 vertices[SX_MAX_POLYGON_VERTICES];
+    sx_vec2 normals[SX_MAX_POLYGON_VERTICES];
+    sx_vec2 centroid;
+    sx_real radius;
+    int count;
+} sx_polygon;
+
+/** A shape value: `type` says which member of `u` is live. */
+typedef struct sx_shape {
+    sx_shape_type type;
+    union {
+        sx_circle circle;
+        sx_segment segment;
+        sx_capsule capsule;
+        sx_polygon polygon;
+    } u;
+} sx_shape;
+
+/* ---- constructors ------------------------------------------------------- */
+
+/** A circle. Not checked: see sx_shape_validate (negative, NaN or infinite
+ *  radius is invalid; zero is a point). */
+sx_shape sx_circle_shape(sx_vec2 center, sx_real radius);
+/** A point: a circle of radius 0. */
+sx_shape sx_point_shape(sx_vec2 p);
+/** A segment. Not checked: a zero-length segment is reported degenerate by
+ *  sx_shape_validate (the narrowphase still answers for it, as a point). */
+sx_shape sx_segment_shape(sx_vec2 a, sx_vec2 b);
+/** A capsule. Not checked: see sx_shape_validate. a == b is a circle. */
+sx_shape sx_capsule_shape(sx_vec2 a, sx_vec2 b, sx_real radius);
+/** An axis-aligned box centred on the local origin, half-extents hw x hh.
+ *  Not checked: non-positive or non-finite extents make a shape that
+ *  sx_shape_validate reports (SX_ERR_DEGENERATE / SX_ERR_NONFINITE). */
+sx_shape sx_box_shape(sx_real half_width, sx_real half_height);
+/** A box with half-extents hw x hh, centred at `center` and turned by `angle`
+ *  radians in the local frame (an oriented, offset box). Not checked, as
+ *  sx_box_shape. */
+sx_shape sx_offset_box_shape(sx_real half_width, sx_real half_height, sx_vec2 center,
+                             sx_real angle);
+
+/** Convex hull of up to SX_MAX_POLYGON_VERTICES points, CCW. */
+typedef struct sx_hull {
+    sx_vec2 points[SX_MAX_POLYGON_VERTICES];
+    int count;
+} sx_hull;
+
+/** Computes the convex hull of `count` points (any order, any count: the input
+ *  is not modified and no memory is allocated). Points closer than
+ *  `weld_tolerance` are welded, and hull points within `weld_tolerance` of the
+ *  line through their neighbours are dropped as collinear. The hull is
+ *  counter-clockwise, starting at the lowest-x (then lowest-y) point.
+ *  Errors: SX_ERR_INVALID_ARG (points or out NULL, count < 0, negative or
+ *  non-finite tolerance); SX_ERR_NONFINITE (a NaN/Inf coordinate);
+ *  SX_ERR_DEGENERATE (fewer than 3 usable points, or zero area);
+ *  SX_ERR_CAPACITY (the hull has more than SX_MAX_POLYGON_VERTICES vertices:
+ *  nothing is dropped silently). On error out->count is 0. */
+sx_status sx_compute_hull(const sx_vec2 *points, int count, sx_real weld_tolerance, sx_hull *out);
+
+/** True if the hull is convex, CCW, with no collinear or coincident points
+ *  (each within the given tolerance). */
+bool sx_validate_hull(const sx_hull *hull, sx_real tolerance);
+
+/** Builds a convex polygon from any point cloud: sx_compute_hull with
+ *  SX_WELD_TOLERANCE, then unit outward normals and the area centroid.
+ *  `radius` >= 0 rounds the corners. Errors as sx_compute_hull, plus
+ *  SX_ERR_INVALID_ARG for a negative radius and SX_ERR_NONFINITE for a
+ *  non-finite one. On error *out is left unchanged. */
+sx_status sx_polygon_shape(const sx_vec2 *points, int count, sx_real radius, sx_shape *out);
+
+/** As sx_polygon_shape with an explicit weld tolerance (for shapes far smaller
+ *  or larger than the default length scale). */
+sx_status sx_polygon_shape_ex(const sx_vec2 *points, int count, sx_real radius,
+                              sx_real weld_tolerance, sx_shape *out);
+
+/** Builds a polygon from a hull already known to be valid (sx_compute_hull's
+ *  output). Errors: SX_ERR_INVALID_ARG (NULL, count outside
+ *  3..SX_MAX_POLYGON_VERTICES, negative radius), SX_ERR_NONFINITE,
+ *  SX_ERR_DEGENERATE (zero area). */
+sx_status sx_polygon_from_hull(const sx_hull *hull, sx_real radius, sx_shape *out);
+
+/** Checks a shape value. SX_OK, or: SX_ERR_INVALID_ARG (NULL, unknown type,
+ *  negative radius, polygon count outside 3..SX_MAX_POLYGON_VERTICES, polygon
+ *  not CCW-convex or normals not unit); SX_ERR_NONFINITE (NaN/Inf anywhere);
+ *  SX_ERR_DEGENERATE (a zero-length segment, a zero-area polygon). A circle of
+ *  radius 0 (a point) is valid; so is a capsule with a == b (a circle). */
+sx_status sx_shape_validate(const sx_shape *shape);
+
+/* ---- mass properties and bounds ----------------------------------------- */
+
+/** Mass properties of a shape of uniform density. */
+typedef struct sx_mass_data {
+    sx_real mass;              /**< kg (density x area) */
+    sx_vec2 center;            /**< centre of mass, in the shape's local frame */
+    sx_real rotational_inertia; /**< kg m^2, about the centre of mass */
+} sx_mass_data;
+
+/** Area in square metres (segments: 0; rounded polygons include the rounding). */
+sx_real sx_shape_area(const sx_shape *shape);
+/** Area centroid in the local frame (segments: midpoint). */
+sx_vec2 sx_shape_centroid(const sx_shape *shape);
+/** Mass, centre of mass and inertia about it for `density` (kg/m^2).
+ *  Segments have no area: zero mass and inertia. Negative or non-finite
+ *  density, or an invalid shape, gives all zeros. */
+sx_mass_data sx_shape_mass(const sx_shape *shape, sx_real density);
+/** The tight world-space AABB of the shape placed by x (including rounding). */
+sx_aabb sx_shape_aabb(const sx_shape *shape, sx_xform x);
+/** The extent of the shape along a unit `axis` in its local frame: the
+ *  support value max over the shape of dot(point, axis). */
+sx_real sx_shape_support(const sx_shape *shape, sx_vec2 axis);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SEPAX_SHAPE_H */

@@ -1,0 +1,63 @@
+/* sepax tests — shared support (see test_support.h). */
+#include <stdio.h>
+
+#include "test_support.h"
+
+static void sx_test_assert_handler(const char *expression, const char *file, int line,
+                                   void *context) {
+    (void)context;
+    print_error("SX_ASSERT(%s) failed\n", expression);
+    _fail(file, line);
+}
+
+void sx_test_route_asserts(void) { sx_set_assert_handler(sx_test_assert_handler, NULL); }
+
+static size_t s_group_live_bytes;
+
+int sx_test_group_setup(void **state) {
+    (void)state;
+    sx_test_route_asserts();
+    s_group_live_bytes = sx_live_bytes();
+    return 0;
+}
+
+int sx_test_group_teardown(void **state) {
+    (void)state;
+    if (sx_live_bytes() != s_group_live_bytes) {
+        print_error("sepax: %lu bytes leaked by this group\n",
+                    (unsigned long)(sx_live_bytes() - s_group_live_bytes));
+        return -1;
+    }
+    return 0;
+}
+
+void sx_test_assert_near(double a, double b, double tol, const char *ea, const char *eb,
+                         const char *file, int line) {
+    double d = a - b;
+    if (d < 0) d = -d;
+    if (!(d <= tol)) {
+        print_error("%s = %.17g and %s = %.17g differ by %.3g > %.3g\n", ea, a, eb, b, d, tol);
+        _fail(file, line);
+    }
+}
+
+sx_test_rng sx_test_rng_make(uint64_t seed) {
+    sx_test_rng r;
+    r.state = seed;
+    return r;
+}
+
+uint64_t sx_test_rng_next(sx_test_rng *rng) {
+    uint64_t z = (rng->state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+double sx_test_rng_unit(sx_test_rng *rng) {
+    return (double)(sx_test_rng_next(rng) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+sx_real sx_test_rng_range(sx_test_rng *rng, double lo, double hi) {
+    return (sx_real)(lo + (hi - lo) * sx_test_rng_unit(rng));
+}
