@@ -908,8 +908,9 @@ static void mat3_mul_is_associative_on_random_matrices(void **state) {
     for (k = 0; k < 1000; ++k) {
         sx_mat3 a = rnd_mat3(&rng), b = rnd_mat3(&rng), c = rnd_mat3(&rng);
         sx_mat3 l = sx_mat3_mul(sx_mat3_mul(a, b), c), r = sx_mat3_mul(a, sx_mat3_mul(b, c));
-        /* Each entry is a sum of 9 triple products bounded by the norms. */
-        double tol = 8.0 * EPS_D * mat3_norm(a) * mat3_norm(b) * mat3_norm(c);
+        /* Each entry is a sum of 9 triple products bounded by the norms
+         * (measured worst: 0.66 eps times the product of the norms). */
+        double tol = 4.0 * EPS_D * mat3_norm(a) * mat3_norm(b) * mat3_norm(c);
         assert_mat3_near(l, r, tol);
     }
 }
@@ -935,7 +936,8 @@ static void mat3_determinant_matches_hand_values_and_the_product_rule(void **sta
         double da = (double)sx_mat3_determinant(a), db = (double)sx_mat3_determinant(b);
         double na = row_norm_product(a), nb = row_norm_product(b);
         double scale = row_norm_product(sx_mat3_mul(a, b)) + na * nb;
-        assert_near(sx_mat3_determinant(sx_mat3_mul(a, b)), da * db, 32.0 * EPS_D * scale);
+        /* Measured worst: 0.8 eps * scale. */
+        assert_near(sx_mat3_determinant(sx_mat3_mul(a, b)), da * db, 8.0 * EPS_D * scale);
         assert_near(sx_mat3_determinant(sx_mat3_transpose(a)), da, 16.0 * EPS_D * na);
         /* Hadamard's bound: |det| <= product of the row lengths. */
         assert_true(fabs(da) <= na * (1.0 + 8.0 * EPS_D));
@@ -981,13 +983,36 @@ static void mat3_inverse_round_trips_on_random_invertible_matrices(void **state)
         }
         ++done;
         /* Entry errors of A A^-1 - I grow with the condition number
-         * |A| |A^-1| (Frobenius), times the rounding of a few operations. */
+         * |A| |A^-1| (Frobenius), times the rounding of a few operations
+         * (measured worst: 0.82 eps * cond). */
         cond = mat3_norm(a) * mat3_norm(inv);
-        tol = 16.0 * EPS_D * cond;
+        tol = 4.0 * EPS_D * cond;
         assert_mat3_near(sx_mat3_mul(a, inv), sx_mat3_identity(), tol);
         assert_mat3_near(sx_mat3_mul(inv, a), sx_mat3_identity(), tol);
     }
     assert_true(done > 1900);
+}
+
+static void mat3_inverse_of_translate_rotate_scale_is_the_reversed_product(void **state) {
+    sx_test_rng rng = sx_test_rng_make(409);
+    int k;
+    (void)state;
+    for (k = 0; k < 1000; ++k) {
+        sx_vec2 p = rnd_vec(&rng, -10.0, 10.0), v = rnd_vec(&rng, -10.0, 10.0);
+        sx_real t = sx_test_rng_range(&rng, -PI_D, PI_D);
+        sx_real sx = sx_test_rng_range(&rng, 0.25, 4.0), sy = sx_test_rng_range(&rng, -4.0, -0.25);
+        sx_mat3 m = sx_mat3_mul(sx_mat3_translation(p.x, p.y),
+                                sx_mat3_mul(sx_mat3_rotation(t), sx_mat3_scale(sx, sy)));
+        /* (T R S)^-1 = S^-1 R^-1 T^-1 */
+        sx_mat3 ref =
+            sx_mat3_mul(sx_mat3_scale(SX_R(1.0) / sx, SX_R(1.0) / sy),
+                        sx_mat3_mul(sx_mat3_rotation(-t), sx_mat3_translation(-p.x, -p.y)));
+        sx_mat3 inv;
+        double tol = 100.0 * SX_TEST_EPS * mat3_norm(ref);
+        assert_true(sx_mat3_inverse(m, &inv));
+        assert_mat3_near(inv, ref, tol);
+        assert_vec2_near(sx_mat3_transform_point(inv, sx_mat3_transform_point(m, v)), v, tol);
+    }
 }
 
 static void mat3_inverse_of_singular_matrix_returns_false_and_writes_identity(void **state) {
@@ -1062,6 +1087,11 @@ static void mat3_from_xform_agrees_with_xform_on_points_and_vectors(void **state
         assert_near(back.q.c, a.q.c, SX_TEST_EPS);
         assert_near(back.q.s, a.q.s, SX_TEST_EPS);
         assert_vec2_near(sx_xform_point(back, v), sx_mat3_transform_point(ma, v), tol);
+        {
+            sx_mat3 inv;
+            assert_true(sx_mat3_inverse(ma, &inv));
+            assert_mat3_near(inv, sx_mat3_from_xform(sx_xform_invert(a)), tol);
+        }
     }
 }
 
@@ -1470,6 +1500,7 @@ int main(void) {
         cmocka_unit_test(mat3_determinant_matches_hand_values_and_the_product_rule),
         cmocka_unit_test(mat3_inverse_matches_hand_values),
         cmocka_unit_test(mat3_inverse_round_trips_on_random_invertible_matrices),
+        cmocka_unit_test(mat3_inverse_of_translate_rotate_scale_is_the_reversed_product),
         cmocka_unit_test(mat3_inverse_of_singular_matrix_returns_false_and_writes_identity),
         cmocka_unit_test(mat3_from_xform_agrees_with_xform_on_points_and_vectors),
         cmocka_unit_test(mat3_to_xform_accepts_rigid_matrices_within_tolerance),
