@@ -29,7 +29,8 @@ static inline sx_real sx_maxr(sx_real a, sx_real b) { return a > b ? a : b; }
 static inline sx_real sx_absr(sx_real a) { return a < SX_R(0.0) ? -a : a; }
 /** Clamps a to [lo, hi] (lo <= hi expected; lo wins otherwise). */
 static inline sx_real sx_clampr(sx_real a, sx_real lo, sx_real hi) {
-    return a < lo ? lo : (a > hi ? hi : a);
+    /* max(lo, hi) keeps "lo wins" when the bounds are crossed and a > hi. */
+    return a < lo ? lo : (a > hi ? sx_maxr(lo, hi) : a);
 }
 /** True unless a is NaN or +-infinity. */
 static inline bool sx_is_finite(sx_real a) { return (a - a) == (a - a); }
@@ -93,16 +94,26 @@ static inline sx_real sx_length(sx_vec2 v) { return sx_sqrt(v.x * v.x + v.y * v.
 static inline sx_real sx_distance_sq(sx_vec2 a, sx_vec2 b) { return sx_length_sq(sx_sub(b, a)); }
 static inline sx_real sx_distance(sx_vec2 a, sx_vec2 b) { return sx_length(sx_sub(b, a)); }
 
+/** True unless a component is NaN or +-infinity. */
+static inline bool sx_vec2_is_finite(sx_vec2 v) { return sx_is_finite(v.x) && sx_is_finite(v.y); }
 /** Unit vector along v and v's length in *length (may be NULL). A vector too
  *  short to normalise (length <= SX_REAL_EPSILON, or not finite) gives the zero
  *  vector and *length = 0: the caller can tell "no direction" apart. */
 static inline sx_vec2 sx_normalize_len(sx_vec2 v, sx_real *length) {
     sx_real len = sx_length(v);
-    if (!(len > SX_REAL_EPSILON) || !sx_is_finite(len)) {
+    sx_real k = SX_R(1.0);
+    if (!sx_is_finite(len) && sx_vec2_is_finite(v)) {
+        /* The squares overflowed although v is finite (|x| > 1e19 in float):
+         * measure v / k, k its largest component, whose length is in [1, 2]. */
+        k = sx_maxr(sx_absr(v.x), sx_absr(v.y));
+        v = sx_v2(v.x / k, v.y / k);
+        len = sx_length(v);
+    }
+    if (!(len > SX_REAL_EPSILON) || !sx_is_finite(k * len)) {
         if (length) *length = SX_R(0.0);
         return sx_v2_zero();
     }
-    if (length) *length = len;
+    if (length) *length = k * len;
     sx_real inv = SX_R(1.0) / len;
     return sx_v2(v.x * inv, v.y * inv);
 }
@@ -111,8 +122,9 @@ static inline sx_vec2 sx_normalize_len(sx_vec2 v, sx_real *length) {
 static inline sx_vec2 sx_normalize(sx_vec2 v) { return sx_normalize_len(v, NULL); }
 /** True if |v| is within 100 epsilon of 1. */
 static inline bool sx_is_normalized(sx_vec2 v) {
+    /* |v| = 1 + d gives |v|^2 = 1 + 2d: the bound on the square is doubled. */
     sx_real e = SX_R(1.0) - sx_length_sq(v);
-    return e > SX_R(-100.0) * SX_REAL_EPSILON && e < SX_R(100.0) * SX_REAL_EPSILON;
+    return e > SX_R(-200.0) * SX_REAL_EPSILON && e < SX_R(200.0) * SX_REAL_EPSILON;
 }
 /** a + t (b - a) */
 static inline sx_vec2 sx_lerp(sx_vec2 a, sx_vec2 b, sx_real t) {
@@ -129,7 +141,6 @@ static inline sx_vec2 sx_vclamp(sx_vec2 v, sx_vec2 lo, sx_vec2 hi) {
 static inline bool sx_approx_equal(sx_vec2 a, sx_vec2 b, sx_real tol) {
     return sx_absr(a.x - b.x) <= tol && sx_absr(a.y - b.y) <= tol;
 }
-static inline bool sx_vec2_is_finite(sx_vec2 v) { return sx_is_finite(v.x) && sx_is_finite(v.y); }
 
 /* ---- sx_rot ------------------------------------------------------------- */
 
@@ -152,14 +163,20 @@ static inline sx_rot sx_rot_make(sx_real angle) {
     return q;
 }
 /** The angle of q in (-pi, pi]. */
-static inline sx_real sx_rot_angle(sx_rot q) { return sx_atan2(q.s, q.c); }
+static inline sx_real sx_rot_angle(sx_rot q) {
+    sx_real a = sx_atan2(q.s, q.c);
+    /* atan2 gives -pi on the negative x axis when the sine is -0 or rounds
+     * there (sx_rot_make(-SX_PI), sx_rot_inv of a half turn): that is +pi. */
+    return a == -SX_PI ? SX_PI : a;
+}
 /** q rescaled to unit length (identity if q is zero or not finite). */
 static inline sx_rot sx_rot_normalize(sx_rot q) {
-    sx_real len = sx_sqrt(q.c * q.c + q.s * q.s);
-    if (!(len > SX_REAL_EPSILON) || !sx_is_finite(len)) return sx_rot_identity();
+    sx_real len;
+    sx_vec2 u = sx_normalize_len(sx_v2(q.c, q.s), &len);
     sx_rot r;
-    r.c = q.c / len;
-    r.s = q.s / len;
+    if (len == SX_R(0.0)) return sx_rot_identity();
+    r.c = u.x;
+    r.s = u.y;
     return r;
 }
 /** q advanced by a small angle d (first order, renormalised): the integrator's
@@ -378,9 +395,9 @@ static inline sx_mat3 sx_mat3_from_xform(sx_xform x) {
 /** Extracts the rigid part of an affine matrix: the translation column and the
  *  rotation of the first column. Returns true when a is rigid (orthonormal
  *  2x2 block with determinant +1 and last row (0 0 1), each within `tol`);
- *  false when it carries scale, shear, reflection or projection (then *out is
- *  still the nearest rotation + translation, or the identity if a is not
- *  finite or its first column is zero). */
+ *  false when it carries scale, shear, reflection or projection (then *out
+ *  still holds the rotation of the first column and the translation column,
+ *  or the identity if those are not finite or the first column is zero). */
 static inline bool sx_mat3_to_xform(sx_mat3 a, sx_real tol, sx_xform *out) {
     sx_vec2 c0 = sx_v2(a.m[0][0], a.m[1][0]);
     sx_vec2 c1 = sx_v2(a.m[0][1], a.m[1][1]);
@@ -421,16 +438,22 @@ static inline bool sx_aabb_is_valid(sx_aabb a) {
 }
 /** The smallest box around `count` points. count <= 0 or points == NULL
  *  gives an invalid box (lower = +max, upper = -max) that is the identity of
- *  sx_aabb_union. */
+ *  sx_aabb_union; so does any NaN or infinite point (the box of the others
+ *  would silently leave it out). */
 static inline sx_aabb sx_aabb_from_points(const sx_vec2 *points, int count) {
-    sx_aabb b = sx_aabb_make(sx_v2(SX_REAL_MAX, SX_REAL_MAX), sx_v2(-SX_REAL_MAX, -SX_REAL_MAX));
+    const sx_aabb empty =
+        sx_aabb_make(sx_v2(SX_REAL_MAX, SX_REAL_MAX), sx_v2(-SX_REAL_MAX, -SX_REAL_MAX));
+    sx_aabb b = empty;
+    bool finite = true;
     int i;
     if (points == NULL) return b;
     for (i = 0; i < count; ++i) {
+        /* Checked separately: min/max would drop a NaN again at the next point. */
+        finite = finite && sx_vec2_is_finite(points[i]);
         b.lower = sx_vmin(b.lower, points[i]);
         b.upper = sx_vmax(b.upper, points[i]);
     }
-    return b;
+    return finite ? b : empty;
 }
 static inline sx_aabb sx_aabb_union(sx_aabb a, sx_aabb b) {
     return sx_aabb_make(sx_vmin(a.lower, b.lower), sx_vmax(a.upper, b.upper));
