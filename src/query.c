@@ -105,8 +105,17 @@ static local_distance shape_distance(const sx_shape *s, sx_vec2 p, sx_vec2 fallb
     }
 }
 
-static bool query_input_ok(const sx_shape *s, sx_xform x, sx_vec2 p) {
-    return sx_query_shape_ok(s) && sx_xform_is_finite(x) && sx_vec2_is_finite(p);
+/* Checks the input and moves p into the shape's frame. False also when the
+ * move itself overflows (coordinates near SX_REAL_MAX). */
+static bool to_local(const sx_shape *s, sx_xform x, sx_vec2 p, sx_vec2 *local) {
+    if (!sx_query_shape_ok(s) || !sx_xform_is_finite(x) || !sx_vec2_is_finite(p)) return false;
+    *local = sx_xform_inv_point(x, p);
+    return sx_vec2_is_finite(*local);
+}
+
+/* The local direction of world +x: the normal at a circle's centre. */
+static sx_vec2 local_x_axis(sx_xform x) {
+    return sx_xform_inv_vector(x, sx_v2(SX_R(1.0), SX_R(0.0)));
 }
 
 /* ---- point queries ------------------------------------------------------ */
@@ -114,8 +123,7 @@ static bool query_input_ok(const sx_shape *s, sx_xform x, sx_vec2 p) {
 bool sx_contains_point(const sx_shape *s, sx_xform x, sx_vec2 p) {
     const sx_real tol = SX_CONTAINS_TOLERANCE;
     sx_vec2 lp;
-    if (!query_input_ok(s, x, p)) return false;
-    lp = sx_xform_inv_point(x, p);
+    if (!to_local(s, x, p, &lp)) return false;
     switch (s->type) {
     case SX_SHAPE_CIRCLE: {
         sx_real r = s->u.circle.radius + tol;
@@ -176,26 +184,33 @@ sx_vec2 sx_closest_point_on_segment(sx_vec2 a, sx_vec2 b, sx_vec2 p, sx_real *t)
 
 sx_vec2 sx_closest_point(const sx_shape *s, sx_xform x, sx_vec2 p) {
     local_distance ld;
-    if (!query_input_ok(s, x, p)) return sx_v2_zero();
-    ld = shape_distance(s, sx_xform_inv_point(x, p),
-                        sx_xform_inv_vector(x, sx_v2(SX_R(1.0), SX_R(0.0))));
+    sx_vec2 lp, q;
+    if (!to_local(s, x, p, &lp)) return sx_v2_zero();
+    ld = shape_distance(s, lp, local_x_axis(x));
     if (ld.distance <= SX_R(0.0)) return p;
-    return sx_xform_point(x, ld.point);
+    q = sx_xform_point(x, ld.point);
+    return sx_vec2_is_finite(q) ? q : sx_v2_zero();
 }
 
 sx_real sx_shape_distance_to_point(const sx_shape *s, sx_xform x, sx_vec2 p,
                                    sx_vec2 *boundary_point, sx_vec2 *normal) {
     local_distance ld;
-    if (!query_input_ok(s, x, p)) {
-        if (boundary_point != NULL) *boundary_point = sx_v2_zero();
-        if (normal != NULL) *normal = sx_v2_zero();
-        return SX_REAL_MAX;
+    sx_vec2 lp, bp = sx_v2_zero(), n = sx_v2_zero();
+    sx_real d = SX_REAL_MAX;
+    if (to_local(s, x, p, &lp)) {
+        ld = shape_distance(s, lp, local_x_axis(x));
+        bp = sx_xform_point(x, ld.point);
+        n = sx_xform_vector(x, ld.normal);
+        d = ld.distance;
+        if (!sx_is_finite(d) || !sx_vec2_is_finite(bp) || !sx_vec2_is_finite(n)) {
+            d = SX_REAL_MAX;
+            bp = sx_v2_zero();
+            n = sx_v2_zero();
+        }
     }
-    ld = shape_distance(s, sx_xform_inv_point(x, p),
-                        sx_xform_inv_vector(x, sx_v2(SX_R(1.0), SX_R(0.0))));
-    if (boundary_point != NULL) *boundary_point = sx_xform_point(x, ld.point);
-    if (normal != NULL) *normal = sx_xform_vector(x, ld.normal);
-    return ld.distance;
+    if (boundary_point != NULL) *boundary_point = bp;
+    if (normal != NULL) *normal = n;
+    return d;
 }
 
 /* ---- segment-segment intersection --------------------------------------- */

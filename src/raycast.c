@@ -197,8 +197,8 @@ static bool cast_rounded_polygon(const sx_polygon *poly, const local_ray *ray, l
 bool sx_ray_cast(const sx_shape *s, sx_xform x, const sx_ray_input *ray, sx_ray_hit *out) {
     local_ray lr;
     local_hit h;
-    sx_vec2 d;
-    sx_real len;
+    sx_vec2 d, point;
+    sx_real len, f;
     bool found;
     if (out != NULL) {
         out->point = sx_v2_zero();
@@ -213,7 +213,7 @@ bool sx_ray_cast(const sx_shape *s, sx_xform x, const sx_ray_input *ray, sx_ray_
     }
     lr.o = sx_xform_inv_point(x, ray->origin);
     d = sx_xform_inv_vector(x, ray->translation);
-    if (!sx_query_unit(d, &lr.u)) return false;
+    if (!sx_vec2_is_finite(lr.o) || !sx_query_unit(d, &lr.u)) return false;
     len = sx_dot(d, lr.u);
     lr.max_distance = ray->max_fraction * len;
     if (!sx_is_finite(lr.max_distance)) lr.max_distance = SX_REAL_MAX;
@@ -229,10 +229,13 @@ bool sx_ray_cast(const sx_shape *s, sx_xform x, const sx_ray_input *ray, sx_ray_
         break;
     }
     if (!found) return false;
+    f = sx_minr(h.distance / len, ray->max_fraction);
+    point = sx_mul_add(ray->origin, f, ray->translation);
+    /* Only coordinates near SX_REAL_MAX can overflow on the way back. */
+    if (!sx_is_finite(f) || !sx_vec2_is_finite(point)) return false;
     if (out != NULL) {
-        sx_real f = sx_minr(h.distance / len, ray->max_fraction);
         out->fraction = f;
-        out->point = sx_mul_add(ray->origin, f, ray->translation);
+        out->point = point;
         out->normal = sx_xform_vector(x, h.normal);
         out->hit = true;
     }

@@ -153,4 +153,48 @@ static inline bool qf_is_solid(const sx_shape *s) {
              (s->type == SX_SHAPE_CIRCLE && s->u.circle.radius == SX_R(0.0)));
 }
 
+/* A hostile coordinate: NaN, infinity, zero, or any magnitude from 1e-38 to
+ * 1e38 (clamped to the real type's range) of either sign. */
+static inline sx_real qf_wild(sx_test_rng *rng) {
+    double u = sx_test_rng_unit(rng);
+    double v = (sx_test_rng_unit(rng) - 0.5) * pow(10.0, sx_test_rng_unit(rng) * 76.0 - 38.0);
+    if (u < 0.02) return (sx_real)NAN;
+    if (u < 0.04) return (sx_real)(u < 0.03 ? INFINITY : -INFINITY);
+    if (u < 0.1) return SX_R(0.0);
+    return (sx_real)v;
+}
+
+static inline sx_vec2 qf_wild_vec(sx_test_rng *rng) { return sx_v2(qf_wild(rng), qf_wild(rng)); }
+
+/* A random shape with hostile coordinates and radius; the transform comes
+ * from qf_wild too. */
+static inline sx_shape qf_wild_shape(sx_test_rng *rng, sx_xform *x) {
+    int kind, j;
+    sx_shape s = qf_random_shape(rng, &kind);
+    sx_real scale = qf_wild(rng);
+    switch (s.type) {
+    case SX_SHAPE_CIRCLE:
+        s.u.circle.center = qf_wild_vec(rng);
+        s.u.circle.radius = sx_absr(qf_wild(rng));
+        break;
+    case SX_SHAPE_SEGMENT:
+        s.u.segment.a = qf_wild_vec(rng);
+        s.u.segment.b = qf_wild_vec(rng);
+        break;
+    case SX_SHAPE_CAPSULE:
+        s.u.capsule.a = qf_wild_vec(rng);
+        s.u.capsule.b = qf_wild_vec(rng);
+        s.u.capsule.radius = sx_absr(qf_wild(rng));
+        break;
+    default:
+        for (j = 0; j < s.u.polygon.count; ++j) {
+            s.u.polygon.vertices[j] = sx_scale(s.u.polygon.vertices[j], scale);
+        }
+        s.u.polygon.radius = sx_absr(qf_wild(rng));
+        break;
+    }
+    *x = sx_xform_make(qf_wild_vec(rng), sx_test_rng_range(rng, -3.2, 3.2));
+    return s;
+}
+
 #endif /* SEPAX_TEST_QUERY_FIXTURES_H */

@@ -641,6 +641,29 @@ static void random_signed_distance_sign_matches_containment(void **state) {
     assert_true(inside > 8000 && outside > 8000);
 }
 
+static void hostile_input_never_crashes_or_yields_nan(void **state) {
+    sx_test_rng rng = sx_test_rng_make(0xbad1);
+    int i;
+    (void)state;
+    for (i = 0; i < 40000; ++i) {
+        sx_xform x;
+        sx_shape s = qf_wild_shape(&rng, &x);
+        sx_vec2 p = qf_wild_vec(&rng), bp, n, q;
+        sx_vec2 p2 = qf_wild_vec(&rng), q1 = qf_wild_vec(&rng), q2 = qf_wild_vec(&rng);
+        sx_segment_intersection o;
+        sx_real d = sx_shape_distance_to_point(&s, x, p, &bp, &n), t;
+        assert_true(sx_is_finite(d) && sx_vec2_is_finite(bp) && sx_vec2_is_finite(n));
+        assert_true(sx_vec2_is_finite(sx_closest_point(&s, x, p)));
+        (void)sx_contains_point(&s, x, p);
+        q = sx_closest_point_on_segment(p, p2, q1, &t);
+        assert_true(sx_vec2_is_finite(q) && t >= SX_R(0.0) && t <= SX_R(1.0));
+        (void)sx_intersect_segments(p, p2, q1, q2, &o);
+        assert_true(sx_vec2_is_finite(o.point) && sx_vec2_is_finite(o.overlap_start) &&
+                    sx_vec2_is_finite(o.overlap_end));
+        assert_true(o.t >= SX_R(0.0) && o.t <= SX_R(1.0) && o.u >= SX_R(0.0) && o.u <= SX_R(1.0));
+    }
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(circle_contains_inside_and_boundary_but_not_outside),
@@ -675,6 +698,7 @@ int main(void) {
         cmocka_unit_test(random_segment_pairs_agree_with_orientation_tests),
         cmocka_unit_test(random_closest_points_lie_in_the_shape_and_no_sample_is_closer),
         cmocka_unit_test(random_signed_distance_sign_matches_containment),
+        cmocka_unit_test(hostile_input_never_crashes_or_yields_nan),
     };
     return cmocka_run_group_tests_name("query", tests, sx_test_group_setup, sx_test_group_teardown);
 }

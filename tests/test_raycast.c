@@ -506,6 +506,28 @@ static void random_rays_against_segments_agree_with_segment_intersection(void **
     assert_true(agreed > 2000);
 }
 
+static void hostile_input_never_crashes_or_yields_nan(void **state) {
+    sx_test_rng rng = sx_test_rng_make(0xbad2);
+    int i, hits = 0;
+    (void)state;
+    for (i = 0; i < 40000; ++i) {
+        sx_xform x;
+        sx_shape s = qf_wild_shape(&rng, &x);
+        sx_ray_input r =
+            ray_make(qf_wild_vec(&rng), qf_wild_vec(&rng), (double)sx_absr(qf_wild(&rng)));
+        sx_ray_hit h;
+        if (sx_ray_cast(&s, x, &r, &h)) {
+            hits++;
+            assert_true(h.hit && sx_is_finite(h.fraction) && h.fraction >= SX_R(0.0) &&
+                        h.fraction <= r.max_fraction);
+            assert_true(sx_vec2_is_finite(h.point) && sx_vec2_is_finite(h.normal));
+        } else {
+            assert_false(h.hit);
+        }
+    }
+    assert_true(hits > 100);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(ray_hits_circle_at_the_near_side),
@@ -535,6 +557,7 @@ int main(void) {
         cmocka_unit_test(random_ray_aimed_at_the_centroid_from_outside_always_hits),
         cmocka_unit_test(random_ray_from_inside_hits_at_zero_facing_back),
         cmocka_unit_test(random_rays_against_segments_agree_with_segment_intersection),
+        cmocka_unit_test(hostile_input_never_crashes_or_yields_nan),
     };
     return cmocka_run_group_tests_name("raycast", tests, sx_test_group_setup,
                                        sx_test_group_teardown);

@@ -187,7 +187,8 @@ sx_vec2 sx_closest_point(const sx_shape *s, sx_xform x, sx_vec2 p);
  *  core's) segment, the segment's left normal perp(b - a); at a circle's
  *  centre, or on a zero-length segment, world +x; for p outside a polygon's
  *  core but exactly on it, the normal of the edge of largest separation.
- *  Unusable input returns SX_REAL_MAX with zero vectors. */
+ *  Unusable input (or a point so far out that the arithmetic overflows
+ *  sx_real) returns SX_REAL_MAX with zero vectors. */
 sx_real sx_shape_distance_to_point(const sx_shape *s, sx_xform x, sx_vec2 p, sx_vec2 *boundary_point,
                                    sx_vec2 *normal);
 
@@ -271,7 +272,8 @@ typedef struct sx_ray_hit {
  *  along a segment's own line hits its nearer end point with the normal
  *  opposite to the ray. A point (circle of radius 0) is hit only by a ray
  *  passing exactly through it. A zero translation, a NULL or unusable shape
- *  or ray, a non-finite input or max_fraction < 0 returns false. */
+ *  or ray, a non-finite input or max_fraction < 0 returns false, and so does
+ *  a cast whose hit point would overflow sx_real. */
 bool sx_ray_cast(const sx_shape *s, sx_xform x, const sx_ray_input *ray, sx_ray_hit *out);
 
 #ifdef __cplusplus
