@@ -69,8 +69,11 @@ static bool cast_segment(sx_vec2 a, sx_vec2 b, const local_ray *ray, local_hit *
     scale = sx_maxr(elen, sx_length(w));
     if (sx_absr(denom) <= tol) {
         sx_real ta, tb;
-        /* cross(w, en) is the distance of the origin from the line. */
-        if (sx_absr(sx_cross(w, en)) > tol * scale) return false;
+        /* cross(w, en) is the distance of the origin from the line. A ray
+         * this close to parallel that still crosses the segment does so
+         * within 2 x scale of its origin, so it starts within 2 tol scale of
+         * the line: every such ray counts as running along it. */
+        if (sx_absr(sx_cross(w, en)) > SX_R(2.0) * tol * scale) return false;
         ta = sx_dot(w, ray->u);
         tb = sx_dot(sx_sub(b, ray->o), ray->u);
         if (sx_maxr(ta, tb) < SX_R(0.0)) return false;

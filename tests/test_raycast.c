@@ -154,6 +154,25 @@ static void ray_along_segment_line_hits_the_near_end(void **state) {
     check_hit(&h, 0.0, w(x, 0.0, 0.25), wdir(x, 0.0, -1.0));
 }
 
+static void near_parallel_ray_crossing_a_segment_hits_it(void **state) {
+    /* 1e-7 rad off the segment's line, crossing it at (0, 0): below the
+     * float tolerance (16 eps ~ 1.9e-6) the ray runs along the segment and
+     * meets its near end; double resolves the crossing. */
+    sx_shape s = sx_segment_shape(v2(0.0, -1.0), v2(0.0, 1.0));
+    sx_ray_hit h;
+    (void)state;
+    assert_true(cast_local(&s, sx_xform_identity(), 3e-7, -3.0, -4e-7, 4.0, 1.0, &h));
+#ifdef SX_DOUBLE
+    check_hit(&h, 0.75, v2(0.0, 0.0), v2(1.0, 0.0));
+#else
+    assert_near(h.fraction, 0.5, EPS);
+    assert_vec2_near(h.point, v2(0.0, -1.0), EPS);
+    assert_vec2_near(h.normal, v2(0.0, -1.0), EPS);
+#endif
+    /* The same direction 1e-3 to the side never reaches the segment. */
+    assert_false(cast_local(&s, sx_xform_identity(), 1e-3, -3.0, -4e-7, 4.0, 1.0, &h));
+}
+
 static void ray_starting_on_segment_hits_at_zero(void **state) {
     sx_xform x = placed();
     sx_shape s = sx_segment_shape(v2(0.0, -1.0), v2(0.0, 1.0));
@@ -538,6 +557,7 @@ int main(void) {
         cmocka_unit_test(ray_hits_segment_from_either_side),
         cmocka_unit_test(ray_through_segment_end_point_hits_and_just_beyond_misses),
         cmocka_unit_test(ray_along_segment_line_hits_the_near_end),
+        cmocka_unit_test(near_parallel_ray_crossing_a_segment_hits_it),
         cmocka_unit_test(ray_starting_on_segment_hits_at_zero),
         cmocka_unit_test(ray_hits_capsule_sides_and_end_caps_exactly),
         cmocka_unit_test(ray_grazing_capsule_side_touches_where_cap_meets_side),
