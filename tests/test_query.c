@@ -581,6 +581,86 @@ static void random_segment_pairs_agree_with_orientation_tests(void **state) {
     assert_true(crossing > 3000 && apart > 3000);
 }
 
+static void random_collinear_segments_overlap_exactly_when_their_intervals_do(void **state) {
+    /* Four points on a random line at random parameters: the rounding of
+     * their coordinates puts them off the line by half an ulp, which the
+     * relative tolerance must absorb. It can when each segment is long
+     * against the rounding of its coordinates (length >= 0.2 x the largest
+     * coordinate here); for shorter ones the direction itself is uncertain
+     * by more than 16 eps and the segments are rightly seen as crossing. */
+    sx_test_rng rng = sx_test_rng_make(0xc0111);
+    int i, overlaps = 0, apart = 0;
+    (void)state;
+    for (i = 0; i < 20000; ++i) {
+        sx_vec2 base = qf_random_vec(&rng, -1.0, 1.0);
+        double angle = sx_test_rng_unit(&rng) * 6.283185307179586;
+        double len = 0.01 + 10.0 * sx_test_rng_unit(&rng);
+        double big = fabs((double)base.x) + fabs((double)base.y) + 1.5 * len;
+        double k[4], plo, phi, qlo, qhi;
+        sx_vec2 pt[4];
+        sx_segment_intersection o;
+        sx_segment_relation rel;
+        int j;
+        for (j = 0; j < 4; ++j) {
+            k[j] = sx_test_rng_unit(&rng) * 2.0 - 0.5;
+            pt[j] = sx_v2((sx_real)((double)base.x + k[j] * len * cos(angle)),
+                          (sx_real)((double)base.y + k[j] * len * sin(angle)));
+        }
+        plo = fmin(k[0], k[1]);
+        phi = fmax(k[0], k[1]);
+        qlo = fmin(k[2], k[3]);
+        qhi = fmax(k[2], k[3]);
+        if ((phi - plo) * len < 0.2 * big || (qhi - qlo) * len < 0.2 * big) continue;
+        rel = sx_intersect_segments(pt[0], pt[1], pt[2], pt[3], &o);
+        if (fmax(plo, qlo) < fmin(phi, qhi) - 1e-3) {
+            double lo = fmax(plo, qlo), hi = fmin(phi, qhi);
+            sx_vec2 a = sx_v2((sx_real)((double)base.x + lo * len * cos(angle)),
+                              (sx_real)((double)base.y + lo * len * sin(angle)));
+            sx_vec2 b = sx_v2((sx_real)((double)base.x + hi * len * cos(angle)),
+                              (sx_real)((double)base.y + hi * len * sin(angle)));
+            overlaps++;
+            assert_int_equal(rel, SX_SEGMENTS_OVERLAP);
+            /* overlap_start comes first along p1 -> p2. */
+            if (k[0] > k[1]) {
+                sx_vec2 tmp = a;
+                a = b;
+                b = tmp;
+            }
+            assert_vec2_near(o.overlap_start, a, QF_TOL);
+            assert_vec2_near(o.overlap_end, b, QF_TOL);
+            assert_vec2_near(o.point, sx_lerp(pt[0], pt[1], o.t), QF_TOL);
+            assert_vec2_near(o.point, sx_lerp(pt[2], pt[3], o.u), QF_TOL);
+        } else if (fmax(plo, qlo) > fmin(phi, qhi) + 1e-3) {
+            apart++;
+            assert_int_equal(rel, SX_SEGMENTS_COLLINEAR_DISJOINT);
+        }
+    }
+    assert_true(overlaps > 5000 && apart > 1000);
+}
+
+static void point_queries_far_from_origin_keep_precision(void **state) {
+    /* A unit box 1e5 from the origin: in float one ulp there is 0.0078, and
+     * the local frame keeps the answers within that rounding of the input. */
+    sx_xform x = sx_xform_make(sx_v2(SX_R(1e5), SX_R(1e5)), SX_R(0.0));
+    sx_xform xr = sx_xform_make(sx_v2(SX_R(1e5), SX_R(-1e5)), SX_R(0.5));
+    sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_shape cap = sx_capsule_shape(v2(-0.5, 0), v2(0.5, 0), SX_R(0.25));
+    sx_vec2 bp, n;
+    (void)state;
+    assert_near(sx_shape_distance_to_point(&box, x, v2(1e5 + 0.75, 1e5), &bp, &n), 0.25, 1e-6);
+    assert_vec2_near(bp, v2(1e5 + 0.5, 1e5), 1e-6);
+    assert_vec2_near(n, v2(1, 0), 1e-6);
+    assert_near(sx_shape_distance_to_point(&box, x, v2(1e5 + 0.25, 1e5 - 0.125), NULL, NULL), -0.25,
+                1e-6);
+    assert_true(sx_contains_point(&box, x, v2(1e5 + 0.5, 1e5 + 0.5)));
+    assert_false(sx_contains_point(&box, x, v2(1e5 + 0.5078125, 1e5)));
+    /* Turned: the world point is rounded to 0.0078, the answer follows. */
+    assert_near(sx_shape_distance_to_point(&cap, xr, w(xr, 0.0, 1.25), NULL, &n), 1.0, 0.01);
+    assert_vec2_near(n, wdir(xr, 0.0, 1.0), 0.01);
+    assert_true(sx_contains_point(&cap, xr, w(xr, 0.6, 0.1)));
+    assert_false(sx_contains_point(&cap, xr, w(xr, 0.0, 0.3)));
+}
+
 /* ---- random properties -------------------------------------------------- */
 
 static void random_closest_points_lie_in_the_shape_and_no_sample_is_closer(void **state) {
@@ -605,6 +685,9 @@ static void random_closest_points_lie_in_the_shape_and_no_sample_is_closer(void 
 }
 
 static void random_signed_distance_sign_matches_containment(void **state) {
+    /* sx_contains_point counts points up to this far outside as on the
+     * boundary (collide.h). */
+    const sx_real band = SX_R(1e-3) * SX_LINEAR_SLOP;
     sx_test_rng rng = sx_test_rng_make(0x519fed);
     int i, inside = 0, outside = 0;
     (void)state;
@@ -622,7 +705,7 @@ static void random_signed_distance_sign_matches_containment(void **state) {
         if (d < -QF_TOL) {
             inside++;
             assert_true(in);
-        } else if (d > QF_TOL) {
+        } else if (d > band + QF_TOL) {
             outside++;
             assert_false(in);
         }
@@ -696,6 +779,8 @@ int main(void) {
         cmocka_unit_test(near_parallel_segments_follow_the_relative_tolerance),
         cmocka_unit_test(non_finite_or_huge_segments_are_degenerate),
         cmocka_unit_test(random_segment_pairs_agree_with_orientation_tests),
+        cmocka_unit_test(random_collinear_segments_overlap_exactly_when_their_intervals_do),
+        cmocka_unit_test(point_queries_far_from_origin_keep_precision),
         cmocka_unit_test(random_closest_points_lie_in_the_shape_and_no_sample_is_closer),
         cmocka_unit_test(random_signed_distance_sign_matches_containment),
         cmocka_unit_test(hostile_input_never_crashes_or_yields_nan),

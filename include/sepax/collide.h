@@ -185,8 +185,9 @@ sx_vec2 sx_closest_point(const sx_shape *s, sx_xform x, sx_vec2 p);
  *  p = boundary_point + distance * normal. Where the direction is undefined
  *  a documented fallback is used: for p exactly on a segment's (or capsule
  *  core's) segment, the segment's left normal perp(b - a); at a circle's
- *  centre, or on a zero-length segment, world +x; for p outside a polygon's
- *  core but exactly on it, the normal of the edge of largest separation.
+ *  centre, or on a zero-length segment, world +x; for p exactly on a
+ *  rounded polygon's core boundary, the normal of the edge of largest
+ *  separation.
  *  Unusable input (or a point so far out that the arithmetic overflows
  *  sx_real) returns SX_REAL_MAX with zero vectors. */
 sx_real sx_shape_distance_to_point(const sx_shape *s, sx_xform x, sx_vec2 p, sx_vec2 *boundary_point,
@@ -226,7 +227,8 @@ typedef struct sx_segment_intersection {
  *    to q1 and q2; otherwise PARALLEL. Collinear segments project q's end
  *    points on r; the shared interval of parameters gives OVERLAP (a single
  *    shared end point counts, with overlap_start == overlap_end) or
- *    COLLINEAR_DISJOINT.
+ *    COLLINEAR_DISJOINT. The ends of the shared part are input end points,
+ *    returned exactly.
  *  - Otherwise t and u are accepted within a slack of eps (scaled by the
  *    ratio of the segments' distance to their length) outside [0, 1], and
  *    within that slack of 0 or 1 they snap to it, so a touch at an end point
