@@ -127,10 +127,14 @@ sx_status sx_polygon_shape(const sx_vec2 *points, int count, sx_real radius, sx_
 sx_status sx_polygon_shape_ex(const sx_vec2 *points, int count, sx_real radius,
                               sx_real weld_tolerance, sx_shape *out);
 
-/** Builds a polygon from a hull already known to be valid (sx_compute_hull's
- *  output). Errors: SX_ERR_INVALID_ARG (NULL, count outside
- *  3..SX_MAX_POLYGON_VERTICES, negative radius), SX_ERR_NONFINITE,
- *  SX_ERR_DEGENERATE (zero area). */
+/** Builds a polygon from a hull (normally sx_compute_hull's output): unit
+ *  outward normals (normalised in wider precision) and the area centroid of
+ *  the core polygon. Errors: SX_ERR_INVALID_ARG (NULL, count outside
+ *  3..SX_MAX_POLYGON_VERTICES, negative radius, or points that are not a
+ *  strictly convex counter-clockwise polygon without coincident points, i.e.
+ *  sx_validate_hull(hull, 0) fails), SX_ERR_NONFINITE (NaN/Inf point or
+ *  radius), SX_ERR_DEGENERATE (exactly zero area, e.g. all points collinear).
+ *  On error *out is left unchanged. */
 sx_status sx_polygon_from_hull(const sx_hull *hull, sx_real radius, sx_shape *out);
 
 /** Checks a shape value. SX_OK, or: SX_ERR_INVALID_ARG (NULL, unknown type,
