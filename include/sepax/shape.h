@@ -84,8 +84,9 @@ sx_shape sx_segment_shape(sx_vec2 a, sx_vec2 b);
 /** A capsule. Not checked: see sx_shape_validate. a == b is a circle. */
 sx_shape sx_capsule_shape(sx_vec2 a, sx_vec2 b, sx_real radius);
 /** An axis-aligned box centred on the local origin, half-extents hw x hh.
- *  Not checked: non-positive or non-finite extents make a shape that
- *  sx_shape_validate reports (SX_ERR_DEGENERATE / SX_ERR_NONFINITE). */
+ *  Not checked: bad extents make a shape that sx_shape_validate reports
+ *  (zero: SX_ERR_DEGENERATE; NaN/Inf: SX_ERR_NONFINITE; negative: the
+ *  vertices turn clockwise or away from their normals, SX_ERR_INVALID_ARG). */
 sx_shape sx_box_shape(sx_real half_width, sx_real half_height);
 /** A box with half-extents hw x hh, centred at `center` and turned by `angle`
  *  radians in the local frame (an oriented, offset box). Not checked, as
