@@ -147,6 +147,12 @@ static void hull_of_regular_polygon_plus_interior_points_is_the_polygon(void **s
         double r = 0.2 + 5.0 * sx_test_rng_unit(&rng), a0 = 6.3 * sx_test_rng_unit(&rng);
         double cx = -10.0 + 20.0 * sx_test_rng_unit(&rng),
                cy = -10.0 + 20.0 * sx_test_rng_unit(&rng);
+        if (cloud % 4 == 0) {
+            /* unit-size polygons near the largest promised coordinate */
+            r = 1.0 + sx_test_rng_unit(&rng);
+            cx = 0.9 * (double)SX_HUGE * (sx_test_rng_unit(&rng) < 0.5 ? -1.0 : 1.0);
+            cy = -0.9 * (double)SX_HUGE * sx_test_rng_unit(&rng);
+        }
         int i, j, n = 0;
         for (i = 0; i < k; ++i) {
             poly[i] = rotated(r, a0 + 2.0 * 3.14159265358979 * i / k, cx, cy);
@@ -296,6 +302,41 @@ static void hull_of_near_collinear_and_clustered_clouds_is_degenerate(void **sta
         }
         assert_int_equal(sx_compute_hull(pts, n, SX_WELD_TOLERANCE, &h), SX_ERR_DEGENERATE);
         assert_int_equal(h.count, 0);
+    }
+}
+
+static void hull_of_a_dense_nearly_straight_arc_is_pruned_not_refused(void **state) {
+    sx_test_rng rng = sx_test_rng_make(0x5eed0007u);
+    int trial;
+    (void)state;
+    for (trial = 0; trial < 40; ++trial) {
+        /* 250 points on an arc whose sagitta over the whole run is below
+         * (R = 1000: 0.5 mm) or above (R = 100, 300: 5 mm, 1.7 mm) the weld
+         * tolerance: far more raw hull vertices than the wrap's buffer */
+        double R = trial % 3 == 0 ? 1000.0 : (trial % 3 == 1 ? 100.0 : 300.0);
+        sx_vec2 pts[MAX_CLOUD];
+        sx_hull h;
+        sx_status st;
+        int i, n = 0;
+        for (i = 0; i < 250; ++i) {
+            double x = -1.0 + 2.0 * i / 249.0;
+            pts[n++] = sx_v2((sx_real)x, (sx_real)(sqrt(R * R - x * x) - R));
+        }
+        pts[n++] = sx_v2(SX_R(0.1), SX_R(-1.0));
+        shuffle(pts, n, &rng);
+        st = sx_compute_hull(pts, n, SX_WELD_TOLERANCE, &h);
+        if (R == 1000.0) {
+            assert_int_equal(st, SX_OK);
+            assert_int_equal(h.count, 3);
+        }
+        if (st == SX_OK) {
+            /* A vertex collinear within the tolerance is moved to its cap's
+             * apex rather than dropped when dropping it would leave points
+             * of the run more than the tolerance outside. */
+            assert_hull_properties(&h, pts, n, (double)SX_WELD_TOLERANCE);
+        } else {
+            assert_int_equal(st, SX_ERR_CAPACITY);
+        }
     }
 }
 
@@ -621,6 +662,7 @@ int main(void) {
         cmocka_unit_test(hull_of_points_on_a_circle_beyond_capacity_is_refused_not_truncated),
         cmocka_unit_test(hull_of_lattice_and_edge_points_keeps_only_the_corners),
         cmocka_unit_test(hull_of_near_collinear_and_clustered_clouds_is_degenerate),
+        cmocka_unit_test(hull_of_a_dense_nearly_straight_arc_is_pruned_not_refused),
         cmocka_unit_test(hull_starts_at_lowest_x_then_lowest_y_and_runs_ccw),
         cmocka_unit_test(hull_welds_duplicates_and_near_duplicates),
         cmocka_unit_test(hull_with_zero_tolerance_keeps_tiny_edges_but_welds_exact_duplicates),
