@@ -340,6 +340,21 @@ static void hull_of_a_dense_nearly_straight_arc_is_pruned_not_refused(void **sta
     }
 }
 
+static void hull_of_a_huge_exact_hull_is_refused_in_bounded_time(void **state) {
+    /* 20000 points on a circle: the exact hull (after welding) overflows the
+     * wrap's record long before the loop closes */
+    static sx_vec2 pts[20000];
+    sx_hull h;
+    int i;
+    (void)state;
+    for (i = 0; i < 20000; ++i)
+        pts[i] = rotated(1.0, 6.283185307179586 * i / 20000.0, 0.0, 0.0);
+    assert_int_equal(sx_compute_hull(pts, 20000, SX_WELD_TOLERANCE, &h), SX_ERR_CAPACITY);
+    assert_int_equal(h.count, 0);
+    /* its first tenth: a 36-degree arc of 2000 points, refused as well */
+    assert_int_equal(sx_compute_hull(pts, 2000, SX_WELD_TOLERANCE, &h), SX_ERR_CAPACITY);
+}
+
 static void hull_starts_at_lowest_x_then_lowest_y_and_runs_ccw(void **state) {
     sx_vec2 pts[5];
     sx_hull h;
@@ -663,6 +678,7 @@ int main(void) {
         cmocka_unit_test(hull_of_lattice_and_edge_points_keeps_only_the_corners),
         cmocka_unit_test(hull_of_near_collinear_and_clustered_clouds_is_degenerate),
         cmocka_unit_test(hull_of_a_dense_nearly_straight_arc_is_pruned_not_refused),
+        cmocka_unit_test(hull_of_a_huge_exact_hull_is_refused_in_bounded_time),
         cmocka_unit_test(hull_starts_at_lowest_x_then_lowest_y_and_runs_ccw),
         cmocka_unit_test(hull_welds_duplicates_and_near_duplicates),
         cmocka_unit_test(hull_with_zero_tolerance_keeps_tiny_edges_but_welds_exact_duplicates),
