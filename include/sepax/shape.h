@@ -190,8 +190,8 @@ sx_mass_data sx_shape_mass(const sx_shape *shape, sx_real density);
 sx_aabb sx_shape_aabb(const sx_shape *shape, sx_xform x);
 /** The extent of the shape along `axis` in its local frame: the support
  *  value max over the shape of dot(point, axis) (for a non-unit axis too:
- *  the radius counts |axis| times). NULL, an unknown type or a polygon count
- *  outside 1..SX_MAX_POLYGON_VERTICES gives 0. */
+ *  the radius counts |axis| times). NULL, an unknown type, a polygon count
+ *  outside 1..SX_MAX_POLYGON_VERTICES or NaN in the shape or axis gives 0. */
 sx_real sx_shape_support(const sx_shape *shape, sx_vec2 axis);
 
 #ifdef __cplusplus
