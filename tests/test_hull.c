@@ -15,6 +15,7 @@
 #include "test_support.h"
 
 #define MAX_CLOUD 256
+#define PI_D 3.14159265358979323846
 
 /* Coordinate rounding allowed in containment checks, relative to the cloud's
  * scale: a few ulps of sx_real. */
@@ -355,6 +356,62 @@ static void hull_of_a_huge_exact_hull_is_refused_in_bounded_time(void **state) {
     assert_int_equal(sx_compute_hull(pts, 2000, SX_WELD_TOLERANCE, &h), SX_ERR_CAPACITY);
 }
 
+static void hull_of_jittered_clusters_welds_each_cluster_to_one_vertex(void **state) {
+    sx_test_rng rng = sx_test_rng_make(0x5eed0008u);
+    int cloud;
+    (void)state;
+    for (cloud = 0; cloud < 500; ++cloud) {
+        sx_vec2 pts[MAX_CLOUD], centers[SX_MAX_POLYGON_VERTICES];
+        sx_hull h;
+        int k = 3 + (int)(sx_test_rng_next(&rng) % (uint64_t)(SX_MAX_POLYGON_VERTICES - 2));
+        double a0 = 6.3 * sx_test_rng_unit(&rng), jitter = 0.35 * (double)SX_WELD_TOLERANCE;
+        int i, j, n = 0;
+        for (i = 0; i < k; ++i)
+            centers[i] = rotated(1.0, a0 + 2.0 * PI_D * i / k, 2.0, 3.0);
+        for (i = 0; i < k; ++i) {
+            int m = 1 + (int)(sx_test_rng_next(&rng) % 20u);
+            for (j = 0; j < m; ++j) {
+                double dx = jitter * (2.0 * sx_test_rng_unit(&rng) - 1.0);
+                double dy = jitter * (2.0 * sx_test_rng_unit(&rng) - 1.0);
+                pts[n++] = j == 0 ? centers[i]
+                                  : sx_v2((sx_real)((double)centers[i].x + dx),
+                                          (sx_real)((double)centers[i].y + dy));
+            }
+        }
+        shuffle(pts, n, &rng);
+        assert_int_equal(sx_compute_hull(pts, n, SX_WELD_TOLERANCE, &h), SX_OK);
+        assert_int_equal(h.count, k);
+        assert_hull_properties(&h, pts, n, (double)SX_WELD_TOLERANCE);
+        /* one vertex per cluster */
+        for (i = 0; i < k; ++i) {
+            int hits = 0;
+            for (j = 0; j < k; ++j) {
+                hits += sx_distance(h.points[j], centers[i]) <= SX_R(2.0) * SX_WELD_TOLERANCE;
+            }
+            assert_int_equal(hits, 1);
+        }
+    }
+}
+
+static void
+hull_of_millimetre_hexagon_is_welded_by_default_and_kept_with_a_small_tolerance(void **state) {
+    sx_vec2 pts[SX_MAX_POLYGON_VERTICES];
+    sx_hull h;
+    int i;
+    (void)state;
+    for (i = 0; i < 6; ++i)
+        pts[i] = rotated(1.0e-3, 2.0 * PI_D * i / 6.0, 0.25, -0.5);
+    /* a hexagon of 1 mm radius: neighbouring corners are 1 mm apart, within
+     * the default 1.25 mm weld tolerance, so every other corner is welded
+     * away and a triangle remains, still holding every corner within it */
+    assert_int_equal(sx_compute_hull(pts, 6, SX_WELD_TOLERANCE, &h), SX_OK);
+    assert_int_equal(h.count, 3);
+    assert_hull_properties(&h, pts, 6, (double)SX_WELD_TOLERANCE);
+    assert_int_equal(sx_compute_hull(pts, 6, SX_R(1.0e-6), &h), SX_OK);
+    assert_int_equal(h.count, 6);
+    assert_hull_properties(&h, pts, 6, 1.0e-6);
+}
+
 static void hull_starts_at_lowest_x_then_lowest_y_and_runs_ccw(void **state) {
     sx_vec2 pts[5];
     sx_hull h;
@@ -679,6 +736,9 @@ int main(void) {
         cmocka_unit_test(hull_of_near_collinear_and_clustered_clouds_is_degenerate),
         cmocka_unit_test(hull_of_a_dense_nearly_straight_arc_is_pruned_not_refused),
         cmocka_unit_test(hull_of_a_huge_exact_hull_is_refused_in_bounded_time),
+        cmocka_unit_test(hull_of_jittered_clusters_welds_each_cluster_to_one_vertex),
+        cmocka_unit_test(
+            hull_of_millimetre_hexagon_is_welded_by_default_and_kept_with_a_small_tolerance),
         cmocka_unit_test(hull_starts_at_lowest_x_then_lowest_y_and_runs_ccw),
         cmocka_unit_test(hull_welds_duplicates_and_near_duplicates),
         cmocka_unit_test(hull_with_zero_tolerance_keeps_tiny_edges_but_welds_exact_duplicates),
