@@ -17,13 +17,10 @@
 #define MAX_CLOUD 256
 #define PI_D 3.14159265358979323846
 
-/* Coordinate rounding allowed in containment checks, relative to the cloud's
- * scale: a few ulps of sx_real. */
-#ifdef SX_DOUBLE
+/* Rounding allowed in the containment check, relative to the cloud's scale.
+ * The hull's points are input points and the check runs in double, so only
+ * the check's own rounding counts, whatever sx_real is. */
 #define REL_ROUND 1e-12
-#else
-#define REL_ROUND 1e-5
-#endif
 
 typedef struct dpoint {
     double x, y;
