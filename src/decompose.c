@@ -76,8 +76,8 @@ static bool segments_meet(sx_vec2 a, sx_vec2 b, sx_vec2 c, sx_vec2 d) {
 /* Welds consecutive near-duplicates and drops near-collinear points (and
  * zero-width spikes) until nothing changes; returns the points left. Each
  * removal can make a neighbour removable, hence the repeated passes. */
-static int clean_outline(sx_vec2 *pts, int m) {
-    const sx_wide tol = (sx_wide)SX_WELD_TOLERANCE;
+static int clean_outline(sx_vec2 *pts, int m, sx_real weld_tolerance) {
+    const sx_wide tol = (sx_wide)weld_tolerance;
     bool changed = true;
     while (changed && m >= 3) {
         int i = 0;
@@ -393,6 +393,13 @@ static void *align_up(void *p) {
 sx_status sx_decompose_polygon(const sx_vec2 *points, int count, void *scratch,
                                size_t scratch_bytes, sx_shape *parts, int part_capacity,
                                int *part_count, int *triangle_count) {
+    return sx_decompose_polygon_ex(points, count, SX_WELD_TOLERANCE, scratch, scratch_bytes, parts,
+                                   part_capacity, part_count, triangle_count);
+}
+
+sx_status sx_decompose_polygon_ex(const sx_vec2 *points, int count, sx_real weld_tolerance,
+                                  void *scratch, size_t scratch_bytes, sx_shape *parts,
+                                  int part_capacity, int *part_count, int *triangle_count) {
     decomp_work w;
     size_t need;
     int m, i, nt = 0, nd = 0, roots = 0;
@@ -402,6 +409,7 @@ sx_status sx_decompose_polygon(const sx_vec2 *points, int count, void *scratch,
     if (points == NULL || parts == NULL || part_count == NULL || count < 3) {
         return SX_ERR_INVALID_ARG;
     }
+    if (!sx_is_finite(weld_tolerance) || weld_tolerance < SX_R(0.0)) return SX_ERR_INVALID_ARG;
     if (scratch == NULL && scratch_bytes > 0) return SX_ERR_INVALID_ARG;
     need = sx_decompose_scratch_bytes(count);
     if (need == 0 || scratch == NULL || scratch_bytes < need) return SX_ERR_CAPACITY;
@@ -425,7 +433,7 @@ sx_status sx_decompose_polygon(const sx_vec2 *points, int count, void *scratch,
 
     for (i = 0; i < count; ++i)
         w.pts[i] = points[i];
-    m = clean_outline(w.pts, count);
+    m = clean_outline(w.pts, count, weld_tolerance);
     if (m < 3) return SX_ERR_DEGENERATE;
     if (!outline_is_simple(w.pts, m)) return SX_ERR_INVALID_ARG;
     {

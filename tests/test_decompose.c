@@ -273,6 +273,65 @@ static void collinear_and_duplicate_points_are_cleaned_first(void **state) {
     assert_near(sx_shape_area(&d.parts[0]) + sx_shape_area(&d.parts[1]), 3.0, 1e-5);
 }
 
+static void tiny_outline_needs_a_matching_weld_tolerance(void **state) {
+    /* The L at millimetre scale: its 1 mm edges are within the default weld
+     * tolerance, so corners are welded away; a micrometre tolerance keeps
+     * it. */
+    sx_vec2 p[6];
+    sx_shape parts[8];
+    unsigned char scratch[4096];
+    int i, n = make_l(p), count = 0, tris = 0;
+    (void)state;
+    for (i = 0; i < n; ++i)
+        p[i] = sx_scale(p[i], SX_R(0.001));
+    assert_true(sx_decompose_scratch_bytes(n) <= sizeof scratch);
+    if (sx_decompose_polygon(p, n, scratch, sizeof scratch, parts, 8, &count, &tris) == SX_OK) {
+        double sum = 0.0;
+        for (i = 0; i < count; ++i)
+            sum += (double)sx_shape_area(&parts[i]);
+        assert_true(fabs(sum - 3e-6) > 3e-7);
+    }
+    assert_int_equal(sx_decompose_polygon_ex(p, n, SX_R(1e-6), scratch, sizeof scratch, parts, 8,
+                                             &count, &tris),
+                     SX_OK);
+    assert_int_equal(count, 2);
+    assert_int_equal(tris, 4);
+    assert_near(sx_shape_area(&parts[0]) + sx_shape_area(&parts[1]), 3e-6, 1e-11);
+    assert_int_equal(sx_decompose_polygon_ex(p, n, SX_R(-1.0), scratch, sizeof scratch, parts, 8,
+                                             &count, &tris),
+                     SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_decompose_polygon_ex(p, n, (sx_real)NAN, scratch, sizeof scratch, parts, 8,
+                                             &count, &tris),
+                     SX_ERR_INVALID_ARG);
+}
+
+static void outline_far_from_origin_decomposes_like_at_origin(void **state) {
+    make_fn *makers[3];
+    int k;
+    (void)state;
+    makers[0] = make_u;
+    makers[1] = make_comb;
+    makers[2] = make_spiral;
+    for (k = 0; k < 3; ++k) {
+        sx_vec2 p[MAX_OUTLINE];
+        decomp near, far;
+        double sum = 0.0, area;
+        int n = makers[k](p), i;
+        run_decompose(p, n, &near);
+        for (i = 0; i < n; ++i)
+            p[i] = sx_add(p[i], sx_v2(SX_R(1000.0), SX_R(-1000.0)));
+        run_decompose(p, n, &far);
+        assert_int_equal(far.status, SX_OK);
+        assert_int_equal(far.part_count, near.part_count);
+        area = fabs(outline_area(p, n));
+        for (i = 0; i < far.part_count; ++i) {
+            assert_int_equal(sx_shape_validate(&far.parts[i]), SX_OK);
+            sum += (double)sx_shape_area(&far.parts[i]);
+        }
+        assert_near(sum, area, AREA_REL * area);
+    }
+}
+
 /* ---- random simple outlines ---------------------------------------------- */
 
 /* No vertex closer than 10 weld tolerances to the line through its
@@ -291,7 +350,7 @@ static bool well_conditioned(const sx_vec2 *p, int n) {
 
 static void random_star_shaped_outlines_decompose_exactly(void **state) {
     sx_test_rng rng = sx_test_rng_make(0x5eed01);
-    int trial, done = 0;
+    int trial, done = 0, parts = 0, tris = 0;
     (void)state;
     for (trial = 0; done < 40 && trial < 400; ++trial) {
         sx_vec2 p[MAX_OUTLINE];
@@ -320,9 +379,13 @@ static void random_star_shaped_outlines_decompose_exactly(void **state) {
         if (done % 2 == 1) reverse(p, n);
         run_decompose(p, n, &d);
         check_decomposition(p, n, &d, 100 + (uint64_t)trial);
+        parts += d.part_count;
+        tris += d.triangle_count;
         ++done;
     }
     assert_int_equal(done, 40);
+    printf("  random star-shaped: %d outlines, %d triangles -> %d parts\n", done, tris, parts);
+    assert_true(parts < tris);
 }
 
 static double dorient(sx_vec2 a, sx_vec2 b, sx_vec2 c) {
@@ -368,7 +431,7 @@ static bool random_walk(sx_test_rng *rng, sx_vec2 *p, int n) {
 
 static void random_walk_outlines_decompose_exactly(void **state) {
     sx_test_rng rng = sx_test_rng_make(0x5eed02);
-    int trial, done = 0;
+    int trial, done = 0, parts = 0, tris = 0;
     (void)state;
     for (trial = 0; done < 30 && trial < 3000; ++trial) {
         sx_vec2 p[MAX_OUTLINE];
@@ -378,9 +441,13 @@ static void random_walk_outlines_decompose_exactly(void **state) {
         run_decompose(p, n, &d);
         check_decomposition(p, n, &d, 200 + (uint64_t)trial);
         assert_int_equal(d.triangle_count, n - 2);
+        parts += d.part_count;
+        tris += d.triangle_count;
         ++done;
     }
     assert_int_equal(done, 30);
+    printf("  random walks: %d outlines, %d triangles -> %d parts\n", done, tris, parts);
+    assert_true(parts < tris);
 }
 
 /* ---- bad outlines -------------------------------------------------------- */
@@ -544,6 +611,8 @@ int main(void) {
         cmocka_unit_test(spiral_merges_well_below_triangle_count),
         cmocka_unit_test(convex_outline_is_one_part),
         cmocka_unit_test(collinear_and_duplicate_points_are_cleaned_first),
+        cmocka_unit_test(tiny_outline_needs_a_matching_weld_tolerance),
+        cmocka_unit_test(outline_far_from_origin_decomposes_like_at_origin),
         cmocka_unit_test(random_star_shaped_outlines_decompose_exactly),
         cmocka_unit_test(random_walk_outlines_decompose_exactly),
         cmocka_unit_test(bow_tie_is_refused_as_invalid_argument),

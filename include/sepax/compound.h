@@ -67,6 +67,14 @@ sx_status sx_decompose_polygon(const sx_vec2 *points, int count, void *scratch,
                                size_t scratch_bytes, sx_shape *parts, int part_capacity,
                                int *part_count, int *triangle_count);
 
+/** As sx_decompose_polygon with an explicit weld tolerance for the cleaning
+ *  (for outlines far smaller or larger than the default length scale; 0
+ *  welds only exact duplicates and drops only exactly collinear points). A
+ *  negative or non-finite tolerance is SX_ERR_INVALID_ARG. */
+sx_status sx_decompose_polygon_ex(const sx_vec2 *points, int count, sx_real weld_tolerance,
+                                  void *scratch, size_t scratch_bytes, sx_shape *parts,
+                                  int part_capacity, int *part_count, int *triangle_count);
+
 /** True if p lies inside the closed outline points[0..count-1] (any winding,
  *  concave allowed) by the nonzero winding rule, evaluated on the raw
  *  outline without decomposing it (crossing signs in a wider precision).
