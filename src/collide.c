@@ -192,18 +192,6 @@ bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xfor
     return hit;
 }
 
-int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
-                       sx_real margin, sx_manifold *out) {
-    sx_core ca, cb;
-    sx_xform rel;
-    if (!relative_xform(xa, xb, &rel) || !sx_core_from_circle(a, sx_xform_identity(), &ca) ||
-        !sx_core_from_circle(b, rel, &cb)) {
-        clear_manifold(out);
-        return 0;
-    }
-    return finish_collide(&ca, &cb, xa, margin, out);
-}
-
 /* ---- the other pairs: cores in A's frame -------------------------------- */
 
 typedef bool sx_core_builder(const void *shape, sx_xform x, sx_core *out);
@@ -274,6 +262,40 @@ static bool pair_mtv_sym(sx_core_builder *f, const void *a, sx_xform xa, const v
     return hit;
 }
 
+/* A pair at margin 0 whose manifold found no point although the canonical
+ * order says it touches (the two orders round differently by a few ulps) is
+ * asked again with this margin and its depths clamped to 0: 1 % of the slop,
+ * far above any rounding and far below anything physical. */
+#define SX_TOUCH_RESCUE_MARGIN (SX_R(0.01) * SX_LINEAR_SLOP)
+
+/* Same-type manifolds follow the caller's order (stable feature ids), but at
+ * margin 0 whether the pair touches at all is the canonical order's answer
+ * (`overlap`), so sx_collide reports points exactly when sx_overlap is
+ * true. Speculative calls (margin > 0) need no such agreement. */
+static int collide_gated(sx_core_builder *f, const void *a, sx_xform xa, const void *b,
+                         sx_xform xb, sx_real margin, bool overlap, sx_manifold *out) {
+    sx_manifold m;
+    int count, i;
+    if (sx_is_finite(margin) && margin > SX_R(0.0)) return pair_collide(f, a, xa, f, b, xb, margin, out);
+    if (!overlap) {
+        clear_manifold(out);
+        return 0;
+    }
+    count = pair_collide(f, a, xa, f, b, xb, SX_R(0.0), &m);
+    if (count == 0) {
+        count = pair_collide(f, a, xa, f, b, xb, SX_TOUCH_RESCUE_MARGIN, &m);
+        for (i = 0; i < count; ++i) m.points[i].depth = sx_maxr(m.points[i].depth, SX_R(0.0));
+    }
+    if (out) *out = m;
+    return count;
+}
+
+int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                       sx_real margin, sx_manifold *out) {
+    bool overlap = !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_circles(a, xa, b, xb);
+    return collide_gated(build_circle, a, xa, b, xb, margin, overlap, out);
+}
+
 /* ---- segment - circle --------------------------------------------------- */
 
 bool sx_overlap_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
@@ -310,7 +332,8 @@ bool sx_mtv_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_x
 }
 int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
-    return pair_collide(build_segment, a, xa, build_segment, b, xb, margin, out);
+    bool overlap = !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_segments(a, xa, b, xb);
+    return collide_gated(build_segment, a, xa, b, xb, margin, overlap, out);
 }
 
 /* ---- capsule - circle / segment / capsule ------------------------------- */
@@ -366,7 +389,8 @@ bool sx_mtv_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_x
 }
 int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
-    return pair_collide(build_capsule, a, xa, build_capsule, b, xb, margin, out);
+    bool overlap = !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_capsules(a, xa, b, xb);
+    return collide_gated(build_capsule, a, xa, b, xb, margin, overlap, out);
 }
 
 /* ---- polygon - circle / segment / capsule ------------------------------- */
@@ -530,7 +554,8 @@ bool sx_mtv_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_x
 }
 int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
-    return pair_collide(build_polygon, a, xa, build_polygon, b, xb, margin, out);
+    bool overlap = !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_polygons(a, xa, b, xb);
+    return collide_gated(build_polygon, a, xa, b, xb, margin, overlap, out);
 }
 
 /* ---- the dispatch table ------------------------------------------------- */

@@ -422,6 +422,24 @@ static int clip_face(const sx_core *ref, int i, const sx_core *inc, sx_real marg
         scale = sx_maxr(scale, max_abs_coord(w[j], w[j]));
         if (depth[j] > depth[deepest]) deepest = j;
     }
+    if (nw == 2) {
+        /* The deepest incident vertex can lie outside the reference face's
+         * slab (a corner reaching past the end of a short face, a capsule
+         * end beyond the other's end): clipping then slides it along a steep
+         * incident face and loses depth. Keep that vertex unclipped so the
+         * deepest point still carries the exact penetration. */
+        for (j = 0; j < 2; ++j) {
+            sx_vec2 o = inc->v[k[j]];
+            sx_real so = sx_dot(nref, sx_sub(o, v1));
+            sx_real od = ref->radius + inc->radius - so;
+            if (od > depth[deepest] + SX_FACE_CONTACT_TOLERANCE) {
+                w[j] = o;
+                sc[j] = so;
+                depth[j] = od;
+                deepest = j;
+            }
+        }
+    }
     scale = sx_maxr(scale, ref->radius + inc->radius);
     slack = SX_DIRECTION_EPSILON * scale;
     for (m = 0; m < 2; ++m) {
