@@ -83,10 +83,22 @@ static void mirror_manifold(sx_manifold *m) {
     for (i = 0; i < m->count; ++i) m->points[i].id ^= (uint32_t)1 << 16;
 }
 
-/* Lexicographic byte order of two runs of reals: arbitrary but total and
- * deterministic, which is all the canonical order needs. */
+/* Lexicographic order of the bit patterns of two runs of reals: arbitrary
+ * but total and deterministic (NaN and -0 included), which is all the
+ * canonical order needs. */
 static int order_reals(const sx_real *a, const sx_real *b, int n) {
-    return memcmp(a, b, (size_t)n * sizeof(sx_real));
+    int i;
+    for (i = 0; i < n; ++i) {
+#ifdef SX_DOUBLE
+        uint64_t ba, bb;
+#else
+        uint32_t ba, bb;
+#endif
+        memcpy(&ba, &a[i], sizeof(ba));
+        memcpy(&bb, &b[i], sizeof(bb));
+        if (ba != bb) return ba < bb ? -1 : 1;
+    }
+    return 0;
 }
 
 static int order_xforms(sx_xform xa, sx_xform xb) {
@@ -194,18 +206,18 @@ bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xfor
 
 /* ---- the other pairs: cores in A's frame -------------------------------- */
 
-typedef bool sx_core_builder(const void *shape, sx_xform x, sx_core *out);
+typedef bool sx_core_builder(const void *shape, const sx_xform *x, sx_core *out);
 
-static bool build_circle(const void *s, sx_xform x, sx_core *out) {
+static bool build_circle(const void *s, const sx_xform *x, sx_core *out) {
     return sx_core_from_circle((const sx_circle *)s, x, out);
 }
-static bool build_segment(const void *s, sx_xform x, sx_core *out) {
+static bool build_segment(const void *s, const sx_xform *x, sx_core *out) {
     return sx_core_from_segment((const sx_segment *)s, x, out);
 }
-static bool build_capsule(const void *s, sx_xform x, sx_core *out) {
+static bool build_capsule(const void *s, const sx_xform *x, sx_core *out) {
     return sx_core_from_capsule((const sx_capsule *)s, x, out);
 }
-static bool build_polygon(const void *s, sx_xform x, sx_core *out) {
+static bool build_polygon(const void *s, const sx_xform *x, sx_core *out) {
     return sx_core_from_polygon((const sx_polygon *)s, x, out);
 }
 
@@ -213,7 +225,7 @@ static bool build_polygon(const void *s, sx_xform x, sx_core *out) {
 static bool build_pair(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
                        const void *b, sx_xform xb, sx_core *ca, sx_core *cb) {
     sx_xform rel;
-    return relative_xform(xa, xb, &rel) && fa(a, sx_xform_identity(), ca) && fb(b, rel, cb);
+    return relative_xform(xa, xb, &rel) && fa(a, NULL, ca) && fb(b, &rel, cb);
 }
 
 static bool pair_overlap(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
@@ -481,9 +493,10 @@ static bool box_fast_path(const sx_polygon *a, sx_xform xa, const sx_polygon *b,
     sx_vec2 lo, hi;
     sx_real best = -SX_REAL_MAX;
     int i, face = 0;
+    rel.q = sx_rot_inv_mul(xa.q, xb.q);
+    if (!(sx_absr(rel.q.s) <= SX_REAL_EPSILON || sx_absr(rel.q.c) <= SX_REAL_EPSILON)) return false;
     if (a == NULL || b == NULL || !is_axis_box(a) || !is_axis_box(b)) return false;
     if (!relative_xform(xa, xb, &rel)) return false;
-    if (!(sx_absr(rel.q.s) <= SX_REAL_EPSILON || sx_absr(rel.q.c) <= SX_REAL_EPSILON)) return false;
     lo = sx_v2(SX_REAL_MAX, SX_REAL_MAX);
     hi = sx_v2(-SX_REAL_MAX, -SX_REAL_MAX);
     for (i = 0; i < 4; ++i) {
