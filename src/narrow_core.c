@@ -437,13 +437,14 @@ static int clip_face(const sx_core *ref, int i, const sx_core *inc, sx_real marg
             w[0] = inc->v[k[0]];
         }
     }
-    scale = max_abs_coord(v1, v2);
+    scale = sx_maxr(max_abs_coord(v1, v2), ref->radius + inc->radius);
     for (j = 0; j < nw; ++j) {
         sc[j] = sx_dot(nref, sx_sub(w[j], v1));
         depth[j] = ref->radius + inc->radius - sc[j];
         scale = sx_maxr(scale, max_abs_coord(w[j], w[j]));
         if (depth[j] > depth[deepest]) deepest = j;
     }
+    slack = SX_DIRECTION_EPSILON * scale;
     if (nw == 2) {
         /* The deepest incident vertex can lie outside the reference face's
          * slab (a corner reaching past the end of a short face, a capsule
@@ -454,7 +455,7 @@ static int clip_face(const sx_core *ref, int i, const sx_core *inc, sx_real marg
             sx_vec2 o = inc->v[k[j]];
             sx_real so = sx_dot(nref, sx_sub(o, v1));
             sx_real od = ref->radius + inc->radius - so;
-            if (od > depth[deepest] + SX_FACE_CONTACT_TOLERANCE) {
+            if (od > depth[deepest] + slack) {
                 w[j] = o;
                 sc[j] = so;
                 depth[j] = od;
@@ -462,8 +463,6 @@ static int clip_face(const sx_core *ref, int i, const sx_core *inc, sx_real marg
             }
         }
     }
-    scale = sx_maxr(scale, ref->radius + inc->radius);
-    slack = SX_DIRECTION_EPSILON * scale;
     for (m = 0; m < 2; ++m) {
         for (j = 0; j < nw; ++j) {
             bool keep = m == 0 ? depth[j] >= -margin - slack : j == deepest;

@@ -586,6 +586,87 @@ static void every_ordered_pair_is_consistent(void **state) {
     }
 }
 
+/* A random shape of the given type, unit-sized, seeded. Polygons are convex
+ * hulls written out directly: points on an ellipse at well-spread angles. */
+static sx_shape random_shape(sx_test_rng *rng, int type) {
+    switch (type) {
+    case SX_SHAPE_CIRCLE:
+        return circle((double)sx_test_rng_range(rng, -0.3, 0.3), (double)sx_test_rng_range(rng, -0.3, 0.3),
+                      sx_test_rng_unit(rng) < 0.1 ? 0.0 : (double)sx_test_rng_range(rng, 0.05, 0.8));
+    case SX_SHAPE_SEGMENT:
+        return segment((double)sx_test_rng_range(rng, -1, 1), (double)sx_test_rng_range(rng, -1, 1),
+                       (double)sx_test_rng_range(rng, -1, 1), (double)sx_test_rng_range(rng, -1, 1));
+    case SX_SHAPE_CAPSULE:
+        return capsule((double)sx_test_rng_range(rng, -1, 1), (double)sx_test_rng_range(rng, -1, 1),
+                       (double)sx_test_rng_range(rng, -1, 1), (double)sx_test_rng_range(rng, -1, 1),
+                       (double)sx_test_rng_range(rng, 0, 0.5));
+    default: {
+        double xy[16], rx = (double)sx_test_rng_range(rng, 0.3, 1), ry = (double)sx_test_rng_range(rng, 0.3, 1);
+        double radius = sx_test_rng_unit(rng) < 0.3 ? (double)sx_test_rng_range(rng, 0, 0.2) : 0.0;
+        double start = (double)sx_test_rng_range(rng, 0, 6.28318);
+        int n = 3 + (int)(sx_test_rng_unit(rng) * 6), i;
+        if (sx_test_rng_unit(rng) < 0.3) return box(rx, ry);
+        for (i = 0; i < n; ++i) {
+            /* Evenly spread angles, jittered by at most a third of a step:
+             * gaps stay between 1/3 and 5/3 of 2 pi / n, so the hull is
+             * strictly convex. */
+            double step = 6.283185307179586 / n;
+            double t = start + step * (i + (double)sx_test_rng_range(rng, -0.33, 0.33));
+            xy[2 * i] = rx * cos(t);
+            xy[2 * i + 1] = ry * sin(t);
+        }
+        return hull_shape(xy, n, radius);
+    }
+    }
+}
+
+/* Seeded random pairs (including pairs moved to exactly touch by their own
+ * MTV): overlap agrees with sx_mtv and with the manifold count, the swapped
+ * MTV is the exact negation, the deepest point carries the MTV length, and
+ * moving A by the MTV separates the pair. */
+static void random_pairs_are_self_consistent(void **state) {
+    sx_test_rng rng = sx_test_rng_make(20261122);
+    int it;
+    (void)state;
+    for (it = 0; it < 3000; ++it) {
+        int ta = (int)(sx_test_rng_unit(&rng) * 4), tb = (int)(sx_test_rng_unit(&rng) * 4);
+        sx_shape a = random_shape(&rng, ta), b = random_shape(&rng, tb);
+        sx_xform xa = X((double)sx_test_rng_range(&rng, -1, 1), (double)sx_test_rng_range(&rng, -1, 1),
+                        (double)sx_test_rng_range(&rng, -4, 4));
+        sx_xform xb = X((double)sx_test_rng_range(&rng, -1, 1), (double)sx_test_rng_range(&rng, -1, 1),
+                        (double)sx_test_rng_range(&rng, -4, 4));
+        sx_vec2 m1, m2;
+        sx_manifold c;
+        bool hit = sx_mtv(&a, xa, &b, xb, &m1);
+        int pass;
+        for (pass = 0; pass < 2; ++pass) {
+            int n;
+            hit = sx_mtv(&a, xa, &b, xb, &m1);
+            assert_int_equal(sx_overlap(&a, xa, &b, xb), hit);
+            assert_int_equal(sx_overlap(&b, xb, &a, xa), hit);
+            assert_int_equal(sx_mtv(&b, xb, &a, xa, &m2), hit);
+            assert_true(m2.x == -m1.x && m2.y == -m1.y);
+            n = sx_collide(&a, xa, &b, xb, &c);
+            assert_int_equal(n > 0, hit);
+            if (hit) {
+                double len = (double)sx_length(m1);
+                double tol = 1e3 * (double)SX_REAL_EPSILON;
+                assert_true(deepest(&c) >= len - tol && deepest(&c) <= len + tol + HYSTERESIS);
+                if (len > tol) {
+                    sx_xform moved = xa;
+                    moved.p = sx_add(xa.p, sx_add(m1, sx_scale(m1, (sx_real)(tol / len))));
+                    assert_false(sx_overlap(&a, moved, &b, xb));
+                }
+                /* Second pass: A moved by exactly its MTV (touching up to
+                 * rounding), where the orders are most likely to disagree. */
+                xa.p = sx_add(xa.p, m1);
+            } else {
+                break;
+            }
+        }
+    }
+}
+
 /* ---- precision, degenerate and hostile input ---------------------------- */
 
 static void far_from_the_origin_gives_the_same_answers(void **state) {
@@ -749,6 +830,7 @@ int main(void) {
         cmocka_unit_test(polygon_with_a_tiny_edge),
         cmocka_unit_test(pair_functions_agree_with_the_dispatch_table),
         cmocka_unit_test(every_ordered_pair_is_consistent),
+        cmocka_unit_test(random_pairs_are_self_consistent),
         cmocka_unit_test(far_from_the_origin_gives_the_same_answers),
         cmocka_unit_test(non_finite_input_answers_no_contact),
         cmocka_unit_test(null_and_unknown_types_answer_no_contact),
