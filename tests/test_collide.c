@@ -523,6 +523,53 @@ static void polygon_with_a_tiny_edge(void **state) {
     check_pair(&a, I(), &b, X(1.6, 1.6, 0), false, V(0, 0), TOL);
 }
 
+static void identical_shapes_of_every_type_overlap_fully(void **state) {
+    sx_shape c = circle(0, 0, 0.5), k = capsule(-1, 0, 1, 0, 0.25), s = segment(-1, 0, 1, 0);
+    sx_vec2 m1, m2;
+    sx_manifold m;
+    (void)state;
+    assert_true(sx_mtv(&c, X(2, 1, 0.5), &c, X(2, 1, 0.5), &m1));
+    assert_near(sx_length(m1), 1.0, TOL);
+    assert_int_equal(sx_collide(&c, X(2, 1, 0.5), &c, X(2, 1, 0.5), &m), 1);
+    assert_near(m.points[0].depth, 1.0, TOL);
+    /* A capsule on itself: the cheapest push is across, 2 radii. */
+    assert_true(sx_mtv(&k, X(2, 1, 0.5), &k, X(2, 1, 0.5), &m1));
+    assert_true(sx_mtv(&k, X(2, 1, 0.5), &k, X(2, 1, 0.5), &m2));
+    assert_true(m1.x == m2.x && m1.y == m2.y);
+    assert_near(sx_length(m1), 0.5, 1e-4);
+    assert_int_equal(sx_collide(&k, X(2, 1, 0.5), &k, X(2, 1, 0.5), &m), 2);
+    assert_near(deepest(&m), 0.5, 1e-4);
+    /* A segment on itself: zero area, touching. */
+    assert_true(sx_mtv(&s, X(2, 1, 0.5), &s, X(2, 1, 0.5), &m1));
+    assert_near(sx_length(m1), 0.0, 1e-4);
+    assert_true(sx_collide(&s, X(2, 1, 0.5), &s, X(2, 1, 0.5), &m) >= 1);
+}
+
+static void one_shape_inside_another(void **state) {
+    sx_shape big = box(2, 2), small_box = box(0.25, 0.25), k = capsule(-0.5, 0, 0.5, 0, 0.25);
+    sx_shape fat = capsule(-1, 0, 1, 0, 1.5), dot = circle(0, 0, 0.1);
+    (void)state;
+    /* Capsule inside a box, 0.5 below the top: out through the top face. */
+    check_pair(&big, I(), &k, X(0.2, 1.25, 0), true, V(0, -1.0), TOL);
+    /* Box inside a fat capsule: out through the capsule's side (1.5 + 0.25
+     * from the core, box centre 0.3 above the core line). */
+    check_pair(&fat, I(), &small_box, X(0.1, 0.3, 0), true, V(0, -1.45), TOL);
+    /* Circle inside a capsule's cap region. */
+    check_pair(&fat, I(), &dot, X(1.5, 0, 0), true, V(-1.1, 0), TOL);
+}
+
+static void capsule_end_beyond_the_other_end_keeps_its_full_depth(void **state) {
+    sx_shape a = capsule(-1, 0, 1, 0, 0.5), b = capsule(0, 0, 0.45, 0.95, 0.1);
+    double dx = 0.05, dy = 0.55, d = sqrt(dx * dx + dy * dy), depth = 0.6 - d;
+    sx_manifold m;
+    (void)state;
+    /* B's lower end (1.05, 0.55) sits just past A's end (1, 0): the contact
+     * is cap to cap along the line between the two end points. */
+    check_pair(&a, I(), &b, X(1.05, 0.55, 0), true, V(-depth * dx / d, -depth * dy / d), TOL);
+    assert_true(sx_collide(&a, I(), &b, X(1.05, 0.55, 0), &m) >= 1);
+    assert_near(deepest(&m), depth, TOL);
+}
+
 /* ---- every pair: both orders through the table and the pair functions --- */
 
 static void pair_functions_agree_with_the_dispatch_table(void **state) {
@@ -828,6 +875,9 @@ int main(void) {
         cmocka_unit_test(triangles_from_hand_written_hulls),
         cmocka_unit_test(rounded_boxes_face_and_corner),
         cmocka_unit_test(polygon_with_a_tiny_edge),
+        cmocka_unit_test(identical_shapes_of_every_type_overlap_fully),
+        cmocka_unit_test(one_shape_inside_another),
+        cmocka_unit_test(capsule_end_beyond_the_other_end_keeps_its_full_depth),
         cmocka_unit_test(pair_functions_agree_with_the_dispatch_table),
         cmocka_unit_test(every_ordered_pair_is_consistent),
         cmocka_unit_test(random_pairs_are_self_consistent),
