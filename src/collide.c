@@ -80,7 +80,8 @@ static void clear_manifold(sx_manifold *out) {
 static void mirror_manifold(sx_manifold *m) {
     int i;
     m->normal = sx_neg(m->normal);
-    for (i = 0; i < m->count; ++i) m->points[i].id ^= (uint32_t)1 << 16;
+    for (i = 0; i < m->count; ++i)
+        m->points[i].id ^= (uint32_t)1 << 16;
 }
 
 /* Lexicographic order of the bit patterns of two runs of reals: arbitrary
@@ -135,7 +136,8 @@ static int order_vecs(const sx_vec2 *a, const sx_vec2 *b, int n) {
  * origin) plus the rotated local centres, and the test is on squared
  * distance. */
 static sx_vec2 circle_offset(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
-    return sx_sub(sx_add(sx_sub(xb.p, xa.p), sx_rotate(xb.q, b->center)), sx_rotate(xa.q, a->center));
+    return sx_sub(sx_add(sx_sub(xb.p, xa.p), sx_rotate(xb.q, b->center)),
+                  sx_rotate(xa.q, a->center));
 }
 
 static bool circles_valid(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
@@ -188,7 +190,8 @@ bool sx_overlap_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_
     return overlap_circles_ordered(a, xa, b, xb);
 }
 
-bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb, sx_vec2 *mtv) {
+bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                    sx_vec2 *mtv) {
     sx_vec2 v = sx_v2_zero();
     bool hit = false;
     if (circles_valid(a, xa, b, xb)) {
@@ -260,8 +263,8 @@ static bool pair_overlap_sym(sx_core_builder *f, const void *a, sx_xform xa, con
     return pair_overlap(f, a, xa, f, b, xb);
 }
 
-static bool pair_mtv_sym(sx_core_builder *f, const void *a, sx_xform xa, const void *b,
-                         sx_xform xb, int order, sx_vec2 *mtv) {
+static bool pair_mtv_sym(sx_core_builder *f, const void *a, sx_xform xa, const void *b, sx_xform xb,
+                         int order, sx_vec2 *mtv) {
     sx_vec2 v;
     bool hit;
     if (order > 0) {
@@ -284,11 +287,12 @@ static bool pair_mtv_sym(sx_core_builder *f, const void *a, sx_xform xa, const v
  * margin 0 whether the pair touches at all is the canonical order's answer
  * (`overlap`), so sx_collide reports points exactly when sx_overlap is
  * true. Speculative calls (margin > 0) need no such agreement. */
-static int collide_gated(sx_core_builder *f, const void *a, sx_xform xa, const void *b,
-                         sx_xform xb, sx_real margin, bool overlap, sx_manifold *out) {
+static int collide_gated(sx_core_builder *f, const void *a, sx_xform xa, const void *b, sx_xform xb,
+                         sx_real margin, bool overlap, sx_manifold *out) {
     sx_manifold m;
     int count, i;
-    if (sx_is_finite(margin) && margin > SX_R(0.0)) return pair_collide(f, a, xa, f, b, xb, margin, out);
+    if (sx_is_finite(margin) && margin > SX_R(0.0))
+        return pair_collide(f, a, xa, f, b, xb, margin, out);
     if (!overlap) {
         clear_manifold(out);
         return 0;
@@ -296,7 +300,8 @@ static int collide_gated(sx_core_builder *f, const void *a, sx_xform xa, const v
     count = pair_collide(f, a, xa, f, b, xb, SX_R(0.0), &m);
     if (count == 0) {
         count = pair_collide(f, a, xa, f, b, xb, SX_TOUCH_RESCUE_MARGIN, &m);
-        for (i = 0; i < count; ++i) m.points[i].depth = sx_maxr(m.points[i].depth, SX_R(0.0));
+        for (i = 0; i < count; ++i)
+            m.points[i].depth = sx_maxr(m.points[i].depth, SX_R(0.0));
     }
     if (out) *out = m;
     return count;
@@ -304,7 +309,8 @@ static int collide_gated(sx_core_builder *f, const void *a, sx_xform xa, const v
 
 int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                        sx_real margin, sx_manifold *out) {
-    bool overlap = !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_circles(a, xa, b, xb);
+    bool overlap =
+        !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_circles(a, xa, b, xb);
     return collide_gated(build_circle, a, xa, b, xb, margin, overlap, out);
 }
 
@@ -344,7 +350,8 @@ bool sx_mtv_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_x
 }
 int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
-    bool overlap = !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_segments(a, xa, b, xb);
+    bool overlap =
+        !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_segments(a, xa, b, xb);
     return collide_gated(build_segment, a, xa, b, xb, margin, overlap, out);
 }
 
@@ -401,7 +408,8 @@ bool sx_mtv_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_x
 }
 int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
-    bool overlap = !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_capsules(a, xa, b, xb);
+    bool overlap =
+        !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_capsules(a, xa, b, xb);
     return collide_gated(build_capsule, a, xa, b, xb, margin, overlap, out);
 }
 
@@ -540,8 +548,8 @@ static bool overlap_polygons_ordered(const sx_polygon *a, sx_xform xa, const sx_
     return pair_overlap(build_polygon, a, xa, build_polygon, b, xb);
 }
 
-static bool mtv_polygons_ordered(const sx_polygon *a, sx_xform xa, const sx_polygon *b,
-                                 sx_xform xb, sx_vec2 *mtv) {
+static bool mtv_polygons_ordered(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
+                                 sx_vec2 *mtv) {
     bool hit;
     sx_vec2 local;
     if (box_fast_path(a, xa, b, xb, &hit, &local)) return finish_mtv(hit, local, xa, mtv);
@@ -567,7 +575,8 @@ bool sx_mtv_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_x
 }
 int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
-    bool overlap = !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_polygons(a, xa, b, xb);
+    bool overlap =
+        !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_polygons(a, xa, b, xb);
     return collide_gated(build_polygon, a, xa, b, xb, margin, overlap, out);
 }
 

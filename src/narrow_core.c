@@ -49,7 +49,8 @@ static bool core_radius_ok(sx_real r) { return sx_is_finite(r) && r >= SX_R(0.0)
 static bool all_finite(const sx_vec2 *v, int n) {
     sx_real acc = SX_R(0.0);
     int i;
-    for (i = 0; i < n; ++i) acc += (v[i].x - v[i].x) + (v[i].y - v[i].y);
+    for (i = 0; i < n; ++i)
+        acc += (v[i].x - v[i].x) + (v[i].y - v[i].y);
     return acc == SX_R(0.0);
 }
 
@@ -66,7 +67,8 @@ bool sx_core_from_circle(const sx_circle *c, const sx_xform *x, sx_core *out) {
 /* Builds the 2-point core a-b (or a 1-point core when a-b has no direction).
  * The normal is taken in the shape's frame and rotated, like polygon normals,
  * so it does not depend on the translation. */
-static bool core_set_segment(sx_vec2 a, sx_vec2 b, sx_real radius, const sx_xform *x, sx_core *out) {
+static bool core_set_segment(sx_vec2 a, sx_vec2 b, sx_real radius, const sx_xform *x,
+                             sx_core *out) {
     sx_real len;
     sx_vec2 t;
     if (!sx_vec2_is_finite(a) || !sx_vec2_is_finite(b)) return false;
@@ -306,10 +308,12 @@ static void closest_features(const sx_core *a, const sx_core *b, sx_closest *out
     out->pb = b->v[0];
     out->normal = sx_v2_zero();
     for (i = 0; i < ea; ++i) {
-        for (j = 0; j < b->count; ++j) offer_edge(a, i, b->v[j], j, true, out);
+        for (j = 0; j < b->count; ++j)
+            offer_edge(a, i, b->v[j], j, true, out);
     }
     for (i = 0; i < eb; ++i) {
-        for (j = 0; j < a->count; ++j) offer_edge(b, i, a->v[j], j, false, out);
+        for (j = 0; j < a->count; ++j)
+            offer_edge(b, i, a->v[j], j, false, out);
     }
     if (ea == 0 && eb == 0) {
         out->dist_sq = sx_distance_sq(a->v[0], b->v[0]);
@@ -467,7 +471,8 @@ static int clip_face(const sx_core *ref, int i, const sx_core *inc, sx_real marg
         for (j = 0; j < nw; ++j) {
             bool keep = m == 0 ? depth[j] >= -margin - slack : j == deepest;
             if (!keep) continue;
-            out[count].point = sx_mul_add(w[j], SX_R(0.5) * (ref->radius - inc->radius - sc[j]), nref);
+            out[count].point =
+                sx_mul_add(w[j], SX_R(0.5) * (ref->radius - inc->radius - sc[j]), nref);
             out[count].depth = sx_maxr(depth[j], -margin);
             out[count].id = SX_FEATURE_ID(i, k[j], flip);
             ++count;
@@ -508,8 +513,7 @@ int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_mani
             return 1;
         }
     }
-    if (sat.face_b >= 0 &&
-        (sat.face_a < 0 || sat.sep_b > sat.sep_a + SX_REFERENCE_HYSTERESIS)) {
+    if (sat.face_b >= 0 && (sat.face_a < 0 || sat.sep_b > sat.sep_a + SX_REFERENCE_HYSTERESIS)) {
         out->count = clip_face(b, sat.face_b, a, margin, true, out->points);
         out->normal = sx_neg(b->n[sat.face_b]);
     } else {

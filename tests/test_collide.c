@@ -28,7 +28,9 @@ static sx_xform X(double x, double y, double angle) {
 }
 static sx_xform I(void) { return sx_xform_identity(); }
 
-static sx_shape circle(double x, double y, double r) { return sx_circle_shape(V(x, y), (sx_real)r); }
+static sx_shape circle(double x, double y, double r) {
+    return sx_circle_shape(V(x, y), (sx_real)r);
+}
 static sx_shape segment(double ax, double ay, double bx, double by) {
     return sx_segment_shape(V(ax, ay), V(bx, by));
 }
@@ -41,7 +43,8 @@ static sx_shape hull_shape(const double *xy, int n, double radius) {
     sx_shape s;
     int i;
     h.count = n;
-    for (i = 0; i < n; ++i) h.points[i] = V(xy[2 * i], xy[2 * i + 1]);
+    for (i = 0; i < n; ++i)
+        h.points[i] = V(xy[2 * i], xy[2 * i + 1]);
     assert_int_equal(sx_polygon_from_hull(&h, (sx_real)radius, &s), SX_OK);
     return s;
 }
@@ -71,8 +74,8 @@ static double deepest(const sx_manifold *m) {
  * points: overlap, MTV (value, and exact negation when swapped), and the
  * manifold (count, unit normal opposite to the MTV, deepest depth equal to
  * the MTV length, depths >= 0, normals opposite when swapped). */
-static void check_pair(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                       bool overlap, sx_vec2 mtv, double tol) {
+static void check_pair(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, bool overlap,
+                       sx_vec2 mtv, double tol) {
     sx_vec2 m1, m2;
     sx_manifold c1, c2;
     int n1, n2, i;
@@ -115,7 +118,8 @@ static void check_pair(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xfo
         assert_true(c1.points[i].depth >= SX_R(0.0));
         assert_true(sx_vec2_is_finite(c1.points[i].point));
     }
-    for (i = 0; i < n2; ++i) assert_true(c2.points[i].depth >= SX_R(0.0));
+    for (i = 0; i < n2; ++i)
+        assert_true(c2.points[i].depth >= SX_R(0.0));
 }
 
 /* Asserts the manifold holds exactly the given points (either order). */
@@ -579,8 +583,10 @@ static void pair_functions_agree_with_the_dispatch_table(void **state) {
     sx_vec2 v, w;
     sx_manifold m1, m2;
     (void)state;
-    assert_int_equal(sx_overlap_circles(&c.u.circle, xa, &c.u.circle, xb), sx_overlap(&c, xa, &c, xb));
-    assert_int_equal(sx_mtv_circles(&c.u.circle, xa, &c.u.circle, xb, &v), sx_mtv(&c, xa, &c, xb, &w));
+    assert_int_equal(sx_overlap_circles(&c.u.circle, xa, &c.u.circle, xb),
+                     sx_overlap(&c, xa, &c, xb));
+    assert_int_equal(sx_mtv_circles(&c.u.circle, xa, &c.u.circle, xb, &v),
+                     sx_mtv(&c, xa, &c, xb, &w));
     assert_true(v.x == w.x && v.y == w.y);
     assert_int_equal(sx_mtv_segment_circle(&s.u.segment, xa, &c.u.circle, xb, &v),
                      sx_mtv(&s, xa, &c, xb, &w));
@@ -638,17 +644,20 @@ static void every_ordered_pair_is_consistent(void **state) {
 static sx_shape random_shape(sx_test_rng *rng, int type) {
     switch (type) {
     case SX_SHAPE_CIRCLE:
-        return circle((double)sx_test_rng_range(rng, -0.3, 0.3), (double)sx_test_rng_range(rng, -0.3, 0.3),
-                      sx_test_rng_unit(rng) < 0.1 ? 0.0 : (double)sx_test_rng_range(rng, 0.05, 0.8));
+        return circle(
+            (double)sx_test_rng_range(rng, -0.3, 0.3), (double)sx_test_rng_range(rng, -0.3, 0.3),
+            sx_test_rng_unit(rng) < 0.1 ? 0.0 : (double)sx_test_rng_range(rng, 0.05, 0.8));
     case SX_SHAPE_SEGMENT:
         return segment((double)sx_test_rng_range(rng, -1, 1), (double)sx_test_rng_range(rng, -1, 1),
-                       (double)sx_test_rng_range(rng, -1, 1), (double)sx_test_rng_range(rng, -1, 1));
+                       (double)sx_test_rng_range(rng, -1, 1),
+                       (double)sx_test_rng_range(rng, -1, 1));
     case SX_SHAPE_CAPSULE:
         return capsule((double)sx_test_rng_range(rng, -1, 1), (double)sx_test_rng_range(rng, -1, 1),
                        (double)sx_test_rng_range(rng, -1, 1), (double)sx_test_rng_range(rng, -1, 1),
                        (double)sx_test_rng_range(rng, 0, 0.5));
     default: {
-        double xy[16], rx = (double)sx_test_rng_range(rng, 0.3, 1), ry = (double)sx_test_rng_range(rng, 0.3, 1);
+        double xy[16], rx = (double)sx_test_rng_range(rng, 0.3, 1),
+                       ry = (double)sx_test_rng_range(rng, 0.3, 1);
         double radius = sx_test_rng_unit(rng) < 0.3 ? (double)sx_test_rng_range(rng, 0, 0.2) : 0.0;
         double start = (double)sx_test_rng_range(rng, 0, 6.28318);
         int n = 3 + (int)(sx_test_rng_unit(rng) * 6), i;
@@ -678,10 +687,12 @@ static void random_pairs_are_self_consistent(void **state) {
     for (it = 0; it < 3000; ++it) {
         int ta = (int)(sx_test_rng_unit(&rng) * 4), tb = (int)(sx_test_rng_unit(&rng) * 4);
         sx_shape a = random_shape(&rng, ta), b = random_shape(&rng, tb);
-        sx_xform xa = X((double)sx_test_rng_range(&rng, -1, 1), (double)sx_test_rng_range(&rng, -1, 1),
-                        (double)sx_test_rng_range(&rng, -4, 4));
-        sx_xform xb = X((double)sx_test_rng_range(&rng, -1, 1), (double)sx_test_rng_range(&rng, -1, 1),
-                        (double)sx_test_rng_range(&rng, -4, 4));
+        sx_xform xa =
+            X((double)sx_test_rng_range(&rng, -1, 1), (double)sx_test_rng_range(&rng, -1, 1),
+              (double)sx_test_rng_range(&rng, -4, 4));
+        sx_xform xb =
+            X((double)sx_test_rng_range(&rng, -1, 1), (double)sx_test_rng_range(&rng, -1, 1),
+              (double)sx_test_rng_range(&rng, -4, 4));
         sx_vec2 m1, m2;
         sx_manifold c;
         bool hit = sx_mtv(&a, xa, &b, xb, &m1);
