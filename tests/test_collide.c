@@ -486,6 +486,20 @@ static void box_fast_path_matches_general_path(void **state) {
     assert_vec2_near(general, fast, 1e-3);
     quarter.p = V(1.5, 0.3);
     check_pair(&a, I(), &b, quarter, false, V(0, 0), TOL);
+    /* Half a turn, and an offset box: still the fast path's axes. */
+    {
+        sx_shape off = sx_offset_box_shape(SX_R(0.5), SX_R(0.25), V(1, 0), SX_R(0.0));
+        sx_xform half;
+        half.p = V(0.4, 0.1);
+        half.q.c = SX_R(-1.0);
+        half.q.s = SX_R(0.0);
+        /* off turned half a turn about (0.4, 0.1): its centre goes to
+         * (-0.6, 0.1), so it spans x in [-1.1, -0.1], y in [-0.15, 0.35];
+         * the cheapest push of A is down by 0.5 + 0.15 (right: 0.9). */
+        check_pair(&a, I(), &off, half, true, V(0, -0.65), TOL);
+        assert_true(sx_mtv(&a, I(), &off, X(0.4, 0.1, PI + 0.001), &general));
+        assert_vec2_near(general, V(0, -0.65), 2e-3);
+    }
     assert_false(sx_overlap(&a, I(), &b, X(1.5, 0.3, PI / 2 + 0.001)));
 }
 
