@@ -350,9 +350,14 @@ bool sx_mtv_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_x
 }
 int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
-    bool overlap =
-        !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_segments(a, xa, b, xb);
-    return collide_gated(build_segment, a, xa, b, xb, margin, overlap, out);
+    bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
+    /* In the canonical order the manifold at margin 0 makes exactly the
+     * decisions of the overlap test: no second pass needed. */
+    if (touch_test && order_segments(a, xa, b, xb) <= 0) {
+        return pair_collide(build_segment, a, xa, build_segment, b, xb, SX_R(0.0), out);
+    }
+    return collide_gated(build_segment, a, xa, b, xb, margin,
+                         touch_test && sx_overlap_segments(a, xa, b, xb), out);
 }
 
 /* ---- capsule - circle / segment / capsule ------------------------------- */
@@ -408,9 +413,14 @@ bool sx_mtv_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_x
 }
 int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
-    bool overlap =
-        !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_capsules(a, xa, b, xb);
-    return collide_gated(build_capsule, a, xa, b, xb, margin, overlap, out);
+    bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
+    /* In the canonical order the manifold at margin 0 makes exactly the
+     * decisions of the overlap test: no second pass needed. */
+    if (touch_test && order_capsules(a, xa, b, xb) <= 0) {
+        return pair_collide(build_capsule, a, xa, build_capsule, b, xb, SX_R(0.0), out);
+    }
+    return collide_gated(build_capsule, a, xa, b, xb, margin,
+                         touch_test && sx_overlap_capsules(a, xa, b, xb), out);
 }
 
 /* ---- polygon - circle / segment / capsule ------------------------------- */
@@ -489,6 +499,15 @@ static bool is_axis_box(const sx_polygon *p) {
     return true;
 }
 
+/* True when the box fast path below applies: two sharp axis boxes whose
+ * relative rotation is a multiple of 90 degrees (to within one epsilon of a
+ * rotation component, i.e. below rounding). */
+static bool box_pair_aligned(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb) {
+    sx_rot q = sx_rot_inv_mul(xa.q, xb.q);
+    if (!(sx_absr(q.s) <= SX_REAL_EPSILON || sx_absr(q.c) <= SX_REAL_EPSILON)) return false;
+    return a != NULL && b != NULL && is_axis_box(a) && is_axis_box(b);
+}
+
 /* Fast path for two axis-aligned boxes whose relative rotation is a multiple
  * of 90 degrees (to within one epsilon of a rotation component, i.e. below
  * rounding): SAT over A's four faces against B's bounding interval, which is
@@ -501,10 +520,7 @@ static bool box_fast_path(const sx_polygon *a, sx_xform xa, const sx_polygon *b,
     sx_vec2 lo, hi;
     sx_real best = -SX_REAL_MAX;
     int i, face = 0;
-    rel.q = sx_rot_inv_mul(xa.q, xb.q);
-    if (!(sx_absr(rel.q.s) <= SX_REAL_EPSILON || sx_absr(rel.q.c) <= SX_REAL_EPSILON)) return false;
-    if (a == NULL || b == NULL || !is_axis_box(a) || !is_axis_box(b)) return false;
-    if (!relative_xform(xa, xb, &rel)) return false;
+    if (!box_pair_aligned(a, xa, b, xb) || !relative_xform(xa, xb, &rel)) return false;
     lo = sx_v2(SX_REAL_MAX, SX_REAL_MAX);
     hi = sx_v2(-SX_REAL_MAX, -SX_REAL_MAX);
     for (i = 0; i < 4; ++i) {
@@ -575,9 +591,14 @@ bool sx_mtv_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_x
 }
 int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
-    bool overlap =
-        !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_polygons(a, xa, b, xb);
-    return collide_gated(build_polygon, a, xa, b, xb, margin, overlap, out);
+    bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
+    /* In the canonical order the manifold at margin 0 makes exactly the
+     * decisions of the overlap test: no second pass needed. */
+    if (touch_test && order_polygons(a, xa, b, xb) <= 0 && !box_pair_aligned(a, xa, b, xb)) {
+        return pair_collide(build_polygon, a, xa, build_polygon, b, xb, SX_R(0.0), out);
+    }
+    return collide_gated(build_polygon, a, xa, b, xb, margin,
+                         touch_test && sx_overlap_polygons(a, xa, b, xb), out);
 }
 
 /* ---- the dispatch table ------------------------------------------------- */
