@@ -37,9 +37,10 @@ static int dpoint_cmp(const void *pa, const void *pb) {
     return 0;
 }
 
-/* Number of vertices of the exact convex hull (collinear points excluded). */
-static int reference_hull_count(const sx_vec2 *pts, int n) {
-    dpoint p[MAX_CLOUD], h[2 * MAX_CLOUD];
+/* The exact convex hull (collinear points excluded) into h (room for
+ * 2 n + 1 points); returns its vertex count. */
+static int reference_hull(const sx_vec2 *pts, int n, dpoint *h) {
+    dpoint p[MAX_CLOUD];
     int i, k = 0, t;
     for (i = 0; i < n; ++i) {
         p[i].x = (double)pts[i].x;
@@ -57,6 +58,28 @@ static int reference_hull_count(const sx_vec2 *pts, int n) {
         h[k++] = p[i];
     }
     return k - 1;
+}
+
+static int reference_hull_count(const sx_vec2 *pts, int n) {
+    dpoint h[2 * MAX_CLOUD + 1];
+    return reference_hull(pts, n, h);
+}
+
+/* The width of the cloud: the least, over the exact hull's edges, of the
+ * farthest hull vertex from that edge's line (0 for fewer than 3 vertices). */
+static double reference_width(const sx_vec2 *pts, int n) {
+    dpoint h[2 * MAX_CLOUD + 1];
+    int k = reference_hull(pts, n, h), i, j;
+    double width = 1e300;
+    if (k < 3) return 0.0;
+    for (i = 0; i < k; ++i) {
+        dpoint a = h[i], b = h[(i + 1) % k];
+        double len = sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y)), far = 0.0;
+        for (j = 0; j < k; ++j)
+            far = fmax(far, dcross(a, b, h[j]) / len);
+        width = fmin(width, far);
+    }
+    return width;
 }
 
 static double cloud_scale(const sx_vec2 *pts, int n) {
@@ -99,13 +122,17 @@ static void assert_hull_properties(const sx_hull *h, const sx_vec2 *pts, int n, 
         bool found = false;
         dpoint da = {(double)a.x, (double)a.y}, db = {(double)b.x, (double)b.y};
         dpoint dc = {(double)c.x, (double)c.y};
-        /* strictly convex, CCW, no collinear triple */
-        assert_true(dcross(da, db, dc) > 0.0);
+        /* strictly convex and CCW, and no triple collinear within the
+         * tolerance (the middle point stands off its neighbours' line by
+         * more than tol), up to the double rounding of this check */
+        assert_true(-dcross(da, dc, db) /
+                        sqrt((dc.x - da.x) * (dc.x - da.x) + (dc.y - da.y) * (dc.y - da.y)) >
+                    tol - REL_ROUND * scale);
         for (j = 0; j < h->count; ++j) {
             sx_vec2 v = h->points[j];
             dpoint dv = {(double)v.x, (double)v.y};
             if (j == i || j == (i + 1) % h->count) continue;
-            assert_true(dcross(da, db, dv) > 0.0);
+            assert_true(dcross(da, db, dv) > -REL_ROUND * scale * scale);
         }
         for (j = 0; j < n && !found; ++j)
             found = pts[j].x == a.x && pts[j].y == a.y;
@@ -204,6 +231,11 @@ static void hull_of_uniform_clouds_has_hull_properties_or_reports_capacity(void 
             ++ok;
             assert_hull_properties(&h, pts, n, (double)SX_WELD_TOLERANCE);
             assert_true(h.count <= reference_hull_count(pts, n));
+        } else if (st == SX_ERR_DEGENERATE) {
+            /* a sliver of few points can be collinear within the tolerance:
+             * then it is thinner than about twice the tolerance */
+            assert_int_equal(h.count, 0);
+            assert_true(reference_width(pts, n) <= 2.0 * (double)SX_WELD_TOLERANCE);
         } else {
             assert_int_equal(st, SX_ERR_CAPACITY);
             assert_int_equal(h.count, 0);
@@ -407,6 +439,42 @@ hull_of_millimetre_hexagon_is_welded_by_default_and_kept_with_a_small_tolerance(
     assert_int_equal(sx_compute_hull(pts, 6, SX_R(1.0e-6), &h), SX_OK);
     assert_int_equal(h.count, 6);
     assert_hull_properties(&h, pts, 6, 1.0e-6);
+}
+
+static void hull_of_grid_snapped_clouds_with_any_tolerance_is_valid_or_refused(void **state) {
+    /* Points snapped to a coarse grid: many exact duplicates and exactly
+     * collinear runs; tolerance 0 or a fraction of the grid step. */
+    sx_test_rng rng = sx_test_rng_make(0x5eed0009u);
+    int cloud, ok = 0;
+    (void)state;
+    for (cloud = 0; cloud < 3000; ++cloud) {
+        sx_vec2 pts[MAX_CLOUD];
+        sx_hull h;
+        sx_status st;
+        int n = 1 + (int)(sx_test_rng_next(&rng) % 60u), i;
+        int cells = 2 + (int)(sx_test_rng_next(&rng) % 6u);
+        double step = cloud % 2 ? 0.125 : 0.1, tol = (cloud % 3) * 0.2 * step;
+        /* at tolerance 0 the grid must be binary, so that exactly collinear
+         * grid points stay exactly collinear after rounding */
+        if (tol == 0.0) step = 0.125;
+        for (i = 0; i < n; ++i) {
+            pts[i] = sx_v2((sx_real)(step * (double)(sx_test_rng_next(&rng) % (uint64_t)cells)),
+                           (sx_real)(step * (double)(sx_test_rng_next(&rng) % (uint64_t)cells)));
+        }
+        st = sx_compute_hull(pts, n, (sx_real)tol, &h);
+        if (st == SX_OK) {
+            ++ok;
+            assert_hull_properties(&h, pts, n, (double)(sx_real)tol);
+        } else {
+            assert_int_equal(h.count, 0);
+            assert_true(st == SX_ERR_DEGENERATE || st == SX_ERR_CAPACITY);
+            if (st == SX_ERR_CAPACITY)
+                assert_true(reference_hull_count(pts, n) > SX_MAX_POLYGON_VERTICES);
+            if (st == SX_ERR_DEGENERATE && tol == 0.0)
+                assert_true(reference_hull_count(pts, n) < 3);
+        }
+    }
+    assert_true(ok > 1000);
 }
 
 static void hull_starts_at_lowest_x_then_lowest_y_and_runs_ccw(void **state) {
@@ -736,6 +804,7 @@ int main(void) {
         cmocka_unit_test(hull_of_jittered_clusters_welds_each_cluster_to_one_vertex),
         cmocka_unit_test(
             hull_of_millimetre_hexagon_is_welded_by_default_and_kept_with_a_small_tolerance),
+        cmocka_unit_test(hull_of_grid_snapped_clouds_with_any_tolerance_is_valid_or_refused),
         cmocka_unit_test(hull_starts_at_lowest_x_then_lowest_y_and_runs_ccw),
         cmocka_unit_test(hull_welds_duplicates_and_near_duplicates),
         cmocka_unit_test(hull_with_zero_tolerance_keeps_tiny_edges_but_welds_exact_duplicates),
