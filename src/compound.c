@@ -30,6 +30,9 @@
 /* Relative precision of the bisection for curved pairs, and its cap. */
 #define COMPOUND_BISECT_REL SX_R(1.0e-6)
 #define COMPOUND_BISECT_MAX 64
+/* A part offset's rotation must be unit length within this (a rotation
+ * built by sx_rot_make is within a few ulps; 1e-3 only catches garbage). */
+#define COMPOUND_ROT_TOLERANCE SX_R(1.0e-3)
 
 sx_compound_part sx_compound_part_make(sx_shape shape, sx_xform offset) {
     sx_compound_part p;
@@ -47,7 +50,7 @@ sx_status sx_compound_validate(const sx_compound *c) {
         sx_real len2;
         if (!sx_xform_is_finite(p->offset)) return SX_ERR_NONFINITE;
         len2 = p->offset.q.c * p->offset.q.c + p->offset.q.s * p->offset.q.s;
-        if (sx_absr(len2 - SX_R(1.0)) > SX_R(1.0e-3)) return SX_ERR_INVALID_ARG;
+        if (sx_absr(len2 - SX_R(1.0)) > COMPOUND_ROT_TOLERANCE) return SX_ERR_INVALID_ARG;
         st = sx_shape_validate(&p->shape);
         if (st != SX_OK) return st;
     }
@@ -219,15 +222,14 @@ static int world_normals(const sx_shape *s, sx_xform x, sx_vec2 *out) {
     case SX_SHAPE_CAPSULE:
         out[0] = sx_normalize(sx_rotate(x.q, sx_perp(sx_sub(s->u.capsule.b, s->u.capsule.a))));
         return 1;
-    default:
-        return 0;
+    default: return 0;
     }
 }
 
 /* Bound from one axis (taken in both signs) on the push along d that
  * separates the pair. */
-static sx_real axis_bound(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                          sx_vec2 d, sx_vec2 n, sx_real best) {
+static sx_real axis_bound(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_vec2 d,
+                          sx_vec2 n, sx_real best) {
     sx_real nd = sx_dot(n, d);
     if (nd < SX_R(0.0)) {
         n = sx_neg(n);
@@ -304,8 +306,8 @@ static bool clear_along(const side *a, const side *b, sx_vec2 d, sx_real best, s
 /* Tries the push directions suggested by pair (sa, sb): its own MTV
  * direction and both signs of every edge normal of the two parts. */
 static void try_pair_directions(const side *a, const side *b, const sx_shape *sa, sx_xform xa,
-                                const sx_shape *sb, sx_xform xb, sx_vec2 pair_mtv,
-                                sx_real *best, sx_vec2 *best_dir) {
+                                const sx_shape *sb, sx_xform xb, sx_vec2 pair_mtv, sx_real *best,
+                                sx_vec2 *best_dir) {
     sx_vec2 dirs[1 + 4 * SX_MAX_POLYGON_VERTICES], normals[SX_MAX_POLYGON_VERTICES];
     int nd = 0, i, n;
     dirs[nd++] = sx_normalize(pair_mtv);
@@ -399,8 +401,8 @@ bool sx_compound_mtv(const sx_compound *a, sx_xform xa, const sx_shape *b, sx_xf
     return sides_mtv(&sa, &sb, mtv);
 }
 
-bool sx_compound_mtv_compound(const sx_compound *a, sx_xform xa, const sx_compound *b,
-                              sx_xform xb, sx_vec2 *mtv) {
+bool sx_compound_mtv_compound(const sx_compound *a, sx_xform xa, const sx_compound *b, sx_xform xb,
+                              sx_vec2 *mtv) {
     side sa, sb;
     if (mtv != NULL) *mtv = sx_v2_zero();
     if (!compound_usable(a) || !compound_usable(b)) return false;

@@ -36,7 +36,7 @@
 typedef struct decomp_work {
     sx_vec2 *pts;
     int *prev, *next;
-    int *tri;                              /* 3 per triangle */
+    int *tri;                                 /* 3 per triangle */
     int *diag_a, *diag_b, *diag_t1, *diag_t2; /* t1 holds b->a, t2 holds a->b */
     int *parent, *pcount, *pverts;
     int *order; /* diagonal order of a merge pass */

@@ -98,7 +98,8 @@ static void circle_in_u_notch_overlaps_only_when_touching_walls(void **state) {
         sx_xform x = at(100.0 * (double)k - 300.0, 7.0, 0.7 * (double)k);
         sx_vec2 inside = sx_xform_point(x, sx_v2(SX_R(0.0), SX_R(1.25)));
         sx_vec2 touching = sx_xform_point(x, sx_v2(SX_R(0.55), SX_R(1.25)));
-        assert_false(sx_compound_overlap(&f.c, x, &ball, at((double)inside.x, (double)inside.y, 0.0)));
+        assert_false(
+            sx_compound_overlap(&f.c, x, &ball, at((double)inside.x, (double)inside.y, 0.0)));
         assert_true(
             sx_compound_overlap(&f.c, x, &ball, at((double)touching.x, (double)touching.y, 0.0)));
     }
@@ -123,8 +124,6 @@ static void box_over_comb_teeth_collides_with_each_tooth(void **state) {
     n = sx_compound_collide(&f.c, id, &bar, at(3.5, 3.3, 0.0), SX_R(0.0), m, MAX_PARTS);
     assert_int_equal(n, 4);
     for (i = 0; i < n; ++i) {
-        const sx_polygon *pg = &f.parts[m[i].part_a].shape.u.polygon;
-        sx_vec2 c = pg->centroid;
         int j;
         assert_int_equal(m[i].part_b, 0);
         assert_vec2_near(m[i].manifold.normal, sx_v2(SX_R(0.0), SX_R(1.0)), 1e-5);
@@ -133,7 +132,6 @@ static void box_over_comb_teeth_collides_with_each_tooth(void **state) {
             assert_near(m[i].manifold.points[j].depth, 0.2, 1e-5);
             teeth_hit[(int)(q.x / SX_R(2.0))] = 1;
         }
-        (void)c;
     }
     for (i = 0; i < 4; ++i)
         assert_int_equal(teeth_hit[i], 1);
@@ -142,8 +140,8 @@ static void box_over_comb_teeth_collides_with_each_tooth(void **state) {
     assert_vec2_near(mtv, sx_v2(SX_R(0.0), SX_R(-0.2)), 1e-5);
     /* A peg in a gap between teeth, above the spine: nothing. */
     assert_false(sx_compound_overlap(&f.c, id, &peg, at(1.5, 2.0, 0.0)));
-    assert_int_equal(sx_compound_collide(&f.c, id, &peg, at(1.5, 2.0, 0.0), SX_R(0.0), m, MAX_PARTS),
-                     0);
+    assert_int_equal(
+        sx_compound_collide(&f.c, id, &peg, at(1.5, 2.0, 0.0), SX_R(0.0), m, MAX_PARTS), 0);
     /* Within a margin of 0.15 the two neighbouring teeth are reported, with
      * gaps (negative depths) of 0.1. */
     n = sx_compound_collide(&f.c, id, &peg, at(1.5, 2.0, 0.0), SX_R(0.15), m, MAX_PARTS);
@@ -177,7 +175,8 @@ static void u_mtv_avoids_pushing_into_the_other_wall(void **state) {
         assert_true(sx_compound_mtv(&f.c, id, &ball, at(0.0, 1.5, 0.0), &mtv));
         assert_vec2_near(mtv, sx_v2(SX_R(0.0), (sx_real)-d), 1e-4);
         /* Any single part's MTV is far shorter and does not clear the rest. */
-        assert_true(sx_mtv(&f.parts[2].shape, f.parts[2].offset, &ball, at(0.0, 1.5, 0.0), &single));
+        assert_true(
+            sx_mtv(&f.parts[2].shape, f.parts[2].offset, &ball, at(0.0, 1.5, 0.0), &single));
         assert_true((double)sx_length(single) < 0.1);
         assert_true(sx_compound_overlap(&f.c, at((double)single.x, (double)single.y, 0.0), &ball,
                                         at(0.0, 1.5, 0.0)));
@@ -194,8 +193,8 @@ static void one_part_compound_mtv_matches_the_narrowphase(void **state) {
     c.parts = &part;
     c.count = 1;
     for (k = 0; k < 200; ++k) {
-        sx_shape other = sx_capsule_shape(sx_v2(SX_R(-0.3), SX_R(0.0)), sx_v2(SX_R(0.3), SX_R(0.1)),
-                                          SX_R(0.25));
+        sx_shape other =
+            sx_capsule_shape(sx_v2(SX_R(-0.3), SX_R(0.0)), sx_v2(SX_R(0.3), SX_R(0.1)), SX_R(0.25));
         sx_xform xo = at((double)sx_test_rng_range(&rng, -1.0, 1.0),
                          (double)sx_test_rng_range(&rng, -1.0, 1.0),
                          (double)sx_test_rng_range(&rng, -3.0, 3.0));
@@ -230,7 +229,8 @@ static int check_mtv_shape(const sx_compound *a, sx_xform xa, const sx_shape *b,
     return 1;
 }
 
-static int check_mtv_compound(const sx_compound *a, sx_xform xa, const sx_compound *b, sx_xform xb) {
+static int check_mtv_compound(const sx_compound *a, sx_xform xa, const sx_compound *b,
+                              sx_xform xb) {
     sx_vec2 mtv;
     sx_xform moved = xa;
     if (!sx_compound_mtv_compound(a, xa, b, xb, &mtv)) {
@@ -260,11 +260,10 @@ static void compound_mtv_separates_in_one_move_on_random_placements(void **state
                          (double)sx_test_rng_range(&rng, (double)box.lower.y, (double)box.upper.y),
                          (double)sx_test_rng_range(&rng, -3.0, 3.0));
         switch (k % 3) {
-        case 0:
-            other = sx_circle_shape(sx_v2_zero(), sx_test_rng_range(&rng, 0.2, 1.2));
-            break;
+        case 0: other = sx_circle_shape(sx_v2_zero(), sx_test_rng_range(&rng, 0.2, 1.2)); break;
         case 1:
-            other = sx_box_shape(sx_test_rng_range(&rng, 0.1, 1.5), sx_test_rng_range(&rng, 0.1, 0.8));
+            other =
+                sx_box_shape(sx_test_rng_range(&rng, 0.1, 1.5), sx_test_rng_range(&rng, 0.1, 0.8));
             break;
         default:
             other = sx_capsule_shape(sx_v2(SX_R(-0.5), SX_R(0.0)), sx_v2(SX_R(0.5), SX_R(0.0)),
@@ -285,17 +284,20 @@ static void compound_vs_compound_mtv_separates_in_one_move(void **state) {
     make_u(&u);
     make_comb(&comb);
     for (k = 0; k < 150; ++k) {
-        sx_xform xa = at((double)sx_test_rng_range(&rng, 0.0, 7.0),
-                         (double)sx_test_rng_range(&rng, 0.0, 3.0),
-                         (double)sx_test_rng_range(&rng, -3.0, 3.0));
+        sx_xform xa =
+            at((double)sx_test_rng_range(&rng, 0.0, 7.0), (double)sx_test_rng_range(&rng, 0.0, 3.0),
+               (double)sx_test_rng_range(&rng, -3.0, 3.0));
         checked += check_mtv_compound(&u.c, xa, &comb.c, sx_xform_identity());
     }
     printf("  compound vs compound: %d penetrating placements checked\n", checked);
     assert_true(checked > 75);
     /* Overlap is symmetric. */
-    assert_true(sx_compound_overlap_compound(&u.c, at(3.0, 2.0, 0.0), &comb.c, sx_xform_identity()));
-    assert_true(sx_compound_overlap_compound(&comb.c, sx_xform_identity(), &u.c, at(3.0, 2.0, 0.0)));
-    assert_false(sx_compound_overlap_compound(&u.c, at(3.5, 3.01, 0.0), &comb.c, sx_xform_identity()));
+    assert_true(
+        sx_compound_overlap_compound(&u.c, at(3.0, 2.0, 0.0), &comb.c, sx_xform_identity()));
+    assert_true(
+        sx_compound_overlap_compound(&comb.c, sx_xform_identity(), &u.c, at(3.0, 2.0, 0.0)));
+    assert_false(
+        sx_compound_overlap_compound(&u.c, at(3.5, 3.01, 0.0), &comb.c, sx_xform_identity()));
 }
 
 /* ---- queries ------------------------------------------------------------- */
@@ -333,7 +335,8 @@ static void ray_cast_reports_the_nearest_part(void **state) {
         sx_ray_hit best, h;
         int i, best_part = -1;
         ray.origin = sx_v2(sx_test_rng_range(&rng, -2.0, 6.0), sx_test_rng_range(&rng, -4.0, 3.0));
-        ray.translation = sx_v2(sx_test_rng_range(&rng, -6.0, 6.0), sx_test_rng_range(&rng, -6.0, 6.0));
+        ray.translation =
+            sx_v2(sx_test_rng_range(&rng, -6.0, 6.0), sx_test_rng_range(&rng, -6.0, 6.0));
         best.fraction = SX_R(2.0);
         for (i = 0; i < f.c.count; ++i) {
             if (sx_ray_cast(&f.parts[i].shape, sx_xform_mul(x, f.parts[i].offset), &ray, &h) &&
@@ -354,11 +357,14 @@ static void point_containment_reports_the_part(void **state) {
     int part;
     (void)state;
     make_u(&f);
-    assert_true(sx_compound_contains_point(&f.c, x, sx_xform_point(x, sx_v2(SX_R(1.2), SX_R(1.5))), &part));
+    assert_true(
+        sx_compound_contains_point(&f.c, x, sx_xform_point(x, sx_v2(SX_R(1.2), SX_R(1.5))), &part));
     assert_int_equal(part, 2);
-    assert_true(sx_compound_contains_point(&f.c, x, sx_xform_point(x, sx_v2(SX_R(0.0), SX_R(0.2))), &part));
+    assert_true(
+        sx_compound_contains_point(&f.c, x, sx_xform_point(x, sx_v2(SX_R(0.0), SX_R(0.2))), &part));
     assert_int_equal(part, 0);
-    assert_false(sx_compound_contains_point(&f.c, x, sx_xform_point(x, sx_v2(SX_R(0.0), SX_R(1.2))), &part));
+    assert_false(
+        sx_compound_contains_point(&f.c, x, sx_xform_point(x, sx_v2(SX_R(0.0), SX_R(1.2))), &part));
     assert_int_equal(part, -1);
     assert_false(sx_compound_contains_point(NULL, x, sx_v2_zero(), &part));
 }

@@ -41,8 +41,8 @@ typedef struct decomp {
 static void run_decompose(const sx_vec2 *pts, int n, decomp *d) {
     size_t bytes = sx_decompose_scratch_bytes(n);
     void *scratch = bytes > 0 ? malloc(bytes) : NULL;
-    d->status = sx_decompose_polygon(pts, n, scratch, bytes, d->parts, MAX_OUTLINE,
-                                     &d->part_count, &d->triangle_count);
+    d->status = sx_decompose_polygon(pts, n, scratch, bytes, d->parts, MAX_OUTLINE, &d->part_count,
+                                     &d->triangle_count);
     free(scratch);
 }
 
@@ -291,15 +291,15 @@ static void tiny_outline_needs_a_matching_weld_tolerance(void **state) {
             sum += (double)sx_shape_area(&parts[i]);
         assert_true(fabs(sum - 3e-6) > 3e-7);
     }
-    assert_int_equal(sx_decompose_polygon_ex(p, n, SX_R(1e-6), scratch, sizeof scratch, parts, 8,
-                                             &count, &tris),
-                     SX_OK);
+    assert_int_equal(
+        sx_decompose_polygon_ex(p, n, SX_R(1e-6), scratch, sizeof scratch, parts, 8, &count, &tris),
+        SX_OK);
     assert_int_equal(count, 2);
     assert_int_equal(tris, 4);
     assert_near(sx_shape_area(&parts[0]) + sx_shape_area(&parts[1]), 3e-6, 1e-11);
-    assert_int_equal(sx_decompose_polygon_ex(p, n, SX_R(-1.0), scratch, sizeof scratch, parts, 8,
-                                             &count, &tris),
-                     SX_ERR_INVALID_ARG);
+    assert_int_equal(
+        sx_decompose_polygon_ex(p, n, SX_R(-1.0), scratch, sizeof scratch, parts, 8, &count, &tris),
+        SX_ERR_INVALID_ARG);
     assert_int_equal(sx_decompose_polygon_ex(p, n, (sx_real)NAN, scratch, sizeof scratch, parts, 8,
                                              &count, &tris),
                      SX_ERR_INVALID_ARG);
@@ -412,7 +412,8 @@ static bool random_walk(sx_test_rng *rng, sx_vec2 *p, int n) {
             sx_vec2 q;
             if (fabs(turn) < 0.05) continue;
             len = 0.3 + 0.7 * sx_test_rng_unit(rng);
-            q = sx_v2((sx_real)(x + len * cos(heading + turn)), (sx_real)(y + len * sin(heading + turn)));
+            q = sx_v2((sx_real)(x + len * cos(heading + turn)),
+                      (sx_real)(y + len * sin(heading + turn)));
             for (j = 0; j + 1 < i - 1 && ok; ++j)
                 ok = !dsegments_meet(p[j], p[j + 1], p[i - 1], q);
             if (!ok) continue;
@@ -531,8 +532,9 @@ static void bad_arguments_and_capacity_are_reported(void **state) {
     assert_true(bytes > 0);
     assert_int_equal(sx_decompose_scratch_bytes(2), 0);
     scratch = malloc(bytes);
-    assert_int_equal(sx_decompose_polygon(NULL, n, scratch, bytes, parts, MAX_OUTLINE, &count, NULL),
-                     SX_ERR_INVALID_ARG);
+    assert_int_equal(
+        sx_decompose_polygon(NULL, n, scratch, bytes, parts, MAX_OUTLINE, &count, NULL),
+        SX_ERR_INVALID_ARG);
     assert_int_equal(count, 0);
     assert_int_equal(sx_decompose_polygon(p, n, scratch, bytes, NULL, MAX_OUTLINE, &count, NULL),
                      SX_ERR_INVALID_ARG);
@@ -544,12 +546,12 @@ static void bad_arguments_and_capacity_are_reported(void **state) {
                      SX_ERR_INVALID_ARG);
     assert_int_equal(sx_decompose_polygon(p, n, NULL, bytes, parts, MAX_OUTLINE, &count, NULL),
                      SX_ERR_INVALID_ARG);
-    assert_int_equal(sx_decompose_polygon(p, n, small, sizeof small, parts, MAX_OUTLINE, &count,
-                                          NULL),
-                     SX_ERR_CAPACITY);
-    assert_int_equal(sx_decompose_polygon(p, n, scratch, bytes - 1, parts, MAX_OUTLINE, &count,
-                                          NULL),
-                     SX_ERR_CAPACITY);
+    assert_int_equal(
+        sx_decompose_polygon(p, n, small, sizeof small, parts, MAX_OUTLINE, &count, NULL),
+        SX_ERR_CAPACITY);
+    assert_int_equal(
+        sx_decompose_polygon(p, n, scratch, bytes - 1, parts, MAX_OUTLINE, &count, NULL),
+        SX_ERR_CAPACITY);
     /* One part of room for a comb: refused, and told how many are needed. */
     assert_int_equal(sx_decompose_polygon(p, n, scratch, bytes, parts, 1, &count, &tris),
                      SX_ERR_CAPACITY);
@@ -564,9 +566,8 @@ static void bad_arguments_and_capacity_are_reported(void **state) {
     /* Any alignment of the scratch block works. */
     {
         unsigned char *raw = (unsigned char *)malloc(bytes + 3);
-        assert_int_equal(sx_decompose_polygon(p, n, raw + 3, bytes, parts, MAX_OUTLINE, &count,
-                                              NULL),
-                         SX_OK);
+        assert_int_equal(
+            sx_decompose_polygon(p, n, raw + 3, bytes, parts, MAX_OUTLINE, &count, NULL), SX_OK);
         free(raw);
     }
     free(scratch);
@@ -580,10 +581,10 @@ static void point_in_outline_follows_the_winding_number(void **state) {
     (void)state;
     n = make_u(p);
     for (k = 0; k < 2; ++k) {
-        assert_true(sx_point_in_outline(p, n, sx_v2(SX_R(0.5), SX_R(1.5))));   /* left arm */
-        assert_true(sx_point_in_outline(p, n, sx_v2(SX_R(2.5), SX_R(1.5))));   /* right arm */
-        assert_true(sx_point_in_outline(p, n, sx_v2(SX_R(1.5), SX_R(0.5))));   /* base */
-        assert_false(sx_point_in_outline(p, n, sx_v2(SX_R(1.5), SX_R(1.5))));  /* the notch */
+        assert_true(sx_point_in_outline(p, n, sx_v2(SX_R(0.5), SX_R(1.5))));  /* left arm */
+        assert_true(sx_point_in_outline(p, n, sx_v2(SX_R(2.5), SX_R(1.5))));  /* right arm */
+        assert_true(sx_point_in_outline(p, n, sx_v2(SX_R(1.5), SX_R(0.5))));  /* base */
+        assert_false(sx_point_in_outline(p, n, sx_v2(SX_R(1.5), SX_R(1.5)))); /* the notch */
         assert_false(sx_point_in_outline(p, n, sx_v2(SX_R(-0.5), SX_R(1.0))));
         assert_false(sx_point_in_outline(p, n, sx_v2(SX_R(1.5), SX_R(2.5))));
         /* On the boundary, including a vertex and the notch floor: inside. */

@@ -158,8 +158,8 @@ bool sx_compound_mtv(const sx_compound *a, sx_xform xa, const sx_shape *b, sx_xf
                      sx_vec2 *mtv);
 
 /** As sx_compound_mtv, between two compounds: *mtv moves all of a. */
-bool sx_compound_mtv_compound(const sx_compound *a, sx_xform xa, const sx_compound *b,
-                              sx_xform xb, sx_vec2 *mtv);
+bool sx_compound_mtv_compound(const sx_compound *a, sx_xform xa, const sx_compound *b, sx_xform xb,
+                              sx_vec2 *mtv);
 
 /** A manifold between one part of a compound and a shape (part_b 0) or one
  *  part of another compound. */
