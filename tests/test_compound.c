@@ -300,6 +300,47 @@ static void compound_vs_compound_mtv_separates_in_one_move(void **state) {
         sx_compound_overlap_compound(&u.c, at(3.5, 3.01, 0.0), &comb.c, sx_xform_identity()));
 }
 
+/* The shortest push along angle th that leaves no overlap, scanning the
+ * push length in steps of `step` up to `limit` (SX_REAL_MAX if none). */
+static double brute_clear(const sx_compound *c, const sx_shape *b, sx_xform xb, double th,
+                          double step, double limit) {
+    double lam;
+    for (lam = 0.0; lam < limit; lam += step) {
+        if (!sx_compound_overlap(c, at(lam * cos(th), lam * sin(th), 0.0), b, xb)) return lam;
+    }
+    return (double)SX_REAL_MAX;
+}
+
+static void compound_mtv_is_near_the_brute_force_minimum(void **state) {
+    fixture u;
+    sx_test_rng rng = sx_test_rng_make(4242);
+    int cases = 0, k;
+    (void)state;
+    make_u(&u);
+    while (cases < 12) {
+        sx_shape other = (cases % 2 == 1)
+                             ? sx_circle_shape(sx_v2_zero(), sx_test_rng_range(&rng, 0.2, 1.2))
+                             : sx_box_shape(sx_test_rng_range(&rng, 0.1, 1.2),
+                                            sx_test_rng_range(&rng, 0.1, 0.6));
+        sx_xform xb = at((double)sx_test_rng_range(&rng, -1.5, 1.5),
+                         (double)sx_test_rng_range(&rng, 0.0, 2.0),
+                         (double)sx_test_rng_range(&rng, -3.0, 3.0));
+        sx_vec2 mtv;
+        double ours, brute = 1e30;
+        if (!sx_compound_mtv(&u.c, sx_xform_identity(), &other, xb, &mtv)) continue;
+        ours = (double)sx_length(mtv);
+        if (ours < MTV_MIN_CHECKED) continue;
+        for (k = 0; k < 360; ++k) {
+            double b = brute_clear(&u.c, &other, xb, 2.0 * PI_D * (double)k / 360.0, 0.005,
+                                   brute < 1e29 ? brute : 1.2 * ours);
+            if (b < brute) brute = b;
+        }
+        /* The scan's own resolution: one step, and 1 degree of direction. */
+        assert_true(ours <= 1.05 * brute + 0.005);
+        ++cases;
+    }
+}
+
 /* ---- queries ------------------------------------------------------------- */
 
 static void ray_cast_reports_the_nearest_part(void **state) {
@@ -502,6 +543,7 @@ int main(void) {
         cmocka_unit_test(one_part_compound_mtv_matches_the_narrowphase),
         cmocka_unit_test(compound_mtv_separates_in_one_move_on_random_placements),
         cmocka_unit_test(compound_vs_compound_mtv_separates_in_one_move),
+        cmocka_unit_test(compound_mtv_is_near_the_brute_force_minimum),
         cmocka_unit_test(ray_cast_reports_the_nearest_part),
         cmocka_unit_test(point_containment_reports_the_part),
         cmocka_unit_test(aabb_contains_every_part),

@@ -135,25 +135,35 @@ bool sx_compound_overlap_compound(const sx_compound *a, sx_xform xa, const sx_co
 
 /** True if the compound overlaps the shape (touching counts). When mtv is
  *  not NULL it receives a translation of the WHOLE compound that separates
- *  every part from b in one move (zero when nothing penetrates).
+ *  every part from b in one move (zero when nothing penetrates by more than
+ *  SX_LINEAR_SLOP x 1e-3).
  *
- *  How: candidate directions are the MTV direction of every penetrating
- *  part pair and the edge normals (both signs) of both parts of such pairs.
- *  Along a candidate direction d the compound is pushed from 0 by the exact
- *  distance that takes each penetrating pair to touching along d (for
- *  polygon pairs from the support functions of both parts over the normals
- *  of their Minkowski difference; for curved pairs refined by bisection to
- *  1e-6 relative), re-checking all pairs after each push, since clearing one
- *  pair can run another part into b, until no pair penetrates. The shortest
- *  such push over all candidates is returned.
+ *  How: for a push direction d, the shifts along d at which a convex part
+ *  pair overlaps form an interval. Starting from 0, the push walks to the
+ *  end of the interval of whichever pair still penetrates (each pair's exit
+ *  is exact for polygon pairs, from the support functions over the normals
+ *  of their Minkowski difference, and bisected with sx_overlap to 1e-6
+ *  relative for curved pairs), re-checking every pair after each step, since
+ *  clearing one pair can run another part into b; a gap between intervals
+ *  narrower than 1% of the push (probed at 4 points) is stepped over. The
+ *  directions tried: each penetrating pair's MTV direction, both signs of
+ *  the edge normals of its parts, the corner direction meeting two pairs'
+ *  MTVs at once (for the first 16 penetrating pairs), and 32 evenly spaced
+ *  directions; the best is then refined by a pattern search over the angle
+ *  down to about 0.01 degree. The shortest push found is returned.
  *
- *  Guarantee: after translating a by *mtv, no part pair penetrates by more
- *  than SX_LINEAR_SLOP x 1e-3 (each is separated or touching), so a move by
- *  mtv x (1 + e) separates. The vector is the shortest over the candidate
- *  directions, not necessarily the global minimum (it is when a single part
- *  pair penetrates and the result clears the others). Should no candidate
- *  converge (not observed), the fallback pushes along the deepest pair's
- *  MTV until the bounding boxes are apart, which also separates. */
+ *  Guarantee: after translating a by *mtv no part pair penetrates by more
+ *  than SX_LINEAR_SLOP x 1e-3 (each is separated or touching), and moving
+ *  slightly further (up to 1% more) normally keeps it so: only a grazing
+ *  contact narrower than the probe spacing can be missed. The vector is the
+ *  shortest found, not a proven global minimum (measured: within 1% of a
+ *  brute-force minimum over 720 directions in 298 of 300 random U-vs-disc
+ *  or box placements, at worst 5% longer). Cost: a few dozen clearing walks
+ *  over all part pairs per penetrating query, so the boolean and manifold
+ *  functions are the per-step path; this is for resolving deep overlaps.
+ *  Should no direction settle (not observed), the fallback pushes along the
+ *  deepest pair's MTV until the bounding boxes are apart, which also
+ *  separates. */
 bool sx_compound_mtv(const sx_compound *a, sx_xform xa, const sx_shape *b, sx_xform xb,
                      sx_vec2 *mtv);
 
