@@ -392,6 +392,97 @@ static void ray_cast_reports_the_nearest_part(void **state) {
     }
 }
 
+/* First crossing of the ray origin + s * dir (s in [0, 1]) with the outline's
+ * edges, in double; 2 when none. */
+static double first_crossing(const sx_vec2 *p, int n, sx_vec2 o, sx_vec2 dir) {
+    double best = 2.0;
+    int i;
+    for (i = 0; i < n; ++i) {
+        double ax = (double)p[i].x, ay = (double)p[i].y;
+        double ex = (double)p[(i + 1) % n].x - ax, ey = (double)p[(i + 1) % n].y - ay;
+        double dx = (double)dir.x, dy = (double)dir.y, wx = ax - (double)o.x, wy = ay - (double)o.y;
+        double den = dx * ey - dy * ex, s, u;
+        if (den == 0.0) continue;
+        s = (wx * ey - wy * ex) / den;
+        u = (wx * dy - wy * dx) / den;
+        if (s >= 0.0 && s <= 1.0 && u >= 0.0 && u <= 1.0 && s < best) best = s;
+    }
+    return best;
+}
+
+static void decomposed_spiral_compound_matches_its_outline(void **state) {
+    sx_vec2 p[64];
+    sx_shape shapes[64];
+    sx_compound_part parts[64];
+    sx_compound c;
+    sx_test_rng rng = sx_test_rng_make(31);
+    size_t bytes;
+    void *scratch;
+    int n = 0, i, count = 0, hits = 0, inside = 0;
+    (void)state;
+    for (i = 0; i < 24; ++i) {
+        double t = 3.0 * PI_D * (double)i / 23.0, r = 0.85 + 0.3 * t;
+        p[n++] = sx_v2((sx_real)(r * cos(t)), (sx_real)(r * sin(t)));
+    }
+    for (i = 23; i >= 0; --i) {
+        double t = 3.0 * PI_D * (double)i / 23.0, r = 0.6 + 0.3 * t;
+        p[n++] = sx_v2((sx_real)(r * cos(t)), (sx_real)(r * sin(t)));
+    }
+    bytes = sx_decompose_scratch_bytes(n);
+    scratch = malloc(bytes);
+    assert_int_equal(sx_decompose_polygon(p, n, scratch, bytes, shapes, 64, &count, NULL), SX_OK);
+    free(scratch);
+    for (i = 0; i < count; ++i)
+        parts[i] = sx_compound_part_make(shapes[i], sx_xform_identity());
+    c.parts = parts;
+    c.count = count;
+    assert_int_equal(sx_compound_validate(&c), SX_OK);
+    /* Rays from outside the outline's box: the first part hit is where the
+     * ray first crosses the raw outline. */
+    for (i = 0; i < 300; ++i) {
+        double a = 2.0 * PI_D * sx_test_rng_unit(&rng);
+        sx_ray_input ray;
+        sx_ray_hit hit;
+        double expect;
+        int part;
+        ray.origin = sx_v2((sx_real)(6.0 * cos(a)), (sx_real)(6.0 * sin(a)));
+        ray.translation =
+            sx_sub(sx_v2(sx_test_rng_range(&rng, -2.0, 2.0), sx_test_rng_range(&rng, -2.0, 2.0)),
+                   ray.origin);
+        ray.max_fraction = SX_R(1.0);
+        expect = first_crossing(p, n, ray.origin, ray.translation);
+        assert_int_equal(sx_compound_ray_cast(&c, sx_xform_identity(), &ray, &hit, &part),
+                         expect <= 1.0);
+        if (expect <= 1.0) {
+            assert_near(hit.fraction, expect, 1e-5);
+            assert_true(part >= 0 && part < count);
+            ++hits;
+        }
+    }
+    /* Containment agrees with the winding number away from the boundary. */
+    for (i = 0; i < 2000; ++i) {
+        sx_vec2 q = sx_v2(sx_test_rng_range(&rng, -4.0, 4.0), sx_test_rng_range(&rng, -4.0, 4.0));
+        bool in_outline = sx_point_in_outline(p, n, q);
+        double near_edge = 1e30;
+        int j;
+        for (j = 0; j < n; ++j) {
+            sx_vec2 e0 = p[j], e1 = p[(j + 1) % n];
+            double ex = (double)e1.x - (double)e0.x, ey = (double)e1.y - (double)e0.y;
+            double wx = (double)q.x - (double)e0.x, wy = (double)q.y - (double)e0.y;
+            double t = (wx * ex + wy * ey) / (ex * ex + ey * ey), dx, dy;
+            t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+            dx = wx - t * ex;
+            dy = wy - t * ey;
+            if (sqrt(dx * dx + dy * dy) < near_edge) near_edge = sqrt(dx * dx + dy * dy);
+        }
+        if (near_edge < 1e-4) continue;
+        assert_int_equal(sx_compound_contains_point(&c, sx_xform_identity(), q, NULL), in_outline);
+        inside += in_outline ? 1 : 0;
+    }
+    assert_true(hits > 100);
+    assert_true(inside > 50);
+}
+
 static void point_containment_reports_the_part(void **state) {
     fixture f;
     sx_xform x = at(-4.0, 2.0, 1.1);
@@ -546,6 +637,7 @@ int main(void) {
         cmocka_unit_test(compound_mtv_is_near_the_brute_force_minimum),
         cmocka_unit_test(ray_cast_reports_the_nearest_part),
         cmocka_unit_test(point_containment_reports_the_part),
+        cmocka_unit_test(decomposed_spiral_compound_matches_its_outline),
         cmocka_unit_test(aabb_contains_every_part),
         cmocka_unit_test(l_from_two_boxes_has_the_mass_of_the_l),
         cmocka_unit_test(invalid_compounds_are_reported_and_answered_safely),
