@@ -5,23 +5,31 @@
  * Ear clipping is simple and robust when its only decisions are orientation
  * signs, and those are taken in the wide real of wide.h (double for float
  * input, where the cross product of coordinate differences is nearly always
- * exact). A triangulation alone gives n - 2 parts; merging removes diagonals
+ * exact; long double for double input). Among the current ears the one with
+ * the shortest new diagonal is clipped first: that cuts long thin regions
+ * into strips rather than fans, and strips merge into far fewer convex
+ * pieces (a spiral strip of 56 points: 27 parts instead of 35).
+ *
+ * A triangulation alone gives n - 2 parts; merging removes diagonals
  * between neighbouring pieces while their union stays strictly convex and
  * within SX_MAX_POLYGON_VERTICES. Pieces only grow, so the angle at a
  * diagonal's end points and the vertex count only grow too: a merge refused
- * once stays refused, and one greedy pass over the diagonals in clipping
- * order is final. Unconstrained Hertel-Mehlhorn gives at most four times the
- * optimal number of convex parts; the vertex cap can add a few more. Each
- * merged piece is accepted with the very predicate that sx_shape_validate
- * applies (sx_validate_hull at tolerance 0), so every part it returns is a
- * valid polygon. A direct optimal decomposition (Keil's O(n r^2) dynamic
- * program) would give fewer parts on some outlines but needs O(n^2) memory.
+ * once stays refused, and one greedy pass over the diagonals is final. The
+ * result depends on the order of the pass, so four orders are tried
+ * (clipping order, reversed, longest and shortest diagonal first) and the
+ * one leaving the fewest pieces is kept. Unconstrained Hertel-Mehlhorn gives
+ * at most four times the optimal number of convex parts; the vertex cap can
+ * add a few more. Each merged piece is accepted with the very predicate that
+ * sx_shape_validate applies (sx_validate_hull at tolerance 0), so every part
+ * returned is a valid polygon. A direct optimal decomposition (Keil's
+ * O(n r^2) dynamic program) would save parts on some outlines but needs
+ * O(n^2) memory; on the test outlines (L, U, star, comb, spiral) the merge
+ * already reaches the optimum.
  *
  * Memory: the caller's scratch block, sized by sx_decompose_scratch_bytes,
- * linear in the point count; nothing is allocated. Cost: the cleaning pass,
- * the simplicity test and ear clipping are O(n^2) (ear clipping O(n^3) on
- * pathological spirals), which is fine for hand-made outlines of up to a few
- * thousand points. */
+ * linear in the point count; nothing is allocated. Cost: cleaning, the
+ * simplicity test, ear clipping and the merge orders are O(n^2) (about 0.3 s
+ * for 4000 points), fine for authored outlines. */
 #include "wide.h"
 
 /* Ints per outline point in the scratch block: prev/next links (2), the
