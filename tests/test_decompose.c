@@ -1,0 +1,628 @@
+/* sepax tests — concave outlines: decomposition into convex parts and
+ * point-in-outline by winding number.
+ *
+ * Every decomposition is checked against the properties that define it
+ * rather than against a fixed answer: each part is a valid convex polygon,
+ * the part areas sum to the outline's area, parts do not overlap (pairwise
+ * MTV zero, sampled points in exactly one part), and the parts cover exactly
+ * what the winding number of the raw outline calls inside. Named outlines
+ * (L, U, star, comb, spiral) in both windings also check the part count
+ * against the triangle count; random simple outlines (star-shaped and
+ * self-avoiding walks, fixed seeds) check the properties at scale. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "test_support.h"
+
+#define MAX_OUTLINE 128
+#define PI_D 3.14159265358979323846
+
+/* Relative tolerance of the area sum (the brief's 1e-5; the parts carry the
+ * outline's own coordinates, so only the area sums' rounding counts). */
+#define AREA_REL 1e-5
+/* Overlap allowed between two parts sharing an edge, relative to the
+ * outline's size: the rounding of an MTV along a shared edge. */
+#ifdef SX_DOUBLE
+#define OVERLAP_REL 1e-9
+#else
+#define OVERLAP_REL 1e-5
+#endif
+/* Sample points this close (relative) to any edge are not classified. */
+#define BOUNDARY_REL 1e-3
+
+typedef struct decomp {
+    sx_status status;
+    sx_shape parts[MAX_OUTLINE];
+    int part_count, triangle_count;
+} decomp;
+
+static void run_decompose(const sx_vec2 *pts, int n, decomp *d) {
+    size_t bytes = sx_decompose_scratch_bytes(n);
+    void *scratch = bytes > 0 ? malloc(bytes) : NULL;
+    d->status = sx_decompose_polygon(pts, n, scratch, bytes, d->parts, MAX_OUTLINE, &d->part_count,
+                                     &d->triangle_count);
+    free(scratch);
+}
+
+static double outline_area(const sx_vec2 *p, int n) {
+    double s = 0.0;
+    int i;
+    for (i = 0; i < n; ++i) {
+        const sx_vec2 a = p[i], b = p[(i + 1) % n];
+        s += (double)a.x * (double)b.y - (double)a.y * (double)b.x;
+    }
+    return 0.5 * s;
+}
+
+static double seg_distance(sx_vec2 a, sx_vec2 b, double px, double py) {
+    double ax = (double)a.x, ay = (double)a.y, ex = (double)b.x - ax, ey = (double)b.y - ay;
+    double len2 = ex * ex + ey * ey, t = 0.0, dx, dy;
+    if (len2 > 0.0) t = ((px - ax) * ex + (py - ay) * ey) / len2;
+    t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+    dx = px - (ax + t * ex);
+    dy = py - (ay + t * ey);
+    return sqrt(dx * dx + dy * dy);
+}
+
+static void reverse(sx_vec2 *p, int n) {
+    int i;
+    for (i = 0; i < n / 2; ++i) {
+        sx_vec2 t = p[i];
+        p[i] = p[n - 1 - i];
+        p[n - 1 - i] = t;
+    }
+}
+
+/* Checks every defining property of a decomposition of outline p. */
+static void check_decomposition(const sx_vec2 *p, int n, const decomp *d, uint64_t seed) {
+    sx_aabb box = sx_aabb_from_points(p, n);
+    double size = (double)sx_maxr(box.upper.x - box.lower.x, box.upper.y - box.lower.y);
+    double area = fabs(outline_area(p, n)), sum = 0.0;
+    sx_test_rng rng = sx_test_rng_make(seed);
+    int i, j, s;
+    assert_int_equal(d->status, SX_OK);
+    assert_true(d->part_count >= 1);
+    assert_true(d->part_count <= d->triangle_count);
+    assert_true(d->triangle_count <= n - 2);
+    for (i = 0; i < d->part_count; ++i) {
+        assert_int_equal(sx_shape_validate(&d->parts[i]), SX_OK);
+        assert_true(d->parts[i].u.polygon.count <= SX_MAX_POLYGON_VERTICES);
+        sum += (double)sx_shape_area(&d->parts[i]);
+    }
+    assert_near(sum, area, AREA_REL * area);
+    for (i = 0; i < d->part_count; ++i) {
+        for (j = i + 1; j < d->part_count; ++j) {
+            sx_vec2 m = sx_v2_zero();
+            (void)sx_mtv(&d->parts[i], sx_xform_identity(), &d->parts[j], sx_xform_identity(), &m);
+            assert_true((double)sx_length(m) <= OVERLAP_REL * size);
+        }
+    }
+    /* Sampled points: the winding number and the parts agree, and an inside
+     * point lies in exactly one part. */
+    for (s = 0; s < 300; ++s) {
+        sx_vec2 q = sx_v2(sx_test_rng_range(&rng, (double)box.lower.x, (double)box.upper.x),
+                          sx_test_rng_range(&rng, (double)box.lower.y, (double)box.upper.y));
+        double near_edge = 1e300;
+        int inside_parts = 0;
+        for (i = 0; i < n; ++i) {
+            double dd = seg_distance(p[i], p[(i + 1) % n], (double)q.x, (double)q.y);
+            if (dd < near_edge) near_edge = dd;
+        }
+        for (i = 0; i < d->part_count; ++i) {
+            const sx_polygon *pg = &d->parts[i].u.polygon;
+            for (j = 0; j < pg->count; ++j) {
+                double dd = seg_distance(pg->vertices[j], pg->vertices[(j + 1) % pg->count],
+                                         (double)q.x, (double)q.y);
+                if (dd < near_edge) near_edge = dd;
+            }
+        }
+        if (near_edge < BOUNDARY_REL * size) continue;
+        for (i = 0; i < d->part_count; ++i)
+            if (sx_contains_point(&d->parts[i], sx_xform_identity(), q)) ++inside_parts;
+        assert_int_equal(inside_parts, sx_point_in_outline(p, n, q) ? 1 : 0);
+    }
+}
+
+/* ---- named outlines ------------------------------------------------------ */
+
+static int make_l(sx_vec2 *p) {
+    static const double c[] = {0, 0, 2, 0, 2, 1, 1, 1, 1, 2, 0, 2};
+    int i;
+    for (i = 0; i < 6; ++i)
+        p[i] = sx_v2((sx_real)c[2 * i], (sx_real)c[2 * i + 1]);
+    return 6;
+}
+
+static int make_u(sx_vec2 *p) {
+    static const double c[] = {0, 0, 3, 0, 3, 2, 2, 2, 2, 1, 1, 1, 1, 2, 0, 2};
+    int i;
+    for (i = 0; i < 8; ++i)
+        p[i] = sx_v2((sx_real)c[2 * i], (sx_real)c[2 * i + 1]);
+    return 8;
+}
+
+static int make_star(sx_vec2 *p) {
+    int i;
+    for (i = 0; i < 10; ++i) {
+        double a = PI_D / 2.0 + (double)i * PI_D / 5.0, r = (i % 2 == 0) ? 1.0 : 0.4;
+        p[i] = sx_v2((sx_real)(r * cos(a)), (sx_real)(r * sin(a)));
+    }
+    return 10;
+}
+
+/* A comb: a 7 x 1 spine with four 1 x 2 teeth standing on it. */
+static int make_comb(sx_vec2 *p) {
+    int n = 0, k;
+    p[n++] = sx_v2(SX_R(0.0), SX_R(0.0));
+    p[n++] = sx_v2(SX_R(7.0), SX_R(0.0));
+    for (k = 3; k >= 0; --k) {
+        sx_real x0 = (sx_real)(2 * k), x1 = x0 + SX_R(1.0);
+        p[n++] = sx_v2(x1, SX_R(3.0));
+        p[n++] = sx_v2(x0, SX_R(3.0));
+        if (k > 0) {
+            p[n++] = sx_v2(x0, SX_R(1.0));
+            p[n++] = sx_v2(x0 - SX_R(1.0), SX_R(1.0));
+        }
+    }
+    /* Close: the last tooth's left side runs down to (0, 0). */
+    return n;
+}
+
+/* A thick Archimedean spiral strip: out along one edge, back along the
+ * other, one and a half turns. */
+static int make_spiral(sx_vec2 *p) {
+    const int steps = 28;
+    int i, n = 0;
+    for (i = 0; i < steps; ++i) {
+        double t = 3.0 * PI_D * (double)i / (double)(steps - 1), r = 0.6 + 0.3 * t + 0.25;
+        p[n++] = sx_v2((sx_real)(r * cos(t)), (sx_real)(r * sin(t)));
+    }
+    for (i = steps - 1; i >= 0; --i) {
+        double t = 3.0 * PI_D * (double)i / (double)(steps - 1), r = 0.6 + 0.3 * t;
+        p[n++] = sx_v2((sx_real)(r * cos(t)), (sx_real)(r * sin(t)));
+    }
+    return n;
+}
+
+typedef int make_fn(sx_vec2 *p);
+
+/* Decomposes an outline both ways round; returns the part count (equal for
+ * both windings) and checks it against max_parts. */
+static int check_named(const char *name, make_fn *make, int max_parts, uint64_t seed) {
+    sx_vec2 p[MAX_OUTLINE];
+    decomp d;
+    int n = make(p), ccw_parts;
+    run_decompose(p, n, &d);
+    check_decomposition(p, n, &d, seed);
+    ccw_parts = d.part_count;
+    printf("  %-7s n=%3d triangles=%3d parts=%3d (n-2=%d)\n", name, n, d.triangle_count,
+           d.part_count, n - 2);
+    assert_int_equal(d.triangle_count, n - 2);
+    assert_true(d.part_count <= max_parts);
+    reverse(p, n);
+    run_decompose(p, n, &d);
+    check_decomposition(p, n, &d, seed + 1);
+    assert_int_equal(d.triangle_count, n - 2);
+    assert_true(d.part_count <= max_parts);
+    return ccw_parts;
+}
+
+static void l_shape_splits_into_two_parts(void **state) {
+    (void)state;
+    assert_int_equal(check_named("L", make_l, 2, 11), 2);
+}
+
+static void u_shape_splits_into_at_most_four_parts(void **state) {
+    (void)state;
+    check_named("U", make_u, 4, 12);
+}
+
+static void star_merges_below_triangle_count(void **state) {
+    (void)state;
+    check_named("star", make_star, 6, 13);
+}
+
+static void comb_merges_below_triangle_count(void **state) {
+    (void)state;
+    check_named("comb", make_comb, 8, 14);
+}
+
+static void spiral_merges_well_below_triangle_count(void **state) {
+    sx_vec2 p[MAX_OUTLINE];
+    (void)state;
+    /* Thin strip quads: at most about one part per two triangles. */
+    check_named("spiral", make_spiral, (make_spiral(p) - 2) / 2 + 2, 15);
+}
+
+static void convex_outline_is_one_part(void **state) {
+    sx_vec2 p[8];
+    decomp d;
+    int i;
+    (void)state;
+    for (i = 0; i < 8; ++i) {
+        double a = 2.0 * PI_D * (double)i / 8.0;
+        p[i] = sx_v2((sx_real)cos(a), (sx_real)sin(a));
+    }
+    run_decompose(p, 8, &d);
+    check_decomposition(p, 8, &d, 16);
+    assert_int_equal(d.part_count, 1);
+    assert_int_equal(d.triangle_count, 6);
+}
+
+static void collinear_and_duplicate_points_are_cleaned_first(void **state) {
+    /* The L with a duplicated corner, a point in the middle of an edge and a
+     * near-duplicate (well inside the weld tolerance). */
+    sx_vec2 p[9];
+    decomp d;
+    (void)state;
+    p[0] = sx_v2(SX_R(0.0), SX_R(0.0));
+    p[1] = sx_v2(SX_R(1.0), SX_R(0.0));
+    p[2] = sx_v2(SX_R(2.0), SX_R(0.0));
+    p[3] = sx_v2(SX_R(2.0), SX_R(1.0));
+    p[4] = sx_v2(SX_R(2.0), SX_R(1.0));
+    p[5] = sx_v2(SX_R(1.0), SX_R(1.0));
+    p[6] = sx_v2(SX_R(1.0) + SX_WELD_TOLERANCE * SX_R(0.1), SX_R(1.0));
+    p[7] = sx_v2(SX_R(1.0), SX_R(2.0));
+    p[8] = sx_v2(SX_R(0.0), SX_R(2.0));
+    run_decompose(p, 9, &d);
+    assert_int_equal(d.status, SX_OK);
+    assert_int_equal(d.triangle_count, 4);
+    assert_int_equal(d.part_count, 2);
+    assert_near(sx_shape_area(&d.parts[0]) + sx_shape_area(&d.parts[1]), 3.0, 1e-5);
+}
+
+static void tiny_outline_needs_a_matching_weld_tolerance(void **state) {
+    /* The L at millimetre scale: its 1 mm edges are within the default weld
+     * tolerance, so corners are welded away; a micrometre tolerance keeps
+     * it. */
+    sx_vec2 p[6];
+    sx_shape parts[8];
+    unsigned char scratch[4096];
+    int i, n = make_l(p), count = 0, tris = 0;
+    (void)state;
+    for (i = 0; i < n; ++i)
+        p[i] = sx_scale(p[i], SX_R(0.001));
+    assert_true(sx_decompose_scratch_bytes(n) <= sizeof scratch);
+    if (sx_decompose_polygon(p, n, scratch, sizeof scratch, parts, 8, &count, &tris) == SX_OK) {
+        double sum = 0.0;
+        for (i = 0; i < count; ++i)
+            sum += (double)sx_shape_area(&parts[i]);
+        assert_true(fabs(sum - 3e-6) > 3e-7);
+    }
+    assert_int_equal(
+        sx_decompose_polygon_ex(p, n, SX_R(1e-6), scratch, sizeof scratch, parts, 8, &count, &tris),
+        SX_OK);
+    assert_int_equal(count, 2);
+    assert_int_equal(tris, 4);
+    assert_near(sx_shape_area(&parts[0]) + sx_shape_area(&parts[1]), 3e-6, 1e-11);
+    assert_int_equal(
+        sx_decompose_polygon_ex(p, n, SX_R(-1.0), scratch, sizeof scratch, parts, 8, &count, &tris),
+        SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_decompose_polygon_ex(p, n, (sx_real)NAN, scratch, sizeof scratch, parts, 8,
+                                             &count, &tris),
+                     SX_ERR_INVALID_ARG);
+}
+
+static void outline_far_from_origin_decomposes_like_at_origin(void **state) {
+    make_fn *makers[3];
+    int k;
+    (void)state;
+    makers[0] = make_u;
+    makers[1] = make_comb;
+    makers[2] = make_spiral;
+    for (k = 0; k < 3; ++k) {
+        sx_vec2 p[MAX_OUTLINE];
+        decomp near, far;
+        double sum = 0.0, area;
+        int n = makers[k](p), i;
+        run_decompose(p, n, &near);
+        for (i = 0; i < n; ++i)
+            p[i] = sx_add(p[i], sx_v2(SX_R(1000.0), SX_R(-1000.0)));
+        run_decompose(p, n, &far);
+        assert_int_equal(far.status, SX_OK);
+        assert_int_equal(far.part_count, near.part_count);
+        area = fabs(outline_area(p, n));
+        for (i = 0; i < far.part_count; ++i) {
+            assert_int_equal(sx_shape_validate(&far.parts[i]), SX_OK);
+            sum += (double)sx_shape_area(&far.parts[i]);
+        }
+        assert_near(sum, area, AREA_REL * area);
+    }
+}
+
+/* ---- random simple outlines ---------------------------------------------- */
+
+/* No vertex closer than 10 weld tolerances to the line through its
+ * neighbours, so cleaning keeps every point and the areas compare exactly. */
+static bool well_conditioned(const sx_vec2 *p, int n) {
+    int i;
+    for (i = 0; i < n; ++i) {
+        sx_vec2 a = p[(i + n - 1) % n], b = p[(i + 1) % n];
+        double dx = (double)b.x - (double)a.x, dy = (double)b.y - (double)a.y;
+        double len = sqrt(dx * dx + dy * dy);
+        double dist = seg_distance(a, b, (double)p[i].x, (double)p[i].y);
+        if (len == 0.0 || dist < 10.0 * (double)SX_WELD_TOLERANCE) return false;
+    }
+    return true;
+}
+
+static void random_star_shaped_outlines_decompose_exactly(void **state) {
+    sx_test_rng rng = sx_test_rng_make(0x5eed01);
+    int trial, done = 0, parts = 0, tris = 0;
+    (void)state;
+    for (trial = 0; done < 40 && trial < 400; ++trial) {
+        sx_vec2 p[MAX_OUTLINE];
+        double ang[MAX_OUTLINE];
+        decomp d;
+        int n = 5 + (int)(sx_test_rng_unit(&rng) * 40.0), i, j;
+        for (i = 0; i < n; ++i)
+            ang[i] = 2.0 * PI_D * sx_test_rng_unit(&rng);
+        for (i = 1; i < n; ++i) /* insertion sort */
+            for (j = i; j > 0 && ang[j - 1] > ang[j]; --j) {
+                double t = ang[j];
+                ang[j] = ang[j - 1];
+                ang[j - 1] = t;
+            }
+        for (i = 0; i < n; ++i) {
+            double r = 0.2 + 0.8 * sx_test_rng_unit(&rng);
+            p[i] = sx_v2((sx_real)(r * cos(ang[i])), (sx_real)(r * sin(ang[i])));
+        }
+        if (!well_conditioned(p, n)) continue;
+        /* Star-shaped about the origin only if no angular gap reaches pi. */
+        for (i = 0; i < n; ++i) {
+            double gap = (i + 1 < n ? ang[i + 1] : ang[0] + 2.0 * PI_D) - ang[i];
+            if (gap >= PI_D * 0.95) break;
+        }
+        if (i < n) continue;
+        if (done % 2 == 1) reverse(p, n);
+        run_decompose(p, n, &d);
+        check_decomposition(p, n, &d, 100 + (uint64_t)trial);
+        parts += d.part_count;
+        tris += d.triangle_count;
+        ++done;
+    }
+    assert_int_equal(done, 40);
+    printf("  random star-shaped: %d outlines, %d triangles -> %d parts\n", done, tris, parts);
+    assert_true(parts < tris);
+}
+
+static double dorient(sx_vec2 a, sx_vec2 b, sx_vec2 c) {
+    return ((double)b.x - (double)a.x) * ((double)c.y - (double)a.y) -
+           ((double)b.y - (double)a.y) * ((double)c.x - (double)a.x);
+}
+
+static bool dsegments_meet(sx_vec2 a, sx_vec2 b, sx_vec2 c, sx_vec2 d) {
+    double d1 = dorient(a, b, c), d2 = dorient(a, b, d);
+    double d3 = dorient(c, d, a), d4 = dorient(c, d, b);
+    return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));
+}
+
+/* A self-avoiding random walk of n points whose closing edge crosses
+ * nothing; false when the walk gets stuck. */
+static bool random_walk(sx_test_rng *rng, sx_vec2 *p, int n) {
+    double heading = 0.0, x = 0.0, y = 0.0;
+    int i, j, tries;
+    p[0] = sx_v2(SX_R(0.0), SX_R(0.0));
+    for (i = 1; i < n; ++i) {
+        for (tries = 0; tries < 60; ++tries) {
+            double turn = (sx_test_rng_unit(rng) * 2.0 - 1.0) * 1.6, len;
+            bool ok = true;
+            sx_vec2 q;
+            if (fabs(turn) < 0.05) continue;
+            len = 0.3 + 0.7 * sx_test_rng_unit(rng);
+            q = sx_v2((sx_real)(x + len * cos(heading + turn)),
+                      (sx_real)(y + len * sin(heading + turn)));
+            for (j = 0; j + 1 < i - 1 && ok; ++j)
+                ok = !dsegments_meet(p[j], p[j + 1], p[i - 1], q);
+            if (!ok) continue;
+            heading += turn;
+            x = (double)q.x;
+            y = (double)q.y;
+            p[i] = q;
+            break;
+        }
+        if (tries == 60) return false;
+    }
+    for (j = 1; j + 1 < n - 1; ++j)
+        if (dsegments_meet(p[j], p[j + 1], p[n - 1], p[0])) return false;
+    return well_conditioned(p, n);
+}
+
+static void random_walk_outlines_decompose_exactly(void **state) {
+    sx_test_rng rng = sx_test_rng_make(0x5eed02);
+    int trial, done = 0, parts = 0, tris = 0;
+    (void)state;
+    for (trial = 0; done < 30 && trial < 3000; ++trial) {
+        sx_vec2 p[MAX_OUTLINE];
+        decomp d;
+        int n = 6 + (int)(sx_test_rng_unit(&rng) * 30.0);
+        if (!random_walk(&rng, p, n)) continue;
+        run_decompose(p, n, &d);
+        check_decomposition(p, n, &d, 200 + (uint64_t)trial);
+        assert_int_equal(d.triangle_count, n - 2);
+        parts += d.part_count;
+        tris += d.triangle_count;
+        ++done;
+    }
+    assert_int_equal(done, 30);
+    printf("  random walks: %d outlines, %d triangles -> %d parts\n", done, tris, parts);
+    assert_true(parts < tris);
+}
+
+/* ---- bad outlines -------------------------------------------------------- */
+
+static sx_status status_of(const sx_vec2 *p, int n) {
+    decomp d;
+    run_decompose(p, n, &d);
+    return d.status;
+}
+
+static void bow_tie_is_refused_as_invalid_argument(void **state) {
+    sx_vec2 p[4];
+    decomp d;
+    (void)state;
+    p[0] = sx_v2(SX_R(0.0), SX_R(0.0));
+    p[1] = sx_v2(SX_R(1.0), SX_R(1.0));
+    p[2] = sx_v2(SX_R(1.0), SX_R(0.0));
+    p[3] = sx_v2(SX_R(0.0), SX_R(1.0));
+    run_decompose(p, 4, &d);
+    assert_int_equal(d.status, SX_ERR_INVALID_ARG);
+    assert_int_equal(d.part_count, 0);
+    /* An asymmetric bow-tie (non-zero signed area) too. */
+    p[1] = sx_v2(SX_R(2.0), SX_R(1.0));
+    assert_int_equal(status_of(p, 4), SX_ERR_INVALID_ARG);
+}
+
+static void outline_touching_itself_is_refused(void **state) {
+    /* Two squares sharing the corner (1, 1): a figure eight. */
+    sx_vec2 p[7];
+    (void)state;
+    p[0] = sx_v2(SX_R(0.0), SX_R(0.0));
+    p[1] = sx_v2(SX_R(1.0), SX_R(0.0));
+    p[2] = sx_v2(SX_R(1.0), SX_R(1.0));
+    p[3] = sx_v2(SX_R(2.0), SX_R(1.0));
+    p[4] = sx_v2(SX_R(2.0), SX_R(2.0));
+    p[5] = sx_v2(SX_R(1.0), SX_R(2.0));
+    p[6] = sx_v2(SX_R(1.0), SX_R(1.0));
+    assert_int_equal(status_of(p, 7), SX_ERR_INVALID_ARG);
+}
+
+static void collinear_or_duplicate_outlines_are_degenerate(void **state) {
+    sx_vec2 p[5];
+    int i;
+    (void)state;
+    for (i = 0; i < 5; ++i)
+        p[i] = sx_v2((sx_real)i, SX_R(2.0) * (sx_real)i);
+    assert_int_equal(status_of(p, 5), SX_ERR_DEGENERATE);
+    p[2] = sx_v2(SX_R(1.5), SX_R(3.0)); /* a collinear there-and-back */
+    assert_int_equal(status_of(p, 5), SX_ERR_DEGENERATE);
+    for (i = 0; i < 5; ++i)
+        p[i] = sx_v2(SX_R(3.0), SX_R(-1.0));
+    assert_int_equal(status_of(p, 5), SX_ERR_DEGENERATE);
+    p[3] = sx_v2(SX_R(3.0) + SX_WELD_TOLERANCE * SX_R(0.5), SX_R(-1.0));
+    assert_int_equal(status_of(p, 5), SX_ERR_DEGENERATE);
+}
+
+static void non_finite_points_are_refused(void **state) {
+    sx_vec2 p[6];
+    (void)state;
+    make_l(p);
+    p[3].x = (sx_real)NAN;
+    assert_int_equal(status_of(p, 6), SX_ERR_NONFINITE);
+    make_l(p);
+    p[5].y = (sx_real)INFINITY;
+    assert_int_equal(status_of(p, 6), SX_ERR_NONFINITE);
+    make_l(p);
+    p[0].y = -(sx_real)INFINITY;
+    assert_int_equal(status_of(p, 6), SX_ERR_NONFINITE);
+}
+
+static void bad_arguments_and_capacity_are_reported(void **state) {
+    sx_vec2 p[MAX_OUTLINE];
+    sx_shape parts[MAX_OUTLINE];
+    unsigned char small[8];
+    size_t bytes;
+    void *scratch;
+    int n, count = -1, tris = -1;
+    (void)state;
+    n = make_comb(p);
+    bytes = sx_decompose_scratch_bytes(n);
+    assert_true(bytes > 0);
+    assert_int_equal(sx_decompose_scratch_bytes(2), 0);
+    scratch = malloc(bytes);
+    assert_int_equal(
+        sx_decompose_polygon(NULL, n, scratch, bytes, parts, MAX_OUTLINE, &count, NULL),
+        SX_ERR_INVALID_ARG);
+    assert_int_equal(count, 0);
+    assert_int_equal(sx_decompose_polygon(p, n, scratch, bytes, NULL, MAX_OUTLINE, &count, NULL),
+                     SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_decompose_polygon(p, n, scratch, bytes, parts, MAX_OUTLINE, NULL, NULL),
+                     SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_decompose_polygon(p, 2, scratch, bytes, parts, MAX_OUTLINE, &count, NULL),
+                     SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_decompose_polygon(p, -1, scratch, bytes, parts, MAX_OUTLINE, &count, NULL),
+                     SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_decompose_polygon(p, n, NULL, bytes, parts, MAX_OUTLINE, &count, NULL),
+                     SX_ERR_INVALID_ARG);
+    assert_int_equal(
+        sx_decompose_polygon(p, n, small, sizeof small, parts, MAX_OUTLINE, &count, NULL),
+        SX_ERR_CAPACITY);
+    assert_int_equal(
+        sx_decompose_polygon(p, n, scratch, bytes - 1, parts, MAX_OUTLINE, &count, NULL),
+        SX_ERR_CAPACITY);
+    /* One part of room for a comb: refused, and told how many are needed. */
+    assert_int_equal(sx_decompose_polygon(p, n, scratch, bytes, parts, 1, &count, &tris),
+                     SX_ERR_CAPACITY);
+    assert_true(count > 1);
+    {
+        int needed = count;
+        assert_int_equal(sx_decompose_polygon(p, n, scratch, bytes, parts, needed, &count, &tris),
+                         SX_OK);
+        assert_int_equal(count, needed);
+        assert_int_equal(tris, n - 2);
+    }
+    /* Any alignment of the scratch block works. */
+    {
+        unsigned char *raw = (unsigned char *)malloc(bytes + 3);
+        assert_int_equal(
+            sx_decompose_polygon(p, n, raw + 3, bytes, parts, MAX_OUTLINE, &count, NULL), SX_OK);
+        free(raw);
+    }
+    free(scratch);
+}
+
+/* ---- point in outline ---------------------------------------------------- */
+
+static void point_in_outline_follows_the_winding_number(void **state) {
+    sx_vec2 p[MAX_OUTLINE];
+    int n, k;
+    (void)state;
+    n = make_u(p);
+    for (k = 0; k < 2; ++k) {
+        assert_true(sx_point_in_outline(p, n, sx_v2(SX_R(0.5), SX_R(1.5))));  /* left arm */
+        assert_true(sx_point_in_outline(p, n, sx_v2(SX_R(2.5), SX_R(1.5))));  /* right arm */
+        assert_true(sx_point_in_outline(p, n, sx_v2(SX_R(1.5), SX_R(0.5))));  /* base */
+        assert_false(sx_point_in_outline(p, n, sx_v2(SX_R(1.5), SX_R(1.5)))); /* the notch */
+        assert_false(sx_point_in_outline(p, n, sx_v2(SX_R(-0.5), SX_R(1.0))));
+        assert_false(sx_point_in_outline(p, n, sx_v2(SX_R(1.5), SX_R(2.5))));
+        /* On the boundary, including a vertex and the notch floor: inside. */
+        assert_true(sx_point_in_outline(p, n, sx_v2(SX_R(1.5), SX_R(1.0))));
+        assert_true(sx_point_in_outline(p, n, sx_v2(SX_R(2.0), SX_R(2.0))));
+        assert_true(sx_point_in_outline(p, n, sx_v2(SX_R(3.0), SX_R(0.7))));
+        /* A ray through vertices (y = 1 passes the notch corners). */
+        assert_true(sx_point_in_outline(p, n, sx_v2(SX_R(0.5), SX_R(1.0))));
+        assert_false(sx_point_in_outline(p, n, sx_v2(SX_R(3.5), SX_R(1.0))));
+        reverse(p, n);
+    }
+    assert_false(sx_point_in_outline(NULL, n, sx_v2(SX_R(0.5), SX_R(0.5))));
+    assert_false(sx_point_in_outline(p, 2, sx_v2(SX_R(0.5), SX_R(0.5))));
+    assert_false(sx_point_in_outline(p, n, sx_v2((sx_real)NAN, SX_R(0.5))));
+    p[2].x = (sx_real)INFINITY;
+    assert_false(sx_point_in_outline(p, n, sx_v2(SX_R(0.5), SX_R(0.5))));
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(l_shape_splits_into_two_parts),
+        cmocka_unit_test(u_shape_splits_into_at_most_four_parts),
+        cmocka_unit_test(star_merges_below_triangle_count),
+        cmocka_unit_test(comb_merges_below_triangle_count),
+        cmocka_unit_test(spiral_merges_well_below_triangle_count),
+        cmocka_unit_test(convex_outline_is_one_part),
+        cmocka_unit_test(collinear_and_duplicate_points_are_cleaned_first),
+        cmocka_unit_test(tiny_outline_needs_a_matching_weld_tolerance),
+        cmocka_unit_test(outline_far_from_origin_decomposes_like_at_origin),
+        cmocka_unit_test(random_star_shaped_outlines_decompose_exactly),
+        cmocka_unit_test(random_walk_outlines_decompose_exactly),
+        cmocka_unit_test(bow_tie_is_refused_as_invalid_argument),
+        cmocka_unit_test(outline_touching_itself_is_refused),
+        cmocka_unit_test(collinear_or_duplicate_outlines_are_degenerate),
+        cmocka_unit_test(non_finite_points_are_refused),
+        cmocka_unit_test(bad_arguments_and_capacity_are_reported),
+        cmocka_unit_test(point_in_outline_follows_the_winding_number),
+    };
+    return cmocka_run_group_tests_name("decompose", tests, sx_test_group_setup,
+                                       sx_test_group_teardown);
+}
