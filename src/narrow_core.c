@@ -14,8 +14,10 @@
  * normals alone an incomplete set (collinear segments, a point beyond the end
  * of a segment). Manifolds clip the incident face against the side planes of
  * the reference face (Sutherland-Hodgman), the reference face chosen by least
- * penetration with hysteresis in favour of A's face; vertex-vertex contacts
- * of disjoint rounded cores give one point on the closest-point line. */
+ * penetration with hysteresis in favour of A's face. For disjoint rounded
+ * cores the closest-feature line gives the exact contact: a vertex-vertex
+ * contact is that one point, and a face contact uses it for its deepest
+ * point whenever clipping would report less than the exact depth. */
 #include "narrow.h"
 
 /* B's face becomes the reference only when its separation beats A's by this
