@@ -362,6 +362,23 @@ static void box_circle_face_corner_inside_touching(void **state) {
     assert_int_equal(m.points[0].id, SX_FEATURE_ID(1, 0, 0));
 }
 
+static void circle_just_inside_a_face_region_uses_the_exact_face_normal(void **state) {
+    sx_shape bx = box(1, 1), c = circle(0, 0, 0.5);
+    sx_vec2 mtv;
+    sx_manifold m;
+    (void)state;
+    /* The centre projects 5e-5 inside the top face, next to the corner: in
+     * float the squared distances to the face and to the corner round to the
+     * same value; the face's exact normal must win (the corner's direction
+     * would be off by 1.7e-4 rad). */
+    assert_true(sx_mtv(&bx, I(), &c, X(1 - 5e-5, 1.3, 0), &mtv));
+    assert_near(mtv.x, 0.0, 1e-7);
+    assert_near(mtv.y, -0.2, TOL);
+    assert_int_equal(sx_collide(&bx, I(), &c, X(1 - 5e-5, 1.3, 0), &m), 1);
+    assert_vec2_near(m.normal, V(0, 1), 1e-7);
+    assert_vec2_near(m.points[0].point, V(1 - 5e-5, 0.9), TOL);
+}
+
 static void rotated_box_and_point(void **state) {
     sx_shape bx = box(1, 1), p = sx_point_shape(V(0, 0));
     (void)state;
@@ -910,6 +927,7 @@ int main(void) {
         cmocka_unit_test(parallel_capsules_give_two_points),
         cmocka_unit_test(capsules_end_to_end_and_crossed),
         cmocka_unit_test(box_circle_face_corner_inside_touching),
+        cmocka_unit_test(circle_just_inside_a_face_region_uses_the_exact_face_normal),
         cmocka_unit_test(rotated_box_and_point),
         cmocka_unit_test(rounded_polygon_and_circle),
         cmocka_unit_test(box_segment_through_and_resting),
