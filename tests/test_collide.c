@@ -625,6 +625,16 @@ static void capsule_end_beyond_the_other_end_keeps_its_full_depth(void **state) 
     check_pair(&a, I(), &b, X(1.05, 0.55, 0), true, V(-depth * dx / d, -depth * dy / d), TOL);
     assert_true(sx_collide(&a, I(), &b, X(1.05, 0.55, 0), &m) >= 1);
     assert_near(deepest(&m), depth, TOL);
+    /* ... and that point lies on the line between the end points, midway
+     * between the surfaces (0.5 out of A's end, 0.1 short of B's). */
+    {
+        int i, k = 0;
+        double ux = dx / d, uy = dy / d, along = 0.5 * (0.5 + d - 0.1);
+        for (i = 1; i < m.count; ++i) {
+            if (m.points[i].depth > m.points[k].depth) k = i;
+        }
+        assert_vec2_near(m.points[k].point, V(1 + along * ux, along * uy), TOL);
+    }
 }
 
 /* ---- every pair: both orders through the table and the pair functions --- */
