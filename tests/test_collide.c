@@ -637,6 +637,51 @@ static void capsule_end_beyond_the_other_end_keeps_its_full_depth(void **state) 
     }
 }
 
+static void wide_box_on_narrow_box_is_clipped_at_both_ends(void **state) {
+    sx_shape narrow = box(0.5, 0.5), wide = box(2, 0.5);
+    sx_manifold m;
+    (void)state;
+    /* The wide box's bottom face reaches past both ends of the narrow box's
+     * top face: both incident points are clipped to the slab. */
+    check_pair(&narrow, I(), &wide, X(0.3, 0.95, 0), true, V(0, -0.05), TOL);
+    assert_int_equal(sx_collide(&narrow, I(), &wide, X(0.3, 0.95, 0), &m), 2);
+    expect_points(&m, 2, V(-0.5, 0.475), V(0.5, 0.475), TOL);
+    assert_near(m.points[0].depth, 0.05, TOL);
+    assert_near(m.points[1].depth, 0.05, TOL);
+    /* Swapped, the wide box's face is A's and the narrow box is incident. */
+    assert_int_equal(sx_collide(&wide, X(0.3, 0.95, 0), &narrow, I(), &m), 2);
+    expect_points(&m, 2, V(-0.5, 0.475), V(0.5, 0.475), TOL);
+    assert_vec2_near(m.normal, V(0, -1), TOL);
+}
+
+static void coincident_cores_push_along_a_documented_axis(void **state) {
+    sx_shape k = capsule(0, 0, 0, 0, 1), c = circle(0, 0, 1), bx = box(1, 1);
+    sx_vec2 mtv;
+    sx_manifold m;
+#ifdef SX_DOUBLE
+    double tiny = 1e-15;
+#else
+    double tiny = 1e-6;
+#endif
+    (void)state;
+    /* A point-like capsule on a circle's centre: no direction exists; the
+     * capsule (first in the pair function's order) pushes along its -x. */
+    assert_true(sx_mtv(&k, X(3, 4, PI / 2), &c, X(3, 4, 0), &mtv));
+    assert_vec2_near(mtv, V(0, -2), TOL);
+    assert_true(sx_mtv(&c, X(3, 4, 0), &k, X(3, 4, PI / 2), &mtv));
+    assert_vec2_near(mtv, V(0, 2), TOL);
+    assert_int_equal(sx_collide(&k, X(3, 4, PI / 2), &c, X(3, 4, 0), &m), 1);
+    assert_vec2_near(m.normal, V(0, 1), TOL);
+    assert_near(m.points[0].depth, 2.0, TOL);
+    /* A circle centre a rounding error outside a box corner: the direction
+     * comes from the best separating axis instead of the noisy offset. */
+    assert_true(sx_mtv(&bx, I(), &c, X(1 + tiny, 1 + tiny, 0), &mtv));
+    assert_near(sx_length(mtv), 1.0, 1e-5);
+    assert_true(mtv.x == SX_R(0.0) || mtv.y == SX_R(0.0));
+    assert_int_equal(sx_collide(&bx, I(), &c, X(1 + tiny, 1 + tiny, 0), &m), 1);
+    assert_near(sx_length(m.normal), 1.0, TOL);
+}
+
 /* ---- every pair: both orders through the table and the pair functions --- */
 
 static void pair_functions_agree_with_the_dispatch_table(void **state) {
@@ -954,6 +999,8 @@ int main(void) {
         cmocka_unit_test(identical_shapes_of_every_type_overlap_fully),
         cmocka_unit_test(one_shape_inside_another),
         cmocka_unit_test(capsule_end_beyond_the_other_end_keeps_its_full_depth),
+        cmocka_unit_test(wide_box_on_narrow_box_is_clipped_at_both_ends),
+        cmocka_unit_test(coincident_cores_push_along_a_documented_axis),
         cmocka_unit_test(pair_functions_agree_with_the_dispatch_table),
         cmocka_unit_test(every_ordered_pair_is_consistent),
         cmocka_unit_test(random_pairs_are_self_consistent),
