@@ -7,5 +7,6 @@
 #include "math.h"
 #include "shape.h"
 #include "collide.h"
+#include "world.h"
 
 #endif /* SEPAX_H */

@@ -1,0 +1,102 @@
+/* sepax — the broadphase: which collider pairs are worth a narrowphase call.
+ *
+ * Sort and sweep on x. The colliders are kept in an array ordered by the
+ * lower x of their (fattened) bounds; the order survives from one call to the
+ * next, so the insertion sort that restores it costs about one pass when
+ * bodies move a little per step. The sweep then visits, for each collider,
+ * only the colliders whose lower x lies inside its x extent, and tests their
+ * y extents. Pairs with no dynamic collider (static-static,
+ * static-kinematic, kinematic-kinematic) are never reported: nothing there
+ * can respond. Pairs come out sorted by key, so the contact list and the
+ * solver's order are the same on every run (determinism). */
+#include <stdlib.h>
+
+#include "world_internal.h"
+
+void sx_broadphase_init(sx_broadphase *bp) { memset(bp, 0, sizeof(*bp)); }
+
+void sx_broadphase_free(sx_broadphase *bp) {
+    sx_free(bp->order, (size_t)bp->order_capacity * sizeof(int));
+    sx_free(bp->mark, (size_t)bp->mark_capacity);
+    sx_free(bp->pairs, (size_t)bp->pair_capacity * sizeof(uint64_t));
+    memset(bp, 0, sizeof(*bp));
+}
+
+static int sx_compare_keys(const void *a, const void *b) {
+    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+    return x < y ? -1 : (x > y ? 1 : 0);
+}
+
+static sx_status sx_add_pair(sx_broadphase *bp, int a, int b) {
+    void *p = bp->pairs;
+    int lo = a < b ? a : b, hi = a < b ? b : a;
+    if (bp->pair_count == bp->pair_capacity) {
+        bool ok = sx_grow_array(&p, &bp->pair_capacity, bp->pair_count + 1, sizeof(uint64_t));
+        bp->pairs = (uint64_t *)p;
+        if (!ok) return SX_ERR_NO_MEMORY;
+    }
+    bp->pairs[bp->pair_count++] = ((uint64_t)(uint32_t)lo << 32) | (uint64_t)(uint32_t)hi;
+    return SX_OK;
+}
+
+sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const unsigned char *kind,
+                               int slot_count) {
+    void *p;
+    int i, n = 0;
+    bool ok;
+    bp->pair_count = 0;
+    p = bp->mark;
+    ok = sx_grow_array(&p, &bp->mark_capacity, slot_count, 1);
+    bp->mark = (unsigned char *)p;
+    if (!ok) return SX_ERR_NO_MEMORY;
+    p = bp->order;
+    ok = sx_grow_array(&p, &bp->order_capacity, slot_count, sizeof(int));
+    bp->order = (int *)p;
+    if (!ok) return SX_ERR_NO_MEMORY;
+    if (slot_count > 0) memset(bp->mark, 0, (size_t)slot_count);
+
+    /* keep last call's order for the colliders still in, then append the
+     * newcomers in slot order */
+    for (i = 0; i < bp->order_count; ++i) {
+        int c = bp->order[i];
+        if (c < slot_count && kind[c] != 0) {
+            bp->order[n++] = c;
+            bp->mark[c] = 1;
+        }
+    }
+    for (i = 0; i < slot_count; ++i) {
+        if (kind[i] != 0 && bp->mark[i] == 0) bp->order[n++] = i;
+    }
+    bp->order_count = n;
+
+    /* insertion sort by lower x; ties broken by slot so the order is total */
+    for (i = 1; i < n; ++i) {
+        int c = bp->order[i], j = i - 1;
+        sx_real x = aabbs[c].lower.x;
+        while (j >= 0) {
+            int d = bp->order[j];
+            sx_real y = aabbs[d].lower.x;
+            if (y < x || (y == x && d < c)) break;
+            bp->order[j + 1] = d;
+            --j;
+        }
+        bp->order[j + 1] = c;
+    }
+
+    for (i = 0; i < n; ++i) {
+        int a = bp->order[i], j;
+        sx_aabb box = aabbs[a];
+        for (j = i + 1; j < n; ++j) {
+            int b = bp->order[j];
+            const sx_aabb *other = &aabbs[b];
+            if (other->lower.x > box.upper.x) break;
+            if (kind[a] != 2 && kind[b] != 2) continue;
+            if (other->lower.y > box.upper.y || other->upper.y < box.lower.y) continue;
+            if (sx_add_pair(bp, a, b) != SX_OK) return SX_ERR_NO_MEMORY;
+        }
+    }
+    if (bp->pair_count > 1) {
+        qsort(bp->pairs, (size_t)bp->pair_count, sizeof(uint64_t), sx_compare_keys);
+    }
+    return SX_OK;
+}

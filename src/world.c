@@ -1,0 +1,347 @@
+/* sepax — the world: creation, the step, and the stages that do not belong to
+ * the contact solver (applying forces, collision detection, integration).
+ *
+ * The step is symplectic Euler split into public stages so that other
+ * drivers (the flecs systems) run exactly the code sx_world_step runs. Each
+ * sub-step re-runs collision detection: a contact list that is at most one
+ * sub-step old keeps the speculative margin small and the anchors exact,
+ * which we preferred to extrapolating old contacts. Contacts are rebuilt into
+ * a second buffer and matched against the previous one by collider pair
+ * (both lists are sorted by pair key, so matching is one merge walk) and by
+ * feature id, which carries the accumulated impulses over for warm starting.
+ * Buffers only grow; a warmed-up world allocates nothing per step. */
+#include "world_internal.h"
+
+sx_world_def sx_default_world_def(void) {
+    sx_world_def d;
+    d.gravity = sx_v2(SX_R(0.0), SX_R(-10.0));
+    d.sub_steps = 4;
+    d.velocity_iterations = 4;
+    d.position_iterations = 2;
+    d.correction_factor = SX_R(0.2);
+    d.max_correction_speed = SX_R(3.0);
+    d.restitution_threshold = SX_R(1.0);
+    d.speculative_slops = SX_R(4.0);
+    d.length_units_per_meter = SX_LENGTH_UNITS_PER_METER;
+    d.body_capacity = 0;
+    return d;
+}
+
+static bool sx_world_def_is_valid(const sx_world_def *d) {
+    if (!sx_vec2_is_finite(d->gravity) || !sx_is_finite(d->correction_factor) ||
+        !sx_is_finite(d->max_correction_speed) || !sx_is_finite(d->restitution_threshold) ||
+        !sx_is_finite(d->speculative_slops) || !sx_is_finite(d->length_units_per_meter)) {
+        return false;
+    }
+    return d->sub_steps >= 1 && d->velocity_iterations >= 1 && d->position_iterations >= 0 &&
+           d->correction_factor > SX_R(0.0) && d->correction_factor <= SX_R(1.0) &&
+           d->max_correction_speed > SX_R(0.0) && d->restitution_threshold >= SX_R(0.0) &&
+           d->speculative_slops >= SX_R(0.0) && d->length_units_per_meter > SX_R(0.0) &&
+           d->body_capacity >= 0;
+}
+
+sx_world *sx_world_create(const sx_world_def *def) {
+    sx_world *w;
+    if (def == NULL || !sx_world_def_is_valid(def)) return NULL;
+    w = (sx_world *)sx_alloc(sizeof(sx_world));
+    if (w == NULL) return NULL;
+    memset(w, 0, sizeof(*w));
+    w->def = *def;
+    /* the one length scale: SX_LINEAR_SLOP's 5 mm, at this world's units */
+    w->linear_slop = SX_R(0.005) * def->length_units_per_meter;
+    w->margin = def->speculative_slops * w->linear_slop;
+    w->body_free = -1;
+    w->collider_free = -1;
+    sx_broadphase_init(&w->bp);
+    if (def->body_capacity > 0) {
+        void *sims = NULL, *infos = NULL;
+        bool ok = sx_grow_array(&sims, &w->sim_capacity, def->body_capacity, sizeof(sx_body_sim));
+        w->sims = (sx_body_sim *)sims;
+        ok = ok && sx_grow_array(&infos, &w->info_capacity, def->body_capacity,
+                                 sizeof(sx_body_info));
+        w->infos = (sx_body_info *)infos;
+        if (!ok) {
+            sx_world_destroy(w);
+            return NULL;
+        }
+    }
+    return w;
+}
+
+void sx_world_destroy(sx_world *world) {
+    if (world == NULL) return;
+    sx_free(world->sims, (size_t)world->sim_capacity * sizeof(sx_body_sim));
+    sx_free(world->infos, (size_t)world->info_capacity * sizeof(sx_body_info));
+    sx_free(world->colliders, (size_t)world->collider_capacity * sizeof(sx_collider));
+    sx_free(world->aabbs, (size_t)world->aabb_capacity * sizeof(sx_aabb));
+    sx_free(world->bp_kind, (size_t)world->kind_capacity);
+    sx_free(world->contacts, (size_t)world->contact_capacity * sizeof(sx_contact));
+    sx_free(world->old_contacts, (size_t)world->old_contact_capacity * sizeof(sx_contact));
+    sx_broadphase_free(&world->bp);
+    sx_free(world, sizeof(sx_world));
+}
+
+sx_status sx_world_set_gravity(sx_world *world, sx_vec2 gravity) {
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+    if (!sx_vec2_is_finite(gravity)) return SX_ERR_NONFINITE;
+    world->def.gravity = gravity;
+    return SX_OK;
+}
+
+sx_vec2 sx_world_get_gravity(const sx_world *world) {
+    return world == NULL ? sx_v2_zero() : world->def.gravity;
+}
+
+int sx_world_body_count(const sx_world *world) { return world == NULL ? 0 : world->body_count; }
+
+sx_real sx_world_linear_slop(const sx_world *world) {
+    return world == NULL ? SX_R(0.0) : world->linear_slop;
+}
+
+/* The answer every stage gives to a bad world or time step. */
+static sx_status sx_check_step(const sx_world *world, sx_real h) {
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+    if (!sx_is_finite(h)) return SX_ERR_NONFINITE;
+    if (!(h > SX_R(0.0))) return SX_ERR_INVALID_ARG;
+    return SX_OK;
+}
+
+/* ---- stage 1: forces ---------------------------------------------------- */
+
+sx_status sx_world_apply_forces(sx_world *world, sx_real h) {
+    sx_status s = sx_check_step(world, h);
+    sx_vec2 g;
+    int i;
+    if (s != SX_OK) return s;
+    g = world->def.gravity;
+    for (i = 0; i < world->body_slots; ++i) {
+        sx_body_sim *b = &world->sims[i];
+        sx_vec2 accel;
+        if (!world->infos[i].alive || !b->dynamic) continue;
+        accel = sx_add(sx_scale(g, b->gravity_scale), sx_scale(b->force, b->inv_mass));
+        b->v = sx_add(sx_mul_add(b->v, h, accel), sx_scale(b->impulse, b->inv_mass));
+        b->w = b->w + h * (b->torque * b->inv_inertia) + b->angular_impulse * b->inv_inertia;
+        /* implicit damping: stable for any h, exact decay for small h */
+        if (b->linear_damping > SX_R(0.0)) {
+            b->v = sx_scale(b->v, SX_R(1.0) / (SX_R(1.0) + h * b->linear_damping));
+        }
+        if (b->angular_damping > SX_R(0.0)) {
+            b->w = b->w / (SX_R(1.0) + h * b->angular_damping);
+        }
+        b->impulse = sx_v2_zero();
+        b->angular_impulse = SX_R(0.0);
+    }
+    return SX_OK;
+}
+
+sx_status sx_world_clear_forces(sx_world *world) {
+    int i;
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+    for (i = 0; i < world->body_slots; ++i) {
+        world->sims[i].force = sx_v2_zero();
+        world->sims[i].torque = SX_R(0.0);
+    }
+    return SX_OK;
+}
+
+/* ---- stage 2: collision ------------------------------------------------- */
+
+static bool sx_filters_collide(const sx_filter *a, const sx_filter *b) {
+    if (a->group == b->group && a->group != 0) return a->group > 0;
+    return (a->category & b->mask) != 0 && (b->category & a->mask) != 0;
+}
+
+/* Copies the warm-starting impulses (and a deferred impact) of the old
+ * contact's point with the same feature id, if any. */
+static void sx_match_point(sx_contact_point *p, const sx_contact *old) {
+    int k;
+    p->normal_impulse = SX_R(0.0);
+    p->tangent_impulse = SX_R(0.0);
+    p->pending_approach = SX_R(0.0);
+    p->pending_impulse = SX_R(0.0);
+    if (old == NULL) return;
+    for (k = 0; k < old->count; ++k) {
+        if (old->points[k].id == p->id) {
+            p->normal_impulse = old->points[k].normal_impulse;
+            p->tangent_impulse = old->points[k].tangent_impulse;
+            p->pending_approach = old->points[k].pending_approach;
+            p->pending_impulse = old->points[k].pending_impulse;
+            return;
+        }
+    }
+}
+
+sx_status sx_world_collide(sx_world *world) {
+    sx_contact *swap;
+    int i, old_index = 0, cap;
+    sx_status s;
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+
+    for (i = 0; i < world->collider_slots; ++i) {
+        const sx_collider *c = &world->colliders[i];
+        const sx_body_sim *b;
+        world->bp_kind[i] = 0;
+        if (!c->alive || c->sensor || !world->infos[c->body].enabled) continue;
+        b = &world->sims[c->body];
+        world->bp_kind[i] = b->dynamic ? 2 : 1;
+        /* half the margin on each side: bounds meet when the gap < margin */
+        world->aabbs[i] = sx_aabb_fatten(sx_shape_aabb(&c->shape, b->xf), SX_R(0.5) * world->margin);
+    }
+    s = sx_broadphase_update(&world->bp, world->aabbs, world->bp_kind, world->collider_slots);
+    if (s != SX_OK) return s;
+
+    swap = world->old_contacts;
+    world->old_contacts = world->contacts;
+    world->contacts = swap;
+    cap = world->old_contact_capacity;
+    world->old_contact_capacity = world->contact_capacity;
+    world->contact_capacity = cap;
+    world->old_contact_count = world->contact_count;
+    world->contact_count = 0;
+
+    for (i = 0; i < world->bp.pair_count; ++i) {
+        uint64_t key = world->bp.pairs[i];
+        int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), k;
+        const sx_collider *ca = &world->colliders[ia], *cb = &world->colliders[ib];
+        const sx_body_sim *ba, *bb;
+        const sx_contact *old = NULL;
+        sx_contact *c;
+        sx_manifold m;
+        int n;
+        if (ca->body == cb->body || !sx_filters_collide(&ca->filter, &cb->filter)) continue;
+        ba = &world->sims[ca->body];
+        bb = &world->sims[cb->body];
+        n = sx_collide_ex(&ca->shape, ba->xf, &cb->shape, bb->xf, world->margin, &m);
+        if (n <= 0) continue;
+        if (world->contact_count == world->contact_capacity) {
+            void *p = world->contacts;
+            bool ok = sx_grow_array(&p, &world->contact_capacity, world->contact_count + 1,
+                                    sizeof(sx_contact));
+            world->contacts = (sx_contact *)p;
+            if (!ok) return SX_ERR_NO_MEMORY;
+        }
+        while (old_index < world->old_contact_count &&
+               world->old_contacts[old_index].key < key) {
+            ++old_index;
+        }
+        if (old_index < world->old_contact_count && world->old_contacts[old_index].key == key) {
+            old = &world->old_contacts[old_index];
+        }
+        c = &world->contacts[world->contact_count++];
+        c->key = key;
+        c->collider_a = ia;
+        c->collider_b = ib;
+        c->body_a = ca->body;
+        c->body_b = cb->body;
+        c->normal = m.normal;
+        c->local_normal = sx_inv_rotate(ba->xf.q, m.normal);
+        c->friction = sx_sqrt(ca->friction * cb->friction);
+        c->restitution = sx_maxr(ca->restitution, cb->restitution);
+        c->count = n;
+        for (k = 0; k < n; ++k) {
+            const sx_manifold_point *mp = &m.points[k];
+            sx_contact_point *p = &c->points[k];
+            /* the surface points of A and B, depth apart along the normal */
+            sx_vec2 pa = sx_mul_add(mp->point, SX_R(0.5) * mp->depth, m.normal);
+            sx_vec2 pb = sx_mul_sub(mp->point, SX_R(0.5) * mp->depth, m.normal);
+            memset(p, 0, sizeof(*p));
+            p->point = mp->point;
+            p->local_a = sx_xform_inv_point(ba->xf, pa);
+            p->local_b = sx_xform_inv_point(bb->xf, pb);
+            p->anchor_a = sx_sub(mp->point, ba->center);
+            p->anchor_b = sx_sub(mp->point, bb->center);
+            p->separation = -mp->depth;
+            p->id = mp->id;
+            sx_match_point(p, old);
+        }
+    }
+    return SX_OK;
+}
+
+int sx_world_contact_count(const sx_world *world) {
+    return world == NULL ? 0 : world->contact_count;
+}
+
+sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data *out) {
+    const sx_contact *c;
+    int k;
+    if (world == NULL || out == NULL || index < 0 || index >= world->contact_count) {
+        return SX_ERR_INVALID_ARG;
+    }
+    c = &world->contacts[index];
+    memset(out, 0, sizeof(*out));
+    out->collider_a.index = (uint32_t)c->collider_a;
+    out->collider_a.generation = world->colliders[c->collider_a].generation;
+    out->collider_b.index = (uint32_t)c->collider_b;
+    out->collider_b.generation = world->colliders[c->collider_b].generation;
+    out->body_a.index = (uint32_t)c->body_a;
+    out->body_a.generation = world->infos[c->body_a].generation;
+    out->body_b.index = (uint32_t)c->body_b;
+    out->body_b.generation = world->infos[c->body_b].generation;
+    out->normal = c->normal;
+    out->count = c->count;
+    for (k = 0; k < c->count; ++k) {
+        out->points[k] = c->points[k].point;
+        out->depths[k] = -c->points[k].separation;
+        out->normal_impulses[k] = c->points[k].normal_impulse;
+        out->tangent_impulses[k] = c->points[k].tangent_impulse;
+    }
+    return SX_OK;
+}
+
+/* ---- stage 3: solve ------------------------------------------------------ */
+
+sx_status sx_world_solve(sx_world *world, sx_real h) {
+    sx_status s = sx_check_step(world, h);
+    int it;
+    if (s != SX_OK) return s;
+    sx_contacts_prepare(world, h);
+    for (it = 0; it < world->def.velocity_iterations; ++it) sx_contacts_solve(world, h);
+    sx_contacts_restitution(world);
+    return SX_OK;
+}
+
+/* ---- stage 4: integrate -------------------------------------------------- */
+
+sx_status sx_world_integrate(sx_world *world, sx_real h) {
+    sx_status s = sx_check_step(world, h);
+    int i;
+    if (s != SX_OK) return s;
+    for (i = 0; i < world->body_slots; ++i) {
+        sx_body_sim *b = &world->sims[i];
+        if (!world->infos[i].alive || !b->moving) continue;
+        b->center = sx_mul_add(b->center, h, b->v);
+        if (b->w != SX_R(0.0)) b->xf.q = sx_rot_integrate(b->xf.q, h * b->w);
+        sx_body_sync_origin(b);
+    }
+    return SX_OK;
+}
+
+/* ---- stage 5: separate --------------------------------------------------- */
+
+sx_status sx_world_separate(sx_world *world, sx_real h) {
+    sx_status s = sx_check_step(world, h);
+    if (s != SX_OK) return s;
+    sx_contacts_separate(world, h);
+    return SX_OK;
+}
+
+/* ---- the step ------------------------------------------------------------- */
+
+sx_status sx_world_step(sx_world *world, sx_real dt) {
+    sx_status s = sx_check_step(world, dt);
+    sx_real h;
+    int i;
+    if (s != SX_OK) return s;
+    h = dt / (sx_real)world->def.sub_steps;
+    for (i = 0; i < world->def.sub_steps; ++i) {
+        sx_world_apply_forces(world, h);
+        s = sx_world_collide(world);
+        if (s != SX_OK) return s;
+        sx_world_solve(world, h);
+        sx_world_integrate(world, h);
+        sx_world_separate(world, h);
+    }
+    sx_world_clear_forces(world);
+    return SX_OK;
+}
