@@ -26,6 +26,11 @@
  * changes positions only). */
 #include "world_internal.h"
 
+/* Largest condition estimate k11^2 / det(K) of a two-point contact's mass
+ * matrix for which the block solver is used (Box2D's value: beyond it the
+ * 2x2 solve amplifies round-off more than it gains). */
+#define SX_BLOCK_MAX_CONDITION SX_R(1000.0)
+
 void sx_contacts_prepare(sx_world *world, sx_real h) {
     int i, k;
     SX_UNUSED(h);
@@ -53,7 +58,84 @@ void sx_contacts_prepare(sx_world *world, sx_real h) {
             b->v = sx_mul_add(b->v, mb, impulse);
             b->w += ib * sx_cross(rb, impulse);
         }
+        c->block_solve = false;
+        if (c->count == 2) {
+            const sx_contact_point *p1 = &c->points[0], *p2 = &c->points[1];
+            sx_real r1a = sx_cross(p1->anchor_a, n), r1b = sx_cross(p1->anchor_b, n);
+            sx_real r2a = sx_cross(p2->anchor_a, n), r2b = sx_cross(p2->anchor_b, n);
+            sx_real det;
+            c->k11 = ma + mb + ia * r1a * r1a + ib * r1b * r1b;
+            c->k22 = ma + mb + ia * r2a * r2a + ib * r2b * r2b;
+            c->k12 = ma + mb + ia * r1a * r2a + ib * r1b * r2b;
+            det = c->k11 * c->k22 - c->k12 * c->k12;
+            /* Solve the two points together only when K is well conditioned:
+             * points almost on top of each other make K nearly singular, and
+             * the sequential solve handles them. */
+            if (c->k11 * c->k11 < SX_BLOCK_MAX_CONDITION * det) {
+                sx_real inv_det = SX_R(1.0) / det;
+                c->inv11 = c->k22 * inv_det;
+                c->inv22 = c->k11 * inv_det;
+                c->inv12 = -c->k12 * inv_det;
+                c->block_solve = true;
+            }
+        }
     }
+}
+
+/* The relative normal velocity a point's constraint wants to be >= 0: a
+ * speculative point (gap s > 0) may approach at s / h. */
+static sx_real sx_normal_error(const sx_contact_point *p, sx_real vn, sx_real inv_h) {
+    return p->separation > SX_R(0.0) ? vn + p->separation * inv_h : vn;
+}
+
+/* Solves both normal constraints of a two-point contact at once: the 2x2
+ * linear complementarity problem K x + b >= 0, x >= 0, x . (K x + b) = 0
+ * for the accumulated impulses x, by trying its four cases in turn (both
+ * points push; only the first; only the second; neither). One point at a
+ * time, the two points of a face resting on a face undo each other's work,
+ * which shows as a stack that rocks. Returns false if no case fits (round-off
+ * on a degenerate K), leaving the velocities untouched. */
+static bool sx_block_solve(const sx_contact *c, sx_contact_point *p1, sx_contact_point *p2,
+                           sx_real vn1, sx_real vn2, sx_real inv_h, sx_real *x1, sx_real *x2) {
+    sx_real a1 = p1->normal_impulse, a2 = p2->normal_impulse;
+    /* b = error of the current velocities minus what the current impulses did */
+    sx_real b1 = sx_normal_error(p1, vn1, inv_h) - (c->k11 * a1 + c->k12 * a2);
+    sx_real b2 = sx_normal_error(p2, vn2, inv_h) - (c->k12 * a1 + c->k22 * a2);
+    sx_real y1, y2;
+    /* both push: x = -K^-1 b */
+    y1 = -(c->inv11 * b1 + c->inv12 * b2);
+    y2 = -(c->inv12 * b1 + c->inv22 * b2);
+    if (y1 >= SX_R(0.0) && y2 >= SX_R(0.0)) goto done;
+    /* only the first pushes; the second must then separate */
+    y1 = -b1 / c->k11;
+    y2 = SX_R(0.0);
+    if (y1 >= SX_R(0.0) && c->k12 * y1 + b2 >= SX_R(0.0)) goto done;
+    y1 = SX_R(0.0);
+    y2 = -b2 / c->k22;
+    if (y2 >= SX_R(0.0) && c->k12 * y2 + b1 >= SX_R(0.0)) goto done;
+    y1 = SX_R(0.0);
+    y2 = SX_R(0.0);
+    if (b1 >= SX_R(0.0) && b2 >= SX_R(0.0)) goto done;
+    return false;
+done:
+    *x1 = y1;
+    *x2 = y2;
+    return true;
+}
+
+/* Applies an impulse along `dir` at the two anchors of a point. */
+static void sx_apply(sx_vec2 *va, sx_real *wa, sx_vec2 *vb, sx_real *wb, sx_real ma, sx_real ia,
+                     sx_real mb, sx_real ib, const sx_contact_point *p, sx_vec2 impulse) {
+    *va = sx_mul_sub(*va, ma, impulse);
+    *wa -= ia * sx_cross(p->anchor_a, impulse);
+    *vb = sx_mul_add(*vb, mb, impulse);
+    *wb += ib * sx_cross(p->anchor_b, impulse);
+}
+
+static sx_real sx_point_speed(sx_vec2 va, sx_real wa, sx_vec2 vb, sx_real wb,
+                              const sx_contact_point *p, sx_vec2 dir) {
+    sx_vec2 dv = sx_sub(sx_add(vb, sx_cross_sv(wb, p->anchor_b)), sx_add(va, sx_cross_sv(wa, p->anchor_a)));
+    return sx_dot(dv, dir);
 }
 
 void sx_contacts_solve(sx_world *world, sx_real h) {
@@ -65,45 +147,48 @@ void sx_contacts_solve(sx_world *world, sx_real h) {
         sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;
         sx_vec2 va = a->v, vb = b->v, n = c->normal, t = sx_cross_vs(n, SX_R(1.0));
         sx_real wa = a->w, wb = b->w;
-        for (k = 0; k < c->count; ++k) {
-            sx_contact_point *p = &c->points[k];
-            sx_vec2 dv = sx_sub(sx_add(vb, sx_cross_sv(wb, p->anchor_b)),
-                                sx_add(va, sx_cross_sv(wa, p->anchor_a)));
-            sx_real vn = sx_dot(dv, n), lambda, total;
-            sx_vec2 impulse;
-            if (p->separation > SX_R(0.0)) {
-                lambda = -p->normal_mass * (vn + p->separation * inv_h);
-            } else {
-                lambda = -p->normal_mass * vn;
-            }
-            total = sx_maxr(p->normal_impulse + lambda, SX_R(0.0));
-            lambda = total - p->normal_impulse;
-            p->normal_impulse = total;
-            p->max_normal_impulse = sx_maxr(p->max_normal_impulse, total);
-            impulse = sx_scale(n, lambda);
-            va = sx_mul_sub(va, ma, impulse);
-            wa -= ia * sx_cross(p->anchor_a, impulse);
-            vb = sx_mul_add(vb, mb, impulse);
-            wb += ib * sx_cross(p->anchor_b, impulse);
-        }
-        /* friction after the normal impulses, so the cone uses this pass's
-         * normal impulse; a frictionless contact costs nothing here */
+        bool solved = false;
+        /* Friction first, with the normal impulses of the last pass (or of
+         * the warm start): the normal constraints then have the last word,
+         * so a pass never ends with a point moving into the surface. A
+         * frictionless contact costs nothing here. */
         if (c->friction > SX_R(0.0)) {
             for (k = 0; k < c->count; ++k) {
                 sx_contact_point *p = &c->points[k];
-                sx_vec2 dv = sx_sub(sx_add(vb, sx_cross_sv(wb, p->anchor_b)),
-                                    sx_add(va, sx_cross_sv(wa, p->anchor_a)));
                 sx_real limit = c->friction * p->normal_impulse;
-                sx_real lambda = -p->tangent_mass * sx_dot(dv, t);
+                sx_real lambda = -p->tangent_mass * sx_point_speed(va, wa, vb, wb, p, t);
                 sx_real total = sx_clampr(p->tangent_impulse + lambda, -limit, limit);
-                sx_vec2 impulse;
                 lambda = total - p->tangent_impulse;
                 p->tangent_impulse = total;
-                impulse = sx_scale(t, lambda);
-                va = sx_mul_sub(va, ma, impulse);
-                wa -= ia * sx_cross(p->anchor_a, impulse);
-                vb = sx_mul_add(vb, mb, impulse);
-                wb += ib * sx_cross(p->anchor_b, impulse);
+                sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p, sx_scale(t, lambda));
+            }
+        }
+        if (c->block_solve) {
+            sx_contact_point *p1 = &c->points[0], *p2 = &c->points[1];
+            sx_real x1, x2;
+            sx_real vn1 = sx_point_speed(va, wa, vb, wb, p1, n);
+            sx_real vn2 = sx_point_speed(va, wa, vb, wb, p2, n);
+            if (sx_block_solve(c, p1, p2, vn1, vn2, inv_h, &x1, &x2)) {
+                sx_real d1 = x1 - p1->normal_impulse, d2 = x2 - p2->normal_impulse;
+                sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p1, sx_scale(n, d1));
+                sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p2, sx_scale(n, d2));
+                p1->normal_impulse = x1;
+                p2->normal_impulse = x2;
+                p1->max_normal_impulse = sx_maxr(p1->max_normal_impulse, x1);
+                p2->max_normal_impulse = sx_maxr(p2->max_normal_impulse, x2);
+                solved = true;
+            }
+        }
+        if (!solved) {
+            for (k = 0; k < c->count; ++k) {
+                sx_contact_point *p = &c->points[k];
+                sx_real vn = sx_point_speed(va, wa, vb, wb, p, n);
+                sx_real lambda = -p->normal_mass * sx_normal_error(p, vn, inv_h);
+                sx_real total = sx_maxr(p->normal_impulse + lambda, SX_R(0.0));
+                lambda = total - p->normal_impulse;
+                p->normal_impulse = total;
+                p->max_normal_impulse = sx_maxr(p->max_normal_impulse, total);
+                sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p, sx_scale(n, lambda));
             }
         }
         a->v = va;

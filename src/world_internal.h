@@ -87,6 +87,10 @@ typedef struct sx_contact {
     sx_real friction, restitution;
     int count;
     sx_contact_point points[2];
+    /* two-point manifolds: the 2x2 normal effective-mass matrix K and its
+     * inverse, when K is well conditioned (block_solve) */
+    sx_real k11, k12, k22, inv11, inv12, inv22;
+    bool block_solve;
 } sx_contact;
 
 /* Sort-and-sweep broadphase: keeps the colliders ordered by the lower x of

@@ -371,6 +371,65 @@ static void heavy_box_on_light_box_penetrates_less_than_five_slops(void **state)
     sx_world_destroy(w);
 }
 
+static void wide_plank_on_two_small_boxes_penetrates_less_than_five_slops(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5)), plank = sx_box_shape(SX_R(10.0), SX_R(0.5));
+    sx_body_id p;
+    double deepest = 0.0;
+    int s;
+    (void)state;
+    add_ground(w, SX_R(20.0), SX_R(0.6));
+    add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-9.0), SX_R(0.5)), SX_R(0.0), &box, SX_R(1.0), SX_R(0.6),
+             SX_R(0.0));
+    add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(9.0), SX_R(0.5)), SX_R(0.0), &box, SX_R(1.0), SX_R(0.6),
+             SX_R(0.0));
+    /* 20 m x 1 m of density 1: 20 kg on two 1 kg boxes */
+    p = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(1.5)), SX_R(0.0), &plank, SX_R(1.0),
+                 SX_R(0.6), SX_R(0.0));
+    for (s = 0; s < 300; ++s) {
+        double d;
+        step_n(w, 1);
+        d = max_depth(w);
+        if (d > deepest) deepest = d;
+    }
+    printf("  plank 20:1 on two boxes: max depth %.5f m = %.2f slop, plank y %.4f, angle %.2e\n",
+           deepest, deepest / (double)sx_world_linear_slop(w), (double)sx_body_get_position(w, p).y,
+           (double)sx_body_get_angle(w, p));
+    assert_true(deepest < 5.0 * (double)sx_world_linear_slop(w));
+    assert_near(sx_body_get_position(w, p).y, 1.5, 5.0 * (double)sx_world_linear_slop(w));
+    assert_near(sx_body_get_angle(w, p), 0.0, 1e-3);
+    sx_world_destroy(w);
+}
+
+/* ---- stack ------------------------------------------------------------------ */
+
+static void column_of_20_boxes_creeps_less_than_a_centimetre_in_10_seconds(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_body_id ids[20];
+    sx_vec2 start[20];
+    double creep = 0.0;
+    int i;
+    (void)state;
+    add_ground(w, SX_R(10.0), SX_R(0.6));
+    for (i = 0; i < 20; ++i) {
+        /* alternate rows shifted +-1 cm, as SCENES.md's stack20 */
+        start[i] = sx_v2((i % 2) ? SX_R(0.01) : SX_R(-0.01), SX_R(0.5) + (sx_real)i);
+        ids[i] = add_body(w, SX_BODY_DYNAMIC, start[i], SX_R(0.0), &box, SX_R(1.0), SX_R(0.6),
+                          SX_R(0.0));
+    }
+    step_n(w, 600);
+    for (i = 0; i < 20; ++i) {
+        double dx = fabs((double)(sx_body_get_position(w, ids[i]).x - start[i].x));
+        if (dx > creep) creep = dx;
+    }
+    printf("  stack20: largest lateral creep %.5f m, top y %.4f (from %.4f)\n", creep,
+           (double)sx_body_get_position(w, ids[19]).y, (double)start[19].y);
+    assert_true(creep < 0.01);
+    assert_near(sx_body_get_position(w, ids[19]).y, start[19].y, 0.05);
+    sx_world_destroy(w);
+}
+
 /* ---- overlap recovery ------------------------------------------------------- */
 
 static void overlapping_pyramid_separates_without_gaining_speed(void **state) {
@@ -424,6 +483,8 @@ int main(void) {
         cmocka_unit_test(pileup_conserves_momentum_and_never_gains_energy),
         cmocka_unit_test(pyramid_of_base_20_stands_for_10_seconds),
         cmocka_unit_test(heavy_box_on_light_box_penetrates_less_than_five_slops),
+        cmocka_unit_test(wide_plank_on_two_small_boxes_penetrates_less_than_five_slops),
+        cmocka_unit_test(column_of_20_boxes_creeps_less_than_a_centimetre_in_10_seconds),
         cmocka_unit_test(overlapping_pyramid_separates_without_gaining_speed),
     };
     return cmocka_run_group_tests_name("scenes", tests, sx_test_group_setup,
