@@ -78,6 +78,8 @@ void sx_world_destroy(sx_world *world) {
     sx_free(world->contacts, (size_t)world->contact_capacity * sizeof(sx_contact));
     sx_free(world->old_contacts, (size_t)world->old_contact_capacity * sizeof(sx_contact));
     sx_broadphase_free(&world->bp);
+    sx_free(world->begin_events, (size_t)world->begin_capacity * sizeof(sx_contact_event));
+    sx_free(world->end_events, (size_t)world->end_capacity * sizeof(sx_contact_event));
     sx_free(world, sizeof(sx_world));
 }
 
@@ -171,6 +173,73 @@ static void sx_match_point(sx_contact_point *p, const sx_contact *old) {
     }
 }
 
+/* Appends the event of contact c to an event array. */
+static bool sx_push_event(const sx_world *world, const sx_contact *c, sx_contact_event **events,
+                          int *count, int *capacity) {
+    sx_contact_event *e;
+    if (*count == *capacity) {
+        void *p = *events;
+        bool ok = sx_grow_array(&p, capacity, *count + 1, sizeof(sx_contact_event));
+        *events = (sx_contact_event *)p;
+        if (!ok) return false;
+    }
+    e = &(*events)[(*count)++];
+    e->collider_a.index = (uint32_t)c->collider_a;
+    e->collider_a.generation = world->colliders[c->collider_a].generation;
+    e->collider_b.index = (uint32_t)c->collider_b;
+    e->collider_b.generation = world->colliders[c->collider_b].generation;
+    e->body_a.index = (uint32_t)c->body_a;
+    e->body_a.generation = world->infos[c->body_a].generation;
+    e->body_b.index = (uint32_t)c->body_b;
+    e->body_b.generation = world->infos[c->body_b].generation;
+    return true;
+}
+
+/* Compares the new contact list with the old one (both sorted by key):
+ * pairs only in the new one began, pairs only in the old one ended. */
+static sx_status sx_record_events(sx_world *world) {
+    int i = 0, j = 0;
+    while (i < world->contact_count || j < world->old_contact_count) {
+        const sx_contact *n = i < world->contact_count ? &world->contacts[i] : NULL;
+        const sx_contact *o = j < world->old_contact_count ? &world->old_contacts[j] : NULL;
+        if (n != NULL && o != NULL && n->key == o->key) {
+            ++i;
+            ++j;
+        } else if (o == NULL || (n != NULL && n->key < o->key)) {
+            if (!sx_push_event(world, n, &world->begin_events, &world->begin_count,
+                               &world->begin_capacity)) {
+                return SX_ERR_NO_MEMORY;
+            }
+            ++i;
+        } else {
+            if (!sx_push_event(world, o, &world->end_events, &world->end_count,
+                               &world->end_capacity)) {
+                return SX_ERR_NO_MEMORY;
+            }
+            ++j;
+        }
+    }
+    return SX_OK;
+}
+
+sx_contact_events sx_world_get_contact_events(const sx_world *world) {
+    sx_contact_events e;
+    memset(&e, 0, sizeof(e));
+    if (world == NULL) return e;
+    e.begin = world->begin_events;
+    e.begin_count = world->begin_count;
+    e.end = world->end_events;
+    e.end_count = world->end_count;
+    return e;
+}
+
+sx_status sx_world_clear_events(sx_world *world) {
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+    world->begin_count = 0;
+    world->end_count = 0;
+    return SX_OK;
+}
+
 sx_status sx_world_collide(sx_world *world) {
     sx_contact *swap;
     int i, old_index = 0, cap;
@@ -255,7 +324,7 @@ sx_status sx_world_collide(sx_world *world) {
             sx_match_point(p, old);
         }
     }
-    return SX_OK;
+    return sx_record_events(world);
 }
 
 int sx_world_contact_count(const sx_world *world) {
@@ -334,6 +403,7 @@ sx_status sx_world_step(sx_world *world, sx_real dt) {
     int i;
     if (s != SX_OK) return s;
     h = dt / (sx_real)world->def.sub_steps;
+    sx_world_clear_events(world);
     for (i = 0; i < world->def.sub_steps; ++i) {
         sx_world_apply_forces(world, h);
         s = sx_world_collide(world);

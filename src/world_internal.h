@@ -125,6 +125,9 @@ struct sx_world {
     int contact_count, old_contact_count, contact_capacity, old_contact_capacity;
 
     sx_broadphase bp;
+
+    sx_contact_event *begin_events, *end_events;
+    int begin_count, begin_capacity, end_count, end_capacity;
 };
 
 /* Grows *array (elements of `size` bytes, *capacity of them) to hold at least

@@ -474,6 +474,45 @@ static void filtered_pairs_and_sensors_make_no_contacts(void **state) {
     sx_world_destroy(w);
 }
 
+static void contact_events_report_begin_once_and_end_once(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(1.0)), ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    sx_body_id g = make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-1.0)), &ground);
+    sx_body_id b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(1.5)), &ball);
+    sx_contact_events e;
+    int s, begins = 0, ends = 0, began_at = -1;
+    (void)state;
+    e = sx_world_get_contact_events(NULL);
+    assert_int_equal(e.begin_count + e.end_count, 0);
+    assert_int_equal(sx_world_clear_events(NULL), SX_ERR_INVALID_ARG);
+    /* falls 1 m: touches after about 0.45 s, then rests */
+    for (s = 0; s < 120; ++s) {
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+        e = sx_world_get_contact_events(w);
+        if (e.begin_count > 0 && began_at < 0) {
+            began_at = s;
+            assert_true(sx_body_id_to_u64(e.begin[0].body_a) == sx_body_id_to_u64(g));
+            assert_true(sx_body_id_to_u64(e.begin[0].body_b) == sx_body_id_to_u64(b));
+            assert_true(sx_collider_is_valid(w, e.begin[0].collider_a));
+        }
+        begins += e.begin_count;
+        ends += e.end_count;
+    }
+    assert_int_equal(begins, 1);
+    assert_int_equal(ends, 0);
+    /* sqrt(2 x 1 m / 10) = 0.447 s; the margin reports it up to a step early */
+    assert_true(began_at >= 24 && began_at <= 27);
+    assert_int_equal(sx_body_set_transform(w, b, sx_v2(SX_R(0.0), SX_R(5.0)), SX_R(0.0)), SX_OK);
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    e = sx_world_get_contact_events(w);
+    assert_int_equal(e.begin_count, 0);
+    assert_int_equal(e.end_count, 1);
+    assert_true(sx_body_id_to_u64(e.end[0].body_b) == sx_body_id_to_u64(b));
+    assert_int_equal(sx_world_clear_events(w), SX_OK);
+    assert_int_equal(sx_world_get_contact_events(w).end_count, 0);
+    sx_world_destroy(w);
+}
+
 static void destroying_bodies_mid_run_and_the_world_frees_everything(void **state) {
     size_t start = sx_live_bytes();
     sx_body_id ids[10];
@@ -513,6 +552,7 @@ int main(void) {
         cmocka_unit_test(stages_called_one_by_one_equal_the_step),
         cmocka_unit_test(resting_box_contact_carries_its_weight),
         cmocka_unit_test(filtered_pairs_and_sensors_make_no_contacts),
+        cmocka_unit_test(contact_events_report_begin_once_and_end_once),
         cmocka_unit_test(destroying_bodies_mid_run_and_the_world_frees_everything),
     };
     return cmocka_run_group_tests_name("world", tests, sx_test_group_setup,

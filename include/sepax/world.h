@@ -124,9 +124,9 @@ sx_real sx_world_linear_slop(const sx_world *world);
 
 /* ---- the step and its stages -------------------------------------------- */
 
-/** Advances the world by dt seconds: for each sub-step, apply_forces,
- *  collide, solve, integrate and separate with h = dt / sub_steps; then
- *  clear_forces. Errors (the world is left untouched): SX_ERR_INVALID_ARG
+/** Advances the world by dt seconds: clears the contact events, then for
+ *  each sub-step runs apply_forces, collide, solve, integrate and separate
+ *  with h = dt / sub_steps, then clear_forces. Errors (the world is left untouched): SX_ERR_INVALID_ARG
  *  (NULL world, dt <= 0), SX_ERR_NONFINITE (dt NaN or infinite),
  *  SX_ERR_NO_MEMORY (the contact list could not grow: the step stops after
  *  the stages already run). */
@@ -147,7 +147,8 @@ sx_status sx_world_apply_forces(sx_world *world, sx_real h);
  *  static-kinematic pairs, colliders of one body, filtered pairs and sensors
  *  are skipped. Contacts persist across calls by collider pair, and each
  *  point keeps its accumulated impulses while its feature id persists (warm
- *  starting). Errors: SX_ERR_INVALID_ARG (NULL), SX_ERR_NO_MEMORY. */
+ *  starting). Pairs that start or stop having a manifold are recorded as
+ *  contact events. Errors: SX_ERR_INVALID_ARG (NULL), SX_ERR_NO_MEMORY. */
 sx_status sx_world_collide(sx_world *world);
 
 /** Stage 3: sequential impulses on the contacts of the last collide:
@@ -208,6 +209,37 @@ int sx_world_contact_count(const sx_world *world);
 /** Copies contact `index` (0 .. count-1) into *out. SX_ERR_INVALID_ARG for
  *  NULL or an index out of range. */
 sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data *out);
+
+/* ---- contact events ------------------------------------------------------ */
+
+/** Two colliders that started or stopped touching. "Touching" is having a
+ *  contact manifold: shapes within the speculative margin of each other, so
+ *  a resting contact that rocks by a fraction of a millimetre does not
+ *  flicker. Handles are those of the colliders and bodies at the time. */
+typedef struct sx_contact_event {
+    sx_collider_id collider_a, collider_b;
+    sx_body_id body_a, body_b;
+} sx_contact_event;
+
+/** Read-only views of the events recorded since the last
+ *  sx_world_clear_events (sx_world_step clears at its start, so after a step
+ *  they are that step's events, over all its sub-steps). Within each array
+ *  the order is deterministic (by collider pair within a collide call). A
+ *  pair that began and ended within one step appears in both arrays.
+ *  Destroying a body or collider removes its contacts without an end event.
+ *  The pointers are valid until the next call that changes the world. */
+typedef struct sx_contact_events {
+    const sx_contact_event *begin;
+    int begin_count;
+    const sx_contact_event *end;
+    int end_count;
+} sx_contact_events;
+
+/** The events recorded since the last clear (all empty for NULL). */
+sx_contact_events sx_world_get_contact_events(const sx_world *world);
+
+/** Forgets the recorded events. SX_ERR_INVALID_ARG for NULL. */
+sx_status sx_world_clear_events(sx_world *world);
 
 /* ---- bodies ------------------------------------------------------------- */
 
