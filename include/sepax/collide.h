@@ -162,56 +162,95 @@ int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, s
                         sx_real margin, sx_manifold *out);
 /* ---- point queries ------------------------------------------------------ */
 
+/* All point queries move p into the shape's local frame first. A NULL or
+ * unusable shape (unknown type, NaN/Inf coordinate, negative or non-finite
+ * radius, polygon count outside 3..SX_MAX_POLYGON_VERTICES), a non-finite
+ * transform or a non-finite p is answered as documented per function, never
+ * with a NaN. */
+
 /** True if p (world) is inside the shape placed by x, or on its boundary
  *  (within SX_LINEAR_SLOP x 1e-3). Polygons use the cross-product test on
- *  their CCW edges; segments contain only points on them. */
+ *  their CCW edges; a rounded polygon contains the points within its radius
+ *  of the core polygon. Segments (and points: circles of radius 0) contain
+ *  only the points on them, within the same band. Unusable input: false. */
 bool sx_contains_point(const sx_shape *s, sx_xform x, sx_vec2 p);
 
 /** The point of segment a-b closest to p; *t (may be NULL) receives its
- *  parameter in [0, 1] (a + t (b - a)). A zero-length segment gives a, t 0. */
+ *  parameter in [0, 1] (a + t (b - a)); at t 0 or 1 the end point is returned
+ *  exactly. A zero-length segment gives a, t 0. A non-finite input gives a
+ *  (the zero vector when a itself is not finite), t 0. */
 sx_vec2 sx_closest_point_on_segment(sx_vec2 a, sx_vec2 b, sx_vec2 p, sx_real *t);
 
 /** The point of the solid shape closest to p (world): p itself when p is
- *  inside. */
+ *  inside or on the boundary (signed distance <= 0), else the closest
+ *  boundary point. Segments and points have no interior: their closest point.
+ *  Unusable input gives the zero vector. */
 sx_vec2 sx_closest_point(const sx_shape *s, sx_xform x, sx_vec2 p);
 
-/** Signed distance from p (world) to the shape's boundary: negative inside.
+/** Signed distance from p (world) to the shape's boundary: negative inside,
+ *  never negative for segments and points (circles of radius 0). Rounded
+ *  shapes measure to the rounded boundary (core distance minus radius).
  *  *boundary_point (may be NULL) receives the closest boundary point and
- *  *normal (may be NULL) the outward unit normal there (for p exactly on a
- *  segment's line or at a circle's centre, a documented fallback: the
- *  segment's left normal, or +x). Non-finite input returns SX_REAL_MAX with
- *  zero vectors. */
+ *  *normal (may be NULL) the outward unit normal there, so that
+ *  p = boundary_point + distance * normal. Where the direction is undefined
+ *  a documented fallback is used: for p exactly on a segment's (or capsule
+ *  core's) segment, the segment's left normal perp(b - a); at a circle's
+ *  centre, or on a zero-length segment, world +x; for p exactly on a
+ *  rounded polygon's core boundary, the normal of the edge of largest
+ *  separation.
+ *  Unusable input (or a point so far out that the arithmetic overflows
+ *  sx_real) returns SX_REAL_MAX with zero vectors. */
 sx_real sx_shape_distance_to_point(const sx_shape *s, sx_xform x, sx_vec2 p, sx_vec2 *boundary_point,
                                    sx_vec2 *normal);
 
 /* ---- segment-segment intersection --------------------------------------- */
 
 typedef enum sx_segment_relation {
-    SX_SEGMENTS_DISJOINT = 0,      /**< not parallel, no common point */
+    SX_SEGMENTS_DISJOINT = 0,      /**< not parallel (or a point), no common point */
     SX_SEGMENTS_INTERSECT,         /**< exactly one common point */
     SX_SEGMENTS_PARALLEL,          /**< parallel on distinct lines */
     SX_SEGMENTS_COLLINEAR_DISJOINT, /**< on one line, no common point */
     SX_SEGMENTS_OVERLAP,           /**< on one line, sharing a sub-segment (or one point) */
-    SX_SEGMENTS_DEGENERATE         /**< an input was non-finite */
+    SX_SEGMENTS_DEGENERATE         /**< an input was non-finite (or too large, see below) */
 } sx_segment_relation;
 
 typedef struct sx_segment_intersection {
     sx_segment_relation relation;
     /** INTERSECT: the point, with p = p1 + t (p2 - p1) = q1 + u (q2 - q1).
-     *  OVERLAP: point = start of the shared part, t/u its parameters. */
+     *  OVERLAP: point = start of the shared part, t/u its parameters.
+     *  t and u are in [0, 1]. Any other relation: all fields zero. */
     sx_vec2 point;
     sx_real t, u;
     /** OVERLAP: the shared sub-segment [overlap_start, overlap_end] along
-     *  p1 -> p2 (equal for a single shared end point). */
+     *  p1 -> p2 (equal for a single shared end point). INTERSECT: both equal
+     *  point. */
     sx_vec2 overlap_start, overlap_end;
 } sx_segment_intersection;
 
 /** Intersects segments p1-p2 and q1-q2 by the parametric method: solves
  *  p1 + t r = q1 + u s with r = p2 - p1, s = q2 - q1 via the cross product
- *  r x s. When |r x s| is within a relative tolerance of zero the segments
- *  are parallel, and the collinear case projects q's end points on r to find
- *  the shared interval. A zero-length segment is treated as a point (on the
- *  other segment or not). out may be NULL. Returns the relation. */
+ *  r x s. Tolerances are relative (eps = 16 x SX_REAL_EPSILON), so the answer
+ *  does not depend on the length unit:
+ *  - |r x s| <= eps |r| |s| (the angle's sine below eps) means parallel.
+ *    Parallel segments are collinear when both of q's end points lie within
+ *    eps x L of p's line, L the largest of |r|, |s| and the distances from p1
+ *    to q1 and q2; otherwise PARALLEL. Collinear segments project q's end
+ *    points on r; the shared interval of parameters gives OVERLAP (a single
+ *    shared end point counts, with overlap_start == overlap_end) or
+ *    COLLINEAR_DISJOINT. The ends of the shared part are input end points,
+ *    returned exactly.
+ *  - Otherwise t and u are accepted within a slack of eps (scaled by the
+ *    ratio of the segments' distance to their length) outside [0, 1], and
+ *    within that slack of 0 or 1 they snap to it, so a touch at an end point
+ *    (T-junction, shared corner) is INTERSECT and reports the end point
+ *    exactly, not a recomputed point a rounding error away.
+ *  - A zero-length segment is a point: INTERSECT when it lies on the other
+ *    segment (its own parameter 0), else DISJOINT. Two zero-length segments
+ *    INTERSECT only when exactly equal.
+ *  - Any NaN/Inf coordinate, or coordinate differences beyond
+ *    sqrt(SX_REAL_MAX) / 8 (where the cross products would overflow), gives
+ *    DEGENERATE.
+ *  out may be NULL. Returns the relation (also in out->relation). */
 sx_segment_relation sx_intersect_segments(sx_vec2 p1, sx_vec2 p2, sx_vec2 q1, sx_vec2 q2,
                                           sx_segment_intersection *out);
 
@@ -234,10 +273,19 @@ typedef struct sx_ray_hit {
 } sx_ray_hit;
 
 /** Casts a ray against a shape placed by x. Returns true and fills *out on a
- *  hit with fraction in [0, max_fraction]. A ray starting inside a solid shape
- *  hits at fraction 0 with the normal opposite to the ray direction. A zero
- *  translation, a non-finite input or max_fraction < 0 returns false. Segments
- *  are hit from either side. */
+ *  hit with fraction in [0, max_fraction]; on a miss *out is zeroed with
+ *  hit = false (out may be NULL). The cast is exact for every shape (circles
+ *  by the quadratic, polygons by clipping against the edge half-planes,
+ *  capsules and rounded polygons against their offset edges and corner
+ *  circles) and a ray that only grazes a shape hits it. A ray starting inside
+ *  a solid shape, or on its boundary, hits at fraction 0 with the normal
+ *  opposite to the ray direction. Segments are hit from either side (the
+ *  normal is the segment normal facing the ray, even at fraction 0); a ray
+ *  along a segment's own line hits its nearer end point with the normal
+ *  opposite to the ray. A point (circle of radius 0) is hit only by a ray
+ *  passing exactly through it. A zero translation, a NULL or unusable shape
+ *  or ray, a non-finite input or max_fraction < 0 returns false, and so does
+ *  a cast whose hit point would overflow sx_real. */
 bool sx_ray_cast(const sx_shape *s, sx_xform x, const sx_ray_input *ray, sx_ray_hit *out);
 
 #ifdef __cplusplus
