@@ -127,7 +127,7 @@ static void sx_body_refresh_sim(sx_world *world, int slot) {
         sim->v = sx_v2_zero();
         sim->w = SX_R(0.0);
     }
-    if (sim->inv_inertia == SX_R(0.0) && sim->dynamic) sim->w = SX_R(0.0);
+    if (info->fixed_rotation && sim->dynamic) sim->w = SX_R(0.0);
 }
 
 void sx_body_update_mass(sx_world *world, int slot) {

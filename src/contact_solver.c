@@ -10,7 +10,9 @@
  * |t| <= mu n. Clamping the sum lets an iteration take back part of an
  * earlier one, which is what makes the method converge, and the sums carry
  * over to the next sub-step (warm starting) so a resting stack starts near
- * its answer. A point still separated by a gap s > 0 is speculative: it may
+ * its answer. The two points of a face resting on a face are solved
+ * together (a 2x2 complementarity problem, solved exactly by trying its four
+ * cases), which keeps stacks from rocking. A point still separated by a gap s > 0 is speculative: it may
  * approach at up to s / h, closing the gap exactly in this sub-step, so fast
  * bodies stop at the surface instead of tunnelling. An overlapping point only
  * asks for vn >= 0; the overlap itself is removed by moving positions

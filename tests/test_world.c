@@ -513,6 +513,164 @@ static void contact_events_report_begin_once_and_end_once(void **state) {
     sx_world_destroy(w);
 }
 
+/* Collects the body handles a query reports. */
+typedef struct found_bodies {
+    uint64_t ids[8];
+    int count, stop_after;
+} found_bodies;
+
+static bool collect(sx_collider_id collider, sx_body_id body, void *context) {
+    found_bodies *f = (found_bodies *)context;
+    (void)collider;
+    if (f->count < 8) f->ids[f->count] = sx_body_id_to_u64(body);
+    f->count++;
+    return f->stop_after == 0 || f->count < f->stop_after;
+}
+
+static void world_queries_find_the_colliders_at_their_current_place(void **state) {
+    sx_world *w = make_world(sx_v2_zero());
+    sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5)), ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    sx_shape probe = sx_circle_shape(sx_v2_zero(), SX_R(0.2));
+    sx_body_id a = make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(0.0)), &box);
+    sx_body_id b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(3.0), SX_R(0.0)), &ball);
+    found_bodies f;
+    sx_ray_input ray;
+    sx_world_ray_hit hit;
+    (void)state;
+    memset(&f, 0, sizeof(f));
+    assert_int_equal(sx_world_query_aabb(w, sx_aabb_make(sx_v2(SX_R(-1.0), SX_R(-1.0)),
+                                                         sx_v2(SX_R(4.0), SX_R(1.0))),
+                                         collect, &f),
+                     2);
+    assert_true(f.ids[0] == sx_body_id_to_u64(a) && f.ids[1] == sx_body_id_to_u64(b));
+    /* the callback can stop the query */
+    memset(&f, 0, sizeof(f));
+    f.stop_after = 1;
+    assert_int_equal(sx_world_query_aabb(w, sx_aabb_make(sx_v2(SX_R(-1.0), SX_R(-1.0)),
+                                                         sx_v2(SX_R(4.0), SX_R(1.0))),
+                                         collect, &f),
+                     1);
+    /* a point in the box's bounds corner but outside the ball */
+    assert_int_equal(sx_world_query_point(w, sx_v2(SX_R(0.4), SX_R(0.4)), NULL, NULL), 1);
+    assert_int_equal(sx_world_query_point(w, sx_v2(SX_R(3.45), SX_R(0.45)), NULL, NULL), 0);
+    /* queries see teleports at once, without a step */
+    assert_int_equal(sx_body_set_transform(w, b, sx_v2(SX_R(10.0), SX_R(0.0)), SX_R(0.0)), SX_OK);
+    memset(&f, 0, sizeof(f));
+    assert_int_equal(sx_world_query_shape(w, &probe, sx_xform_make(sx_v2(SX_R(10.6), SX_R(0.0)), SX_R(0.0)),
+                                          collect, &f),
+                     1);
+    assert_true(f.ids[0] == sx_body_id_to_u64(b));
+    /* a ray along +x from the left hits the box first, at x = -0.5 */
+    ray.origin = sx_v2(SX_R(-5.0), SX_R(0.0));
+    ray.translation = sx_v2(SX_R(20.0), SX_R(0.0));
+    ray.max_fraction = SX_R(1.0);
+    assert_true(sx_world_cast_ray(w, &ray, &hit));
+    assert_true(sx_body_id_to_u64(hit.body) == sx_body_id_to_u64(a));
+    assert_vec2_near(hit.point, sx_v2(SX_R(-0.5), SX_R(0.0)), 10.0 * SX_TEST_EPS);
+    assert_vec2_near(hit.normal, sx_v2(SX_R(-1.0), SX_R(0.0)), SX_TEST_EPS);
+    assert_near(hit.fraction, 4.5 / 20.0, SX_TEST_EPS);
+    /* from the right it hits the ball at x = 10.5 */
+    ray.origin = sx_v2(SX_R(15.0), SX_R(0.0));
+    ray.translation = sx_v2(SX_R(-20.0), SX_R(0.0));
+    assert_true(sx_world_cast_ray(w, &ray, &hit));
+    assert_true(sx_body_id_to_u64(hit.body) == sx_body_id_to_u64(b));
+    assert_vec2_near(hit.point, sx_v2(SX_R(10.5), SX_R(0.0)), 10.0 * SX_TEST_EPS);
+    /* bad input answers nothing */
+    ray.translation = sx_v2_zero();
+    assert_false(sx_world_cast_ray(w, &ray, &hit));
+    assert_false(sx_world_cast_ray(NULL, &ray, &hit));
+    assert_int_equal(sx_world_query_point(w, sx_v2(SX_R(0.0) / SX_R(0.0), SX_R(0.0)), NULL, NULL), 0);
+    probe.u.circle.radius = SX_R(-1.0);
+    assert_int_equal(sx_world_query_shape(w, &probe, sx_xform_identity(), NULL, NULL), 0);
+    sx_world_destroy(w);
+}
+
+typedef struct draw_counts {
+    int shapes, contacts, boxes, static_shapes;
+} draw_counts;
+
+static void count_shape(const sx_shape *shape, sx_xform xf, sx_body_type type, bool sensor, void *context) {
+    draw_counts *d = (draw_counts *)context;
+    (void)shape;
+    (void)xf;
+    (void)sensor;
+    d->shapes++;
+    if (type == SX_BODY_STATIC) d->static_shapes++;
+}
+
+static void count_contact(sx_vec2 point, sx_vec2 normal, sx_real depth, void *context) {
+    (void)point;
+    (void)depth;
+    assert_true(sx_is_normalized(normal));
+    ((draw_counts *)context)->contacts++;
+}
+
+static void count_box(sx_aabb box, void *context) {
+    assert_true(sx_aabb_is_valid(box));
+    ((draw_counts *)context)->boxes++;
+}
+
+static void debug_draw_visits_every_collider_and_contact_point(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(1.0)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_debug_draw dd;
+    draw_counts counts;
+    int i;
+    (void)state;
+    make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-1.0)), &ground);
+    make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.5)), &box);
+    for (i = 0; i < 10; ++i) assert_int_equal(sx_world_step(w, DT), SX_OK);
+    memset(&counts, 0, sizeof(counts));
+    memset(&dd, 0, sizeof(dd));
+    dd.context = &counts;
+    assert_int_equal(sx_world_draw(w, &dd), SX_OK);
+    assert_int_equal(counts.shapes + counts.contacts + counts.boxes, 0);
+    dd.draw_shape = count_shape;
+    dd.draw_contact = count_contact;
+    dd.draw_aabb = count_box;
+    assert_int_equal(sx_world_draw(w, &dd), SX_OK);
+    assert_int_equal(counts.shapes, 2);
+    assert_int_equal(counts.static_shapes, 1);
+    assert_int_equal(counts.boxes, 2);
+    assert_int_equal(counts.contacts, 2);
+    assert_int_equal(sx_world_draw(w, NULL), SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_world_draw(NULL, &dd), SX_ERR_INVALID_ARG);
+    sx_world_destroy(w);
+}
+
+static void angular_velocity_survives_adding_colliders_and_fixed_rotation_holds(void **state) {
+    sx_world *w = make_world(sx_v2_zero());
+    sx_body_def bd = sx_default_body_def();
+    sx_collider_def cd = sx_default_collider_def();
+    sx_body_id spin, fixed;
+    (void)state;
+    bd.type = SX_BODY_DYNAMIC;
+    bd.angular_velocity = SX_R(2.0);
+    assert_int_equal(sx_create_body(w, &bd, &spin), SX_OK);
+    cd.shape = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    assert_int_equal(sx_body_add_collider(w, spin, &cd, NULL), SX_OK);
+    assert_near(sx_body_get_angular_velocity(w, spin), 2.0, 0.0);
+    bd.fixed_rotation = true;
+    bd.position = sx_v2(SX_R(5.0), SX_R(0.0));
+    assert_int_equal(sx_create_body(w, &bd, &fixed), SX_OK);
+    assert_int_equal(sx_body_add_collider(w, fixed, &cd, NULL), SX_OK);
+    assert_near(sx_body_get_angular_velocity(w, fixed), 0.0, 0.0);
+    assert_near(sx_body_get_inertia(w, fixed), 0.0, 0.0);
+    assert_int_equal(sx_body_apply_impulse_at_point(w, fixed, sx_v2(SX_R(0.0), SX_R(1.0)),
+                                                    sx_v2(SX_R(5.5), SX_R(0.0))),
+                     SX_OK);
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_near(sx_body_get_angle(w, fixed), 0.0, 0.0);
+    assert_near(sx_body_get_linear_velocity(w, fixed).y, 1.0, SX_TEST_EPS);
+    /* a free spin at 2 rad/s for 1 s turns the box by 2 rad */
+    {
+        int i;
+        for (i = 1; i < 60; ++i) assert_int_equal(sx_world_step(w, DT), SX_OK);
+    }
+    assert_near(sx_body_get_angle(w, spin), 2.0, 1e-3);
+    sx_world_destroy(w);
+}
+
 static void destroying_bodies_mid_run_and_the_world_frees_everything(void **state) {
     size_t start = sx_live_bytes();
     sx_body_id ids[10];
@@ -553,6 +711,9 @@ int main(void) {
         cmocka_unit_test(resting_box_contact_carries_its_weight),
         cmocka_unit_test(filtered_pairs_and_sensors_make_no_contacts),
         cmocka_unit_test(contact_events_report_begin_once_and_end_once),
+        cmocka_unit_test(world_queries_find_the_colliders_at_their_current_place),
+        cmocka_unit_test(debug_draw_visits_every_collider_and_contact_point),
+        cmocka_unit_test(angular_velocity_survives_adding_colliders_and_fixed_rotation_holds),
         cmocka_unit_test(destroying_bodies_mid_run_and_the_world_frees_everything),
     };
     return cmocka_run_group_tests_name("world", tests, sx_test_group_setup,

@@ -29,6 +29,7 @@
 #include "base.h"
 #include "math.h"
 #include "shape.h"
+#include "collide.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -269,8 +270,10 @@ sx_body_def sx_default_body_def(void);
 
 /** Creates a body. *out receives its handle (the null handle on error).
  *  Errors: SX_ERR_INVALID_ARG (NULL world/def/out, unknown type, negative
- *  damping), SX_ERR_NONFINITE, SX_ERR_NO_MEMORY. A dynamic body without
- *  colliders of positive mass gets mass 1 kg and no rotational inertia. */
+ *  damping), SX_ERR_NONFINITE, SX_ERR_NO_MEMORY, SX_ERR_CAPACITY (2^31 - 1
+ *  body slots in use). A dynamic body without colliders of positive mass
+ *  gets mass 1 kg and no rotational inertia (contacts cannot turn it; its
+ *  own angular velocity, if set, is kept). */
 sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *out);
 
 /** Destroys a body, its colliders and its contacts. SX_ERR_INVALID_ARG (NULL
@@ -372,11 +375,12 @@ typedef struct sx_collider_def {
 sx_collider_def sx_default_collider_def(void);
 
 /** Attaches a collider to a body and updates the body's mass, centre of mass
- *  and inertia from the colliders' densities. *out (may be NULL) receives
- *  the handle. Errors: SX_ERR_INVALID_ARG (NULL world/def, negative density,
- *  friction or restitution, or any error of sx_shape_validate other than
- *  SX_ERR_NONFINITE / SX_ERR_DEGENERATE, which are returned as such),
- *  SX_ERR_STALE_HANDLE, SX_ERR_NO_MEMORY. */
+ *  and inertia from the colliders' densities (the body origin stays where it
+ *  is). *out (may be NULL) receives the handle, the null handle on error.
+ *  Errors: the status of sx_shape_validate for a bad shape;
+ *  SX_ERR_INVALID_ARG (NULL world/def, negative density, friction or
+ *  restitution); SX_ERR_NONFINITE (non-finite density, friction or
+ *  restitution); SX_ERR_STALE_HANDLE; SX_ERR_NO_MEMORY; SX_ERR_CAPACITY. */
 sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collider_def *def,
                                sx_collider_id *out);
 
@@ -389,6 +393,70 @@ bool sx_collider_is_valid(const sx_world *world, sx_collider_id collider);
 
 /** The body a collider is attached to (null handle if stale). */
 sx_body_id sx_collider_get_body(const sx_world *world, sx_collider_id collider);
+
+/* ---- queries ------------------------------------------------------------ */
+
+/* Queries see the colliders of enabled bodies, sensors included, at their
+ * current transforms, visited in collider-slot order (deterministic). They
+ * test every collider (cost linear in the collider count: there is no
+ * bounding-volume tree yet). */
+
+/** Called for each collider a query finds; return false to stop the query. */
+typedef bool sx_query_fn(sx_collider_id collider, sx_body_id body, void *context);
+
+/** Reports every collider whose tight bounds overlap `box`. fn may be NULL
+ *  (just count). Returns the number of colliders reported (0 for a NULL
+ *  world or an invalid or non-finite box). */
+int sx_world_query_aabb(const sx_world *world, sx_aabb box, sx_query_fn *fn, void *context);
+
+/** Reports every collider whose shape contains `point` (boundary included,
+ *  as sx_contains_point). Returns the count (0 for bad input). */
+int sx_world_query_point(const sx_world *world, sx_vec2 point, sx_query_fn *fn, void *context);
+
+/** Reports every collider that overlaps `shape` placed by `xf` (as
+ *  sx_overlap: touching counts). Returns the count (0 for bad input, an
+ *  invalid shape included). */
+int sx_world_query_shape(const sx_world *world, const sx_shape *shape, sx_xform xf,
+                         sx_query_fn *fn, void *context);
+
+/** The closest hit of a world ray cast. */
+typedef struct sx_world_ray_hit {
+    sx_collider_id collider;
+    sx_body_id body;
+    sx_vec2 point;    /**< world hit point */
+    sx_vec2 normal;   /**< unit surface normal at the hit, facing the ray */
+    sx_real fraction; /**< hit = origin + fraction x translation */
+} sx_world_ray_hit;
+
+/** Casts a ray (see sx_ray_input) against every collider and returns true
+ *  with the closest hit in *out (on equal fractions, the lower collider
+ *  slot). false, with *out zeroed, for no hit or bad input (NULL pointers,
+ *  non-finite ray, zero translation). */
+bool sx_world_cast_ray(const sx_world *world, const sx_ray_input *ray, sx_world_ray_hit *out);
+
+/* ---- debug draw ------------------------------------------------------------ */
+
+/** Callbacks for sx_world_draw; any may be NULL (that kind is not drawn). The
+ *  library calls them; it draws nothing itself. */
+typedef struct sx_debug_draw {
+    /** Once per collider of an enabled body: its shape in local space and
+     *  the body transform that places it, with the body's type and whether
+     *  the collider is a sensor. */
+    void (*draw_shape)(const sx_shape *shape, sx_xform xf, sx_body_type type, bool sensor,
+                       void *context);
+    /** Once per contact point of the last collide: the point, the unit
+     *  normal from A to B and the depth (> 0 overlapping, < 0 speculative). */
+    void (*draw_contact)(sx_vec2 point, sx_vec2 normal, sx_real depth, void *context);
+    /** Once per collider of an enabled body: its tight world bounds. */
+    void (*draw_aabb)(sx_aabb box, void *context);
+    /** Passed to every callback. */
+    void *context;
+} sx_debug_draw;
+
+/** Calls the debug-draw callbacks for the world's current state, colliders
+ *  in slot order then contacts in contact order. SX_ERR_INVALID_ARG for
+ *  NULL world or draw. */
+sx_status sx_world_draw(const sx_world *world, const sx_debug_draw *draw);
 
 #ifdef __cplusplus
 }
