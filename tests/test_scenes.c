@@ -472,6 +472,91 @@ static void overlapping_pyramid_separates_without_gaining_speed(void **state) {
     sx_world_destroy(w);
 }
 
+/* ---- long run --------------------------------------------------------------- */
+
+static void mixed_shapes_in_a_box_run_20_seconds_without_escaping_or_blowing_up(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_test_rng rng = sx_test_rng_make(4242u);
+    sx_shape wall = sx_box_shape(SX_R(0.5), SX_R(6.0));
+    sx_body_id ids[60];
+    double max_speed = 0.0, final_ke = 0.0;
+    int i, s;
+    (void)state;
+    add_ground(w, SX_R(6.0), SX_R(0.6));
+    add_body(w, SX_BODY_STATIC, sx_v2(SX_R(-5.5), SX_R(6.0)), SX_R(0.0), &wall, SX_R(0.0), SX_R(0.6),
+             SX_R(0.0));
+    add_body(w, SX_BODY_STATIC, sx_v2(SX_R(5.5), SX_R(6.0)), SX_R(0.0), &wall, SX_R(0.0), SX_R(0.6),
+             SX_R(0.0));
+    for (i = 0; i < 60; ++i) {
+        sx_vec2 p = sx_v2(sx_test_rng_range(&rng, -4.0, 4.0), SX_R(1.0) + SX_R(0.9) * (sx_real)i);
+        sx_shape shape;
+        switch (i % 4) {
+        case 0: shape = sx_circle_shape(sx_v2_zero(), sx_test_rng_range(&rng, 0.2, 0.5)); break;
+        case 1: shape = sx_box_shape(sx_test_rng_range(&rng, 0.2, 0.5), sx_test_rng_range(&rng, 0.2, 0.5)); break;
+        case 2:
+            shape = sx_capsule_shape(sx_v2(SX_R(-0.3), SX_R(0.0)), sx_v2(SX_R(0.3), SX_R(0.0)),
+                                     sx_test_rng_range(&rng, 0.1, 0.3));
+            break;
+        default: {
+            sx_vec2 pts[6];
+            int k;
+            for (k = 0; k < 6; ++k) {
+                sx_real a = SX_R(2.0) * SX_PI * (sx_real)k / SX_R(6.0);
+                sx_real r = sx_test_rng_range(&rng, 0.25, 0.5);
+                pts[k] = sx_v2(r * sx_cos(a), r * sx_sin(a));
+            }
+            assert_int_equal(sx_polygon_shape(pts, 6, SX_R(0.0), &shape), SX_OK);
+        } break;
+        }
+        ids[i] = add_body(w, SX_BODY_DYNAMIC, p, sx_test_rng_range(&rng, 0.0, 3.0), &shape,
+                          SX_R(1.0), SX_R(0.5), (i % 5 == 0) ? SX_R(0.5) : SX_R(0.0));
+    }
+    for (s = 0; s < 1200; ++s) {
+        step_n(w, 1);
+        for (i = 0; i < 60; ++i) {
+            double v = (double)sx_length(sx_body_get_linear_velocity(w, ids[i]));
+            if (v > max_speed) max_speed = v;
+        }
+    }
+    for (i = 0; i < 60; ++i) {
+        sx_vec2 p = sx_body_get_position(w, ids[i]), v = sx_body_get_linear_velocity(w, ids[i]);
+        assert_true(sx_vec2_is_finite(p) && sx_vec2_is_finite(v));
+        /* inside the container: between the walls, above the floor */
+        assert_true(p.x > SX_R(-5.0) && p.x < SX_R(5.0));
+        assert_true(p.y > SX_R(0.0) && p.y < SX_R(12.0));
+        final_ke += 0.5 * (double)sx_body_get_mass(w, ids[i]) * (double)sx_dot(v, v);
+    }
+    printf("  rain of 60 mixed shapes, 20 s: max speed %.3f m/s (free fall from the top: %.3f), "
+           "final kinetic energy %.5f J\n",
+           max_speed, sqrt(2.0 * 10.0 * 55.0), final_ke);
+    /* no body ever went faster than a fall from the highest start allows */
+    assert_true(max_speed < sqrt(2.0 * 10.0 * 55.0) * 1.05);
+    /* and the pile has come to rest */
+    assert_true(final_ke < 0.05);
+    sx_world_destroy(w);
+}
+
+static void kinematic_paddle_pushes_a_box_without_being_pushed_back(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape paddle = sx_box_shape(SX_R(0.25), SX_R(1.0)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_body_id k, b;
+    (void)state;
+    add_ground(w, SX_R(20.0), SX_R(0.6));
+    k = add_body(w, SX_BODY_KINEMATIC, sx_v2(SX_R(-2.0), SX_R(1.0)), SX_R(0.0), &paddle, SX_R(1.0),
+                 SX_R(0.6), SX_R(0.0));
+    b = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.5)), SX_R(0.0), &box, SX_R(1.0), SX_R(0.6),
+                 SX_R(0.0));
+    assert_int_equal(sx_body_set_linear_velocity(w, k, sx_v2(SX_R(1.0), SX_R(0.0))), SX_OK);
+    step_n(w, 180);
+    /* 3 s at 1 m/s: the paddle is at x = 1 whatever the box does, and the
+     * box (touching it from x = -1.25 on) is pushed ahead of it */
+    assert_near(sx_body_get_position(w, k).x, 1.0, 1e-3);
+    assert_near(sx_body_get_linear_velocity(w, k).x, 1.0, 0.0);
+    assert_true(sx_body_get_position(w, b).x >= SX_R(1.0) + SX_R(0.75) - SX_R(0.01));
+    assert_near(sx_body_get_linear_velocity(w, b).x, 1.0, 0.05);
+    sx_world_destroy(w);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(bounce_apex_over_drop_is_restitution_squared),
@@ -486,6 +571,8 @@ int main(void) {
         cmocka_unit_test(wide_plank_on_two_small_boxes_penetrates_less_than_five_slops),
         cmocka_unit_test(column_of_20_boxes_creeps_less_than_a_centimetre_in_10_seconds),
         cmocka_unit_test(overlapping_pyramid_separates_without_gaining_speed),
+        cmocka_unit_test(mixed_shapes_in_a_box_run_20_seconds_without_escaping_or_blowing_up),
+        cmocka_unit_test(kinematic_paddle_pushes_a_box_without_being_pushed_back),
     };
     return cmocka_run_group_tests_name("scenes", tests, sx_test_group_setup,
                                        sx_test_group_teardown);
