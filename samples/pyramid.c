@@ -57,13 +57,14 @@ int main(int argc, char **argv) {
     add_box(world, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-1.0)), SX_R(100.0), SX_R(1.0));
     for (i = 0; i < base; ++i) {
         for (j = i; j < base; ++j) {
-            sx_vec2 p = sx_v2((sx_real)(i + 1) * SX_R(0.5) + (sx_real)(j - i) - SX_R(0.5) * (sx_real)base,
-                              (sx_real)(2 * i + 1) * SX_R(0.5));
+            sx_vec2 p =
+                sx_v2((sx_real)(i + 1) * SX_R(0.5) + (sx_real)(j - i) - SX_R(0.5) * (sx_real)base,
+                      (sx_real)(2 * i + 1) * SX_R(0.5));
             top = add_box(world, SX_BODY_DYNAMIC, p, SX_R(0.5), SX_R(0.5));
         }
     }
-    printf("pyramid of base %d: %d boxes, top box at y = %.4f\n", base, sx_world_body_count(world) - 1,
-           (double)sx_body_get_position(world, top).y);
+    printf("pyramid of base %d: %d boxes, top box at y = %.4f\n", base,
+           sx_world_body_count(world) - 1, (double)sx_body_get_position(world, top).y);
 
     for (step = 1; step <= 60 * seconds; ++step) {
         clock_t start = clock();

@@ -174,7 +174,8 @@ bool sx_grow_array(void **array, int *capacity, int need, size_t size) {
     void *fresh;
     if (need <= cap) return true;
     if (cap < 16) cap = 16;
-    while (cap < need) cap *= 2;
+    while (cap < need)
+        cap *= 2;
     fresh = sx_alloc((size_t)cap * size);
     if (fresh == NULL) return false;
     if (*array != NULL) {
@@ -371,7 +372,8 @@ sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collid
     world->bp_kind[slot] = 0;
     /* append, so mass sums run in creation order (deterministic) */
     link = &world->infos[bslot].first_collider;
-    while (*link >= 0) link = &world->colliders[*link].next;
+    while (*link >= 0)
+        link = &world->colliders[*link].next;
     *link = slot;
     sx_body_update_mass(world, bslot);
     if (out != NULL) {
@@ -388,7 +390,8 @@ sx_status sx_destroy_collider(sx_world *world, sx_collider_id collider) {
     if (slot < 0) return SX_ERR_STALE_HANDLE;
     bslot = world->colliders[slot].body;
     link = &world->infos[bslot].first_collider;
-    while (*link != slot) link = &world->colliders[*link].next;
+    while (*link != slot)
+        link = &world->colliders[*link].next;
     *link = world->colliders[slot].next;
     sx_free_collider_slot(world, slot);
     sx_body_update_mass(world, bslot);

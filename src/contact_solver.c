@@ -12,14 +12,13 @@
  * over to the next sub-step (warm starting) so a resting stack starts near
  * its answer. The two points of a face resting on a face are solved
  * together (a 2x2 complementarity problem, solved exactly by trying its four
- * cases), which keeps stacks from rocking. A point still separated by a gap s > 0 is speculative: it may
- * approach at up to s / h, closing the gap exactly in this sub-step, so fast
- * bodies stop at the surface instead of tunnelling. An overlapping point only
- * asks for vn >= 0; the overlap itself is removed by moving positions
- * (sx_contacts_separate), never by adding velocity, so overlap does not turn
- * into kinetic energy. Restitution is a last pass over the points that pushed
- * and were approaching faster than the threshold: they leave at e times the
- * approach speed measured before the solve.
+ * cases), which keeps stacks from rocking. A point still separated by a gap s > 0 is speculative:
+ * it may approach at up to s / h, closing the gap exactly in this sub-step, so fast bodies stop at
+ * the surface instead of tunnelling. An overlapping point only asks for vn >= 0; the overlap itself
+ * is removed by moving positions (sx_contacts_separate), never by adding velocity, so overlap does
+ * not turn into kinetic energy. Restitution is a last pass over the points that pushed and were
+ * approaching faster than the threshold: they leave at e times the approach speed measured before
+ * the solve.
  *
  * Positions: each pass recomputes every point's separation from the surface
  * points stored in the body frames by collide, and moves the two bodies
@@ -136,7 +135,8 @@ static void sx_apply(sx_vec2 *va, sx_real *wa, sx_vec2 *vb, sx_real *wb, sx_real
 
 static sx_real sx_point_speed(sx_vec2 va, sx_real wa, sx_vec2 vb, sx_real wb,
                               const sx_contact_point *p, sx_vec2 dir) {
-    sx_vec2 dv = sx_sub(sx_add(vb, sx_cross_sv(wb, p->anchor_b)), sx_add(va, sx_cross_sv(wa, p->anchor_a)));
+    sx_vec2 dv =
+        sx_sub(sx_add(vb, sx_cross_sv(wb, p->anchor_b)), sx_add(va, sx_cross_sv(wa, p->anchor_a)));
     return sx_dot(dv, dir);
 }
 

@@ -57,8 +57,8 @@ sx_world *sx_world_create(const sx_world_def *def) {
         void *sims = NULL, *infos = NULL;
         bool ok = sx_grow_array(&sims, &w->sim_capacity, def->body_capacity, sizeof(sx_body_sim));
         w->sims = (sx_body_sim *)sims;
-        ok = ok && sx_grow_array(&infos, &w->info_capacity, def->body_capacity,
-                                 sizeof(sx_body_info));
+        ok = ok &&
+             sx_grow_array(&infos, &w->info_capacity, def->body_capacity, sizeof(sx_body_info));
         w->infos = (sx_body_info *)infos;
         if (!ok) {
             sx_world_destroy(w);
@@ -254,7 +254,8 @@ sx_status sx_world_collide(sx_world *world) {
         b = &world->sims[c->body];
         world->bp_kind[i] = b->dynamic ? 2 : 1;
         /* half the margin on each side: bounds meet when the gap < margin */
-        world->aabbs[i] = sx_aabb_fatten(sx_shape_aabb(&c->shape, b->xf), SX_R(0.5) * world->margin);
+        world->aabbs[i] =
+            sx_aabb_fatten(sx_shape_aabb(&c->shape, b->xf), SX_R(0.5) * world->margin);
     }
     s = sx_broadphase_update(&world->bp, world->aabbs, world->bp_kind, world->collider_slots);
     if (s != SX_OK) return s;
@@ -289,8 +290,7 @@ sx_status sx_world_collide(sx_world *world) {
             world->contacts = (sx_contact *)p;
             if (!ok) return SX_ERR_NO_MEMORY;
         }
-        while (old_index < world->old_contact_count &&
-               world->old_contacts[old_index].key < key) {
+        while (old_index < world->old_contact_count && world->old_contacts[old_index].key < key) {
             ++old_index;
         }
         if (old_index < world->old_contact_count && world->old_contacts[old_index].key == key) {
@@ -365,7 +365,8 @@ sx_status sx_world_solve(sx_world *world, sx_real h) {
     int it;
     if (s != SX_OK) return s;
     sx_contacts_prepare(world, h);
-    for (it = 0; it < world->def.velocity_iterations; ++it) sx_contacts_solve(world, h);
+    for (it = 0; it < world->def.velocity_iterations; ++it)
+        sx_contacts_solve(world, h);
     sx_contacts_restitution(world);
     return SX_OK;
 }

@@ -56,9 +56,9 @@ typedef struct sx_collider {
     bool sensor;
     bool alive;
     uint32_t generation;
-    int body;       /* slot of the owning body */
-    int next;       /* next collider of the same body, -1 at the end */
-    int next_free;  /* free-list link while dead */
+    int body;      /* slot of the owning body */
+    int next;      /* next collider of the same body, -1 at the end */
+    int next_free; /* free-list link while dead */
     void *user_data;
 } sx_collider;
 
@@ -116,8 +116,8 @@ struct sx_world {
     int sim_capacity, info_capacity;
 
     sx_collider *colliders;
-    sx_aabb *aabbs;             /* fattened bounds, per collider slot */
-    unsigned char *bp_kind;     /* per collider slot: 0 out, 1 fixed, 2 dynamic */
+    sx_aabb *aabbs;         /* fattened bounds, per collider slot */
+    unsigned char *bp_kind; /* per collider slot: 0 out, 1 fixed, 2 dynamic */
     int collider_slots, collider_free;
     int collider_capacity, aabb_capacity, kind_capacity;
 

@@ -82,8 +82,8 @@ int sx_world_query_point(const sx_world *world, sx_vec2 point, sx_query_fn *fn, 
     return sx_run_query(world, &q, fn, context);
 }
 
-int sx_world_query_shape(const sx_world *world, const sx_shape *shape, sx_xform xf,
-                         sx_query_fn *fn, void *context) {
+int sx_world_query_shape(const sx_world *world, const sx_shape *shape, sx_xform xf, sx_query_fn *fn,
+                         void *context) {
     sx_query q;
     if (world == NULL || shape == NULL || sx_shape_validate(shape) != SX_OK ||
         !sx_xform_is_finite(xf)) {

@@ -46,7 +46,8 @@ static sx_body_id add_ground(sx_world *w, sx_real half_width, sx_real friction) 
 
 static void step_n(sx_world *w, int n) {
     int i;
-    for (i = 0; i < n; ++i) assert_int_equal(sx_world_step(w, DT), SX_OK);
+    for (i = 0; i < n; ++i)
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
 }
 
 /* Deepest overlap of the current contact list, in metres. */
@@ -217,7 +218,8 @@ static void cradle_passes_the_speed_to_the_last_ball(void **state) {
     int i;
     (void)state;
     cradle_run(SX_R(0.0), v, &p, &ke, &m);
-    for (i = 0; i < 4; ++i) residual = fabs(v[i]) > residual ? fabs(v[i]) : residual;
+    for (i = 0; i < 4; ++i)
+        residual = fabs(v[i]) > residual ? fabs(v[i]) : residual;
     printf("  cradle (no speculative margin): last %.5f m/s, others at most %.5f, momentum "
            "error %.2e, energy %.6f of %.6f\n",
            v[4], residual, fabs(p - m) / m, ke, 0.5 * m);
@@ -260,20 +262,22 @@ static void pileup_conserves_momentum_and_never_gains_energy(void **state) {
         if (i % 3 == 0) {
             shape = sx_circle_shape(sx_v2_zero(), sx_test_rng_range(&rng, 0.3, 0.6));
         } else if (i % 3 == 1) {
-            shape = sx_box_shape(sx_test_rng_range(&rng, 0.3, 0.6), sx_test_rng_range(&rng, 0.3, 0.6));
+            shape =
+                sx_box_shape(sx_test_rng_range(&rng, 0.3, 0.6), sx_test_rng_range(&rng, 0.3, 0.6));
         } else {
             shape = sx_capsule_shape(sx_v2(SX_R(-0.3), SX_R(0.0)), sx_v2(SX_R(0.3), SX_R(0.0)),
                                      SX_R(0.3));
         }
-        ids[i] = add_body(w, SX_BODY_DYNAMIC, p, (sx_real)a, &shape, sx_test_rng_range(&rng, 0.5, 2.0),
-                          SX_R(0.4), SX_R(0.0));
+        ids[i] = add_body(w, SX_BODY_DYNAMIC, p, (sx_real)a, &shape,
+                          sx_test_rng_range(&rng, 0.5, 2.0), SX_R(0.4), SX_R(0.0));
         assert_int_equal(sx_body_set_linear_velocity(w, ids[i], sx_scale(sx_normalize(p), -speed)),
                          SX_OK);
-        assert_int_equal(sx_body_set_angular_velocity(w, ids[i], sx_test_rng_range(&rng, -2.0, 2.0)),
-                         SX_OK);
+        assert_int_equal(
+            sx_body_set_angular_velocity(w, ids[i], sx_test_rng_range(&rng, -2.0, 2.0)), SX_OK);
     }
     for (i = 0; i < 48; ++i) {
-        double m = (double)sx_body_get_mass(w, ids[i]), iner = (double)sx_body_get_inertia(w, ids[i]);
+        double m = (double)sx_body_get_mass(w, ids[i]),
+               iner = (double)sx_body_get_inertia(w, ids[i]);
         sx_vec2 v = sx_body_get_linear_velocity(w, ids[i]);
         double om = (double)sx_body_get_angular_velocity(w, ids[i]);
         p0x += m * (double)v.x;
@@ -379,8 +383,8 @@ static void wide_plank_on_two_small_boxes_penetrates_less_than_five_slops(void *
     int s;
     (void)state;
     add_ground(w, SX_R(20.0), SX_R(0.6));
-    add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-9.0), SX_R(0.5)), SX_R(0.0), &box, SX_R(1.0), SX_R(0.6),
-             SX_R(0.0));
+    add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-9.0), SX_R(0.5)), SX_R(0.0), &box, SX_R(1.0),
+             SX_R(0.6), SX_R(0.0));
     add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(9.0), SX_R(0.5)), SX_R(0.0), &box, SX_R(1.0), SX_R(0.6),
              SX_R(0.0));
     /* 20 m x 1 m of density 1: 20 kg on two 1 kg boxes */
@@ -446,8 +450,8 @@ static void overlapping_pyramid_separates_without_gaining_speed(void **state) {
         for (j = i; j < 4; ++j) {
             sx_vec2 p = sx_v2((sx_real)(0.75 * (double)(j - i) + 0.375 * (double)i - 1.125),
                               (sx_real)(0.25 + 0.75 * (double)i));
-            ids[n++] = add_body(w, SX_BODY_DYNAMIC, p, SX_R(0.0), &box, SX_R(1.0), SX_R(0.6),
-                                SX_R(0.0));
+            ids[n++] =
+                add_body(w, SX_BODY_DYNAMIC, p, SX_R(0.0), &box, SX_R(1.0), SX_R(0.6), SX_R(0.0));
         }
     }
     for (s = 0; s < 180; ++s) {
@@ -483,8 +487,8 @@ static void mixed_shapes_in_a_box_run_20_seconds_without_escaping_or_blowing_up(
     int i, s;
     (void)state;
     add_ground(w, SX_R(6.0), SX_R(0.6));
-    add_body(w, SX_BODY_STATIC, sx_v2(SX_R(-5.5), SX_R(6.0)), SX_R(0.0), &wall, SX_R(0.0), SX_R(0.6),
-             SX_R(0.0));
+    add_body(w, SX_BODY_STATIC, sx_v2(SX_R(-5.5), SX_R(6.0)), SX_R(0.0), &wall, SX_R(0.0),
+             SX_R(0.6), SX_R(0.0));
     add_body(w, SX_BODY_STATIC, sx_v2(SX_R(5.5), SX_R(6.0)), SX_R(0.0), &wall, SX_R(0.0), SX_R(0.6),
              SX_R(0.0));
     for (i = 0; i < 60; ++i) {
@@ -492,7 +496,10 @@ static void mixed_shapes_in_a_box_run_20_seconds_without_escaping_or_blowing_up(
         sx_shape shape;
         switch (i % 4) {
         case 0: shape = sx_circle_shape(sx_v2_zero(), sx_test_rng_range(&rng, 0.2, 0.5)); break;
-        case 1: shape = sx_box_shape(sx_test_rng_range(&rng, 0.2, 0.5), sx_test_rng_range(&rng, 0.2, 0.5)); break;
+        case 1:
+            shape =
+                sx_box_shape(sx_test_rng_range(&rng, 0.2, 0.5), sx_test_rng_range(&rng, 0.2, 0.5));
+            break;
         case 2:
             shape = sx_capsule_shape(sx_v2(SX_R(-0.3), SX_R(0.0)), sx_v2(SX_R(0.3), SX_R(0.0)),
                                      sx_test_rng_range(&rng, 0.1, 0.3));
@@ -544,8 +551,8 @@ static void kinematic_paddle_pushes_a_box_without_being_pushed_back(void **state
     add_ground(w, SX_R(20.0), SX_R(0.6));
     k = add_body(w, SX_BODY_KINEMATIC, sx_v2(SX_R(-2.0), SX_R(1.0)), SX_R(0.0), &paddle, SX_R(1.0),
                  SX_R(0.6), SX_R(0.0));
-    b = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.5)), SX_R(0.0), &box, SX_R(1.0), SX_R(0.6),
-                 SX_R(0.0));
+    b = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.5)), SX_R(0.0), &box, SX_R(1.0),
+                 SX_R(0.6), SX_R(0.0));
     assert_int_equal(sx_body_set_linear_velocity(w, k, sx_v2(SX_R(1.0), SX_R(0.0))), SX_OK);
     step_n(w, 180);
     /* 3 s at 1 m/s: the paddle is at x = 1 whatever the box does, and the

@@ -179,7 +179,8 @@ static void mass_and_inertia_come_from_collider_density(void **state) {
     assert_int_equal(sx_body_add_collider(w, b, &d, &second), SX_OK);
     assert_near(sx_body_get_mass(w, b), 8.0, 8.0 * SX_TEST_EPS);
     assert_vec2_near(sx_body_get_local_center(w, b), sx_v2(SX_R(1.0), SX_R(0.0)), SX_TEST_EPS);
-    assert_vec2_near(sx_body_get_world_center(w, b), sx_v2(SX_R(4.0), SX_R(4.0)), 4.0 * SX_TEST_EPS);
+    assert_vec2_near(sx_body_get_world_center(w, b), sx_v2(SX_R(4.0), SX_R(4.0)),
+                     4.0 * SX_TEST_EPS);
     assert_near(sx_body_get_inertia(w, b), 2.0 * (4.0 * 5.0 / 12.0 + 4.0), 16.0 * SX_TEST_EPS);
     /* the origin stays put when the centre of mass moves */
     assert_vec2_near(sx_body_get_position(w, b), sx_v2(SX_R(3.0), SX_R(4.0)), 0.0);
@@ -264,21 +265,22 @@ static void forces_and_impulses_accumulate_and_clear(void **state) {
 
     /* off-centre: an impulse (0, 1) at one unit right of the centre adds
      * angular impulse 1 on top of the linear one */
-    assert_int_equal(sx_body_apply_impulse_at_point(w, b, sx_v2(SX_R(0.0), SX_R(1.0)),
-                                                    sx_add(sx_body_get_world_center(w, b),
-                                                           sx_v2(SX_R(1.0), SX_R(0.0)))),
+    assert_int_equal(sx_body_apply_impulse_at_point(
+                         w, b, sx_v2(SX_R(0.0), SX_R(1.0)),
+                         sx_add(sx_body_get_world_center(w, b), sx_v2(SX_R(1.0), SX_R(0.0)))),
                      SX_OK);
     assert_int_equal(sx_world_step(w, DT), SX_OK);
     assert_near(sx_body_get_linear_velocity(w, b).y, 3.0 / m, 2.0 * SX_TEST_EPS);
     assert_near(sx_body_get_angular_velocity(w, b), 1.0 / inertia, 10.0 * SX_TEST_EPS);
     /* a force at a point: torque r x F over the step */
     assert_int_equal(sx_body_set_angular_velocity(w, b, SX_R(0.0)), SX_OK);
-    assert_int_equal(sx_body_apply_force_at_point(w, b, sx_v2(SX_R(0.0), SX_R(-2.0)),
-                                                  sx_add(sx_body_get_world_center(w, b),
-                                                         sx_v2(SX_R(0.5), SX_R(0.0)))),
+    assert_int_equal(sx_body_apply_force_at_point(
+                         w, b, sx_v2(SX_R(0.0), SX_R(-2.0)),
+                         sx_add(sx_body_get_world_center(w, b), sx_v2(SX_R(0.5), SX_R(0.0)))),
                      SX_OK);
     assert_int_equal(sx_world_step(w, DT), SX_OK);
-    assert_near(sx_body_get_angular_velocity(w, b), -1.0 * (double)DT / inertia, 10.0 * SX_TEST_EPS);
+    assert_near(sx_body_get_angular_velocity(w, b), -1.0 * (double)DT / inertia,
+                10.0 * SX_TEST_EPS);
     assert_int_equal(sx_body_apply_torque(w, b, SX_R(1.0) / SX_R(0.0)), SX_ERR_NONFINITE);
     assert_int_equal(sx_body_apply_force(NULL, b, sx_v2_zero()), SX_ERR_INVALID_ARG);
     sx_world_destroy(w);
@@ -296,7 +298,8 @@ static void static_and_kinematic_bodies_ignore_forces_and_gravity(void **state) 
     assert_int_equal(sx_body_apply_impulse(w, k, sx_v2(SX_R(100.0), SX_R(0.0))), SX_OK);
     assert_int_equal(sx_body_set_linear_velocity(w, s, sx_v2(SX_R(1.0), SX_R(0.0))), SX_OK);
     assert_int_equal(sx_body_set_linear_velocity(w, k, sx_v2(SX_R(0.0), SX_R(1.0))), SX_OK);
-    for (i = 0; i < 60; ++i) assert_int_equal(sx_world_step(w, DT), SX_OK);
+    for (i = 0; i < 60; ++i)
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
     assert_vec2_near(sx_body_get_position(w, s), sx_v2_zero(), 0.0);
     assert_vec2_near(sx_body_get_linear_velocity(w, s), sx_v2_zero(), 0.0);
     /* the kinematic body moves by its velocity only (1 m/s for 1 s) */
@@ -307,7 +310,8 @@ static void static_and_kinematic_bodies_ignore_forces_and_gravity(void **state) 
 
 static void teleport_sets_position_and_angle(void **state) {
     sx_world *w = make_world(sx_v2_zero());
-    sx_shape box = sx_offset_box_shape(SX_R(0.5), SX_R(0.5), sx_v2(SX_R(1.0), SX_R(0.0)), SX_R(0.0));
+    sx_shape box =
+        sx_offset_box_shape(SX_R(0.5), SX_R(0.5), sx_v2(SX_R(1.0), SX_R(0.0)), SX_R(0.0));
     sx_body_id b = make_body(w, SX_BODY_DYNAMIC, sx_v2_zero(), &box);
     (void)state;
     assert_int_equal(sx_body_set_transform(w, b, sx_v2(SX_R(2.0), SX_R(3.0)), SX_R(0.5) * SX_PI),
@@ -316,8 +320,9 @@ static void teleport_sets_position_and_angle(void **state) {
     assert_near(sx_body_get_angle(w, b), 0.5 * (double)SX_PI, SX_TEST_EPS);
     /* the centre of mass (local (1, 0)) turned a quarter */
     assert_vec2_near(sx_body_get_world_center(w, b), sx_v2(SX_R(2.0), SX_R(4.0)), SX_TEST_EPS);
-    assert_int_equal(sx_body_set_transform(w, b, sx_v2(SX_R(0.0) / SX_R(0.0), SX_R(0.0)), SX_R(0.0)),
-                     SX_ERR_NONFINITE);
+    assert_int_equal(
+        sx_body_set_transform(w, b, sx_v2(SX_R(0.0) / SX_R(0.0), SX_R(0.0)), SX_R(0.0)),
+        SX_ERR_NONFINITE);
     assert_vec2_near(sx_body_get_position(w, b), sx_v2(SX_R(2.0), SX_R(3.0)), 0.0);
     sx_world_destroy(w);
 }
@@ -336,8 +341,8 @@ static sx_world *make_drop_scene(sx_body_id *ids, int n) {
                              : sx_circle_shape(sx_v2_zero(), SX_R(0.35));
         sx_vec2 p = sx_v2(sx_test_rng_range(&rng, -3.0, 3.0), sx_test_rng_range(&rng, 0.5, 6.0));
         ids[i] = make_body(w, SX_BODY_DYNAMIC, p, &s);
-        assert_int_equal(sx_body_set_angular_velocity(w, ids[i], sx_test_rng_range(&rng, -3.0, 3.0)),
-                         SX_OK);
+        assert_int_equal(
+            sx_body_set_angular_velocity(w, ids[i], sx_test_rng_range(&rng, -3.0, 3.0)), SX_OK);
     }
     return w;
 }
@@ -353,7 +358,8 @@ static void step_with_bad_time_step_returns_status_and_changes_nothing(void **st
     bad[1] = SX_R(1.0) / SX_R(0.0);
     bad[2] = -SX_R(1.0) / SX_R(0.0);
     assert_int_equal(sx_world_step(w, DT), SX_OK);
-    for (i = 0; i < 6; ++i) before[i] = sx_body_get_position(w, ids[i]);
+    for (i = 0; i < 6; ++i)
+        before[i] = sx_body_get_position(w, ids[i]);
     assert_int_equal(sx_world_step(w, SX_R(0.0)), SX_ERR_INVALID_ARG);
     assert_int_equal(sx_world_step(w, SX_R(-0.01)), SX_ERR_INVALID_ARG);
     for (k = 0; k < 3; ++k) {
@@ -366,7 +372,8 @@ static void step_with_bad_time_step_returns_status_and_changes_nothing(void **st
     assert_int_equal(sx_world_integrate(w, SX_R(0.0)), SX_ERR_INVALID_ARG);
     assert_int_equal(sx_world_step(NULL, DT), SX_ERR_INVALID_ARG);
     assert_int_equal(sx_world_collide(NULL), SX_ERR_INVALID_ARG);
-    for (i = 0; i < 6; ++i) assert_vec2_near(sx_body_get_position(w, ids[i]), before[i], 0.0);
+    for (i = 0; i < 6; ++i)
+        assert_vec2_near(sx_body_get_position(w, ids[i]), before[i], 0.0);
     sx_world_destroy(w);
 }
 
@@ -382,7 +389,8 @@ static void same_calls_give_bit_identical_state(void **state) {
     assert_true(sx_world_contact_count(wa) > 0);
     for (i = 0; i < 12; ++i) {
         sx_xform xa = sx_body_get_transform(wa, a[i]), xb = sx_body_get_transform(wb, b[i]);
-        sx_vec2 va = sx_body_get_linear_velocity(wa, a[i]), vb = sx_body_get_linear_velocity(wb, b[i]);
+        sx_vec2 va = sx_body_get_linear_velocity(wa, a[i]),
+                vb = sx_body_get_linear_velocity(wb, b[i]);
         assert_memory_equal(&xa, &xb, sizeof(xa));
         assert_memory_equal(&va, &vb, sizeof(va));
     }
@@ -426,14 +434,16 @@ static void resting_box_contact_carries_its_weight(void **state) {
     b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.5)), &box);
     {
         int i;
-        for (i = 0; i < 120; ++i) assert_int_equal(sx_world_step(w, DT), SX_OK);
+        for (i = 0; i < 120; ++i)
+            assert_int_equal(sx_world_step(w, DT), SX_OK);
     }
     assert_int_equal(sx_world_contact_count(w), 1);
     assert_int_equal(sx_world_get_contact(w, 0, &c), SX_OK);
     assert_int_equal(c.count, 2);
     /* the two points share the weight m g over one sub-step h, and the
      * normal points from the ground (A, the first created) up to the box */
-    assert_near(c.normal_impulses[0] + c.normal_impulses[1], 10.0 * (double)h, 1e-3 * 10.0 * (double)h);
+    assert_near(c.normal_impulses[0] + c.normal_impulses[1], 10.0 * (double)h,
+                1e-3 * 10.0 * (double)h);
     assert_near(c.normal_impulses[0], c.normal_impulses[1], 1e-2 * 10.0 * (double)h);
     assert_vec2_near(c.normal, sx_v2(SX_R(0.0), SX_R(1.0)), SX_TEST_EPS);
     assert_near(sx_body_get_position(w, b).y, 0.5, (double)sx_world_linear_slop(w));
@@ -455,9 +465,9 @@ static void filtered_pairs_and_sensors_make_no_contacts(void **state) {
         assert_int_equal(sx_create_body(w, &bd, &ids[i]), SX_OK);
         cd = sx_default_collider_def();
         if (i / 2 == 0) cd.filter.mask = (i % 2) ? 0xFFFFFFFFu : 0xFFFFFFFEu; /* masked out */
-        if (i / 2 == 1) cd.filter.group = -3;                                  /* never */
-        if (i / 2 == 2) cd.sensor = (i % 2) == 1;                              /* sensor */
-        if (i / 2 == 3) {                                                      /* group wins */
+        if (i / 2 == 1) cd.filter.group = -3;                                 /* never */
+        if (i / 2 == 2) cd.sensor = (i % 2) == 1;                             /* sensor */
+        if (i / 2 == 3) {                                                     /* group wins */
             cd.filter.group = 5;
             cd.filter.mask = 0;
         }
@@ -476,7 +486,8 @@ static void filtered_pairs_and_sensors_make_no_contacts(void **state) {
 
 static void contact_events_report_begin_once_and_end_once(void **state) {
     sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
-    sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(1.0)), ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(1.0)),
+             ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
     sx_body_id g = make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-1.0)), &ground);
     sx_body_id b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(1.5)), &ball);
     sx_contact_events e;
@@ -529,7 +540,8 @@ static bool collect(sx_collider_id collider, sx_body_id body, void *context) {
 
 static void world_queries_find_the_colliders_at_their_current_place(void **state) {
     sx_world *w = make_world(sx_v2_zero());
-    sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5)), ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5)),
+             ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
     sx_shape probe = sx_circle_shape(sx_v2_zero(), SX_R(0.2));
     sx_body_id a = make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(0.0)), &box);
     sx_body_id b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(3.0), SX_R(0.0)), &ball);
@@ -538,17 +550,19 @@ static void world_queries_find_the_colliders_at_their_current_place(void **state
     sx_world_ray_hit hit;
     (void)state;
     memset(&f, 0, sizeof(f));
-    assert_int_equal(sx_world_query_aabb(w, sx_aabb_make(sx_v2(SX_R(-1.0), SX_R(-1.0)),
-                                                         sx_v2(SX_R(4.0), SX_R(1.0))),
-                                         collect, &f),
+    assert_int_equal(sx_world_query_aabb(
+                         w,
+                         sx_aabb_make(sx_v2(SX_R(-1.0), SX_R(-1.0)), sx_v2(SX_R(4.0), SX_R(1.0))),
+                         collect, &f),
                      2);
     assert_true(f.ids[0] == sx_body_id_to_u64(a) && f.ids[1] == sx_body_id_to_u64(b));
     /* the callback can stop the query */
     memset(&f, 0, sizeof(f));
     f.stop_after = 1;
-    assert_int_equal(sx_world_query_aabb(w, sx_aabb_make(sx_v2(SX_R(-1.0), SX_R(-1.0)),
-                                                         sx_v2(SX_R(4.0), SX_R(1.0))),
-                                         collect, &f),
+    assert_int_equal(sx_world_query_aabb(
+                         w,
+                         sx_aabb_make(sx_v2(SX_R(-1.0), SX_R(-1.0)), sx_v2(SX_R(4.0), SX_R(1.0))),
+                         collect, &f),
                      1);
     /* a point in the box's bounds corner but outside the ball */
     assert_int_equal(sx_world_query_point(w, sx_v2(SX_R(0.4), SX_R(0.4)), NULL, NULL), 1);
@@ -556,7 +570,8 @@ static void world_queries_find_the_colliders_at_their_current_place(void **state
     /* queries see teleports at once, without a step */
     assert_int_equal(sx_body_set_transform(w, b, sx_v2(SX_R(10.0), SX_R(0.0)), SX_R(0.0)), SX_OK);
     memset(&f, 0, sizeof(f));
-    assert_int_equal(sx_world_query_shape(w, &probe, sx_xform_make(sx_v2(SX_R(10.6), SX_R(0.0)), SX_R(0.0)),
+    assert_int_equal(sx_world_query_shape(w, &probe,
+                                          sx_xform_make(sx_v2(SX_R(10.6), SX_R(0.0)), SX_R(0.0)),
                                           collect, &f),
                      1);
     assert_true(f.ids[0] == sx_body_id_to_u64(b));
@@ -579,7 +594,8 @@ static void world_queries_find_the_colliders_at_their_current_place(void **state
     ray.translation = sx_v2_zero();
     assert_false(sx_world_cast_ray(w, &ray, &hit));
     assert_false(sx_world_cast_ray(NULL, &ray, &hit));
-    assert_int_equal(sx_world_query_point(w, sx_v2(SX_R(0.0) / SX_R(0.0), SX_R(0.0)), NULL, NULL), 0);
+    assert_int_equal(sx_world_query_point(w, sx_v2(SX_R(0.0) / SX_R(0.0), SX_R(0.0)), NULL, NULL),
+                     0);
     probe.u.circle.radius = SX_R(-1.0);
     assert_int_equal(sx_world_query_shape(w, &probe, sx_xform_identity(), NULL, NULL), 0);
     sx_world_destroy(w);
@@ -589,7 +605,8 @@ typedef struct draw_counts {
     int shapes, contacts, boxes, static_shapes;
 } draw_counts;
 
-static void count_shape(const sx_shape *shape, sx_xform xf, sx_body_type type, bool sensor, void *context) {
+static void count_shape(const sx_shape *shape, sx_xform xf, sx_body_type type, bool sensor,
+                        void *context) {
     draw_counts *d = (draw_counts *)context;
     (void)shape;
     (void)xf;
@@ -619,7 +636,8 @@ static void debug_draw_visits_every_collider_and_contact_point(void **state) {
     (void)state;
     make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-1.0)), &ground);
     make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.5)), &box);
-    for (i = 0; i < 10; ++i) assert_int_equal(sx_world_step(w, DT), SX_OK);
+    for (i = 0; i < 10; ++i)
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
     memset(&counts, 0, sizeof(counts));
     memset(&dd, 0, sizeof(dd));
     dd.context = &counts;
@@ -665,7 +683,8 @@ static void angular_velocity_survives_adding_colliders_and_fixed_rotation_holds(
     /* a free spin at 2 rad/s for 1 s turns the box by 2 rad */
     {
         int i;
-        for (i = 1; i < 60; ++i) assert_int_equal(sx_world_step(w, DT), SX_OK);
+        for (i = 1; i < 60; ++i)
+            assert_int_equal(sx_world_step(w, DT), SX_OK);
     }
     assert_near(sx_body_get_angle(w, spin), 2.0, 1e-3);
     sx_world_destroy(w);
@@ -681,7 +700,8 @@ static void destroying_bodies_mid_run_and_the_world_frees_everything(void **stat
     for (s = 0; s < 90; ++s) {
         assert_int_equal(sx_world_step(w, DT), SX_OK);
         if (s == 60) {
-            for (i = 0; i < 10; i += 3) assert_int_equal(sx_destroy_body(w, ids[i]), SX_OK);
+            for (i = 0; i < 10; i += 3)
+                assert_int_equal(sx_destroy_body(w, ids[i]), SX_OK);
         }
     }
     for (i = 0; i < sx_world_contact_count(w); ++i) {
@@ -716,6 +736,5 @@ int main(void) {
         cmocka_unit_test(angular_velocity_survives_adding_colliders_and_fixed_rotation_holds),
         cmocka_unit_test(destroying_bodies_mid_run_and_the_world_frees_everything),
     };
-    return cmocka_run_group_tests_name("world", tests, sx_test_group_setup,
-                                       sx_test_group_teardown);
+    return cmocka_run_group_tests_name("world", tests, sx_test_group_setup, sx_test_group_teardown);
 }

@@ -20,6 +20,9 @@
  * systems may run the stages themselves, in this order, with their own code
  * in between.
  *
+ * Around the step: contact begin/end events, world queries (bounds, point,
+ * shape, ray) and a debug-draw callback interface.
+ *
  * Units: metres, kilograms, seconds, radians. The contact tolerance (the
  * linear slop, 5 mm at one length unit per metre) scales with the world's
  * length_units_per_meter. */
@@ -84,9 +87,11 @@ typedef struct sx_world_def {
      *  removes, in (0, 1]. Default 0.2 (Baumgarte's classic value: larger
      *  values overshoot in stacks). */
     sx_real correction_factor;
-    /** Largest speed (m/s) at which sx_world_separate moves a body out of an
-     *  overlap; a deep overlap is removed over several steps instead of in
-     *  one jump. Default 3 m/s (> 0). */
+    /** Largest speed (m/s) at which sx_world_separate moves a contact point
+     *  out of an overlap (each of the position_iterations passes of a
+     *  sub-step moves it at most max_correction_speed x h /
+     *  position_iterations); a deep overlap is removed over several steps
+     *  instead of in one jump. Default 3 m/s (> 0). */
     sx_real max_correction_speed;
     /** Approach speed (m/s) below which contacts do not bounce: restitution
      *  only applies to impacts faster than this, so resting bodies do not
@@ -127,10 +132,10 @@ sx_real sx_world_linear_slop(const sx_world *world);
 
 /** Advances the world by dt seconds: clears the contact events, then for
  *  each sub-step runs apply_forces, collide, solve, integrate and separate
- *  with h = dt / sub_steps, then clear_forces. Errors (the world is left untouched): SX_ERR_INVALID_ARG
- *  (NULL world, dt <= 0), SX_ERR_NONFINITE (dt NaN or infinite),
- *  SX_ERR_NO_MEMORY (the contact list could not grow: the step stops after
- *  the stages already run). */
+ *  with h = dt / sub_steps, then clear_forces. Errors, with the world left
+ *  untouched: SX_ERR_INVALID_ARG (NULL world, dt <= 0), SX_ERR_NONFINITE (dt
+ *  NaN or infinite). SX_ERR_NO_MEMORY: the contact list could not grow; the
+ *  step stops after the stages already run. */
 sx_status sx_world_step(sx_world *world, sx_real dt);
 
 /** Stage 1: for every enabled dynamic body, v += h (gravity x gravity_scale +
@@ -174,11 +179,10 @@ sx_status sx_world_integrate(sx_world *world, sx_real h);
  *  `position_iterations` passes, each contact point's current separation s
  *  (from the anchors stored by collide, moved with the bodies) gives the
  *  correction C = max(correction_factor (s + slop),
- *  -max_correction_speed h / position_iterations) when s < -slop, applied as a pseudo-impulse split by inverse mass and
- *  inverse inertia. We chose positional correction over Baumgarte velocity
- *  bias because a bias turns overlap into velocity, which comes out as
- *  kinetic energy (bodies created overlapping fly apart); split impulses
- *  would do the same work with a second set of velocities.
+ *  -max_correction_speed h / position_iterations) when s < -slop, applied as a pseudo-impulse split
+ * by inverse mass and inverse inertia. We chose positional correction over Baumgarte velocity bias
+ * because a bias turns overlap into velocity, which comes out as kinetic energy (bodies created
+ * overlapping fly apart); split impulses would do the same work with a second set of velocities.
  *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE. */
 sx_status sx_world_separate(sx_world *world, sx_real h);
 
@@ -252,17 +256,17 @@ typedef enum sx_body_type {
 
 /** Body settings. Start from sx_default_body_def(). */
 typedef struct sx_body_def {
-    sx_body_type type;         /**< default SX_BODY_STATIC */
-    sx_vec2 position;          /**< origin of the body frame, world; default 0 */
-    sx_real angle;             /**< radians; default 0 */
-    sx_vec2 linear_velocity;   /**< of the centre of mass, m/s; default 0 */
-    sx_real angular_velocity;  /**< rad/s; default 0 */
-    sx_real linear_damping;    /**< 1/s, >= 0; default 0 */
-    sx_real angular_damping;   /**< 1/s, >= 0; default 0 */
-    sx_real gravity_scale;     /**< multiplies the world gravity; default 1 */
-    bool fixed_rotation;       /**< infinite inertia; default false */
-    bool enabled;              /**< false: neither moves nor collides; default true */
-    void *user_data;           /**< returned by sx_body_get_user_data; default NULL */
+    sx_body_type type;        /**< default SX_BODY_STATIC */
+    sx_vec2 position;         /**< origin of the body frame, world; default 0 */
+    sx_real angle;            /**< radians; default 0 */
+    sx_vec2 linear_velocity;  /**< of the centre of mass, m/s; default 0 */
+    sx_real angular_velocity; /**< rad/s; default 0 */
+    sx_real linear_damping;   /**< 1/s, >= 0; default 0 */
+    sx_real angular_damping;  /**< 1/s, >= 0; default 0 */
+    sx_real gravity_scale;    /**< multiplies the world gravity; default 1 */
+    bool fixed_rotation;      /**< infinite inertia; default false */
+    bool enabled;             /**< false: neither moves nor collides; default true */
+    void *user_data;          /**< returned by sx_body_get_user_data; default NULL */
 } sx_body_def;
 
 /** The default body settings (a static body at the origin). */
@@ -368,7 +372,7 @@ typedef struct sx_collider_def {
     sx_filter filter;
     /** A sensor takes part in no contact (it has no response); default false. */
     bool sensor;
-    void *user_data;     /**< default NULL */
+    void *user_data; /**< default NULL */
 } sx_collider_def;
 
 /** The default collider settings (see each field). */
@@ -416,8 +420,8 @@ int sx_world_query_point(const sx_world *world, sx_vec2 point, sx_query_fn *fn, 
 /** Reports every collider that overlaps `shape` placed by `xf` (as
  *  sx_overlap: touching counts). Returns the count (0 for bad input, an
  *  invalid shape included). */
-int sx_world_query_shape(const sx_world *world, const sx_shape *shape, sx_xform xf,
-                         sx_query_fn *fn, void *context);
+int sx_world_query_shape(const sx_world *world, const sx_shape *shape, sx_xform xf, sx_query_fn *fn,
+                         void *context);
 
 /** The closest hit of a world ray cast. */
 typedef struct sx_world_ray_hit {
