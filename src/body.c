@@ -244,6 +244,9 @@ sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *ou
     info->user_data = def->user_data;
     info->first_collider = -1;
     info->next_free = -1;
+    info->island = -1;
+    info->sleep_time = SX_R(0.0);
+    sim->awake = true;
     sim->xf = sx_xform_make(def->position, def->angle);
     sim->center = sim->xf.p;
     sim->local_center = sx_v2_zero();
@@ -289,6 +292,8 @@ sx_status sx_destroy_body(sx_world *world, sx_body_id body) {
     slot = sx_body_slot(world, body);
     if (slot < 0) return SX_ERR_STALE_HANDLE;
     info = &world->infos[slot];
+    /* what rested on it must be able to fall */
+    sx_wake_body(world, slot);
     for (c = info->first_collider; c >= 0; c = next) {
         next = world->colliders[c].next;
         sx_free_collider_slot(world, c);
@@ -389,6 +394,7 @@ sx_status sx_destroy_collider(sx_world *world, sx_collider_id collider) {
     slot = sx_collider_slot(world, collider);
     if (slot < 0) return SX_ERR_STALE_HANDLE;
     bslot = world->colliders[slot].body;
+    sx_wake_body(world, bslot);
     link = &world->infos[bslot].first_collider;
     while (*link != slot)
         link = &world->colliders[*link].next;
@@ -455,6 +461,30 @@ void *sx_body_get_user_data(const sx_world *world, sx_body_id body) {
     return slot < 0 ? NULL : world->infos[slot].user_data;
 }
 
+bool sx_body_is_awake(const sx_world *world, sx_body_id body) {
+    int slot = sx_body_slot(world, body);
+    return slot >= 0 && world->infos[slot].type != SX_BODY_STATIC && world->sims[slot].awake;
+}
+
+sx_status sx_body_set_awake(sx_world *world, sx_body_id body, bool awake) {
+    int slot;
+    sx_body_sim *sim;
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+    slot = sx_body_slot(world, body);
+    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    sim = &world->sims[slot];
+    if (!sim->dynamic) return SX_OK;
+    if (awake) {
+        sx_wake_body(world, slot);
+    } else if (sim->awake) {
+        sim->awake = false;
+        sim->v = sx_v2_zero();
+        sim->w = SX_R(0.0);
+        world->infos[slot].island = -1;
+    }
+    return SX_OK;
+}
+
 /* ---- setters ------------------------------------------------------------ */
 
 sx_status sx_body_set_transform(sx_world *world, sx_body_id body, sx_vec2 position, sx_real angle) {
@@ -465,6 +495,7 @@ sx_status sx_body_set_transform(sx_world *world, sx_body_id body, sx_vec2 positi
     if (slot < 0) return SX_ERR_STALE_HANDLE;
     if (!sx_vec2_is_finite(position) || !sx_is_finite(angle)) return SX_ERR_NONFINITE;
     sim = &world->sims[slot];
+    sx_wake_body(world, slot);
     sim->xf = sx_xform_make(position, angle);
     sim->center = sx_xform_point(sim->xf, sim->local_center);
     return SX_OK;
@@ -476,7 +507,10 @@ sx_status sx_body_set_linear_velocity(sx_world *world, sx_body_id body, sx_vec2 
     slot = sx_body_slot(world, body);
     if (slot < 0) return SX_ERR_STALE_HANDLE;
     if (!sx_vec2_is_finite(v)) return SX_ERR_NONFINITE;
-    if (world->infos[slot].type != SX_BODY_STATIC) world->sims[slot].v = v;
+    if (world->infos[slot].type != SX_BODY_STATIC) {
+        sx_wake_body(world, slot);
+        world->sims[slot].v = v;
+    }
     return SX_OK;
 }
 
@@ -490,6 +524,7 @@ sx_status sx_body_set_angular_velocity(sx_world *world, sx_body_id body, sx_real
     info = &world->infos[slot];
     if (info->type == SX_BODY_KINEMATIC ||
         (info->type == SX_BODY_DYNAMIC && world->sims[slot].inv_inertia > SX_R(0.0))) {
+        sx_wake_body(world, slot);
         world->sims[slot].w = w;
     }
     return SX_OK;
@@ -503,6 +538,7 @@ sx_status sx_body_set_type(sx_world *world, sx_body_id body, sx_body_type type) 
     if (type != SX_BODY_STATIC && type != SX_BODY_KINEMATIC && type != SX_BODY_DYNAMIC) {
         return SX_ERR_INVALID_ARG;
     }
+    sx_wake_body(world, slot);
     world->infos[slot].type = type;
     sx_body_update_mass(world, slot);
     return SX_OK;
@@ -524,7 +560,9 @@ static sx_body_sim *sx_force_target(sx_world *world, sx_body_id body, sx_status 
         return NULL;
     }
     *status = SX_OK;
-    return world->infos[slot].type == SX_BODY_DYNAMIC ? &world->sims[slot] : NULL;
+    if (world->infos[slot].type != SX_BODY_DYNAMIC) return NULL;
+    sx_wake_body(world, slot);
+    return &world->sims[slot];
 }
 
 sx_status sx_body_apply_force(sx_world *world, sx_body_id body, sx_vec2 force) {

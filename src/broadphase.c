@@ -5,10 +5,11 @@
  * next, so the insertion sort that restores it costs about one pass when
  * bodies move a little per step. The sweep then visits, for each collider,
  * only the colliders whose lower x lies inside its x extent, and tests their
- * y extents. Pairs with no dynamic collider (static-static,
- * static-kinematic, kinematic-kinematic) are never reported: nothing there
- * can respond. Pairs come out sorted by key, so the contact list and the
- * solver's order are the same on every run (determinism). */
+ * y extents. Pairs with no awake dynamic collider (static-static,
+ * static-kinematic, kinematic-kinematic, anything with a sleeping body) are
+ * not reported: nothing there can respond; the one exception is a moving
+ * kinematic body meeting a sleeping one, which must wake it. Pairs come out sorted by key, so the
+ * contact list and the solver's order are the same on every run (determinism). */
 #include <stdlib.h>
 
 #include "world_internal.h"
@@ -20,6 +21,12 @@ void sx_broadphase_free(sx_broadphase *bp) {
     sx_free(bp->mark, (size_t)bp->mark_capacity);
     sx_free(bp->pairs, (size_t)bp->pair_capacity * sizeof(uint64_t));
     memset(bp, 0, sizeof(*bp));
+}
+
+static bool sx_kinds_pair(unsigned char a, unsigned char b) {
+    if (a == SX_BP_AWAKE || b == SX_BP_AWAKE) return true;
+    return (a == SX_BP_MOVING_KINEMATIC && b == SX_BP_ASLEEP) ||
+           (a == SX_BP_ASLEEP && b == SX_BP_MOVING_KINEMATIC);
 }
 
 static int sx_compare_keys(const void *a, const void *b) {
@@ -59,13 +66,13 @@ sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const un
      * newcomers in slot order */
     for (i = 0; i < bp->order_count; ++i) {
         int c = bp->order[i];
-        if (c < slot_count && kind[c] != 0) {
+        if (c < slot_count && kind[c] != SX_BP_OUT) {
             bp->order[n++] = c;
             bp->mark[c] = 1;
         }
     }
     for (i = 0; i < slot_count; ++i) {
-        if (kind[i] != 0 && bp->mark[i] == 0) bp->order[n++] = i;
+        if (kind[i] != SX_BP_OUT && bp->mark[i] == 0) bp->order[n++] = i;
     }
     bp->order_count = n;
 
@@ -90,7 +97,7 @@ sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const un
             int b = bp->order[j];
             const sx_aabb *other = &aabbs[b];
             if (other->lower.x > box.upper.x) break;
-            if (kind[a] != 2 && kind[b] != 2) continue;
+            if (!sx_kinds_pair(kind[a], kind[b])) continue;
             if (other->lower.y > box.upper.y || other->upper.y < box.lower.y) continue;
             if (sx_add_pair(bp, a, b) != SX_OK) return SX_ERR_NO_MEMORY;
         }

@@ -40,6 +40,7 @@ void sx_contacts_prepare(sx_world *world, sx_real h) {
         sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
         sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;
         sx_vec2 n = c->normal, t = sx_cross_vs(n, SX_R(1.0));
+        if (!sx_contact_is_active(world, c)) continue;
         for (k = 0; k < c->count; ++k) {
             sx_contact_point *p = &c->points[k];
             sx_vec2 ra = p->anchor_a, rb = p->anchor_b, dv, impulse;
@@ -150,6 +151,7 @@ void sx_contacts_solve(sx_world *world, sx_real h) {
         sx_vec2 va = a->v, vb = b->v, n = c->normal, t = sx_cross_vs(n, SX_R(1.0));
         sx_real wa = a->w, wb = b->w;
         bool solved = false;
+        if (!sx_contact_is_active(world, c)) continue;
         /* Friction first, with the normal impulses of the last pass (or of
          * the warm start): the normal constraints then have the last word,
          * so a pass never ends with a point moving into the surface. A
@@ -211,7 +213,7 @@ void sx_contacts_restitution(sx_world *world) {
         sx_body_sim *a, *b;
         sx_real ma, ia, mb, ib;
         sx_vec2 n = c->normal;
-        if (c->restitution == SX_R(0.0)) continue;
+        if (c->restitution == SX_R(0.0) || !sx_contact_is_active(world, c)) continue;
         a = &world->sims[c->body_a];
         b = &world->sims[c->body_b];
         ma = a->inv_mass;
@@ -278,6 +280,7 @@ void sx_contacts_separate(sx_world *world, sx_real h) {
             sx_contact *c = &world->contacts[i];
             sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
             sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;
+            if (!sx_contact_is_active(world, c)) continue;
             for (k = 0; k < c->count; ++k) {
                 const sx_contact_point *p = &c->points[k];
                 sx_vec2 pa = sx_xform_point(a->xf, p->local_a);

@@ -24,20 +24,27 @@ sx_world_def sx_default_world_def(void) {
     d.speculative_slops = SX_R(4.0);
     d.length_units_per_meter = SX_LENGTH_UNITS_PER_METER;
     d.body_capacity = 0;
+    d.enable_sleep = true;
+    d.sleep_linear_speed = SX_R(0.05) * SX_LENGTH_UNITS_PER_METER;
+    d.sleep_angular_speed = SX_R(2.0) / SX_R(180.0) * SX_PI;
+    d.time_to_sleep = SX_R(0.5);
     return d;
 }
 
 static bool sx_world_def_is_valid(const sx_world_def *d) {
     if (!sx_vec2_is_finite(d->gravity) || !sx_is_finite(d->correction_factor) ||
         !sx_is_finite(d->max_correction_speed) || !sx_is_finite(d->restitution_threshold) ||
-        !sx_is_finite(d->speculative_slops) || !sx_is_finite(d->length_units_per_meter)) {
+        !sx_is_finite(d->speculative_slops) || !sx_is_finite(d->length_units_per_meter) ||
+        !sx_is_finite(d->sleep_linear_speed) || !sx_is_finite(d->sleep_angular_speed) ||
+        !sx_is_finite(d->time_to_sleep)) {
         return false;
     }
     return d->sub_steps >= 1 && d->velocity_iterations >= 1 && d->position_iterations >= 0 &&
            d->correction_factor > SX_R(0.0) && d->correction_factor <= SX_R(1.0) &&
            d->max_correction_speed > SX_R(0.0) && d->restitution_threshold >= SX_R(0.0) &&
            d->speculative_slops >= SX_R(0.0) && d->length_units_per_meter > SX_R(0.0) &&
-           d->body_capacity >= 0;
+           d->body_capacity >= 0 && d->sleep_linear_speed >= SX_R(0.0) &&
+           d->sleep_angular_speed >= SX_R(0.0) && d->time_to_sleep > SX_R(0.0);
 }
 
 sx_world *sx_world_create(const sx_world_def *def) {
@@ -80,6 +87,8 @@ void sx_world_destroy(sx_world *world) {
     sx_broadphase_free(&world->bp);
     sx_free(world->begin_events, (size_t)world->begin_capacity * sizeof(sx_contact_event));
     sx_free(world->end_events, (size_t)world->end_capacity * sizeof(sx_contact_event));
+    sx_free(world->island_parent, (size_t)world->parent_capacity * sizeof(int));
+    sx_free(world->island_time, (size_t)world->time_capacity * sizeof(sx_real));
     sx_free(world, sizeof(sx_world));
 }
 
@@ -119,7 +128,7 @@ sx_status sx_world_apply_forces(sx_world *world, sx_real h) {
     for (i = 0; i < world->body_slots; ++i) {
         sx_body_sim *b = &world->sims[i];
         sx_vec2 accel;
-        if (!world->infos[i].alive || !b->dynamic) continue;
+        if (!world->infos[i].alive || !b->dynamic || !b->awake) continue;
         accel = sx_add(sx_scale(g, b->gravity_scale), sx_scale(b->force, b->inv_mass));
         b->v = sx_add(sx_mul_add(b->v, h, accel), sx_scale(b->impulse, b->inv_mass));
         b->w = b->w + h * (b->torque * b->inv_inertia) + b->angular_impulse * b->inv_inertia;
@@ -240,6 +249,28 @@ sx_status sx_world_clear_events(sx_world *world) {
     return SX_OK;
 }
 
+/* Room for one more contact in the current list. */
+static bool sx_reserve_contact(sx_world *world) {
+    void *p = world->contacts;
+    bool ok;
+    if (world->contact_count < world->contact_capacity) return true;
+    ok = sx_grow_array(&p, &world->contact_capacity, world->contact_count + 1, sizeof(sx_contact));
+    world->contacts = (sx_contact *)p;
+    return ok;
+}
+
+/* Copies the frozen old contacts with keys below `key` into the new list
+ * (both lists stay sorted by key). */
+static sx_status sx_carry_frozen(sx_world *world, int *old_index, uint64_t key) {
+    while (*old_index < world->old_contact_count && world->old_contacts[*old_index].key < key) {
+        const sx_contact *o = &world->old_contacts[(*old_index)++];
+        if (!o->frozen) continue;
+        if (!sx_reserve_contact(world)) return SX_ERR_NO_MEMORY;
+        world->contacts[world->contact_count++] = *o;
+    }
+    return SX_OK;
+}
+
 sx_status sx_world_collide(sx_world *world) {
     sx_contact *swap;
     int i, old_index = 0, cap;
@@ -252,7 +283,13 @@ sx_status sx_world_collide(sx_world *world) {
         world->bp_kind[i] = 0;
         if (!c->alive || c->sensor || !world->infos[c->body].enabled) continue;
         b = &world->sims[c->body];
-        world->bp_kind[i] = b->dynamic ? 2 : 1;
+        if (b->dynamic) {
+            world->bp_kind[i] = b->awake ? SX_BP_AWAKE : SX_BP_ASLEEP;
+        } else if (b->moving && (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0))) {
+            world->bp_kind[i] = SX_BP_MOVING_KINEMATIC;
+        } else {
+            world->bp_kind[i] = SX_BP_FIXED;
+        }
         /* half the margin on each side: bounds meet when the gap < margin */
         world->aabbs[i] =
             sx_aabb_fatten(sx_shape_aabb(&c->shape, b->xf), SX_R(0.5) * world->margin);
@@ -268,6 +305,17 @@ sx_status sx_world_collide(sx_world *world) {
     world->contact_capacity = cap;
     world->old_contact_count = world->contact_count;
     world->contact_count = 0;
+    /* Contacts of sleeping bodies are not found again (the broadphase skips
+     * their pairs) but carried over as they are, frozen: the pile keeps its
+     * contacts, reports no end events, and warm-starts when it wakes. The
+     * flag is taken before any wake below, so a woken island keeps its
+     * contacts for this collide too. */
+    for (i = 0; i < world->old_contact_count; ++i) {
+        sx_contact *c = &world->old_contacts[i];
+        const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
+        c->frozen = !sx_contact_is_active(world, c) &&
+                    ((a->dynamic && !a->awake) || (b->dynamic && !b->awake));
+    }
 
     for (i = 0; i < world->bp.pair_count; ++i) {
         uint64_t key = world->bp.pairs[i];
@@ -278,24 +326,20 @@ sx_status sx_world_collide(sx_world *world) {
         sx_contact *c;
         sx_manifold m;
         int n;
+        s = sx_carry_frozen(world, &old_index, key);
+        if (s != SX_OK) return s;
+        if (old_index < world->old_contact_count && world->old_contacts[old_index].key == key) {
+            old = &world->old_contacts[old_index++];
+        }
         if (ca->body == cb->body || !sx_filters_collide(&ca->filter, &cb->filter)) continue;
         ba = &world->sims[ca->body];
         bb = &world->sims[cb->body];
         n = sx_collide_ex(&ca->shape, ba->xf, &cb->shape, bb->xf, world->margin, &m);
         if (n <= 0) continue;
-        if (world->contact_count == world->contact_capacity) {
-            void *p = world->contacts;
-            bool ok = sx_grow_array(&p, &world->contact_capacity, world->contact_count + 1,
-                                    sizeof(sx_contact));
-            world->contacts = (sx_contact *)p;
-            if (!ok) return SX_ERR_NO_MEMORY;
-        }
-        while (old_index < world->old_contact_count && world->old_contacts[old_index].key < key) {
-            ++old_index;
-        }
-        if (old_index < world->old_contact_count && world->old_contacts[old_index].key == key) {
-            old = &world->old_contacts[old_index];
-        }
+        /* an awake body touching a sleeping one wakes its island */
+        if (!ba->awake) sx_wake_body(world, ca->body);
+        if (!bb->awake) sx_wake_body(world, cb->body);
+        if (!sx_reserve_contact(world)) return SX_ERR_NO_MEMORY;
         c = &world->contacts[world->contact_count++];
         c->key = key;
         c->collider_a = ia;
@@ -324,6 +368,8 @@ sx_status sx_world_collide(sx_world *world) {
             sx_match_point(p, old);
         }
     }
+    s = sx_carry_frozen(world, &old_index, UINT64_MAX);
+    if (s != SX_OK) return s;
     return sx_record_events(world);
 }
 
@@ -379,7 +425,7 @@ sx_status sx_world_integrate(sx_world *world, sx_real h) {
     if (s != SX_OK) return s;
     for (i = 0; i < world->body_slots; ++i) {
         sx_body_sim *b = &world->sims[i];
-        if (!world->infos[i].alive || !b->moving) continue;
+        if (!world->infos[i].alive || !b->moving || !b->awake) continue;
         b->center = sx_mul_add(b->center, h, b->v);
         if (b->w != SX_R(0.0)) b->xf.q = sx_rot_integrate(b->xf.q, h * b->w);
         sx_body_sync_origin(b);
@@ -414,5 +460,5 @@ sx_status sx_world_step(sx_world *world, sx_real dt) {
         sx_world_separate(world, h);
     }
     sx_world_clear_forces(world);
-    return SX_OK;
+    return sx_world_update_sleep(world, dt);
 }

@@ -35,6 +35,9 @@ typedef struct sx_body_sim {
     bool dynamic;
     /* true for enabled dynamic and kinematic bodies: the ones that integrate */
     bool moving;
+    /* false while the body sleeps: forces, integration and pairs with other
+     * sleeping or static bodies skip it */
+    bool awake;
 } sx_body_sim;
 
 typedef struct sx_body_info {
@@ -47,6 +50,8 @@ typedef struct sx_body_info {
     void *user_data;
     int first_collider; /* -1 when none */
     int next_free;      /* free-list link while dead */
+    sx_real sleep_time; /* seconds spent below the sleep speeds */
+    int island;         /* while asleep: the island it fell asleep with */
 } sx_body_info;
 
 typedef struct sx_collider {
@@ -91,7 +96,20 @@ typedef struct sx_contact {
      * inverse, when K is well conditioned (block_solve) */
     sx_real k11, k12, k22, inv11, inv12, inv22;
     bool block_solve;
+    /* carried unchanged through collide while its bodies sleep */
+    bool frozen;
 } sx_contact;
+
+/* What the broadphase needs to know of a collider. Pairs are reported when
+ * one side is AWAKE, or a MOVING_KINEMATIC body meets an ASLEEP one (so it
+ * can wake it); FIXED and ASLEEP never pair among themselves. */
+enum {
+    SX_BP_OUT = 0,          /* not colliding: dead, disabled or a sensor */
+    SX_BP_FIXED,            /* static, or kinematic at rest */
+    SX_BP_AWAKE,            /* dynamic and awake */
+    SX_BP_MOVING_KINEMATIC, /* kinematic with a non-zero velocity */
+    SX_BP_ASLEEP            /* dynamic and asleep */
+};
 
 /* Sort-and-sweep broadphase: keeps the colliders ordered by the lower x of
  * their bounds across calls, so the insertion sort is near linear when
@@ -128,7 +146,18 @@ struct sx_world {
 
     sx_contact_event *begin_events, *end_events;
     int begin_count, begin_capacity, end_count, end_capacity;
+
+    int *island_parent; /* union-find scratch, per body slot */
+    sx_real *island_time;
+    int parent_capacity, time_capacity;
 };
+
+/* True when the solver must work on a contact: at least one of its bodies
+ * is dynamic and awake. */
+static inline bool sx_contact_is_active(const sx_world *world, const sx_contact *c) {
+    const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
+    return (a->dynamic && a->awake) || (b->dynamic && b->awake);
+}
 
 /* Grows *array (elements of `size` bytes, *capacity of them) to hold at least
  * `need`, doubling; copies the old contents. false when out of memory (the
@@ -138,9 +167,9 @@ bool sx_grow_array(void **array, int *capacity, int need, size_t size);
 /* broadphase.c */
 void sx_broadphase_init(sx_broadphase *bp);
 void sx_broadphase_free(sx_broadphase *bp);
-/* Finds the pairs of colliders whose bounds overlap, at least one of them
- * dynamic (kind 2), both in (kind != 0). Fills bp->pairs sorted ascending by
- * key (lower slot in the high half). */
+/* Finds the pairs of colliders whose bounds overlap and whose kinds (SX_BP_*)
+ * call for a pair. Fills bp->pairs sorted ascending by key (lower slot in the
+ * high half). */
 sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const unsigned char *kind,
                                int slot_count);
 
@@ -149,6 +178,11 @@ void sx_contacts_prepare(sx_world *world, sx_real h);
 void sx_contacts_solve(sx_world *world, sx_real h);
 void sx_contacts_restitution(sx_world *world);
 void sx_contacts_separate(sx_world *world, sx_real h);
+
+/* island.c */
+/* Wakes a body and, if it sleeps, every body of the island it fell asleep
+ * with. */
+void sx_wake_body(sx_world *world, int slot);
 
 /* body.c */
 /* Recomputes the mass properties of a body from its colliders. */

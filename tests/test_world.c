@@ -690,6 +690,104 @@ static void angular_velocity_survives_adding_colliders_and_fixed_rotation_holds(
     sx_world_destroy(w);
 }
 
+/* A ground and a column of `n` unit boxes resting on it. */
+static sx_world *make_column(bool sleep, sx_body_id *ids, int n) {
+    sx_world_def def = sx_default_world_def();
+    sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(1.0)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_world *w;
+    int i;
+    def.enable_sleep = sleep;
+    w = sx_world_create(&def);
+    assert_non_null(w);
+    make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-1.0)), &ground);
+    for (i = 0; i < n; ++i) {
+        ids[i] = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.5) + (sx_real)i), &box);
+    }
+    return w;
+}
+
+static void step_seconds(sx_world *w, int seconds) {
+    int i;
+    for (i = 0; i < 60 * seconds; ++i)
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+}
+
+static void resting_column_falls_asleep_and_stays_put(void **state) {
+    sx_body_id ids[3];
+    sx_world *w = make_column(true, ids, 3);
+    sx_xform before;
+    (void)state;
+    assert_int_equal(sx_world_awake_body_count(w), 3);
+    step_seconds(w, 2);
+    assert_int_equal(sx_world_awake_body_count(w), 0);
+    assert_false(sx_body_is_awake(w, ids[2]));
+    before = sx_body_get_transform(w, ids[2]);
+    step_seconds(w, 1);
+    {
+        sx_xform after = sx_body_get_transform(w, ids[2]);
+        assert_memory_equal(&before, &after, sizeof(before));
+    }
+    /* the sleeping pile keeps its contacts (no end events) */
+    assert_int_equal(sx_world_contact_count(w), 3);
+    assert_int_equal(sx_world_get_contact_events(w).end_count, 0);
+    sx_world_destroy(w);
+    /* and with sleeping off, nothing sleeps */
+    w = make_column(false, ids, 3);
+    step_seconds(w, 2);
+    assert_int_equal(sx_world_awake_body_count(w), 3);
+    sx_world_destroy(w);
+}
+
+static void pushing_one_sleeping_body_wakes_its_whole_island(void **state) {
+    sx_body_id ids[3];
+    sx_world *w = make_column(true, ids, 3);
+    (void)state;
+    step_seconds(w, 2);
+    assert_int_equal(sx_world_awake_body_count(w), 0);
+    assert_int_equal(sx_body_apply_impulse(w, ids[2], sx_v2(SX_R(0.1), SX_R(0.0))), SX_OK);
+    assert_int_equal(sx_world_awake_body_count(w), 3);
+    assert_true(sx_body_is_awake(w, ids[0]));
+    assert_int_equal(sx_body_set_awake(w, ids[1], false), SX_OK);
+    assert_false(sx_body_is_awake(w, ids[1]));
+    assert_int_equal(sx_body_set_awake(w, ids[1], true), SX_OK);
+    assert_true(sx_body_is_awake(w, ids[1]));
+    sx_world_destroy(w);
+}
+
+static void body_landing_on_a_sleeping_pile_wakes_it(void **state) {
+    sx_body_id ids[3], ball;
+    sx_world *w = make_column(true, ids, 3);
+    sx_shape shape = sx_circle_shape(sx_v2_zero(), SX_R(0.25));
+    int s, woke_at = -1;
+    (void)state;
+    step_seconds(w, 2);
+    assert_int_equal(sx_world_awake_body_count(w), 0);
+    ball = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(6.0)), &shape);
+    for (s = 0; s < 120 && woke_at < 0; ++s) {
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+        if (sx_body_is_awake(w, ids[0])) woke_at = s;
+    }
+    /* it falls 2.75 m (0.74 s) before it touches the top box, then the
+     * bottom box wakes with the top one */
+    assert_true(woke_at >= 40 && woke_at <= 46);
+    assert_true(sx_body_is_awake(w, ball));
+    sx_world_destroy(w);
+}
+
+static void destroying_the_support_of_a_sleeping_pile_lets_it_fall(void **state) {
+    sx_body_id ids[2];
+    sx_world *w = make_column(true, ids, 2);
+    (void)state;
+    step_seconds(w, 2);
+    assert_false(sx_body_is_awake(w, ids[1]));
+    assert_int_equal(sx_destroy_body(w, ids[0]), SX_OK);
+    assert_true(sx_body_is_awake(w, ids[1]));
+    step_seconds(w, 1);
+    /* it fell the 1 m onto the ground */
+    assert_near(sx_body_get_position(w, ids[1]).y, 0.5, 2.0 * (double)sx_world_linear_slop(w));
+    sx_world_destroy(w);
+}
+
 static void destroying_bodies_mid_run_and_the_world_frees_everything(void **state) {
     size_t start = sx_live_bytes();
     sx_body_id ids[10];
@@ -734,6 +832,10 @@ int main(void) {
         cmocka_unit_test(world_queries_find_the_colliders_at_their_current_place),
         cmocka_unit_test(debug_draw_visits_every_collider_and_contact_point),
         cmocka_unit_test(angular_velocity_survives_adding_colliders_and_fixed_rotation_holds),
+        cmocka_unit_test(resting_column_falls_asleep_and_stays_put),
+        cmocka_unit_test(pushing_one_sleeping_body_wakes_its_whole_island),
+        cmocka_unit_test(body_landing_on_a_sleeping_pile_wakes_it),
+        cmocka_unit_test(destroying_the_support_of_a_sleeping_pile_lets_it_fall),
         cmocka_unit_test(destroying_bodies_mid_run_and_the_world_frees_everything),
     };
     return cmocka_run_group_tests_name("world", tests, sx_test_group_setup, sx_test_group_teardown);

@@ -106,6 +106,18 @@ typedef struct sx_world_def {
     sx_real length_units_per_meter;
     /** Number of bodies to reserve room for at creation (>= 0). Default 0. */
     int body_capacity;
+    /** Lets groups of touching bodies that stay slow fall asleep (see
+     *  sx_world_update_sleep). Default true. */
+    bool enable_sleep;
+    /** Speeds under which a body counts as at rest: linear (m/s, >= 0,
+     *  default 0.05 x SX_LENGTH_UNITS_PER_METER: rescale it with
+     *  length_units_per_meter) and angular (rad/s, >= 0, default 2 degrees
+     *  per second). */
+    sx_real sleep_linear_speed;
+    sx_real sleep_angular_speed;
+    /** Seconds a whole island must stay at rest before it sleeps (> 0).
+     *  Default 0.5. */
+    sx_real time_to_sleep;
 } sx_world_def;
 
 /** The default world settings documented field by field in sx_world_def. */
@@ -125,6 +137,8 @@ sx_status sx_world_set_gravity(sx_world *world, sx_vec2 gravity);
 sx_vec2 sx_world_get_gravity(const sx_world *world);
 /** Number of live bodies. */
 int sx_world_body_count(const sx_world *world);
+/** Number of live dynamic bodies that are awake. */
+int sx_world_awake_body_count(const sx_world *world);
 /** The world's linear slop: 0.005 x length_units_per_meter. */
 sx_real sx_world_linear_slop(const sx_world *world);
 
@@ -189,6 +203,19 @@ sx_status sx_world_separate(sx_world *world, sx_real h);
 /** Clears every body's force and torque accumulators (the last stage of a
  *  step). Errors: SX_ERR_INVALID_ARG (NULL). */
 sx_status sx_world_clear_forces(sx_world *world);
+
+/** After a step of length dt: bodies slower than the sleep speeds gain dt of
+ *  rest time (others drop to 0); dynamic bodies joined by contacts form
+ *  islands, and an island whose every body has rested time_to_sleep seconds
+ *  falls asleep (velocities zeroed). Sleeping bodies cost nothing: no forces,
+ *  no integration, no pairs with static or other sleeping bodies. An island
+ *  wakes whole when an awake body touches one of its bodies, when one of its
+ *  bodies is destroyed, or when the API pushes, moves or sets the velocity of
+ *  one of them. A body touching a moving kinematic body never sleeps. Does
+ *  nothing when enable_sleep is false. sx_world_step calls it last.
+ *  Errors: SX_ERR_INVALID_ARG (NULL, dt <= 0), SX_ERR_NONFINITE,
+ *  SX_ERR_NO_MEMORY (the scratch arrays could not grow; nothing sleeps). */
+sx_status sx_world_update_sleep(sx_world *world, sx_real dt);
 
 /* ---- contacts ------------------------------------------------------------ */
 
@@ -313,9 +340,18 @@ sx_real sx_body_get_mass(const sx_world *world, sx_body_id body);
 sx_real sx_body_get_inertia(const sx_world *world, sx_body_id body);
 /** The user data of the body def. */
 void *sx_body_get_user_data(const sx_world *world, sx_body_id body);
+/** False while the body sleeps (static bodies: always false). */
+bool sx_body_is_awake(const sx_world *world, sx_body_id body);
+
+/** Wakes a sleeping dynamic body and its island (awake = true), or puts this
+ *  body to sleep now, velocities zeroed (awake = false; it wakes as
+ *  documented at sx_world_update_sleep, so a body still touching an awake
+ *  one wakes again at the next collide). SX_ERR_INVALID_ARG (NULL),
+ *  SX_ERR_STALE_HANDLE. Static and kinematic bodies ignore it (SX_OK). */
+sx_status sx_body_set_awake(sx_world *world, sx_body_id body, bool awake);
 
 /** Teleports the body: its origin to `position`, its angle to `angle`.
- *  Velocities are kept. SX_ERR_INVALID_ARG (NULL), SX_ERR_STALE_HANDLE,
+ *  Velocities are kept; the body wakes. SX_ERR_INVALID_ARG (NULL), SX_ERR_STALE_HANDLE,
  *  SX_ERR_NONFINITE. */
 sx_status sx_body_set_transform(sx_world *world, sx_body_id body, sx_vec2 position, sx_real angle);
 /** Sets the centre-of-mass velocity (ignored by static bodies, which stay at
@@ -329,9 +365,9 @@ sx_status sx_body_set_angular_velocity(sx_world *world, sx_body_id body, sx_real
 sx_status sx_body_set_type(sx_world *world, sx_body_id body, sx_body_type type);
 
 /* Forces and impulses ACCUMULATE until the step applies them (forces over
- * the whole step, impulses once). Static and kinematic bodies ignore them
- * (SX_OK). Errors: SX_ERR_INVALID_ARG (NULL world), SX_ERR_STALE_HANDLE,
- * SX_ERR_NONFINITE. */
+ * the whole step, impulses once), and wake the body. Static and
+ * kinematic bodies ignore them (SX_OK). Errors: SX_ERR_INVALID_ARG (NULL world),
+ * SX_ERR_STALE_HANDLE, SX_ERR_NONFINITE. */
 
 /** Adds a force (N) at the centre of mass. */
 sx_status sx_body_apply_force(sx_world *world, sx_body_id body, sx_vec2 force);
