@@ -4,13 +4,14 @@
  *
  * Build and run from the repository root (after `make`):
  *   cc -std=c99 -O2 -Iinclude samples/pyramid.c build/libsepax.a -lm -o build/pyramid
- *   ./build/pyramid [base] [seconds]
+ *   ./build/pyramid [base] [seconds] [sleep|nosleep]
  *
  * The whole program is the plain-C world API: create a world from its
  * default settings, add a static ground and dynamic boxes, step, read the
  * state back, destroy the world. */
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 #include <sepax/sepax.h>
@@ -39,6 +40,7 @@ static sx_body_id add_box(sx_world *world, sx_body_type type, sx_vec2 p, sx_real
 int main(int argc, char **argv) {
     int base = argc > 1 ? atoi(argv[1]) : 20;
     int seconds = argc > 2 ? atoi(argv[2]) : 10;
+    bool sleep = !(argc > 3 && strcmp(argv[3], "nosleep") == 0);
     sx_world_def def = sx_default_world_def();
     sx_world *world;
     sx_body_id top = {0, 0};
@@ -50,7 +52,10 @@ int main(int argc, char **argv) {
         fprintf(stderr, "usage: pyramid [base 1..1000] [seconds >= 1]\n");
         return 2;
     }
-    world = sx_world_create(&def); /* gravity (0, -10), 4 sub-steps */
+    /* gravity (0, -10), 4 sub-steps; a resting pyramid falls asleep unless
+     * told not to (then the timing is the solver's) */
+    def.enable_sleep = sleep;
+    world = sx_world_create(&def);
     if (world == NULL) return 1;
 
     /* ground: top surface at y = 0 */
@@ -72,8 +77,9 @@ int main(int argc, char **argv) {
         elapsed += (double)(clock() - start) / CLOCKS_PER_SEC;
         if (step % 60 == 0) {
             sx_vec2 p = sx_body_get_position(world, top);
-            printf("t = %2d s: top box at (%.4f, %.4f), %d contacts\n", step / 60, (double)p.x,
-                   (double)p.y, sx_world_contact_count(world));
+            printf("t = %2d s: top box at (%.4f, %.4f), %d contacts, %d bodies awake\n", step / 60,
+                   (double)p.x, (double)p.y, sx_world_contact_count(world),
+                   sx_world_awake_body_count(world));
         }
     }
     printf("%.3f ms per step (%s build)\n", 1000.0 * elapsed / (double)(60 * seconds),
