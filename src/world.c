@@ -93,9 +93,14 @@ void sx_world_destroy(sx_world *world) {
 }
 
 sx_status sx_world_set_gravity(sx_world *world, sx_vec2 gravity) {
+    int i;
     if (world == NULL) return SX_ERR_INVALID_ARG;
     if (!sx_vec2_is_finite(gravity)) return SX_ERR_NONFINITE;
     world->def.gravity = gravity;
+    /* what rested under the old gravity need not rest under the new one */
+    for (i = 0; i < world->body_slots; ++i) {
+        if (world->infos[i].alive && !world->sims[i].awake) sx_wake_body(world, i);
+    }
     return SX_OK;
 }
 

@@ -751,6 +751,11 @@ static void pushing_one_sleeping_body_wakes_its_whole_island(void **state) {
     assert_false(sx_body_is_awake(w, ids[1]));
     assert_int_equal(sx_body_set_awake(w, ids[1], true), SX_OK);
     assert_true(sx_body_is_awake(w, ids[1]));
+    step_seconds(w, 2);
+    assert_int_equal(sx_world_awake_body_count(w), 0);
+    /* a new gravity wakes everything */
+    assert_int_equal(sx_world_set_gravity(w, sx_v2(SX_R(1.0), SX_R(-10.0))), SX_OK);
+    assert_int_equal(sx_world_awake_body_count(w), 3);
     sx_world_destroy(w);
 }
 

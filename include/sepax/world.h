@@ -15,13 +15,14 @@
  *   sx_world_integrate(h)     positions from the new velocities
  *   sx_world_separate(h)      positional correction of what still overlaps
  *
- * and then sx_world_clear_forces(). This is symplectic Euler (velocities
- * first, then positions with the new velocities). Callers such as the flecs
- * systems may run the stages themselves, in this order, with their own code
- * in between.
+ * and then sx_world_clear_forces() and sx_world_update_sleep(dt). This is
+ * symplectic Euler (velocities first, then positions with the new
+ * velocities). Callers such as the flecs systems may run the stages
+ * themselves, in this order, with their own code in between.
  *
- * Around the step: contact begin/end events, world queries (bounds, point,
- * shape, ray) and a debug-draw callback interface.
+ * Sleeping: islands of touching bodies that stay slow fall asleep and cost
+ * no solver work until something touches or pushes them. Around the step: contact begin/end events,
+ * world queries (bounds, point, shape, ray) and a debug-draw callback interface.
  *
  * Units: metres, kilograms, seconds, radians. The contact tolerance (the
  * linear slop, 5 mm at one length unit per metre) scales with the world's
@@ -131,7 +132,8 @@ sx_world *sx_world_create(const sx_world_def *def);
  *  it becomes meaningless. */
 void sx_world_destroy(sx_world *world);
 
-/** Sets the gravity. SX_ERR_INVALID_ARG (NULL world), SX_ERR_NONFINITE. */
+/** Sets the gravity and wakes every sleeping body. SX_ERR_INVALID_ARG (NULL
+ *  world), SX_ERR_NONFINITE. */
 sx_status sx_world_set_gravity(sx_world *world, sx_vec2 gravity);
 /** The gravity (zero for a NULL world). */
 sx_vec2 sx_world_get_gravity(const sx_world *world);
