@@ -268,10 +268,27 @@ void sx_world_remove_contacts_of(sx_world *world, int collider) {
     int i, n = 0;
     for (i = 0; i < world->contact_count; ++i) {
         const sx_contact *c = &world->contacts[i];
-        if (c->collider_a == collider || c->collider_b == collider) continue;
+        if (c->collider_a == collider || c->collider_b == collider) {
+            /* whatever rested on the collider must be able to fall */
+            sx_wake_body(world, c->body_a);
+            sx_wake_body(world, c->body_b);
+            continue;
+        }
         world->contacts[n++] = *c;
     }
     world->contact_count = n;
+}
+
+/* Wakes a body and every body it has a contact with (a static body moved
+ * from under a sleeping pile must not leave the pile floating). */
+static void sx_wake_touching(sx_world *world, int slot) {
+    int i;
+    sx_wake_body(world, slot);
+    for (i = 0; i < world->contact_count; ++i) {
+        const sx_contact *c = &world->contacts[i];
+        if (c->body_a == slot) sx_wake_body(world, c->body_b);
+        if (c->body_b == slot) sx_wake_body(world, c->body_a);
+    }
 }
 
 /* Unlinks nothing: frees the collider slot (the caller fixes the list). */
@@ -495,7 +512,7 @@ sx_status sx_body_set_transform(sx_world *world, sx_body_id body, sx_vec2 positi
     if (slot < 0) return SX_ERR_STALE_HANDLE;
     if (!sx_vec2_is_finite(position) || !sx_is_finite(angle)) return SX_ERR_NONFINITE;
     sim = &world->sims[slot];
-    sx_wake_body(world, slot);
+    sx_wake_touching(world, slot);
     sim->xf = sx_xform_make(position, angle);
     sim->center = sx_xform_point(sim->xf, sim->local_center);
     return SX_OK;
@@ -538,7 +555,7 @@ sx_status sx_body_set_type(sx_world *world, sx_body_id body, sx_body_type type) 
     if (type != SX_BODY_STATIC && type != SX_BODY_KINEMATIC && type != SX_BODY_DYNAMIC) {
         return SX_ERR_INVALID_ARG;
     }
-    sx_wake_body(world, slot);
+    sx_wake_touching(world, slot);
     world->infos[slot].type = type;
     sx_body_update_mass(world, slot);
     return SX_OK;

@@ -187,7 +187,8 @@ void sx_wake_body(sx_world *world, int slot);
 /* body.c */
 /* Recomputes the mass properties of a body from its colliders. */
 void sx_body_update_mass(sx_world *world, int slot);
-/* Removes every contact involving the collider slot. */
+/* Removes every contact involving the collider slot and wakes the bodies
+ * of those contacts. */
 void sx_world_remove_contacts_of(sx_world *world, int collider);
 /* Recomputes xf.p from the centre of mass and rotation. */
 void sx_body_sync_origin(sx_body_sim *sim);

@@ -793,6 +793,40 @@ static void destroying_the_support_of_a_sleeping_pile_lets_it_fall(void **state)
     sx_world_destroy(w);
 }
 
+static void destroying_a_collider_drops_its_contacts_and_lets_the_body_fall(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(1.0)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_body_id g = make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-1.0)), NULL), b;
+    sx_collider_def cd = sx_default_collider_def();
+    sx_collider_id floor_collider;
+    (void)state;
+    cd.shape = ground;
+    assert_int_equal(sx_body_add_collider(w, g, &cd, &floor_collider), SX_OK);
+    b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.5)), &box);
+    step_seconds(w, 1);
+    assert_int_equal(sx_world_contact_count(w), 1);
+    assert_int_equal(sx_destroy_collider(w, floor_collider), SX_OK);
+    assert_int_equal(sx_world_contact_count(w), 0);
+    assert_true(sx_body_is_valid(w, g));
+    step_seconds(w, 1);
+    /* nothing holds it any more: a free fall of about 5 m in 1 s */
+    assert_true(sx_body_get_position(w, b).y < SX_R(-4.0));
+    /* a static platform teleported from under a sleeping box */
+    {
+        sx_body_id platform = make_body(w, SX_BODY_STATIC, sx_v2(SX_R(30.0), SX_R(-20.0)), &ground);
+        sx_body_id c = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(30.0), SX_R(-18.5)), &box);
+        step_seconds(w, 1);
+        assert_false(sx_body_is_awake(w, c));
+        assert_int_equal(
+            sx_body_set_transform(w, platform, sx_v2(SX_R(80.0), SX_R(-20.0)), SX_R(0.0)), SX_OK);
+        assert_true(sx_body_is_awake(w, c));
+    }
+    assert_int_equal(sx_world_update_sleep(w, SX_R(0.0)), SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_world_update_sleep(w, SX_R(1.0) / SX_R(0.0)), SX_ERR_NONFINITE);
+    assert_int_equal(sx_world_update_sleep(NULL, DT), SX_ERR_INVALID_ARG);
+    sx_world_destroy(w);
+}
+
 static void destroying_bodies_mid_run_and_the_world_frees_everything(void **state) {
     size_t start = sx_live_bytes();
     sx_body_id ids[10];
@@ -841,6 +875,7 @@ int main(void) {
         cmocka_unit_test(pushing_one_sleeping_body_wakes_its_whole_island),
         cmocka_unit_test(body_landing_on_a_sleeping_pile_wakes_it),
         cmocka_unit_test(destroying_the_support_of_a_sleeping_pile_lets_it_fall),
+        cmocka_unit_test(destroying_a_collider_drops_its_contacts_and_lets_the_body_fall),
         cmocka_unit_test(destroying_bodies_mid_run_and_the_world_frees_everything),
     };
     return cmocka_run_group_tests_name("world", tests, sx_test_group_setup, sx_test_group_teardown);

@@ -212,8 +212,9 @@ sx_status sx_world_clear_forces(sx_world *world);
  *  falls asleep (velocities zeroed). Sleeping bodies cost nothing: no forces,
  *  no integration, no pairs with static or other sleeping bodies. An island
  *  wakes whole when an awake body touches one of its bodies, when one of its
- *  bodies is destroyed, or when the API pushes, moves or sets the velocity of
- *  one of them. A body touching a moving kinematic body never sleeps. Does
+ *  bodies is destroyed, when the API pushes, moves or sets the velocity of
+ *  one of them, or when a body or collider it rests on is moved, retyped or
+ *  destroyed. A body touching a moving kinematic body never sleeps. Does
  *  nothing when enable_sleep is false. sx_world_step calls it last.
  *  Errors: SX_ERR_INVALID_ARG (NULL, dt <= 0), SX_ERR_NONFINITE,
  *  SX_ERR_NO_MEMORY (the scratch arrays could not grow; nothing sleeps). */
@@ -353,8 +354,8 @@ bool sx_body_is_awake(const sx_world *world, sx_body_id body);
 sx_status sx_body_set_awake(sx_world *world, sx_body_id body, bool awake);
 
 /** Teleports the body: its origin to `position`, its angle to `angle`.
- *  Velocities are kept; the body wakes. SX_ERR_INVALID_ARG (NULL), SX_ERR_STALE_HANDLE,
- *  SX_ERR_NONFINITE. */
+ *  Velocities are kept; the body and the bodies it touches wake. SX_ERR_INVALID_ARG (NULL),
+ * SX_ERR_STALE_HANDLE, SX_ERR_NONFINITE. */
 sx_status sx_body_set_transform(sx_world *world, sx_body_id body, sx_vec2 position, sx_real angle);
 /** Sets the centre-of-mass velocity (ignored by static bodies, which stay at
  *  rest). Errors as sx_body_set_transform. */
