@@ -12,13 +12,20 @@
  * over to the next sub-step (warm starting) so a resting stack starts near
  * its answer. The two points of a face resting on a face are solved
  * together (a 2x2 complementarity problem, solved exactly by trying its four
- * cases), which keeps stacks from rocking. A point still separated by a gap s > 0 is speculative:
- * it may approach at up to s / h, closing the gap exactly in this sub-step, so fast bodies stop at
- * the surface instead of tunnelling. An overlapping point only asks for vn >= 0; the overlap itself
- * is removed by moving positions (sx_contacts_separate), never by adding velocity, so overlap does
- * not turn into kinetic energy. Restitution is a last pass over the points that pushed and were
- * approaching faster than the threshold: they leave at e times the approach speed measured before
- * the solve.
+ * cases), which keeps stacks from rocking. A point still separated by a gap
+ * s > 0 is speculative: it may approach at up to s / h, closing the gap
+ * exactly in this sub-step, so fast bodies stop at the surface instead of
+ * tunnelling. An overlapping point only asks for vn >= 0; the overlap itself
+ * is removed by moving positions (sx_contacts_separate), never by adding
+ * velocity, so overlap does not turn into kinetic energy.
+ *
+ * Restitution is a last pass over the points that pushed and were
+ * approaching faster than the threshold: they leave at e times the approach
+ * speed measured before the solve. An impact caught by a speculative point
+ * is deferred to the next sub-step, when the surfaces touch, so the rebound
+ * starts from the surface and not from the gap; and the rebound impulse is
+ * capped at e times the impulse that stopped the approach (Poisson), which
+ * keeps chains of contacts solved together from creating energy.
  *
  * Positions: each pass recomputes every point's separation from the surface
  * points stored in the body frames by collide, and moves the two bodies
@@ -32,9 +39,8 @@
  * 2x2 solve amplifies round-off more than it gains). */
 #define SX_BLOCK_MAX_CONDITION SX_R(1000.0)
 
-void sx_contacts_prepare(sx_world *world, sx_real h) {
+void sx_contacts_prepare(sx_world *world) {
     int i, k;
-    SX_UNUSED(h);
     for (i = 0; i < world->contact_count; ++i) {
         sx_contact *c = &world->contacts[i];
         sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];

@@ -415,7 +415,7 @@ sx_status sx_world_solve(sx_world *world, sx_real h) {
     sx_status s = sx_check_step(world, h);
     int it;
     if (s != SX_OK) return s;
-    sx_contacts_prepare(world, h);
+    sx_contacts_prepare(world);
     for (it = 0; it < world->def.velocity_iterations; ++it)
         sx_contacts_solve(world, h);
     sx_contacts_restitution(world);

@@ -174,7 +174,7 @@ sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const un
                                int slot_count);
 
 /* contact_solver.c */
-void sx_contacts_prepare(sx_world *world, sx_real h);
+void sx_contacts_prepare(sx_world *world);
 void sx_contacts_solve(sx_world *world, sx_real h);
 void sx_contacts_restitution(sx_world *world);
 void sx_contacts_separate(sx_world *world, sx_real h);
