@@ -295,6 +295,7 @@ static void sx_wake_touching(sx_world *world, int slot) {
 static void sx_free_collider_slot(sx_world *world, int slot) {
     sx_collider *c = &world->colliders[slot];
     sx_world_remove_contacts_of(world, slot);
+    sx_sensors_remove_collider(world, slot);
     c->alive = false;
     c->generation = c->generation == 0xFFFFFFFFu ? 1u : c->generation + 1u;
     c->next_free = world->collider_free;

@@ -87,6 +87,7 @@ void sx_world_destroy(sx_world *world) {
     sx_broadphase_free(&world->bp);
     sx_free(world->begin_events, (size_t)world->begin_capacity * sizeof(sx_contact_event));
     sx_free(world->end_events, (size_t)world->end_capacity * sizeof(sx_contact_event));
+    sx_sensors_free(world);
     sx_free(world->island_parent, (size_t)world->parent_capacity * sizeof(int));
     sx_free(world->island_time, (size_t)world->time_capacity * sizeof(sx_real));
     sx_free(world, sizeof(sx_world));
@@ -251,6 +252,8 @@ sx_status sx_world_clear_events(sx_world *world) {
     if (world == NULL) return SX_ERR_INVALID_ARG;
     world->begin_count = 0;
     world->end_count = 0;
+    world->sensor_begin_count = 0;
+    world->sensor_end_count = 0;
     return SX_OK;
 }
 
@@ -375,7 +378,9 @@ sx_status sx_world_collide(sx_world *world) {
     }
     s = sx_carry_frozen(world, &old_index, UINT64_MAX);
     if (s != SX_OK) return s;
-    return sx_record_events(world);
+    s = sx_record_events(world);
+    if (s != SX_OK) return s;
+    return sx_sensors_update(world);
 }
 
 int sx_world_contact_count(const sx_world *world) {

@@ -147,6 +147,13 @@ struct sx_world {
     sx_contact_event *begin_events, *end_events;
     int begin_count, begin_capacity, end_count, end_capacity;
 
+    /* sensor overlaps of the last and the current collide, sorted keys
+     * sensor << 32 | visitor */
+    uint64_t *sensor_pairs, *old_sensor_pairs;
+    int sensor_count, old_sensor_count, sensor_capacity, old_sensor_capacity;
+    sx_sensor_event *sensor_begin, *sensor_end;
+    int sensor_begin_count, sensor_begin_capacity, sensor_end_count, sensor_end_capacity;
+
     int *island_parent; /* union-find scratch, per body slot */
     sx_real *island_time;
     int parent_capacity, time_capacity;
@@ -178,6 +185,16 @@ void sx_contacts_prepare(sx_world *world);
 void sx_contacts_solve(sx_world *world, sx_real h);
 void sx_contacts_restitution(sx_world *world);
 void sx_contacts_separate(sx_world *world, sx_real h);
+
+/* sensor.c */
+/* Finds the sensor overlaps at the current positions and records the sensor
+ * events against the last call's overlaps. */
+sx_status sx_sensors_update(sx_world *world);
+/* Frees the sensor arrays. */
+void sx_sensors_free(sx_world *world);
+/* Forgets the overlaps of a destroyed collider (no end event, as for
+ * contacts). */
+void sx_sensors_remove_collider(sx_world *world, int collider);
 
 /* island.c */
 /* Wakes a body and, if it sleeps, every body of the island it fell asleep

@@ -827,6 +827,56 @@ static void destroying_a_collider_drops_its_contacts_and_lets_the_body_fall(void
     sx_world_destroy(w);
 }
 
+static void sensor_reports_a_ball_falling_through_it_without_touching_it(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape zone = sx_box_shape(SX_R(2.0), SX_R(1.0)),
+             ball = sx_circle_shape(sx_v2_zero(), SX_R(0.25));
+    sx_body_def bd = sx_default_body_def();
+    sx_collider_def cd = sx_default_collider_def();
+    sx_body_id region, b, ignored;
+    sx_collider_id sensor;
+    sx_sensor_events e;
+    int s, began = -1, ended = -1, begins = 0, ends = 0;
+    (void)state;
+    assert_int_equal(sx_create_body(w, &bd, &region), SX_OK);
+    cd.shape = zone;
+    cd.sensor = true;
+    cd.filter.mask = 1u; /* sees category 1 only */
+    assert_int_equal(sx_body_add_collider(w, region, &cd, &sensor), SX_OK);
+    b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(3.0)), &ball);
+    bd.type = SX_BODY_DYNAMIC;
+    bd.position = sx_v2(SX_R(1.0), SX_R(3.0));
+    assert_int_equal(sx_create_body(w, &bd, &ignored), SX_OK);
+    cd = sx_default_collider_def();
+    cd.shape = ball;
+    cd.filter.category = 2u;
+    assert_int_equal(sx_body_add_collider(w, ignored, &cd, NULL), SX_OK);
+    for (s = 0; s < 90; ++s) {
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+        e = sx_world_get_sensor_events(w);
+        if (e.begin_count > 0 && began < 0) {
+            began = s;
+            assert_true(sx_collider_id_to_u64(e.begin[0].sensor) == sx_collider_id_to_u64(sensor));
+            assert_true(sx_body_id_to_u64(e.begin[0].visitor_body) == sx_body_id_to_u64(b));
+        }
+        if (e.end_count > 0 && ended < 0) ended = s;
+        begins += e.begin_count;
+        ends += e.end_count;
+    }
+    /* the ball's bottom reaches y = 1 after falling 1.75 m (0.59 s) and its
+     * top leaves y = -1 after 4.25 m (0.92 s); the category-2 ball is never
+     * seen */
+    assert_int_equal(begins, 1);
+    assert_int_equal(ends, 1);
+    assert_true(began >= 34 && began <= 36);
+    assert_true(ended >= 54 && ended <= 56);
+    /* no response: the ball fell freely (4.5 m of free fall in 1.5 s,
+     * within the integrator's first-order error) */
+    assert_near(sx_body_get_position(w, b).y, 3.0 - 0.5 * 10.0 * 1.5 * 1.5, 0.1);
+    assert_int_equal(sx_world_get_sensor_events(NULL).begin_count, 0);
+    sx_world_destroy(w);
+}
+
 static void destroying_bodies_mid_run_and_the_world_frees_everything(void **state) {
     size_t start = sx_live_bytes();
     sx_body_id ids[10];
@@ -876,6 +926,7 @@ int main(void) {
         cmocka_unit_test(body_landing_on_a_sleeping_pile_wakes_it),
         cmocka_unit_test(destroying_the_support_of_a_sleeping_pile_lets_it_fall),
         cmocka_unit_test(destroying_a_collider_drops_its_contacts_and_lets_the_body_fall),
+        cmocka_unit_test(sensor_reports_a_ball_falling_through_it_without_touching_it),
         cmocka_unit_test(destroying_bodies_mid_run_and_the_world_frees_everything),
     };
     return cmocka_run_group_tests_name("world", tests, sx_test_group_setup, sx_test_group_teardown);

@@ -273,7 +273,31 @@ typedef struct sx_contact_events {
 /** The events recorded since the last clear (all empty for NULL). */
 sx_contact_events sx_world_get_contact_events(const sx_world *world);
 
-/** Forgets the recorded events. SX_ERR_INVALID_ARG for NULL. */
+/** A collider that started or stopped overlapping a sensor (touching
+ *  counts). A sensor sees the non-sensor colliders of other enabled bodies
+ *  that its filter accepts, except that a sensor on a static body does not
+ *  see other static bodies. */
+typedef struct sx_sensor_event {
+    sx_collider_id sensor, visitor;
+    sx_body_id sensor_body, visitor_body;
+} sx_sensor_event;
+
+/** Sensor events, recorded and cleared as the contact events (destroying a
+ *  collider forgets its overlaps without an end event). Each collide tests
+ *  every sensor against every collider's bounds (cost: sensors x
+ *  colliders), then the overlap of the candidates. */
+typedef struct sx_sensor_events {
+    const sx_sensor_event *begin;
+    int begin_count;
+    const sx_sensor_event *end;
+    int end_count;
+} sx_sensor_events;
+
+/** The sensor events recorded since the last clear (empty for NULL). */
+sx_sensor_events sx_world_get_sensor_events(const sx_world *world);
+
+/** Forgets the recorded contact and sensor events. SX_ERR_INVALID_ARG for
+ *  NULL. */
 sx_status sx_world_clear_events(sx_world *world);
 
 /* ---- bodies ------------------------------------------------------------- */
@@ -409,7 +433,8 @@ typedef struct sx_collider_def {
     sx_real friction;    /**< >= 0; default 0.6; mixed as sqrt(mu_a mu_b) */
     sx_real restitution; /**< >= 0; default 0; mixed as max(e_a, e_b) */
     sx_filter filter;
-    /** A sensor takes part in no contact (it has no response); default false. */
+    /** A sensor takes part in no contact (it has no response); it reports
+     *  the colliders overlapping it as sensor events. Default false. */
     bool sensor;
     void *user_data; /**< default NULL */
 } sx_collider_def;
