@@ -130,16 +130,17 @@ static void bounce_with_zero_restitution_stays_on_the_ground(void **state) {
 /* A box of half-extent 0.5 released at rest on a ramp at 0.25 rad with
  * friction mu (both colliders, so the mixed coefficient is mu). Returns the
  * distance slid down the slope after 1 s and 2 s and the speed then. */
-static void incline_run(sx_real mu, double *d1, double *d2, double *v1, double *v2) {
+static void incline_run2(sx_real mu_ramp, sx_real mu_box, double *d1, double *d2, double *v1,
+                         double *v2) {
     sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
     sx_real th = (sx_real)INCLINE_ANGLE;
     sx_shape ramp = sx_box_shape(SX_R(20.0), SX_R(0.5));
     sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5));
     sx_vec2 down = sx_v2(-sx_cos(th), -sx_sin(th)), start;
     sx_body_id b;
-    add_body(w, SX_BODY_STATIC, sx_v2_zero(), th, &ramp, SX_R(0.0), mu, SX_R(0.0));
+    add_body(w, SX_BODY_STATIC, sx_v2_zero(), th, &ramp, SX_R(0.0), mu_ramp, SX_R(0.0));
     start = sx_rotate(sx_rot_make(th), sx_v2(SX_R(8.0), SX_R(1.0)));
-    b = add_body(w, SX_BODY_DYNAMIC, start, th, &box, SX_R(1.0), mu, SX_R(0.0));
+    b = add_body(w, SX_BODY_DYNAMIC, start, th, &box, SX_R(1.0), mu_box, SX_R(0.0));
     step_n(w, 60);
     *d1 = (double)sx_dot(sx_sub(sx_body_get_position(w, b), start), down);
     *v1 = (double)sx_dot(sx_body_get_linear_velocity(w, b), down);
@@ -147,6 +148,10 @@ static void incline_run(sx_real mu, double *d1, double *d2, double *v1, double *
     *d2 = (double)sx_dot(sx_sub(sx_body_get_position(w, b), start), down);
     *v2 = (double)sx_dot(sx_body_get_linear_velocity(w, b), down);
     sx_world_destroy(w);
+}
+
+static void incline_run(sx_real mu, double *d1, double *d2, double *v1, double *v2) {
+    incline_run2(mu, mu, d1, d2, v1, v2);
 }
 
 static void incline_box_sticks_when_friction_exceeds_tangent(void **state) {
@@ -177,6 +182,41 @@ static void incline_box_slides_with_coulomb_acceleration(void **state) {
         /* and the distance agrees with a uniformly accelerated start */
         assert_near(d2, 0.5 * want * 4.0, 0.02 * 0.5 * want * 4.0);
     }
+}
+
+/* Friction mixes as sqrt(mu_a mu_b): 0.25 on 1.0 gives 0.5, which holds the
+ * box at 0.25 rad, where the smaller coefficient alone (0.25 < tan 0.25)
+ * would let it slide. */
+static void incline_friction_mixes_as_geometric_mean(void **state) {
+    double d1, d2, v1, v2;
+    (void)state;
+    incline_run2(SX_R(1.0), SX_R(0.25), &d1, &d2, &v1, &v2);
+    assert_true(d2 < 0.001 && d2 > -0.001);
+    incline_run2(SX_R(0.25), SX_R(0.25), &d1, &d2, &v1, &v2);
+    assert_true(d2 > 0.01);
+}
+
+/* An impact slower than the restitution threshold (1 m/s by default) does not
+ * bounce, whatever the restitution. */
+static void slow_impact_below_the_threshold_does_not_bounce(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    sx_body_id b;
+    double highest = 0.0;
+    int s;
+    (void)state;
+    add_ground(w, SX_R(10.0), SX_R(0.6));
+    /* dropped from 3 cm: lands at 0.77 m/s */
+    b = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.53)), SX_R(0.0), &ball, SX_R(1.0),
+                 SX_R(0.6), SX_R(0.9));
+    for (s = 0; s < 60; ++s) {
+        step_n(w, 1);
+        if (s > 10 && (double)sx_body_get_position(w, b).y > highest) {
+            highest = (double)sx_body_get_position(w, b).y;
+        }
+    }
+    assert_true(highest < 0.5 + 0.001);
+    sx_world_destroy(w);
 }
 
 /* ---- Newton's cradle -------------------------------------------------------- */
@@ -580,6 +620,8 @@ int main(void) {
         cmocka_unit_test(bounce_with_zero_restitution_stays_on_the_ground),
         cmocka_unit_test(incline_box_sticks_when_friction_exceeds_tangent),
         cmocka_unit_test(incline_box_slides_with_coulomb_acceleration),
+        cmocka_unit_test(incline_friction_mixes_as_geometric_mean),
+        cmocka_unit_test(slow_impact_below_the_threshold_does_not_bounce),
         cmocka_unit_test(cradle_passes_the_speed_to_the_last_ball),
         cmocka_unit_test(cradle_with_speculative_contacts_keeps_momentum_and_gains_no_energy),
         cmocka_unit_test(pileup_conserves_momentum_and_never_gains_energy),
