@@ -877,6 +877,67 @@ static void sensor_reports_a_ball_falling_through_it_without_touching_it(void **
     sx_world_destroy(w);
 }
 
+/* A random value: mostly ordinary, sometimes huge, zero, NaN or infinite. */
+static sx_real hostile(sx_test_rng *rng) {
+    double u = sx_test_rng_unit(rng);
+    if (u < 0.03) return SX_R(0.0) / SX_R(0.0);
+    if (u < 0.06) return SX_R(1.0) / SX_R(0.0);
+    if (u < 0.09) return SX_R(0.0);
+    if (u < 0.12) return sx_test_rng_range(rng, -1.0e4, 1.0e4);
+    return sx_test_rng_range(rng, -5.0, 5.0);
+}
+
+static void random_api_calls_never_crash_or_make_nan(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_test_rng rng = sx_test_rng_make(99u);
+    sx_body_id ids[32];
+    int n = 0, s, i;
+    (void)state;
+    memset(ids, 0, sizeof(ids));
+    for (s = 0; s < 600; ++s) {
+        double u = sx_test_rng_unit(&rng);
+        sx_body_id pick = n > 0 ? ids[(int)(sx_test_rng_unit(&rng) * (double)n)] : ids[0];
+        sx_vec2 v = sx_v2(hostile(&rng), hostile(&rng));
+        if (u < 0.15 && n < 32) {
+            sx_body_def bd = sx_default_body_def();
+            sx_collider_def cd = sx_default_collider_def();
+            bd.type = (sx_body_type)(sx_test_rng_next(&rng) % 3);
+            bd.position =
+                sx_v2(sx_test_rng_range(&rng, -5.0, 5.0), sx_test_rng_range(&rng, 0.0, 5.0));
+            if (sx_create_body(w, &bd, &ids[n]) == SX_OK) {
+                cd.shape = (n % 2) ? sx_box_shape(SX_R(0.3), SX_R(0.4))
+                                   : sx_capsule_shape(sx_v2_zero(), sx_v2(SX_R(0.5), SX_R(0.0)),
+                                                      SX_R(0.2));
+                cd.restitution = sx_test_rng_range(&rng, 0.0, 1.0);
+                assert_int_equal(sx_body_add_collider(w, ids[n], &cd, NULL), SX_OK);
+                ++n;
+            }
+        } else if (u < 0.2) {
+            (void)sx_destroy_body(w, pick);
+        } else if (u < 0.3) {
+            (void)sx_body_apply_impulse_at_point(w, pick, v, sx_v2(hostile(&rng), hostile(&rng)));
+        } else if (u < 0.35) {
+            (void)sx_body_set_transform(w, pick, v, hostile(&rng));
+        } else if (u < 0.4) {
+            (void)sx_body_set_linear_velocity(w, pick, v);
+        } else if (u < 0.45) {
+            (void)sx_body_apply_force(w, pick, v);
+        } else if (u < 0.48) {
+            (void)sx_body_set_type(w, pick, (sx_body_type)(sx_test_rng_next(&rng) % 4));
+        } else {
+            sx_real dt = sx_test_rng_unit(&rng) < 0.05 ? hostile(&rng) : DT;
+            (void)sx_world_step(w, dt);
+        }
+        for (i = 0; i < n; ++i) {
+            if (!sx_body_is_valid(w, ids[i])) continue;
+            assert_true(sx_vec2_is_finite(sx_body_get_position(w, ids[i])));
+            assert_true(sx_vec2_is_finite(sx_body_get_linear_velocity(w, ids[i])));
+            assert_true(sx_is_finite(sx_body_get_angle(w, ids[i])));
+        }
+    }
+    sx_world_destroy(w);
+}
+
 static void destroying_bodies_mid_run_and_the_world_frees_everything(void **state) {
     size_t start = sx_live_bytes();
     sx_body_id ids[10];
@@ -927,6 +988,7 @@ int main(void) {
         cmocka_unit_test(destroying_the_support_of_a_sleeping_pile_lets_it_fall),
         cmocka_unit_test(destroying_a_collider_drops_its_contacts_and_lets_the_body_fall),
         cmocka_unit_test(sensor_reports_a_ball_falling_through_it_without_touching_it),
+        cmocka_unit_test(random_api_calls_never_crash_or_make_nan),
         cmocka_unit_test(destroying_bodies_mid_run_and_the_world_frees_everything),
     };
     return cmocka_run_group_tests_name("world", tests, sx_test_group_setup, sx_test_group_teardown);
