@@ -10,8 +10,6 @@
  * not reported: nothing there can respond; the one exception is a moving
  * kinematic body meeting a sleeping one, which must wake it. Pairs come out sorted by key, so the
  * contact list and the solver's order are the same on every run (determinism). */
-#include <stdlib.h>
-
 #include "world_internal.h"
 
 void sx_broadphase_init(sx_broadphase *bp) { memset(bp, 0, sizeof(*bp)); }
@@ -20,6 +18,8 @@ void sx_broadphase_free(sx_broadphase *bp) {
     sx_free(bp->order, (size_t)bp->order_capacity * sizeof(int));
     sx_free(bp->mark, (size_t)bp->mark_capacity);
     sx_free(bp->pairs, (size_t)bp->pair_capacity * sizeof(uint64_t));
+    sx_free(bp->scratch, (size_t)bp->scratch_capacity * sizeof(uint64_t));
+    sx_free(bp->sorted, (size_t)bp->sorted_capacity * sizeof(sx_sorted_box));
     memset(bp, 0, sizeof(*bp));
 }
 
@@ -29,9 +29,48 @@ static bool sx_kinds_pair(unsigned char a, unsigned char b) {
            (a == SX_BP_ASLEEP && b == SX_BP_MOVING_KINEMATIC);
 }
 
-static int sx_compare_keys(const void *a, const void *b) {
-    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
-    return x < y ? -1 : (x > y ? 1 : 0);
+/* Sorts the pair keys ascending: an LSD radix sort over the packed key
+ * (lo << bits | hi, bits enough for any slot), a byte per pass. Linear in
+ * the pairs, and it needs no comparison callback. */
+static sx_status sx_sort_pairs(sx_broadphase *bp, int slot_count) {
+    int bits = 1, passes, pass, i, n = bp->pair_count;
+    uint64_t *src, *dst;
+    void *p;
+    bool ok;
+    if (n < 2) return SX_OK;
+    while (bits < 32 && ((int64_t)1 << bits) < (int64_t)slot_count)
+        ++bits;
+    p = bp->scratch;
+    ok = sx_grow_array(&p, &bp->scratch_capacity, n, sizeof(uint64_t));
+    bp->scratch = (uint64_t *)p;
+    if (!ok) return SX_ERR_NO_MEMORY;
+    for (i = 0; i < n; ++i) {
+        uint64_t k = bp->pairs[i];
+        bp->pairs[i] = ((k >> 32) << bits) | (k & 0xFFFFFFFFu);
+    }
+    src = bp->pairs;
+    dst = bp->scratch;
+    passes = (2 * bits + 7) / 8;
+    for (pass = 0; pass < passes; ++pass) {
+        int count[257];
+        int shift = 8 * pass;
+        uint64_t *t;
+        memset(count, 0, sizeof(count));
+        for (i = 0; i < n; ++i)
+            count[((src[i] >> shift) & 0xFFu) + 1]++;
+        for (i = 0; i < 256; ++i)
+            count[i + 1] += count[i];
+        for (i = 0; i < n; ++i)
+            dst[count[(src[i] >> shift) & 0xFFu]++] = src[i];
+        t = src;
+        src = dst;
+        dst = t;
+    }
+    for (i = 0; i < n; ++i) {
+        uint64_t k = src[i];
+        bp->pairs[i] = ((k >> bits) << 32) | (k & (((uint64_t)1 << bits) - 1u));
+    }
+    return SX_OK;
 }
 
 static sx_status sx_add_pair(sx_broadphase *bp, int a, int b) {
@@ -90,20 +129,28 @@ sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const un
         bp->order[j + 1] = c;
     }
 
+    /* the sweep reads the bounds in sorted order: copy them next to each
+     * other once instead of chasing the slot index for every candidate */
+    p = bp->sorted;
+    ok = sx_grow_array(&p, &bp->sorted_capacity, n, sizeof(sx_sorted_box));
+    bp->sorted = (sx_sorted_box *)p;
+    if (!ok) return SX_ERR_NO_MEMORY;
     for (i = 0; i < n; ++i) {
-        int a = bp->order[i], j;
-        sx_aabb box = aabbs[a];
+        int c = bp->order[i];
+        bp->sorted[i].box = aabbs[c];
+        bp->sorted[i].slot = c;
+        bp->sorted[i].kind = kind[c];
+    }
+    for (i = 0; i < n; ++i) {
+        const sx_sorted_box *a = &bp->sorted[i];
+        int j;
         for (j = i + 1; j < n; ++j) {
-            int b = bp->order[j];
-            const sx_aabb *other = &aabbs[b];
-            if (other->lower.x > box.upper.x) break;
-            if (!sx_kinds_pair(kind[a], kind[b])) continue;
-            if (other->lower.y > box.upper.y || other->upper.y < box.lower.y) continue;
-            if (sx_add_pair(bp, a, b) != SX_OK) return SX_ERR_NO_MEMORY;
+            const sx_sorted_box *b = &bp->sorted[j];
+            if (b->box.lower.x > a->box.upper.x) break;
+            if (!sx_kinds_pair(a->kind, b->kind)) continue;
+            if (b->box.lower.y > a->box.upper.y || b->box.upper.y < a->box.lower.y) continue;
+            if (sx_add_pair(bp, a->slot, b->slot) != SX_OK) return SX_ERR_NO_MEMORY;
         }
     }
-    if (bp->pair_count > 1) {
-        qsort(bp->pairs, (size_t)bp->pair_count, sizeof(uint64_t), sx_compare_keys);
-    }
-    return SX_OK;
+    return sx_sort_pairs(bp, slot_count);
 }

@@ -114,6 +114,12 @@ enum {
 /* Sort-and-sweep broadphase: keeps the colliders ordered by the lower x of
  * their bounds across calls, so the insertion sort is near linear when
  * bodies move a little per step. */
+typedef struct sx_sorted_box {
+    sx_aabb box;
+    int slot;
+    unsigned char kind;
+} sx_sorted_box;
+
 typedef struct sx_broadphase {
     int *order;
     int order_count, order_capacity;
@@ -121,6 +127,10 @@ typedef struct sx_broadphase {
     int mark_capacity;
     uint64_t *pairs;
     int pair_count, pair_capacity;
+    uint64_t *scratch; /* radix-sort buffer, as large as pairs */
+    int scratch_capacity;
+    sx_sorted_box *sorted; /* bounds in sweep order */
+    int sorted_capacity;
 } sx_broadphase;
 
 struct sx_world {
