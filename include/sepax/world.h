@@ -146,15 +146,16 @@ sx_real sx_world_linear_slop(const sx_world *world);
 
 /* ---- the step and its stages -------------------------------------------- */
 
-/** Advances the world by dt seconds: clears the contact events, then for
- *  each sub-step runs apply_forces, collide, solve, integrate and separate
- *  with h = dt / sub_steps, then clear_forces. Errors, with the world left
+/** Advances the world by dt seconds: clears the contact and sensor events,
+ *  then for each sub-step runs apply_forces, collide, solve, integrate and
+ *  separate with h = dt / sub_steps, then clear_forces and update_sleep(dt).
+ *  Errors, with the world left
  *  untouched: SX_ERR_INVALID_ARG (NULL world, dt <= 0), SX_ERR_NONFINITE (dt
  *  NaN or infinite). SX_ERR_NO_MEMORY: the contact list could not grow; the
  *  step stops after the stages already run. */
 sx_status sx_world_step(sx_world *world, sx_real dt);
 
-/** Stage 1: for every enabled dynamic body, v += h (gravity x gravity_scale +
+/** Stage 1: for every enabled, awake dynamic body, v += h (gravity x gravity_scale +
  *  F / m) + J / m and w += h (T / I) + L / I, then damping
  *  v *= 1 / (1 + h c). F, T are the force and torque accumulators (kept: they
  *  act over every sub-step of a step until sx_world_clear_forces); J, L the
@@ -165,12 +166,15 @@ sx_status sx_world_apply_forces(sx_world *world, sx_real h);
 
 /** Stage 2: finds the touching (or within the speculative margin) collider
  *  pairs and builds their manifolds. Pairs are found by sort-and-sweep over
- *  the colliders' bounds; static-static, kinematic-kinematic and
- *  static-kinematic pairs, colliders of one body, filtered pairs and sensors
- *  are skipped. Contacts persist across calls by collider pair, and each
- *  point keeps its accumulated impulses while its feature id persists (warm
- *  starting). Pairs that start or stop having a manifold are recorded as
- *  contact events. Errors: SX_ERR_INVALID_ARG (NULL), SX_ERR_NO_MEMORY. */
+ *  the colliders' bounds; pairs without an awake dynamic body (static,
+ *  kinematic or sleeping on both sides), colliders of one body, filtered
+ *  pairs and sensors are skipped, and the contacts of sleeping bodies are
+ *  carried over unchanged. Contacts persist across calls by collider pair,
+ *  and each point keeps its accumulated impulses while its feature id
+ *  persists (warm starting). An awake body that touches a sleeping one wakes
+ *  its island. Pairs that start or stop having a manifold are recorded as
+ *  contact events; then the sensors are updated (sensor events). Errors: SX_ERR_INVALID_ARG (NULL),
+ * SX_ERR_NO_MEMORY. */
 sx_status sx_world_collide(sx_world *world);
 
 /** Stage 3: sequential impulses on the contacts of the last collide:
@@ -186,7 +190,7 @@ sx_status sx_world_collide(sx_world *world);
 sx_status sx_world_solve(sx_world *world, sx_real h);
 
 /** Stage 4: symplectic Euler positions: centre of mass += h v, rotation
- *  advanced by h w (renormalised), for dynamic and kinematic bodies.
+ *  advanced by h w (renormalised), for awake dynamic and kinematic bodies.
  *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE. */
 sx_status sx_world_integrate(sx_world *world, sx_real h);
 
@@ -194,11 +198,12 @@ sx_status sx_world_integrate(sx_world *world, sx_real h);
  *  (velocities are not touched, so no kinetic energy is ever added): for
  *  `position_iterations` passes, each contact point's current separation s
  *  (from the anchors stored by collide, moved with the bodies) gives the
- *  correction C = max(correction_factor (s + slop),
- *  -max_correction_speed h / position_iterations) when s < -slop, applied as a pseudo-impulse split
- * by inverse mass and inverse inertia. We chose positional correction over Baumgarte velocity bias
- * because a bias turns overlap into velocity, which comes out as kinetic energy (bodies created
- * overlapping fly apart); split impulses would do the same work with a second set of velocities.
+ *  correction C = max(correction_factor (s + slop), -max_correction_speed h /
+ *  position_iterations) when s < -slop, applied as a pseudo-impulse split by
+ *  inverse mass and inverse inertia. We chose positional correction over a
+ *  Baumgarte velocity bias because a bias turns overlap into velocity, which
+ *  comes out as kinetic energy (bodies created overlapping fly apart); split
+ *  impulses would do the same work with a second set of velocities.
  *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE. */
 sx_status sx_world_separate(sx_world *world, sx_real h);
 
@@ -239,7 +244,8 @@ typedef struct sx_contact_data {
     sx_real tangent_impulses[2];
 } sx_contact_data;
 
-/** Number of contacts from the last sx_world_collide (0 for NULL). */
+/** Number of contacts from the last sx_world_collide, the carried contacts
+ *  of sleeping bodies included (0 for NULL). */
 int sx_world_contact_count(const sx_world *world);
 /** Copies contact `index` (0 .. count-1) into *out. SX_ERR_INVALID_ARG for
  *  NULL or an index out of range. */
