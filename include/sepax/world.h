@@ -183,8 +183,12 @@ sx_status sx_world_collide(sx_world *world);
  *  non-penetration (accumulated normal impulse >= 0; a speculative point may
  *  close its gap in this sub-step but not more), then one restitution pass:
  *  a point that pushed and was approaching faster than the restitution
- *  threshold leaves at e times its approach speed, e = max(e_a, e_b).
- *  Penetration is not turned into velocity here (see sx_world_separate), so
+ *  threshold leaves at e times its approach speed, e = max(e_a, e_b) (an
+ *  impact caught while the surfaces are still apart is deferred to the
+ *  sub-step in which they touch, and the rebound impulse is at most e times
+ *  the impulse that stopped the approach). The two normal constraints of a
+ *  two-point contact are solved together, exactly (a 2x2 complementarity
+ *  problem). Penetration is not turned into velocity here (see sx_world_separate), so
  *  this stage never adds kinetic energy to a resting overlap.
  *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE. */
 sx_status sx_world_solve(sx_world *world, sx_real h);
