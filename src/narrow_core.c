@@ -29,8 +29,10 @@
  * by no more than this are treated as a face contact (clipped, up to two
  * points) rather than a vertex contact. Aligned edges (a box resting exactly
  * on another, end points over end points) have distance == face separation
- * only up to rounding; 1 % of the slop keeps the depth error far below the
- * slop while catching them. */
+ * only up to rounding; 1 % of the slop catches them. The face normal then
+ * differs from the exact direction by at most sqrt(2 x tolerance / distance)
+ * radians, while the deepest point itself is the exact closest-feature
+ * contact (see clip_face). */
 #define SX_FACE_CONTACT_TOLERANCE (SX_R(0.01) * SX_LINEAR_SLOP)
 
 /* A difference of two points computed from coordinates of magnitude `scale`

@@ -654,6 +654,23 @@ static void wide_box_on_narrow_box_is_clipped_at_both_ends(void **state) {
     assert_vec2_near(m.normal, V(0, -1), TOL);
 }
 
+static void rounded_corners_nearly_aligned_give_the_exact_corner_contact(void **state) {
+    sx_shape a = rounded_box(1, 1, 0.1), b = rounded_box(1, 1, 0.1);
+    sx_manifold m;
+    double x = 1e-3, g = 0.15, d = sqrt(x * x + g * g);
+    (void)state;
+    /* B's lower-left core corner sits 1e-3 right of and 0.15 above A's
+     * upper-right one: the distance exceeds the face separation by only
+     * 3.3e-6, so it is a face contact on A's top face, but B's bottom face
+     * lies wholly outside that face's slab. The one point is the exact
+     * corner-to-corner contact. */
+    check_pair(&a, I(), &b, X(2 + x, 2 + g, 0), true, V(-(0.2 - d) * x / d, -(0.2 - d) * g / d),
+               TOL);
+    assert_int_equal(sx_collide(&a, I(), &b, X(2 + x, 2 + g, 0), &m), 1);
+    assert_near(m.points[0].depth, 0.2 - d, TOL);
+    assert_vec2_near(m.points[0].point, V(1 + 0.5 * x, 1 + 0.5 * g), TOL);
+}
+
 static void coincident_cores_push_along_a_documented_axis(void **state) {
     sx_shape k = capsule(0, 0, 0, 0, 1), c = circle(0, 0, 1), bx = box(1, 1);
     sx_vec2 mtv;
@@ -1000,6 +1017,7 @@ int main(void) {
         cmocka_unit_test(one_shape_inside_another),
         cmocka_unit_test(capsule_end_beyond_the_other_end_keeps_its_full_depth),
         cmocka_unit_test(wide_box_on_narrow_box_is_clipped_at_both_ends),
+        cmocka_unit_test(rounded_corners_nearly_aligned_give_the_exact_corner_contact),
         cmocka_unit_test(coincident_cores_push_along_a_documented_axis),
         cmocka_unit_test(pair_functions_agree_with_the_dispatch_table),
         cmocka_unit_test(every_ordered_pair_is_consistent),
