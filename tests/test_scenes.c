@@ -482,6 +482,38 @@ static void column_of_20_boxes_creeps_less_than_a_centimetre_in_10_seconds(void 
     sx_world_destroy(w);
 }
 
+/* Top of a column of five boxes after 10 s, the column standing at x. */
+static sx_vec2 column_top_after_10_s(sx_real x) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape ground = sx_box_shape(SX_R(20.0), SX_R(1.0)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_body_id top = {0, 0};
+    sx_vec2 p;
+    int i;
+    add_body(w, SX_BODY_STATIC, sx_v2(x, SX_R(-1.0)), SX_R(0.0), &ground, SX_R(0.0), SX_R(0.6),
+             SX_R(0.0));
+    for (i = 0; i < 5; ++i) {
+        top = add_body(w, SX_BODY_DYNAMIC, sx_v2(x, SX_R(0.5) + (sx_real)i), SX_R(0.0), &box,
+                       SX_R(1.0), SX_R(0.6), SX_R(0.0));
+    }
+    step_n(w, 600);
+    p = sx_body_get_position(w, top);
+    sx_world_destroy(w);
+    return p;
+}
+
+/* The narrowphase works in A's local frame, so a stack far from the origin
+ * (10 km: a float has 1 mm resolution there) rests as it does at the origin. */
+static void column_far_from_the_origin_rests_as_at_the_origin(void **state) {
+    sx_vec2 near = column_top_after_10_s(SX_R(0.0));
+    sx_vec2 far = column_top_after_10_s(SX_R(10000.0));
+    (void)state;
+    printf("  column of 5: top at y %.5f at the origin, %.5f at x = 1e4 (x drift %.5f)\n",
+           (double)near.y, (double)far.y, (double)far.x - 10000.0);
+    assert_near(far.y, near.y, 0.002);
+    assert_near(far.x, 10000.0, 0.002);
+    assert_near(near.x, 0.0, 0.001);
+}
+
 /* ---- overlap recovery ------------------------------------------------------- */
 
 static void overlapping_pyramid_separates_without_gaining_speed(void **state) {
@@ -629,6 +661,7 @@ int main(void) {
         cmocka_unit_test(heavy_box_on_light_box_penetrates_less_than_five_slops),
         cmocka_unit_test(wide_plank_on_two_small_boxes_penetrates_less_than_five_slops),
         cmocka_unit_test(column_of_20_boxes_creeps_less_than_a_centimetre_in_10_seconds),
+        cmocka_unit_test(column_far_from_the_origin_rests_as_at_the_origin),
         cmocka_unit_test(overlapping_pyramid_separates_without_gaining_speed),
         cmocka_unit_test(mixed_shapes_in_a_box_run_20_seconds_without_escaping_or_blowing_up),
         cmocka_unit_test(kinematic_paddle_pushes_a_box_without_being_pushed_back),
