@@ -8,5 +8,6 @@
 #include "shape.h"
 #include "collide.h"
 #include "compound.h"
+#include "world.h"
 
 #endif /* SEPAX_H */

@@ -1,0 +1,646 @@
+/* sepax — bodies and colliders: creation and destruction through handles,
+ * mass properties from the colliders' densities, getters and setters, and the
+ * force and impulse accumulators.
+ *
+ * A handle is a slot index plus the generation the slot had when the object
+ * was made. Destroying an object bumps its slot's generation, so every old
+ * handle stops matching and is answered with SX_ERR_STALE_HANDLE; the slot
+ * goes on a free list and is reused. Generations start at 1, so the all-zero
+ * handle is never live. Input is validated here, once; the step trusts it. */
+#include "world_internal.h"
+
+/* ---- handles ------------------------------------------------------------ */
+
+uint64_t sx_body_id_to_u64(sx_body_id id) {
+    return ((uint64_t)id.generation << 32) | (uint64_t)id.index;
+}
+
+sx_body_id sx_body_id_from_u64(uint64_t bits) {
+    sx_body_id id;
+    id.index = (uint32_t)(bits & 0xFFFFFFFFu);
+    id.generation = (uint32_t)(bits >> 32);
+    return id;
+}
+
+bool sx_body_id_is_null(sx_body_id id) { return id.index == 0 && id.generation == 0; }
+
+uint64_t sx_collider_id_to_u64(sx_collider_id id) {
+    return ((uint64_t)id.generation << 32) | (uint64_t)id.index;
+}
+
+sx_collider_id sx_collider_id_from_u64(uint64_t bits) {
+    sx_collider_id id;
+    id.index = (uint32_t)(bits & 0xFFFFFFFFu);
+    id.generation = (uint32_t)(bits >> 32);
+    return id;
+}
+
+/* The slot of a live body, or -1. */
+static int sx_body_slot(const sx_world *world, sx_body_id id) {
+    const sx_body_info *info;
+    if (world == NULL || id.generation == 0 || id.index >= (uint32_t)world->body_slots) return -1;
+    info = &world->infos[id.index];
+    if (!info->alive || info->generation != id.generation) return -1;
+    return (int)id.index;
+}
+
+static int sx_collider_slot(const sx_world *world, sx_collider_id id) {
+    const sx_collider *c;
+    if (world == NULL || id.generation == 0 || id.index >= (uint32_t)world->collider_slots) {
+        return -1;
+    }
+    c = &world->colliders[id.index];
+    if (!c->alive || c->generation != id.generation) return -1;
+    return (int)id.index;
+}
+
+bool sx_body_is_valid(const sx_world *world, sx_body_id body) {
+    return sx_body_slot(world, body) >= 0;
+}
+
+bool sx_collider_is_valid(const sx_world *world, sx_collider_id collider) {
+    return sx_collider_slot(world, collider) >= 0;
+}
+
+sx_body_id sx_collider_get_body(const sx_world *world, sx_collider_id collider) {
+    sx_body_id id = {0, 0};
+    int slot = sx_collider_slot(world, collider);
+    if (slot < 0) return id;
+    id.index = (uint32_t)world->colliders[slot].body;
+    id.generation = world->infos[id.index].generation;
+    return id;
+}
+
+/* ---- defaults ----------------------------------------------------------- */
+
+sx_body_def sx_default_body_def(void) {
+    sx_body_def d;
+    d.type = SX_BODY_STATIC;
+    d.position = sx_v2_zero();
+    d.angle = SX_R(0.0);
+    d.linear_velocity = sx_v2_zero();
+    d.angular_velocity = SX_R(0.0);
+    d.linear_damping = SX_R(0.0);
+    d.angular_damping = SX_R(0.0);
+    d.gravity_scale = SX_R(1.0);
+    d.fixed_rotation = false;
+    d.enabled = true;
+    d.user_data = NULL;
+    return d;
+}
+
+sx_collider_def sx_default_collider_def(void) {
+    sx_collider_def d;
+    d.shape = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    d.density = SX_R(1.0);
+    d.friction = SX_R(0.6);
+    d.restitution = SX_R(0.0);
+    d.filter.category = 1u;
+    d.filter.mask = 0xFFFFFFFFu;
+    d.filter.group = 0;
+    d.sensor = false;
+    d.user_data = NULL;
+    return d;
+}
+
+/* ---- mass --------------------------------------------------------------- */
+
+void sx_body_sync_origin(sx_body_sim *sim) {
+    sim->xf.p = sx_sub(sim->center, sx_rotate(sim->xf.q, sim->local_center));
+}
+
+/* Sets the flags and inverse masses that the stages read from the type,
+ * enabled state and mass. */
+static void sx_body_refresh_sim(sx_world *world, int slot) {
+    sx_body_sim *sim = &world->sims[slot];
+    const sx_body_info *info = &world->infos[slot];
+    sim->dynamic = info->enabled && info->type == SX_BODY_DYNAMIC;
+    sim->moving = info->enabled && info->type != SX_BODY_STATIC;
+    if (sim->dynamic) {
+        sim->inv_mass = SX_R(1.0) / info->mass;
+        sim->inv_inertia = info->inertia > SX_R(0.0) ? SX_R(1.0) / info->inertia : SX_R(0.0);
+    } else {
+        sim->inv_mass = SX_R(0.0);
+        sim->inv_inertia = SX_R(0.0);
+    }
+    if (!sim->moving) {
+        sim->v = sx_v2_zero();
+        sim->w = SX_R(0.0);
+    }
+    if (info->fixed_rotation && sim->dynamic) sim->w = SX_R(0.0);
+}
+
+void sx_body_update_mass(sx_world *world, int slot) {
+    sx_body_info *info = &world->infos[slot];
+    sx_body_sim *sim = &world->sims[slot];
+    sx_real mass = SX_R(0.0), inertia = SX_R(0.0);
+    sx_vec2 weighted = sx_v2_zero(), lc = sx_v2_zero();
+    int c;
+    if (info->type == SX_BODY_DYNAMIC) {
+        for (c = info->first_collider; c >= 0; c = world->colliders[c].next) {
+            const sx_collider *col = &world->colliders[c];
+            sx_mass_data md;
+            if (col->density == SX_R(0.0)) continue;
+            md = sx_shape_mass(&col->shape, col->density);
+            mass += md.mass;
+            weighted = sx_mul_add(weighted, md.mass, md.center);
+            /* parallel-axis theorem: inertia about the body origin first */
+            inertia += md.rotational_inertia + md.mass * sx_length_sq(md.center);
+        }
+        if (mass > SX_R(0.0)) {
+            lc = sx_scale(weighted, SX_R(1.0) / mass);
+            inertia -= mass * sx_length_sq(lc);
+            if (inertia < SX_R(0.0)) inertia = SX_R(0.0);
+        } else {
+            /* a dynamic body must respond to forces: give it a unit mass,
+             * and no rotation since it has no extent to spin */
+            mass = SX_R(1.0);
+            inertia = SX_R(0.0);
+        }
+        if (info->fixed_rotation) inertia = SX_R(0.0);
+    }
+    info->mass = mass;
+    info->inertia = inertia;
+    /* keep the body origin where it is; move the centre of mass */
+    sim->local_center = lc;
+    sim->center = sx_xform_point(sim->xf, lc);
+    sx_body_refresh_sim(world, slot);
+}
+
+/* ---- creation and destruction ------------------------------------------ */
+
+bool sx_grow_array(void **array, int *capacity, int need, size_t size) {
+    int cap = *capacity;
+    void *fresh;
+    if (need <= cap) return true;
+    if (cap < 16) cap = 16;
+    while (cap < need)
+        cap *= 2;
+    fresh = sx_alloc((size_t)cap * size);
+    if (fresh == NULL) return false;
+    if (*array != NULL) {
+        memcpy(fresh, *array, (size_t)*capacity * size);
+        sx_free(*array, (size_t)*capacity * size);
+    }
+    *array = fresh;
+    *capacity = cap;
+    return true;
+}
+
+/* Grows both body arrays; each keeps its own capacity so a failure half way
+ * leaves both consistent. */
+static bool sx_reserve_bodies(sx_world *world, int need) {
+    void *sims = world->sims, *infos = world->infos;
+    bool ok = sx_grow_array(&sims, &world->sim_capacity, need, sizeof(sx_body_sim));
+    world->sims = (sx_body_sim *)sims;
+    if (!ok) return false;
+    ok = sx_grow_array(&infos, &world->info_capacity, need, sizeof(sx_body_info));
+    world->infos = (sx_body_info *)infos;
+    return ok;
+}
+
+sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *out) {
+    int slot;
+    sx_body_sim *sim;
+    sx_body_info *info;
+    uint32_t generation;
+    if (out != NULL) {
+        out->index = 0;
+        out->generation = 0;
+    }
+    if (world == NULL || def == NULL || out == NULL) return SX_ERR_INVALID_ARG;
+    if (def->type != SX_BODY_STATIC && def->type != SX_BODY_KINEMATIC &&
+        def->type != SX_BODY_DYNAMIC) {
+        return SX_ERR_INVALID_ARG;
+    }
+    if (!sx_vec2_is_finite(def->position) || !sx_is_finite(def->angle) ||
+        !sx_vec2_is_finite(def->linear_velocity) || !sx_is_finite(def->angular_velocity) ||
+        !sx_is_finite(def->linear_damping) || !sx_is_finite(def->angular_damping) ||
+        !sx_is_finite(def->gravity_scale)) {
+        return SX_ERR_NONFINITE;
+    }
+    if (def->linear_damping < SX_R(0.0) || def->angular_damping < SX_R(0.0)) {
+        return SX_ERR_INVALID_ARG;
+    }
+    if (world->body_free >= 0) {
+        slot = world->body_free;
+        world->body_free = world->infos[slot].next_free;
+        generation = world->infos[slot].generation;
+    } else {
+        if (world->body_slots == 0x7FFFFFFF) return SX_ERR_CAPACITY;
+        if (!sx_reserve_bodies(world, world->body_slots + 1)) return SX_ERR_NO_MEMORY;
+        slot = world->body_slots++;
+        generation = 1;
+    }
+    sim = &world->sims[slot];
+    info = &world->infos[slot];
+    memset(sim, 0, sizeof(*sim));
+    memset(info, 0, sizeof(*info));
+    info->generation = generation;
+    info->alive = true;
+    info->enabled = def->enabled;
+    info->fixed_rotation = def->fixed_rotation;
+    info->type = def->type;
+    info->user_data = def->user_data;
+    info->first_collider = -1;
+    info->next_free = -1;
+    info->island = -1;
+    info->sleep_time = SX_R(0.0);
+    sim->awake = true;
+    sim->xf = sx_xform_make(def->position, def->angle);
+    sim->center = sim->xf.p;
+    sim->local_center = sx_v2_zero();
+    sim->v = def->linear_velocity;
+    sim->w = def->angular_velocity;
+    sim->force = sx_v2_zero();
+    sim->impulse = sx_v2_zero();
+    sim->linear_damping = def->linear_damping;
+    sim->angular_damping = def->angular_damping;
+    sim->gravity_scale = def->gravity_scale;
+    sx_body_update_mass(world, slot);
+    world->body_count++;
+    out->index = (uint32_t)slot;
+    out->generation = generation;
+    return SX_OK;
+}
+
+void sx_world_remove_contacts_of(sx_world *world, int collider) {
+    int i, n = 0;
+    for (i = 0; i < world->contact_count; ++i) {
+        const sx_contact *c = &world->contacts[i];
+        if (c->collider_a == collider || c->collider_b == collider) {
+            /* whatever rested on the collider must be able to fall */
+            sx_wake_body(world, c->body_a);
+            sx_wake_body(world, c->body_b);
+            continue;
+        }
+        world->contacts[n++] = *c;
+    }
+    world->contact_count = n;
+}
+
+/* Wakes a body and every body it has a contact with (a static body moved
+ * from under a sleeping pile must not leave the pile floating). */
+static void sx_wake_touching(sx_world *world, int slot) {
+    int i;
+    sx_wake_body(world, slot);
+    for (i = 0; i < world->contact_count; ++i) {
+        const sx_contact *c = &world->contacts[i];
+        if (c->body_a == slot) sx_wake_body(world, c->body_b);
+        if (c->body_b == slot) sx_wake_body(world, c->body_a);
+    }
+}
+
+/* Unlinks nothing: frees the collider slot (the caller fixes the list). */
+static void sx_free_collider_slot(sx_world *world, int slot) {
+    sx_collider *c = &world->colliders[slot];
+    sx_world_remove_contacts_of(world, slot);
+    sx_sensors_remove_collider(world, slot);
+    c->alive = false;
+    c->generation = c->generation == 0xFFFFFFFFu ? 1u : c->generation + 1u;
+    c->next_free = world->collider_free;
+    world->collider_free = slot;
+    world->bp_kind[slot] = 0;
+}
+
+sx_status sx_destroy_body(sx_world *world, sx_body_id body) {
+    int slot, c, next;
+    sx_body_info *info;
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+    slot = sx_body_slot(world, body);
+    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    info = &world->infos[slot];
+    /* what rested on it must be able to fall */
+    sx_wake_body(world, slot);
+    for (c = info->first_collider; c >= 0; c = next) {
+        next = world->colliders[c].next;
+        sx_free_collider_slot(world, c);
+    }
+    info->first_collider = -1;
+    info->alive = false;
+    info->generation = info->generation == 0xFFFFFFFFu ? 1u : info->generation + 1u;
+    info->next_free = world->body_free;
+    world->body_free = slot;
+    world->body_count--;
+    return SX_OK;
+}
+
+/* Validates a collider def: the status sx_body_add_collider returns. */
+static sx_status sx_check_collider_def(const sx_collider_def *def) {
+    sx_status s = sx_shape_validate(&def->shape);
+    if (s != SX_OK) return s;
+    if (!sx_is_finite(def->density) || !sx_is_finite(def->friction) ||
+        !sx_is_finite(def->restitution)) {
+        return SX_ERR_NONFINITE;
+    }
+    if (def->density < SX_R(0.0) || def->friction < SX_R(0.0) || def->restitution < SX_R(0.0)) {
+        return SX_ERR_INVALID_ARG;
+    }
+    return SX_OK;
+}
+
+/* Grows the three per-collider arrays, each with its own capacity. */
+static bool sx_reserve_colliders(sx_world *world, int need) {
+    void *c = world->colliders, *a = world->aabbs, *k = world->bp_kind;
+    bool ok = sx_grow_array(&c, &world->collider_capacity, need, sizeof(sx_collider));
+    world->colliders = (sx_collider *)c;
+    if (!ok) return false;
+    ok = sx_grow_array(&a, &world->aabb_capacity, need, sizeof(sx_aabb));
+    world->aabbs = (sx_aabb *)a;
+    if (!ok) return false;
+    ok = sx_grow_array(&k, &world->kind_capacity, need, sizeof(unsigned char));
+    world->bp_kind = (unsigned char *)k;
+    return ok;
+}
+
+sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collider_def *def,
+                               sx_collider_id *out) {
+    int bslot, slot, *link;
+    sx_collider *c;
+    sx_status s;
+    uint32_t generation;
+    if (out != NULL) {
+        out->index = 0;
+        out->generation = 0;
+    }
+    if (world == NULL || def == NULL) return SX_ERR_INVALID_ARG;
+    bslot = sx_body_slot(world, body);
+    if (bslot < 0) return SX_ERR_STALE_HANDLE;
+    s = sx_check_collider_def(def);
+    if (s != SX_OK) return s;
+    if (world->collider_free >= 0) {
+        slot = world->collider_free;
+        world->collider_free = world->colliders[slot].next_free;
+        generation = world->colliders[slot].generation;
+    } else {
+        if (world->collider_slots == 0x7FFFFFFF) return SX_ERR_CAPACITY;
+        if (!sx_reserve_colliders(world, world->collider_slots + 1)) return SX_ERR_NO_MEMORY;
+        slot = world->collider_slots++;
+        generation = 1;
+    }
+    c = &world->colliders[slot];
+    memset(c, 0, sizeof(*c));
+    c->shape = def->shape;
+    c->density = def->density;
+    c->friction = def->friction;
+    c->restitution = def->restitution;
+    c->filter = def->filter;
+    c->sensor = def->sensor;
+    c->alive = true;
+    c->generation = generation;
+    c->body = bslot;
+    c->next = -1;
+    c->next_free = -1;
+    c->user_data = def->user_data;
+    world->bp_kind[slot] = 0;
+    /* append, so mass sums run in creation order (deterministic) */
+    link = &world->infos[bslot].first_collider;
+    while (*link >= 0)
+        link = &world->colliders[*link].next;
+    *link = slot;
+    sx_body_update_mass(world, bslot);
+    if (out != NULL) {
+        out->index = (uint32_t)slot;
+        out->generation = generation;
+    }
+    return SX_OK;
+}
+
+sx_status sx_destroy_collider(sx_world *world, sx_collider_id collider) {
+    int slot, bslot, *link;
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+    slot = sx_collider_slot(world, collider);
+    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    bslot = world->colliders[slot].body;
+    sx_wake_body(world, bslot);
+    link = &world->infos[bslot].first_collider;
+    while (*link != slot)
+        link = &world->colliders[*link].next;
+    *link = world->colliders[slot].next;
+    sx_free_collider_slot(world, slot);
+    sx_body_update_mass(world, bslot);
+    return SX_OK;
+}
+
+/* ---- getters ------------------------------------------------------------ */
+
+sx_body_type sx_body_get_type(const sx_world *world, sx_body_id body) {
+    int slot = sx_body_slot(world, body);
+    return slot < 0 ? SX_BODY_STATIC : world->infos[slot].type;
+}
+
+sx_vec2 sx_body_get_position(const sx_world *world, sx_body_id body) {
+    int slot = sx_body_slot(world, body);
+    return slot < 0 ? sx_v2_zero() : world->sims[slot].xf.p;
+}
+
+sx_real sx_body_get_angle(const sx_world *world, sx_body_id body) {
+    int slot = sx_body_slot(world, body);
+    return slot < 0 ? SX_R(0.0) : sx_rot_angle(world->sims[slot].xf.q);
+}
+
+sx_xform sx_body_get_transform(const sx_world *world, sx_body_id body) {
+    int slot = sx_body_slot(world, body);
+    return slot < 0 ? sx_xform_identity() : world->sims[slot].xf;
+}
+
+sx_vec2 sx_body_get_world_center(const sx_world *world, sx_body_id body) {
+    int slot = sx_body_slot(world, body);
+    return slot < 0 ? sx_v2_zero() : world->sims[slot].center;
+}
+
+sx_vec2 sx_body_get_local_center(const sx_world *world, sx_body_id body) {
+    int slot = sx_body_slot(world, body);
+    return slot < 0 ? sx_v2_zero() : world->sims[slot].local_center;
+}
+
+sx_vec2 sx_body_get_linear_velocity(const sx_world *world, sx_body_id body) {
+    int slot = sx_body_slot(world, body);
+    return slot < 0 ? sx_v2_zero() : world->sims[slot].v;
+}
+
+sx_real sx_body_get_angular_velocity(const sx_world *world, sx_body_id body) {
+    int slot = sx_body_slot(world, body);
+    return slot < 0 ? SX_R(0.0) : world->sims[slot].w;
+}
+
+sx_real sx_body_get_mass(const sx_world *world, sx_body_id body) {
+    int slot = sx_body_slot(world, body);
+    return slot < 0 ? SX_R(0.0) : world->infos[slot].mass;
+}
+
+sx_real sx_body_get_inertia(const sx_world *world, sx_body_id body) {
+    int slot = sx_body_slot(world, body);
+    return slot < 0 ? SX_R(0.0) : world->infos[slot].inertia;
+}
+
+void *sx_body_get_user_data(const sx_world *world, sx_body_id body) {
+    int slot = sx_body_slot(world, body);
+    return slot < 0 ? NULL : world->infos[slot].user_data;
+}
+
+bool sx_body_is_awake(const sx_world *world, sx_body_id body) {
+    int slot = sx_body_slot(world, body);
+    return slot >= 0 && world->infos[slot].type != SX_BODY_STATIC && world->sims[slot].awake;
+}
+
+sx_status sx_body_set_awake(sx_world *world, sx_body_id body, bool awake) {
+    int slot;
+    sx_body_sim *sim;
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+    slot = sx_body_slot(world, body);
+    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    sim = &world->sims[slot];
+    if (!sim->dynamic) return SX_OK;
+    if (awake) {
+        sx_wake_body(world, slot);
+    } else if (sim->awake) {
+        sim->awake = false;
+        sim->v = sx_v2_zero();
+        sim->w = SX_R(0.0);
+        world->infos[slot].island = -1;
+    }
+    return SX_OK;
+}
+
+/* ---- setters ------------------------------------------------------------ */
+
+sx_status sx_body_set_transform(sx_world *world, sx_body_id body, sx_vec2 position, sx_real angle) {
+    int slot;
+    sx_body_sim *sim;
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+    slot = sx_body_slot(world, body);
+    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    if (!sx_vec2_is_finite(position) || !sx_is_finite(angle)) return SX_ERR_NONFINITE;
+    sim = &world->sims[slot];
+    sx_wake_touching(world, slot);
+    sim->xf = sx_xform_make(position, angle);
+    sim->center = sx_xform_point(sim->xf, sim->local_center);
+    return SX_OK;
+}
+
+sx_status sx_body_set_linear_velocity(sx_world *world, sx_body_id body, sx_vec2 v) {
+    int slot;
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+    slot = sx_body_slot(world, body);
+    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    if (!sx_vec2_is_finite(v)) return SX_ERR_NONFINITE;
+    if (world->infos[slot].type != SX_BODY_STATIC) {
+        sx_wake_body(world, slot);
+        world->sims[slot].v = v;
+    }
+    return SX_OK;
+}
+
+sx_status sx_body_set_angular_velocity(sx_world *world, sx_body_id body, sx_real w) {
+    int slot;
+    const sx_body_info *info;
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+    slot = sx_body_slot(world, body);
+    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    if (!sx_is_finite(w)) return SX_ERR_NONFINITE;
+    info = &world->infos[slot];
+    if (info->type == SX_BODY_KINEMATIC ||
+        (info->type == SX_BODY_DYNAMIC && world->sims[slot].inv_inertia > SX_R(0.0))) {
+        sx_wake_body(world, slot);
+        world->sims[slot].w = w;
+    }
+    return SX_OK;
+}
+
+sx_status sx_body_set_type(sx_world *world, sx_body_id body, sx_body_type type) {
+    int slot;
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+    slot = sx_body_slot(world, body);
+    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    if (type != SX_BODY_STATIC && type != SX_BODY_KINEMATIC && type != SX_BODY_DYNAMIC) {
+        return SX_ERR_INVALID_ARG;
+    }
+    sx_wake_touching(world, slot);
+    world->infos[slot].type = type;
+    sx_body_update_mass(world, slot);
+    return SX_OK;
+}
+
+/* ---- forces and impulses ------------------------------------------------ */
+
+/* The simulated state of a body that accepts forces, or NULL (static,
+ * kinematic or disabled: they ignore forces). *status gets the answer. */
+static sx_body_sim *sx_force_target(sx_world *world, sx_body_id body, sx_status *status) {
+    int slot;
+    if (world == NULL) {
+        *status = SX_ERR_INVALID_ARG;
+        return NULL;
+    }
+    slot = sx_body_slot(world, body);
+    if (slot < 0) {
+        *status = SX_ERR_STALE_HANDLE;
+        return NULL;
+    }
+    *status = SX_OK;
+    if (world->infos[slot].type != SX_BODY_DYNAMIC) return NULL;
+    sx_wake_body(world, slot);
+    return &world->sims[slot];
+}
+
+sx_status sx_body_apply_force(sx_world *world, sx_body_id body, sx_vec2 force) {
+    sx_status s;
+    sx_body_sim *sim = sx_force_target(world, body, &s);
+    if (s != SX_OK) return s;
+    if (!sx_vec2_is_finite(force)) return SX_ERR_NONFINITE;
+    if (sim != NULL) sim->force = sx_add(sim->force, force);
+    return SX_OK;
+}
+
+sx_status sx_body_apply_force_at_point(sx_world *world, sx_body_id body, sx_vec2 force,
+                                       sx_vec2 point) {
+    sx_status s;
+    sx_body_sim *sim = sx_force_target(world, body, &s);
+    if (s != SX_OK) return s;
+    if (!sx_vec2_is_finite(force) || !sx_vec2_is_finite(point)) return SX_ERR_NONFINITE;
+    if (sim != NULL) {
+        sim->force = sx_add(sim->force, force);
+        sim->torque += sx_cross(sx_sub(point, sim->center), force);
+    }
+    return SX_OK;
+}
+
+sx_status sx_body_apply_torque(sx_world *world, sx_body_id body, sx_real torque) {
+    sx_status s;
+    sx_body_sim *sim = sx_force_target(world, body, &s);
+    if (s != SX_OK) return s;
+    if (!sx_is_finite(torque)) return SX_ERR_NONFINITE;
+    if (sim != NULL) sim->torque += torque;
+    return SX_OK;
+}
+
+sx_status sx_body_apply_impulse(sx_world *world, sx_body_id body, sx_vec2 impulse) {
+    sx_status s;
+    sx_body_sim *sim = sx_force_target(world, body, &s);
+    if (s != SX_OK) return s;
+    if (!sx_vec2_is_finite(impulse)) return SX_ERR_NONFINITE;
+    if (sim != NULL) sim->impulse = sx_add(sim->impulse, impulse);
+    return SX_OK;
+}
+
+sx_status sx_body_apply_impulse_at_point(sx_world *world, sx_body_id body, sx_vec2 impulse,
+                                         sx_vec2 point) {
+    sx_status s;
+    sx_body_sim *sim = sx_force_target(world, body, &s);
+    if (s != SX_OK) return s;
+    if (!sx_vec2_is_finite(impulse) || !sx_vec2_is_finite(point)) return SX_ERR_NONFINITE;
+    if (sim != NULL) {
+        sim->impulse = sx_add(sim->impulse, impulse);
+        sim->angular_impulse += sx_cross(sx_sub(point, sim->center), impulse);
+    }
+    return SX_OK;
+}
+
+sx_status sx_body_apply_angular_impulse(sx_world *world, sx_body_id body, sx_real impulse) {
+    sx_status s;
+    sx_body_sim *sim = sx_force_target(world, body, &s);
+    if (s != SX_OK) return s;
+    if (!sx_is_finite(impulse)) return SX_ERR_NONFINITE;
+    if (sim != NULL) sim->angular_impulse += impulse;
+    return SX_OK;
+}

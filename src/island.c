@@ -1,0 +1,141 @@
+/* sepax — sleeping: islands of touching bodies that rest together sleep
+ * together.
+ *
+ * After each step every awake dynamic body accumulates the time it has spent
+ * slower than the sleep speeds. Contacts between two awake dynamic bodies
+ * join them into islands (union-find over body slots, rebuilt each step: it
+ * costs one pass over bodies and contacts and needs no bookkeeping when
+ * contacts come and go). An island sleeps only when its most restless body
+ * has rested long enough, so a stack never half-sleeps with its top still
+ * sliding. A sleeping body remembers its island's root, which is how waking
+ * one body wakes the island: a falling box that lands on a sleeping pile
+ * wakes the whole pile, not just the box it hit. */
+#include "world_internal.h"
+
+static int sx_find(int *parent, int i) {
+    while (parent[i] != i) {
+        parent[i] = parent[parent[i]]; /* path halving */
+        i = parent[i];
+    }
+    return i;
+}
+
+static void sx_union(int *parent, int a, int b) {
+    int ra = sx_find(parent, a), rb = sx_find(parent, b);
+    /* the lower slot becomes the root: the same islands on every run */
+    if (ra < rb)
+        parent[rb] = ra;
+    else if (rb < ra)
+        parent[ra] = rb;
+}
+
+static void sx_wake_one(sx_world *world, int slot) {
+    world->sims[slot].awake = true;
+    world->infos[slot].sleep_time = SX_R(0.0);
+    world->infos[slot].island = -1;
+}
+
+void sx_wake_body(sx_world *world, int slot) {
+    int island = world->infos[slot].island, i;
+    if (world->sims[slot].awake) return;
+    if (island < 0) {
+        sx_wake_one(world, slot);
+        return;
+    }
+    for (i = 0; i < world->body_slots; ++i) {
+        if (world->infos[i].alive && !world->sims[i].awake && world->infos[i].island == island) {
+            sx_wake_one(world, i);
+        }
+    }
+}
+
+int sx_world_awake_body_count(const sx_world *world) {
+    int i, n = 0;
+    if (world == NULL) return 0;
+    for (i = 0; i < world->body_slots; ++i) {
+        if (world->infos[i].alive && world->sims[i].dynamic && world->sims[i].awake) ++n;
+    }
+    return n;
+}
+
+sx_status sx_world_update_sleep(sx_world *world, sx_real dt) {
+    sx_real lin, ang;
+    int i, *parent;
+    sx_real *rest;
+    void *p;
+    bool ok;
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+    if (!sx_is_finite(dt)) return SX_ERR_NONFINITE;
+    if (!(dt > SX_R(0.0))) return SX_ERR_INVALID_ARG;
+    if (!world->def.enable_sleep) return SX_OK;
+    p = world->island_parent;
+    ok = sx_grow_array(&p, &world->parent_capacity, world->body_slots, sizeof(int));
+    world->island_parent = (int *)p;
+    if (!ok) return SX_ERR_NO_MEMORY;
+    p = world->island_time;
+    ok = sx_grow_array(&p, &world->time_capacity, world->body_slots, sizeof(sx_real));
+    world->island_time = (sx_real *)p;
+    if (!ok) return SX_ERR_NO_MEMORY;
+    parent = world->island_parent;
+    rest = world->island_time;
+    lin = world->def.sleep_linear_speed;
+    ang = world->def.sleep_angular_speed;
+
+    for (i = 0; i < world->body_slots; ++i) {
+        sx_body_sim *b = &world->sims[i];
+        sx_body_info *info = &world->infos[i];
+        parent[i] = i;
+        if (!info->alive || !b->dynamic || !b->awake) continue;
+        if (sx_length_sq(b->v) > lin * lin || sx_absr(b->w) > ang) {
+            info->sleep_time = SX_R(0.0);
+        } else {
+            info->sleep_time += dt;
+        }
+    }
+    for (i = 0; i < world->contact_count; ++i) {
+        const sx_contact *c = &world->contacts[i];
+        const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
+        bool da = a->dynamic && a->awake, db = b->dynamic && b->awake;
+        int k;
+        /* Positional correction moves bodies without giving them speed: a
+         * body still being pushed out of an overlap deeper than twice the
+         * slop (resting contacts stay within about one) is not at rest. */
+        for (k = 0; k < c->count; ++k) {
+            if (c->points[k].separation < -SX_R(2.0) * world->linear_slop) {
+                if (da) world->infos[c->body_a].sleep_time = SX_R(0.0);
+                if (db) world->infos[c->body_b].sleep_time = SX_R(0.0);
+            }
+        }
+        if (da && db) {
+            sx_union(parent, c->body_a, c->body_b);
+        } else if (da && b->moving && !b->dynamic &&
+                   (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0))) {
+            /* carried or pushed by a moving kinematic body: not at rest */
+            world->infos[c->body_a].sleep_time = SX_R(0.0);
+        } else if (db && a->moving && !a->dynamic &&
+                   (a->v.x != SX_R(0.0) || a->v.y != SX_R(0.0) || a->w != SX_R(0.0))) {
+            world->infos[c->body_b].sleep_time = SX_R(0.0);
+        }
+    }
+    /* the island's rest time is its least rested body's */
+    for (i = 0; i < world->body_slots; ++i)
+        rest[i] = SX_REAL_MAX;
+    for (i = 0; i < world->body_slots; ++i) {
+        int r;
+        if (!world->infos[i].alive || !world->sims[i].dynamic || !world->sims[i].awake) continue;
+        r = sx_find(parent, i);
+        rest[r] = sx_minr(rest[r], world->infos[i].sleep_time);
+    }
+    for (i = 0; i < world->body_slots; ++i) {
+        sx_body_sim *b = &world->sims[i];
+        int r;
+        if (!world->infos[i].alive || !b->dynamic || !b->awake) continue;
+        r = sx_find(parent, i);
+        if (rest[r] < world->def.time_to_sleep) continue;
+        b->awake = false;
+        b->v = sx_v2_zero();
+        b->w = SX_R(0.0);
+        world->infos[i].island = r;
+    }
+    return SX_OK;
+}

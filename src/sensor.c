@@ -1,0 +1,136 @@
+/* sepax — sensors: colliders with no response that report what overlaps
+ * them.
+ *
+ * Each collide tests every sensor against every other collider: bounds
+ * first, then the boolean overlap (the narrowphase's fast path, no
+ * manifold). Sensors are few in a game and the test is cheap, so a linear
+ * pass per sensor is the simple, exact choice here. The overlaps are kept as
+ * a sorted list of pair keys; comparing it with the previous list (one merge
+ * walk) gives the begin and end events, in a deterministic order. */
+#include "world_internal.h"
+
+void sx_sensors_free(sx_world *world) {
+    sx_free(world->sensor_pairs, (size_t)world->sensor_capacity * sizeof(uint64_t));
+    sx_free(world->old_sensor_pairs, (size_t)world->old_sensor_capacity * sizeof(uint64_t));
+    sx_free(world->sensor_begin, (size_t)world->sensor_begin_capacity * sizeof(sx_sensor_event));
+    sx_free(world->sensor_end, (size_t)world->sensor_end_capacity * sizeof(sx_sensor_event));
+}
+
+static bool sx_sensor_sees(const sx_world *world, const sx_collider *sensor, const sx_collider *c) {
+    const sx_filter *a = &sensor->filter, *b = &c->filter;
+    if (!c->alive || c->sensor || c->body == sensor->body || !world->infos[c->body].enabled) {
+        return false;
+    }
+    if (world->infos[c->body].type == SX_BODY_STATIC &&
+        world->infos[sensor->body].type == SX_BODY_STATIC) {
+        return false;
+    }
+    if (a->group == b->group && a->group != 0) return a->group > 0;
+    return (a->category & b->mask) != 0 && (b->category & a->mask) != 0;
+}
+
+static bool sx_push_sensor_event(sx_world *world, uint64_t key, bool begin) {
+    sx_sensor_event **events = begin ? &world->sensor_begin : &world->sensor_end;
+    int *count = begin ? &world->sensor_begin_count : &world->sensor_end_count;
+    int *capacity = begin ? &world->sensor_begin_capacity : &world->sensor_end_capacity;
+    int s = (int)(key >> 32), v = (int)(key & 0xFFFFFFFFu);
+    sx_sensor_event *e;
+    if (*count == *capacity) {
+        void *p = *events;
+        bool ok = sx_grow_array(&p, capacity, *count + 1, sizeof(sx_sensor_event));
+        *events = (sx_sensor_event *)p;
+        if (!ok) return false;
+    }
+    e = &(*events)[(*count)++];
+    e->sensor.index = (uint32_t)s;
+    e->sensor.generation = world->colliders[s].generation;
+    e->visitor.index = (uint32_t)v;
+    e->visitor.generation = world->colliders[v].generation;
+    e->sensor_body.index = (uint32_t)world->colliders[s].body;
+    e->sensor_body.generation = world->infos[world->colliders[s].body].generation;
+    e->visitor_body.index = (uint32_t)world->colliders[v].body;
+    e->visitor_body.generation = world->infos[world->colliders[v].body].generation;
+    return true;
+}
+
+sx_status sx_sensors_update(sx_world *world) {
+    uint64_t *swap;
+    int i, j, cap;
+    swap = world->old_sensor_pairs;
+    world->old_sensor_pairs = world->sensor_pairs;
+    world->sensor_pairs = swap;
+    cap = world->old_sensor_capacity;
+    world->old_sensor_capacity = world->sensor_capacity;
+    world->sensor_capacity = cap;
+    world->old_sensor_count = world->sensor_count;
+    world->sensor_count = 0;
+
+    /* sensors in slot order, visitors in slot order: the keys come out
+     * sorted without a sort */
+    for (i = 0; i < world->collider_slots; ++i) {
+        const sx_collider *s = &world->colliders[i];
+        sx_xform xs;
+        sx_aabb box;
+        if (!s->alive || !s->sensor || !world->infos[s->body].enabled) continue;
+        xs = world->sims[s->body].xf;
+        box = sx_shape_aabb(&s->shape, xs);
+        for (j = 0; j < world->collider_slots; ++j) {
+            const sx_collider *c = &world->colliders[j];
+            sx_xform xc;
+            if (!sx_sensor_sees(world, s, c)) continue;
+            xc = world->sims[c->body].xf;
+            /* collide has just computed every non-sensor's (fattened) bounds */
+            if (!sx_aabb_overlaps(box, world->aabbs[j])) continue;
+            if (!sx_overlap(&s->shape, xs, &c->shape, xc)) continue;
+            if (world->sensor_count == world->sensor_capacity) {
+                void *p = world->sensor_pairs;
+                bool ok = sx_grow_array(&p, &world->sensor_capacity, world->sensor_count + 1,
+                                        sizeof(uint64_t));
+                world->sensor_pairs = (uint64_t *)p;
+                if (!ok) return SX_ERR_NO_MEMORY;
+            }
+            world->sensor_pairs[world->sensor_count++] =
+                ((uint64_t)(uint32_t)i << 32) | (uint64_t)(uint32_t)j;
+        }
+    }
+
+    i = 0;
+    j = 0;
+    while (i < world->sensor_count || j < world->old_sensor_count) {
+        bool has_new = i < world->sensor_count, has_old = j < world->old_sensor_count;
+        uint64_t kn = has_new ? world->sensor_pairs[i] : 0,
+                 ko = has_old ? world->old_sensor_pairs[j] : 0;
+        if (has_new && has_old && kn == ko) {
+            ++i;
+            ++j;
+        } else if (!has_old || (has_new && kn < ko)) {
+            if (!sx_push_sensor_event(world, kn, true)) return SX_ERR_NO_MEMORY;
+            ++i;
+        } else {
+            if (!sx_push_sensor_event(world, ko, false)) return SX_ERR_NO_MEMORY;
+            ++j;
+        }
+    }
+    return SX_OK;
+}
+
+void sx_sensors_remove_collider(sx_world *world, int collider) {
+    int i, n = 0;
+    for (i = 0; i < world->sensor_count; ++i) {
+        uint64_t key = world->sensor_pairs[i];
+        if ((int)(key >> 32) == collider || (int)(key & 0xFFFFFFFFu) == collider) continue;
+        world->sensor_pairs[n++] = key;
+    }
+    world->sensor_count = n;
+}
+
+sx_sensor_events sx_world_get_sensor_events(const sx_world *world) {
+    sx_sensor_events e;
+    memset(&e, 0, sizeof(e));
+    if (world == NULL) return e;
+    e.begin = world->sensor_begin;
+    e.begin_count = world->sensor_begin_count;
+    e.end = world->sensor_end;
+    e.end_count = world->sensor_end_count;
+    return e;
+}

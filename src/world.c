@@ -1,0 +1,474 @@
+/* sepax — the world: creation, the step, and the stages that do not belong to
+ * the contact solver (applying forces, collision detection, integration).
+ *
+ * The step is symplectic Euler split into public stages so that other
+ * drivers (the flecs systems) run exactly the code sx_world_step runs. Each
+ * sub-step re-runs collision detection: a contact list that is at most one
+ * sub-step old keeps the speculative margin small and the anchors exact,
+ * which we preferred to extrapolating old contacts. Contacts are rebuilt into
+ * a second buffer and matched against the previous one by collider pair
+ * (both lists are sorted by pair key, so matching is one merge walk) and by
+ * feature id, which carries the accumulated impulses over for warm starting.
+ * Buffers only grow; a warmed-up world allocates nothing per step. */
+#include "world_internal.h"
+
+sx_world_def sx_default_world_def(void) {
+    sx_world_def d;
+    d.gravity = sx_v2(SX_R(0.0), SX_R(-10.0));
+    d.sub_steps = 4;
+    d.velocity_iterations = 4;
+    d.position_iterations = 2;
+    d.correction_factor = SX_R(0.2);
+    d.max_correction_speed = SX_R(3.0);
+    d.restitution_threshold = SX_R(1.0);
+    d.speculative_slops = SX_R(4.0);
+    d.length_units_per_meter = SX_LENGTH_UNITS_PER_METER;
+    d.body_capacity = 0;
+    d.enable_sleep = true;
+    d.sleep_linear_speed = SX_R(0.05) * SX_LENGTH_UNITS_PER_METER;
+    d.sleep_angular_speed = SX_R(2.0) / SX_R(180.0) * SX_PI;
+    d.time_to_sleep = SX_R(0.5);
+    return d;
+}
+
+static bool sx_world_def_is_valid(const sx_world_def *d) {
+    if (!sx_vec2_is_finite(d->gravity) || !sx_is_finite(d->correction_factor) ||
+        !sx_is_finite(d->max_correction_speed) || !sx_is_finite(d->restitution_threshold) ||
+        !sx_is_finite(d->speculative_slops) || !sx_is_finite(d->length_units_per_meter) ||
+        !sx_is_finite(d->sleep_linear_speed) || !sx_is_finite(d->sleep_angular_speed) ||
+        !sx_is_finite(d->time_to_sleep)) {
+        return false;
+    }
+    return d->sub_steps >= 1 && d->velocity_iterations >= 1 && d->position_iterations >= 0 &&
+           d->correction_factor > SX_R(0.0) && d->correction_factor <= SX_R(1.0) &&
+           d->max_correction_speed > SX_R(0.0) && d->restitution_threshold >= SX_R(0.0) &&
+           d->speculative_slops >= SX_R(0.0) && d->length_units_per_meter > SX_R(0.0) &&
+           d->body_capacity >= 0 && d->sleep_linear_speed >= SX_R(0.0) &&
+           d->sleep_angular_speed >= SX_R(0.0) && d->time_to_sleep > SX_R(0.0);
+}
+
+sx_world *sx_world_create(const sx_world_def *def) {
+    sx_world *w;
+    if (def == NULL || !sx_world_def_is_valid(def)) return NULL;
+    w = (sx_world *)sx_alloc(sizeof(sx_world));
+    if (w == NULL) return NULL;
+    memset(w, 0, sizeof(*w));
+    w->def = *def;
+    /* the one length scale: SX_LINEAR_SLOP's 5 mm, at this world's units */
+    w->linear_slop = SX_R(0.005) * def->length_units_per_meter;
+    w->margin = def->speculative_slops * w->linear_slop;
+    w->body_free = -1;
+    w->collider_free = -1;
+    sx_broadphase_init(&w->bp);
+    if (def->body_capacity > 0) {
+        void *sims = NULL, *infos = NULL;
+        bool ok = sx_grow_array(&sims, &w->sim_capacity, def->body_capacity, sizeof(sx_body_sim));
+        w->sims = (sx_body_sim *)sims;
+        ok = ok &&
+             sx_grow_array(&infos, &w->info_capacity, def->body_capacity, sizeof(sx_body_info));
+        w->infos = (sx_body_info *)infos;
+        if (!ok) {
+            sx_world_destroy(w);
+            return NULL;
+        }
+    }
+    return w;
+}
+
+void sx_world_destroy(sx_world *world) {
+    if (world == NULL) return;
+    sx_free(world->sims, (size_t)world->sim_capacity * sizeof(sx_body_sim));
+    sx_free(world->infos, (size_t)world->info_capacity * sizeof(sx_body_info));
+    sx_free(world->colliders, (size_t)world->collider_capacity * sizeof(sx_collider));
+    sx_free(world->aabbs, (size_t)world->aabb_capacity * sizeof(sx_aabb));
+    sx_free(world->bp_kind, (size_t)world->kind_capacity);
+    sx_free(world->contacts, (size_t)world->contact_capacity * sizeof(sx_contact));
+    sx_free(world->old_contacts, (size_t)world->old_contact_capacity * sizeof(sx_contact));
+    sx_broadphase_free(&world->bp);
+    sx_free(world->begin_events, (size_t)world->begin_capacity * sizeof(sx_contact_event));
+    sx_free(world->end_events, (size_t)world->end_capacity * sizeof(sx_contact_event));
+    sx_sensors_free(world);
+    sx_free(world->island_parent, (size_t)world->parent_capacity * sizeof(int));
+    sx_free(world->island_time, (size_t)world->time_capacity * sizeof(sx_real));
+    sx_free(world, sizeof(sx_world));
+}
+
+sx_status sx_world_set_gravity(sx_world *world, sx_vec2 gravity) {
+    int i;
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+    if (!sx_vec2_is_finite(gravity)) return SX_ERR_NONFINITE;
+    world->def.gravity = gravity;
+    /* what rested under the old gravity need not rest under the new one */
+    for (i = 0; i < world->body_slots; ++i) {
+        if (world->infos[i].alive && !world->sims[i].awake) sx_wake_body(world, i);
+    }
+    return SX_OK;
+}
+
+sx_vec2 sx_world_get_gravity(const sx_world *world) {
+    return world == NULL ? sx_v2_zero() : world->def.gravity;
+}
+
+int sx_world_body_count(const sx_world *world) { return world == NULL ? 0 : world->body_count; }
+
+sx_real sx_world_linear_slop(const sx_world *world) {
+    return world == NULL ? SX_R(0.0) : world->linear_slop;
+}
+
+/* The answer every stage gives to a bad world or time step. */
+static sx_status sx_check_step(const sx_world *world, sx_real h) {
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+    if (!sx_is_finite(h)) return SX_ERR_NONFINITE;
+    if (!(h > SX_R(0.0))) return SX_ERR_INVALID_ARG;
+    return SX_OK;
+}
+
+/* ---- stage 1: forces ---------------------------------------------------- */
+
+sx_status sx_world_apply_forces(sx_world *world, sx_real h) {
+    sx_status s = sx_check_step(world, h);
+    sx_vec2 g;
+    int i;
+    if (s != SX_OK) return s;
+    g = world->def.gravity;
+    for (i = 0; i < world->body_slots; ++i) {
+        sx_body_sim *b = &world->sims[i];
+        sx_vec2 accel;
+        if (!world->infos[i].alive || !b->dynamic || !b->awake) continue;
+        accel = sx_add(sx_scale(g, b->gravity_scale), sx_scale(b->force, b->inv_mass));
+        b->v = sx_add(sx_mul_add(b->v, h, accel), sx_scale(b->impulse, b->inv_mass));
+        b->w = b->w + h * (b->torque * b->inv_inertia) + b->angular_impulse * b->inv_inertia;
+        /* implicit damping: stable for any h, exact decay for small h */
+        if (b->linear_damping > SX_R(0.0)) {
+            b->v = sx_scale(b->v, SX_R(1.0) / (SX_R(1.0) + h * b->linear_damping));
+        }
+        if (b->angular_damping > SX_R(0.0)) {
+            b->w = b->w / (SX_R(1.0) + h * b->angular_damping);
+        }
+        b->impulse = sx_v2_zero();
+        b->angular_impulse = SX_R(0.0);
+    }
+    return SX_OK;
+}
+
+sx_status sx_world_clear_forces(sx_world *world) {
+    int i;
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+    for (i = 0; i < world->body_slots; ++i) {
+        world->sims[i].force = sx_v2_zero();
+        world->sims[i].torque = SX_R(0.0);
+    }
+    return SX_OK;
+}
+
+/* ---- stage 2: collision ------------------------------------------------- */
+
+static bool sx_filters_collide(const sx_filter *a, const sx_filter *b) {
+    if (a->group == b->group && a->group != 0) return a->group > 0;
+    return (a->category & b->mask) != 0 && (b->category & a->mask) != 0;
+}
+
+/* Copies the warm-starting impulses (and a deferred impact) of the old
+ * contact's point with the same feature id, if any. */
+static void sx_match_point(sx_contact_point *p, const sx_contact *old) {
+    int k;
+    p->normal_impulse = SX_R(0.0);
+    p->tangent_impulse = SX_R(0.0);
+    p->pending_approach = SX_R(0.0);
+    p->pending_impulse = SX_R(0.0);
+    if (old == NULL) return;
+    for (k = 0; k < old->count; ++k) {
+        if (old->points[k].id == p->id) {
+            p->normal_impulse = old->points[k].normal_impulse;
+            p->tangent_impulse = old->points[k].tangent_impulse;
+            p->pending_approach = old->points[k].pending_approach;
+            p->pending_impulse = old->points[k].pending_impulse;
+            return;
+        }
+    }
+}
+
+/* Appends the event of contact c to an event array. */
+static bool sx_push_event(const sx_world *world, const sx_contact *c, sx_contact_event **events,
+                          int *count, int *capacity) {
+    sx_contact_event *e;
+    if (*count == *capacity) {
+        void *p = *events;
+        bool ok = sx_grow_array(&p, capacity, *count + 1, sizeof(sx_contact_event));
+        *events = (sx_contact_event *)p;
+        if (!ok) return false;
+    }
+    e = &(*events)[(*count)++];
+    e->collider_a.index = (uint32_t)c->collider_a;
+    e->collider_a.generation = world->colliders[c->collider_a].generation;
+    e->collider_b.index = (uint32_t)c->collider_b;
+    e->collider_b.generation = world->colliders[c->collider_b].generation;
+    e->body_a.index = (uint32_t)c->body_a;
+    e->body_a.generation = world->infos[c->body_a].generation;
+    e->body_b.index = (uint32_t)c->body_b;
+    e->body_b.generation = world->infos[c->body_b].generation;
+    return true;
+}
+
+/* Compares the new contact list with the old one (both sorted by key):
+ * pairs only in the new one began, pairs only in the old one ended. */
+static sx_status sx_record_events(sx_world *world) {
+    int i = 0, j = 0;
+    while (i < world->contact_count || j < world->old_contact_count) {
+        const sx_contact *n = i < world->contact_count ? &world->contacts[i] : NULL;
+        const sx_contact *o = j < world->old_contact_count ? &world->old_contacts[j] : NULL;
+        if (n != NULL && o != NULL && n->key == o->key) {
+            ++i;
+            ++j;
+        } else if (o == NULL || (n != NULL && n->key < o->key)) {
+            if (!sx_push_event(world, n, &world->begin_events, &world->begin_count,
+                               &world->begin_capacity)) {
+                return SX_ERR_NO_MEMORY;
+            }
+            ++i;
+        } else {
+            if (!sx_push_event(world, o, &world->end_events, &world->end_count,
+                               &world->end_capacity)) {
+                return SX_ERR_NO_MEMORY;
+            }
+            ++j;
+        }
+    }
+    return SX_OK;
+}
+
+sx_contact_events sx_world_get_contact_events(const sx_world *world) {
+    sx_contact_events e;
+    memset(&e, 0, sizeof(e));
+    if (world == NULL) return e;
+    e.begin = world->begin_events;
+    e.begin_count = world->begin_count;
+    e.end = world->end_events;
+    e.end_count = world->end_count;
+    return e;
+}
+
+sx_status sx_world_clear_events(sx_world *world) {
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+    world->begin_count = 0;
+    world->end_count = 0;
+    world->sensor_begin_count = 0;
+    world->sensor_end_count = 0;
+    return SX_OK;
+}
+
+/* Room for one more contact in the current list. */
+static bool sx_reserve_contact(sx_world *world) {
+    void *p = world->contacts;
+    bool ok;
+    if (world->contact_count < world->contact_capacity) return true;
+    ok = sx_grow_array(&p, &world->contact_capacity, world->contact_count + 1, sizeof(sx_contact));
+    world->contacts = (sx_contact *)p;
+    return ok;
+}
+
+/* Copies the frozen old contacts with keys below `key` into the new list
+ * (both lists stay sorted by key). */
+static sx_status sx_carry_frozen(sx_world *world, int *old_index, uint64_t key) {
+    while (*old_index < world->old_contact_count && world->old_contacts[*old_index].key < key) {
+        const sx_contact *o = &world->old_contacts[(*old_index)++];
+        if (!o->frozen) continue;
+        if (!sx_reserve_contact(world)) return SX_ERR_NO_MEMORY;
+        world->contacts[world->contact_count++] = *o;
+    }
+    return SX_OK;
+}
+
+sx_status sx_world_collide(sx_world *world) {
+    sx_contact *swap;
+    int i, old_index = 0, cap;
+    sx_status s;
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+
+    for (i = 0; i < world->collider_slots; ++i) {
+        const sx_collider *c = &world->colliders[i];
+        const sx_body_sim *b;
+        world->bp_kind[i] = 0;
+        if (!c->alive || c->sensor || !world->infos[c->body].enabled) continue;
+        b = &world->sims[c->body];
+        if (b->dynamic) {
+            world->bp_kind[i] = b->awake ? SX_BP_AWAKE : SX_BP_ASLEEP;
+        } else if (b->moving && (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0))) {
+            world->bp_kind[i] = SX_BP_MOVING_KINEMATIC;
+        } else {
+            world->bp_kind[i] = SX_BP_FIXED;
+        }
+        /* half the margin on each side: bounds meet when the gap < margin */
+        world->aabbs[i] =
+            sx_aabb_fatten(sx_shape_aabb(&c->shape, b->xf), SX_R(0.5) * world->margin);
+    }
+    s = sx_broadphase_update(&world->bp, world->aabbs, world->bp_kind, world->collider_slots);
+    if (s != SX_OK) return s;
+
+    swap = world->old_contacts;
+    world->old_contacts = world->contacts;
+    world->contacts = swap;
+    cap = world->old_contact_capacity;
+    world->old_contact_capacity = world->contact_capacity;
+    world->contact_capacity = cap;
+    world->old_contact_count = world->contact_count;
+    world->contact_count = 0;
+    /* Contacts of sleeping bodies are not found again (the broadphase skips
+     * their pairs) but carried over as they are, frozen: the pile keeps its
+     * contacts, reports no end events, and warm-starts when it wakes. The
+     * flag is taken before any wake below, so a woken island keeps its
+     * contacts for this collide too. */
+    for (i = 0; i < world->old_contact_count; ++i) {
+        sx_contact *c = &world->old_contacts[i];
+        const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
+        c->frozen = !sx_contact_is_active(world, c) &&
+                    ((a->dynamic && !a->awake) || (b->dynamic && !b->awake));
+    }
+
+    for (i = 0; i < world->bp.pair_count; ++i) {
+        uint64_t key = world->bp.pairs[i];
+        int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), k;
+        const sx_collider *ca = &world->colliders[ia], *cb = &world->colliders[ib];
+        const sx_body_sim *ba, *bb;
+        const sx_contact *old = NULL;
+        sx_contact *c;
+        sx_manifold m;
+        int n;
+        s = sx_carry_frozen(world, &old_index, key);
+        if (s != SX_OK) return s;
+        if (old_index < world->old_contact_count && world->old_contacts[old_index].key == key) {
+            old = &world->old_contacts[old_index++];
+        }
+        if (ca->body == cb->body || !sx_filters_collide(&ca->filter, &cb->filter)) continue;
+        ba = &world->sims[ca->body];
+        bb = &world->sims[cb->body];
+        n = sx_collide_ex(&ca->shape, ba->xf, &cb->shape, bb->xf, world->margin, &m);
+        if (n <= 0) continue;
+        /* an awake body touching a sleeping one wakes its island */
+        if (!ba->awake) sx_wake_body(world, ca->body);
+        if (!bb->awake) sx_wake_body(world, cb->body);
+        if (!sx_reserve_contact(world)) return SX_ERR_NO_MEMORY;
+        c = &world->contacts[world->contact_count++];
+        c->key = key;
+        c->collider_a = ia;
+        c->collider_b = ib;
+        c->body_a = ca->body;
+        c->body_b = cb->body;
+        c->normal = m.normal;
+        c->local_normal = sx_inv_rotate(ba->xf.q, m.normal);
+        c->friction = sx_sqrt(ca->friction * cb->friction);
+        c->restitution = sx_maxr(ca->restitution, cb->restitution);
+        c->count = n;
+        for (k = 0; k < n; ++k) {
+            const sx_manifold_point *mp = &m.points[k];
+            sx_contact_point *p = &c->points[k];
+            /* the surface points of A and B, depth apart along the normal */
+            sx_vec2 pa = sx_mul_add(mp->point, SX_R(0.5) * mp->depth, m.normal);
+            sx_vec2 pb = sx_mul_sub(mp->point, SX_R(0.5) * mp->depth, m.normal);
+            memset(p, 0, sizeof(*p));
+            p->point = mp->point;
+            p->local_a = sx_xform_inv_point(ba->xf, pa);
+            p->local_b = sx_xform_inv_point(bb->xf, pb);
+            p->anchor_a = sx_sub(mp->point, ba->center);
+            p->anchor_b = sx_sub(mp->point, bb->center);
+            p->separation = -mp->depth;
+            p->id = mp->id;
+            sx_match_point(p, old);
+        }
+    }
+    s = sx_carry_frozen(world, &old_index, UINT64_MAX);
+    if (s != SX_OK) return s;
+    s = sx_record_events(world);
+    if (s != SX_OK) return s;
+    return sx_sensors_update(world);
+}
+
+int sx_world_contact_count(const sx_world *world) {
+    return world == NULL ? 0 : world->contact_count;
+}
+
+sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data *out) {
+    const sx_contact *c;
+    int k;
+    if (world == NULL || out == NULL || index < 0 || index >= world->contact_count) {
+        return SX_ERR_INVALID_ARG;
+    }
+    c = &world->contacts[index];
+    memset(out, 0, sizeof(*out));
+    out->collider_a.index = (uint32_t)c->collider_a;
+    out->collider_a.generation = world->colliders[c->collider_a].generation;
+    out->collider_b.index = (uint32_t)c->collider_b;
+    out->collider_b.generation = world->colliders[c->collider_b].generation;
+    out->body_a.index = (uint32_t)c->body_a;
+    out->body_a.generation = world->infos[c->body_a].generation;
+    out->body_b.index = (uint32_t)c->body_b;
+    out->body_b.generation = world->infos[c->body_b].generation;
+    out->normal = c->normal;
+    out->count = c->count;
+    for (k = 0; k < c->count; ++k) {
+        out->points[k] = c->points[k].point;
+        out->depths[k] = -c->points[k].separation;
+        out->normal_impulses[k] = c->points[k].normal_impulse;
+        out->tangent_impulses[k] = c->points[k].tangent_impulse;
+    }
+    return SX_OK;
+}
+
+/* ---- stage 3: solve ------------------------------------------------------ */
+
+sx_status sx_world_solve(sx_world *world, sx_real h) {
+    sx_status s = sx_check_step(world, h);
+    int it;
+    if (s != SX_OK) return s;
+    sx_contacts_prepare(world);
+    for (it = 0; it < world->def.velocity_iterations; ++it)
+        sx_contacts_solve(world, h);
+    sx_contacts_restitution(world);
+    return SX_OK;
+}
+
+/* ---- stage 4: integrate -------------------------------------------------- */
+
+sx_status sx_world_integrate(sx_world *world, sx_real h) {
+    sx_status s = sx_check_step(world, h);
+    int i;
+    if (s != SX_OK) return s;
+    for (i = 0; i < world->body_slots; ++i) {
+        sx_body_sim *b = &world->sims[i];
+        if (!world->infos[i].alive || !b->moving || !b->awake) continue;
+        b->center = sx_mul_add(b->center, h, b->v);
+        if (b->w != SX_R(0.0)) b->xf.q = sx_rot_integrate(b->xf.q, h * b->w);
+        sx_body_sync_origin(b);
+    }
+    return SX_OK;
+}
+
+/* ---- stage 5: separate --------------------------------------------------- */
+
+sx_status sx_world_separate(sx_world *world, sx_real h) {
+    sx_status s = sx_check_step(world, h);
+    if (s != SX_OK) return s;
+    sx_contacts_separate(world, h);
+    return SX_OK;
+}
+
+/* ---- the step ------------------------------------------------------------- */
+
+sx_status sx_world_step(sx_world *world, sx_real dt) {
+    sx_status s = sx_check_step(world, dt);
+    sx_real h;
+    int i;
+    if (s != SX_OK) return s;
+    h = dt / (sx_real)world->def.sub_steps;
+    sx_world_clear_events(world);
+    for (i = 0; i < world->def.sub_steps; ++i) {
+        sx_world_apply_forces(world, h);
+        s = sx_world_collide(world);
+        if (s != SX_OK) return s;
+        sx_world_solve(world, h);
+        sx_world_integrate(world, h);
+        sx_world_separate(world, h);
+    }
+    sx_world_clear_forces(world);
+    return sx_world_update_sleep(world, dt);
+}

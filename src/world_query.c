@@ -1,0 +1,150 @@
+/* sepax — world queries (bounds, point, shape overlap, closest ray hit) and
+ * the debug-draw walk.
+ *
+ * Every query visits the colliders of enabled bodies in slot order and asks
+ * the narrowphase about each one at the bodies' current transforms, so the
+ * answers are exact and deterministic and never depend on when collide last
+ * ran. The price is a cost linear in the number of colliders; a bounding
+ * volume tree shared with the broadphase would make it logarithmic. */
+#include "world_internal.h"
+
+/* The collider and body handles of collider slot i. */
+static void sx_handles(const sx_world *world, int i, sx_collider_id *c, sx_body_id *b) {
+    const sx_collider *col = &world->colliders[i];
+    c->index = (uint32_t)i;
+    c->generation = col->generation;
+    b->index = (uint32_t)col->body;
+    b->generation = world->infos[col->body].generation;
+}
+
+/* True if collider slot i takes part in queries and drawing. */
+static bool sx_queryable(const sx_world *world, int i) {
+    const sx_collider *c = &world->colliders[i];
+    return c->alive && world->infos[c->body].enabled;
+}
+
+/* What a query tests for each collider. */
+typedef enum sx_query_kind { SX_QUERY_AABB, SX_QUERY_POINT, SX_QUERY_SHAPE } sx_query_kind;
+
+typedef struct sx_query {
+    sx_query_kind kind;
+    sx_aabb box;
+    sx_vec2 point;
+    const sx_shape *shape;
+    sx_xform xf;
+} sx_query;
+
+static int sx_run_query(const sx_world *world, const sx_query *q, sx_query_fn *fn, void *context) {
+    int i, found = 0;
+    for (i = 0; i < world->collider_slots; ++i) {
+        const sx_collider *c;
+        sx_xform xf;
+        sx_collider_id cid;
+        sx_body_id bid;
+        bool hit;
+        if (!sx_queryable(world, i)) continue;
+        c = &world->colliders[i];
+        xf = world->sims[c->body].xf;
+        if (!sx_aabb_overlaps(sx_shape_aabb(&c->shape, xf), q->box)) continue;
+        switch (q->kind) {
+        case SX_QUERY_POINT: hit = sx_contains_point(&c->shape, xf, q->point); break;
+        case SX_QUERY_SHAPE: hit = sx_overlap(&c->shape, xf, q->shape, q->xf); break;
+        case SX_QUERY_AABB:
+        default: hit = true; break;
+        }
+        if (!hit) continue;
+        ++found;
+        sx_handles(world, i, &cid, &bid);
+        if (fn != NULL && !fn(cid, bid, context)) break;
+    }
+    return found;
+}
+
+int sx_world_query_aabb(const sx_world *world, sx_aabb box, sx_query_fn *fn, void *context) {
+    sx_query q;
+    if (world == NULL || !sx_vec2_is_finite(box.lower) || !sx_vec2_is_finite(box.upper) ||
+        !sx_aabb_is_valid(box)) {
+        return 0;
+    }
+    memset(&q, 0, sizeof(q));
+    q.kind = SX_QUERY_AABB;
+    q.box = box;
+    return sx_run_query(world, &q, fn, context);
+}
+
+int sx_world_query_point(const sx_world *world, sx_vec2 point, sx_query_fn *fn, void *context) {
+    sx_query q;
+    if (world == NULL || !sx_vec2_is_finite(point)) return 0;
+    memset(&q, 0, sizeof(q));
+    q.kind = SX_QUERY_POINT;
+    q.point = point;
+    q.box = sx_aabb_make(point, point);
+    return sx_run_query(world, &q, fn, context);
+}
+
+int sx_world_query_shape(const sx_world *world, const sx_shape *shape, sx_xform xf, sx_query_fn *fn,
+                         void *context) {
+    sx_query q;
+    if (world == NULL || shape == NULL || sx_shape_validate(shape) != SX_OK ||
+        !sx_xform_is_finite(xf)) {
+        return 0;
+    }
+    memset(&q, 0, sizeof(q));
+    q.kind = SX_QUERY_SHAPE;
+    q.shape = shape;
+    q.xf = xf;
+    q.box = sx_shape_aabb(shape, xf);
+    return sx_run_query(world, &q, fn, context);
+}
+
+bool sx_world_cast_ray(const sx_world *world, const sx_ray_input *ray, sx_world_ray_hit *out) {
+    sx_ray_input r;
+    bool any = false;
+    int i;
+    if (out != NULL) memset(out, 0, sizeof(*out));
+    if (world == NULL || ray == NULL || out == NULL) return false;
+    r = *ray;
+    for (i = 0; i < world->collider_slots; ++i) {
+        const sx_collider *c;
+        sx_ray_hit hit;
+        if (!sx_queryable(world, i)) continue;
+        c = &world->colliders[i];
+        if (!sx_ray_cast(&c->shape, world->sims[c->body].xf, &r, &hit) || !hit.hit) continue;
+        /* strictly closer only: equal fractions keep the lower slot */
+        if (any && !(hit.fraction < out->fraction)) continue;
+        any = true;
+        sx_handles(world, i, &out->collider, &out->body);
+        out->point = hit.point;
+        out->normal = hit.normal;
+        out->fraction = hit.fraction;
+        /* later colliders only matter if they are hit sooner */
+        r.max_fraction = hit.fraction;
+    }
+    return any;
+}
+
+sx_status sx_world_draw(const sx_world *world, const sx_debug_draw *draw) {
+    int i, k;
+    if (world == NULL || draw == NULL) return SX_ERR_INVALID_ARG;
+    for (i = 0; i < world->collider_slots; ++i) {
+        const sx_collider *c;
+        sx_xform xf;
+        if (!sx_queryable(world, i)) continue;
+        c = &world->colliders[i];
+        xf = world->sims[c->body].xf;
+        if (draw->draw_shape != NULL) {
+            draw->draw_shape(&c->shape, xf, world->infos[c->body].type, c->sensor, draw->context);
+        }
+        if (draw->draw_aabb != NULL) draw->draw_aabb(sx_shape_aabb(&c->shape, xf), draw->context);
+    }
+    if (draw->draw_contact != NULL) {
+        for (i = 0; i < world->contact_count; ++i) {
+            const sx_contact *c = &world->contacts[i];
+            for (k = 0; k < c->count; ++k) {
+                draw->draw_contact(c->points[k].point, c->normal, -c->points[k].separation,
+                                   draw->context);
+            }
+        }
+    }
+    return SX_OK;
+}

@@ -1,0 +1,995 @@
+/* sepax tests — the world API: settings, handles, bodies and colliders, mass
+ * properties, forces and impulses, the step's stages, free flight against
+ * symplectic Euler's closed form, bad input, determinism, filtering and
+ * memory. Scenes with contacts and known physical answers are in
+ * test_scenes.c. */
+#include <string.h>
+
+#include "test_support.h"
+
+#define DT (SX_R(1.0) / SX_R(60.0))
+
+static sx_world *make_world(sx_vec2 gravity) {
+    sx_world_def def = sx_default_world_def();
+    sx_world *w;
+    def.gravity = gravity;
+    w = sx_world_create(&def);
+    assert_non_null(w);
+    return w;
+}
+
+static sx_body_id make_body(sx_world *w, sx_body_type type, sx_vec2 p, const sx_shape *shape) {
+    sx_body_def bd = sx_default_body_def();
+    sx_body_id id;
+    bd.type = type;
+    bd.position = p;
+    assert_int_equal(sx_create_body(w, &bd, &id), SX_OK);
+    if (shape != NULL) {
+        sx_collider_def cd = sx_default_collider_def();
+        cd.shape = *shape;
+        assert_int_equal(sx_body_add_collider(w, id, &cd, NULL), SX_OK);
+    }
+    return id;
+}
+
+/* ---- settings --------------------------------------------------------------- */
+
+static void world_create_refuses_bad_settings_with_null(void **state) {
+    sx_world_def d;
+    sx_world *w;
+    (void)state;
+    assert_null(sx_world_create(NULL));
+    d = sx_default_world_def();
+    d.sub_steps = 0;
+    assert_null(sx_world_create(&d));
+    d = sx_default_world_def();
+    d.velocity_iterations = 0;
+    assert_null(sx_world_create(&d));
+    d = sx_default_world_def();
+    d.gravity.y = SX_R(0.0) / SX_R(0.0);
+    assert_null(sx_world_create(&d));
+    d = sx_default_world_def();
+    d.restitution_threshold = SX_R(-1.0);
+    assert_null(sx_world_create(&d));
+    d = sx_default_world_def();
+    d.length_units_per_meter = SX_R(0.0);
+    assert_null(sx_world_create(&d));
+    d = sx_default_world_def();
+    d.correction_factor = SX_R(1.5);
+    assert_null(sx_world_create(&d));
+    d = sx_default_world_def();
+    d.length_units_per_meter = SX_R(100.0);
+    d.body_capacity = 100;
+    w = sx_world_create(&d);
+    assert_non_null(w);
+    assert_near(sx_world_linear_slop(w), 0.5, SX_TEST_EPS);
+    assert_int_equal(sx_world_body_count(w), 0);
+    sx_world_destroy(w);
+    sx_world_destroy(NULL);
+}
+
+/* ---- handles ------------------------------------------------------------------ */
+
+static void body_handles_pack_into_u64_and_go_stale_after_destroy(void **state) {
+    sx_world *w = make_world(sx_v2_zero());
+    sx_body_id a, b, null_id = {0, 0};
+    uint64_t bits;
+    (void)state;
+    a = make_body(w, SX_BODY_DYNAMIC, sx_v2_zero(), NULL);
+    bits = sx_body_id_to_u64(a);
+    assert_true(bits != 0);
+    assert_true(sx_body_id_to_u64(sx_body_id_from_u64(bits)) == bits);
+    assert_true(sx_body_id_to_u64(null_id) == 0);
+    assert_true(sx_body_id_is_null(sx_body_id_from_u64(0)));
+    assert_false(sx_body_is_valid(w, null_id));
+    assert_true(sx_body_is_valid(w, a));
+    assert_int_equal(sx_destroy_body(w, a), SX_OK);
+    assert_false(sx_body_is_valid(w, a));
+    assert_int_equal(sx_destroy_body(w, a), SX_ERR_STALE_HANDLE);
+    /* the slot is reused under a new generation: the old handle stays dead */
+    b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(1.0), SX_R(2.0)), NULL);
+    assert_int_equal(b.index, a.index);
+    assert_true(b.generation != a.generation);
+    assert_false(sx_body_is_valid(w, a));
+    assert_int_equal(sx_body_set_linear_velocity(w, a, sx_v2_zero()), SX_ERR_STALE_HANDLE);
+    assert_int_equal(sx_body_apply_force(w, a, sx_v2_zero()), SX_ERR_STALE_HANDLE);
+    assert_int_equal(sx_body_set_transform(w, a, sx_v2_zero(), SX_R(0.0)), SX_ERR_STALE_HANDLE);
+    /* getters on a stale handle answer zeros, and never the new body's data */
+    assert_vec2_near(sx_body_get_position(w, a), sx_v2_zero(), 0.0);
+    assert_vec2_near(sx_body_get_position(w, b), sx_v2(SX_R(1.0), SX_R(2.0)), 0.0);
+    assert_int_equal(sx_world_body_count(w), 1);
+    sx_world_destroy(w);
+}
+
+static void create_body_rejects_bad_definitions(void **state) {
+    sx_world *w = make_world(sx_v2_zero());
+    sx_body_def d;
+    sx_body_id id;
+    (void)state;
+    d = sx_default_body_def();
+    assert_int_equal(sx_create_body(NULL, &d, &id), SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_create_body(w, NULL, &id), SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_create_body(w, &d, NULL), SX_ERR_INVALID_ARG);
+    d.type = (sx_body_type)7;
+    assert_int_equal(sx_create_body(w, &d, &id), SX_ERR_INVALID_ARG);
+    assert_true(sx_body_id_is_null(id));
+    d = sx_default_body_def();
+    d.position.x = SX_R(1.0) / SX_R(0.0);
+    assert_int_equal(sx_create_body(w, &d, &id), SX_ERR_NONFINITE);
+    d = sx_default_body_def();
+    d.linear_damping = SX_R(-0.5);
+    assert_int_equal(sx_create_body(w, &d, &id), SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_world_body_count(w), 0);
+    sx_world_destroy(w);
+}
+
+static void add_collider_validates_shape_and_material(void **state) {
+    sx_world *w = make_world(sx_v2_zero());
+    sx_body_id b = make_body(w, SX_BODY_DYNAMIC, sx_v2_zero(), NULL), stale;
+    sx_collider_def d;
+    sx_collider_id c;
+    (void)state;
+    d = sx_default_collider_def();
+    d.shape = sx_circle_shape(sx_v2_zero(), SX_R(-1.0));
+    assert_int_equal(sx_body_add_collider(w, b, &d, &c), SX_ERR_INVALID_ARG);
+    assert_false(sx_collider_is_valid(w, c));
+    d.shape = sx_circle_shape(sx_v2(SX_R(0.0) / SX_R(0.0), SX_R(0.0)), SX_R(1.0));
+    assert_int_equal(sx_body_add_collider(w, b, &d, &c), SX_ERR_NONFINITE);
+    d.shape = sx_segment_shape(sx_v2_zero(), sx_v2_zero());
+    assert_int_equal(sx_body_add_collider(w, b, &d, &c), SX_ERR_DEGENERATE);
+    d = sx_default_collider_def();
+    d.density = SX_R(-1.0);
+    assert_int_equal(sx_body_add_collider(w, b, &d, &c), SX_ERR_INVALID_ARG);
+    d = sx_default_collider_def();
+    d.friction = SX_R(-0.1);
+    assert_int_equal(sx_body_add_collider(w, b, &d, &c), SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_body_add_collider(w, b, NULL, &c), SX_ERR_INVALID_ARG);
+    d = sx_default_collider_def();
+    assert_int_equal(sx_body_add_collider(w, b, &d, &c), SX_OK);
+    assert_true(sx_collider_is_valid(w, c));
+    assert_true(sx_body_id_to_u64(sx_collider_get_body(w, c)) == sx_body_id_to_u64(b));
+    stale = b;
+    assert_int_equal(sx_destroy_body(w, b), SX_OK);
+    assert_false(sx_collider_is_valid(w, c));
+    assert_int_equal(sx_body_add_collider(w, stale, &d, &c), SX_ERR_STALE_HANDLE);
+    sx_world_destroy(w);
+}
+
+/* ---- mass ---------------------------------------------------------------------- */
+
+static void mass_and_inertia_come_from_collider_density(void **state) {
+    sx_world *w = make_world(sx_v2_zero());
+    sx_shape box = sx_box_shape(SX_R(1.0), SX_R(0.5));
+    sx_body_id b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(3.0), SX_R(4.0)), NULL), s;
+    sx_collider_def d = sx_default_collider_def();
+    sx_collider_id second;
+    (void)state;
+    /* no collider yet: a unit mass that does not rotate */
+    assert_near(sx_body_get_mass(w, b), 1.0, 0.0);
+    assert_near(sx_body_get_inertia(w, b), 0.0, 0.0);
+    d.shape = box;
+    d.density = SX_R(2.0);
+    assert_int_equal(sx_body_add_collider(w, b, &d, NULL), SX_OK);
+    /* 2 x 1 box of density 2: m = 4, I = m (w^2 + h^2) / 12 */
+    assert_near(sx_body_get_mass(w, b), 4.0, 4.0 * SX_TEST_EPS);
+    assert_near(sx_body_get_inertia(w, b), 4.0 * 5.0 / 12.0, 4.0 * SX_TEST_EPS);
+    /* a second, equal box offset by 2 in x: centre of mass moves to x = 1,
+     * inertia gains m d^2 for each box about the new centre */
+    d.shape = sx_offset_box_shape(SX_R(1.0), SX_R(0.5), sx_v2(SX_R(2.0), SX_R(0.0)), SX_R(0.0));
+    assert_int_equal(sx_body_add_collider(w, b, &d, &second), SX_OK);
+    assert_near(sx_body_get_mass(w, b), 8.0, 8.0 * SX_TEST_EPS);
+    assert_vec2_near(sx_body_get_local_center(w, b), sx_v2(SX_R(1.0), SX_R(0.0)), SX_TEST_EPS);
+    assert_vec2_near(sx_body_get_world_center(w, b), sx_v2(SX_R(4.0), SX_R(4.0)),
+                     4.0 * SX_TEST_EPS);
+    assert_near(sx_body_get_inertia(w, b), 2.0 * (4.0 * 5.0 / 12.0 + 4.0), 16.0 * SX_TEST_EPS);
+    /* the origin stays put when the centre of mass moves */
+    assert_vec2_near(sx_body_get_position(w, b), sx_v2(SX_R(3.0), SX_R(4.0)), 0.0);
+    assert_int_equal(sx_destroy_collider(w, second), SX_OK);
+    assert_near(sx_body_get_mass(w, b), 4.0, 4.0 * SX_TEST_EPS);
+    assert_int_equal(sx_destroy_collider(w, second), SX_ERR_STALE_HANDLE);
+    /* static bodies have no mass; becoming dynamic gives it back */
+    s = make_body(w, SX_BODY_STATIC, sx_v2_zero(), &box);
+    assert_near(sx_body_get_mass(w, s), 0.0, 0.0);
+    assert_int_equal(sx_body_set_type(w, s, SX_BODY_DYNAMIC), SX_OK);
+    assert_near(sx_body_get_mass(w, s), 2.0, 2.0 * SX_TEST_EPS);
+    assert_int_equal(sx_body_set_type(w, s, (sx_body_type)9), SX_ERR_INVALID_ARG);
+    sx_world_destroy(w);
+}
+
+/* ---- free flight ----------------------------------------------------------------- */
+
+static void free_flight_matches_symplectic_euler_bit_for_bit(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape ball = sx_circle_shape(sx_v2_zero(), SX_R(0.25));
+    sx_body_id b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(1.0), SX_R(2.0)), &ball);
+    sx_vec2 v0 = sx_v2(SX_R(3.0), SX_R(5.0)), x0 = sx_v2(SX_R(1.0), SX_R(2.0));
+    sx_vec2 g = sx_v2(SX_R(0.0), SX_R(-10.0));
+    sx_vec2 x = x0, v = v0;
+    sx_real h = DT / (sx_real)sx_default_world_def().sub_steps;
+    int n, k, sub = sx_default_world_def().sub_steps;
+    (void)state;
+    assert_int_equal(sx_body_set_linear_velocity(w, b, v0), SX_OK);
+    for (n = 1; n <= 120; ++n) {
+        double t, hd = (double)h, steps;
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+        /* the reference: velocity first, then position with the new velocity */
+        for (k = 0; k < sub; ++k) {
+            v.x = v.x + h * g.x;
+            v.y = v.y + h * g.y;
+            x.x = x.x + h * v.x;
+            x.y = x.y + h * v.y;
+        }
+        assert_true(sx_body_get_position(w, b).x == x.x);
+        assert_true(sx_body_get_position(w, b).y == x.y);
+        assert_true(sx_body_get_linear_velocity(w, b).x == v.x);
+        assert_true(sx_body_get_linear_velocity(w, b).y == v.y);
+        /* closed form of symplectic Euler after m = n * sub steps of h:
+         * x_m = x0 + m h v0 + h^2 g m (m + 1) / 2, up to float rounding */
+        steps = (double)(n * sub);
+        assert_near(x.y, 2.0 + steps * hd * 5.0 - 10.0 * hd * hd * steps * (steps + 1.0) / 2.0,
+                    200.0 * SX_TEST_EPS);
+        /* the parabola, within the method's first-order error |g| h t / 2 */
+        t = steps * hd;
+        assert_near(x.y, 2.0 + 5.0 * t - 5.0 * t * t, 10.0 * hd * t / 2.0 + 200.0 * SX_TEST_EPS);
+        assert_near(x.x, 1.0 + 3.0 * t, 100.0 * SX_TEST_EPS);
+    }
+    assert_int_equal(sx_world_contact_count(w), 0);
+    sx_world_destroy(w);
+}
+
+/* ---- forces and impulses ------------------------------------------------------- */
+
+static void forces_and_impulses_accumulate_and_clear(void **state) {
+    sx_world *w = make_world(sx_v2_zero());
+    sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_body_id b = make_body(w, SX_BODY_DYNAMIC, sx_v2_zero(), &box);
+    double m = (double)sx_body_get_mass(w, b), inertia = (double)sx_body_get_inertia(w, b);
+    sx_vec2 v;
+    (void)state;
+    assert_near(m, 1.0, SX_TEST_EPS);
+    assert_int_equal(sx_body_apply_force(w, b, sx_v2(SX_R(3.0), SX_R(0.0))), SX_OK);
+    assert_int_equal(sx_body_apply_force(w, b, sx_v2(SX_R(3.0), SX_R(0.0))), SX_OK);
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    /* both forces act over the whole step: dv = 6 N x dt / m */
+    assert_near(sx_body_get_linear_velocity(w, b).x, 6.0 * (double)DT / m, 10.0 * SX_TEST_EPS);
+    v = sx_body_get_linear_velocity(w, b);
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_vec2_near(sx_body_get_linear_velocity(w, b), v, 0.0);
+
+    assert_int_equal(sx_body_apply_impulse(w, b, sx_v2(SX_R(0.0), SX_R(1.0))), SX_OK);
+    assert_int_equal(sx_body_apply_impulse(w, b, sx_v2(SX_R(0.0), SX_R(1.0))), SX_OK);
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_near(sx_body_get_linear_velocity(w, b).y, 2.0 / m, SX_TEST_EPS);
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_near(sx_body_get_linear_velocity(w, b).y, 2.0 / m, SX_TEST_EPS);
+
+    /* off-centre: an impulse (0, 1) at one unit right of the centre adds
+     * angular impulse 1 on top of the linear one */
+    assert_int_equal(sx_body_apply_impulse_at_point(
+                         w, b, sx_v2(SX_R(0.0), SX_R(1.0)),
+                         sx_add(sx_body_get_world_center(w, b), sx_v2(SX_R(1.0), SX_R(0.0)))),
+                     SX_OK);
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_near(sx_body_get_linear_velocity(w, b).y, 3.0 / m, 2.0 * SX_TEST_EPS);
+    assert_near(sx_body_get_angular_velocity(w, b), 1.0 / inertia, 10.0 * SX_TEST_EPS);
+    /* a force at a point: torque r x F over the step */
+    assert_int_equal(sx_body_set_angular_velocity(w, b, SX_R(0.0)), SX_OK);
+    assert_int_equal(sx_body_apply_force_at_point(
+                         w, b, sx_v2(SX_R(0.0), SX_R(-2.0)),
+                         sx_add(sx_body_get_world_center(w, b), sx_v2(SX_R(0.5), SX_R(0.0)))),
+                     SX_OK);
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_near(sx_body_get_angular_velocity(w, b), -1.0 * (double)DT / inertia,
+                10.0 * SX_TEST_EPS);
+    assert_int_equal(sx_body_apply_torque(w, b, SX_R(1.0) / SX_R(0.0)), SX_ERR_NONFINITE);
+    assert_int_equal(sx_body_apply_force(NULL, b, sx_v2_zero()), SX_ERR_INVALID_ARG);
+    sx_world_destroy(w);
+}
+
+static void static_and_kinematic_bodies_ignore_forces_and_gravity(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_body_id s = make_body(w, SX_BODY_STATIC, sx_v2_zero(), &box);
+    sx_body_id k = make_body(w, SX_BODY_KINEMATIC, sx_v2(SX_R(5.0), SX_R(0.0)), &box);
+    int i;
+    (void)state;
+    assert_int_equal(sx_body_apply_force(w, s, sx_v2(SX_R(100.0), SX_R(0.0))), SX_OK);
+    assert_int_equal(sx_body_apply_impulse(w, s, sx_v2(SX_R(100.0), SX_R(0.0))), SX_OK);
+    assert_int_equal(sx_body_apply_impulse(w, k, sx_v2(SX_R(100.0), SX_R(0.0))), SX_OK);
+    assert_int_equal(sx_body_set_linear_velocity(w, s, sx_v2(SX_R(1.0), SX_R(0.0))), SX_OK);
+    assert_int_equal(sx_body_set_linear_velocity(w, k, sx_v2(SX_R(0.0), SX_R(1.0))), SX_OK);
+    for (i = 0; i < 60; ++i)
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_vec2_near(sx_body_get_position(w, s), sx_v2_zero(), 0.0);
+    assert_vec2_near(sx_body_get_linear_velocity(w, s), sx_v2_zero(), 0.0);
+    /* the kinematic body moves by its velocity only (1 m/s for 1 s) */
+    assert_vec2_near(sx_body_get_position(w, k), sx_v2(SX_R(5.0), SX_R(1.0)), 100.0 * SX_TEST_EPS);
+    assert_near(sx_body_get_mass(w, k), 0.0, 0.0);
+    sx_world_destroy(w);
+}
+
+static void teleport_sets_position_and_angle(void **state) {
+    sx_world *w = make_world(sx_v2_zero());
+    sx_shape box =
+        sx_offset_box_shape(SX_R(0.5), SX_R(0.5), sx_v2(SX_R(1.0), SX_R(0.0)), SX_R(0.0));
+    sx_body_id b = make_body(w, SX_BODY_DYNAMIC, sx_v2_zero(), &box);
+    (void)state;
+    assert_int_equal(sx_body_set_transform(w, b, sx_v2(SX_R(2.0), SX_R(3.0)), SX_R(0.5) * SX_PI),
+                     SX_OK);
+    assert_vec2_near(sx_body_get_position(w, b), sx_v2(SX_R(2.0), SX_R(3.0)), 0.0);
+    assert_near(sx_body_get_angle(w, b), 0.5 * (double)SX_PI, SX_TEST_EPS);
+    /* the centre of mass (local (1, 0)) turned a quarter */
+    assert_vec2_near(sx_body_get_world_center(w, b), sx_v2(SX_R(2.0), SX_R(4.0)), SX_TEST_EPS);
+    assert_int_equal(
+        sx_body_set_transform(w, b, sx_v2(SX_R(0.0) / SX_R(0.0), SX_R(0.0)), SX_R(0.0)),
+        SX_ERR_NONFINITE);
+    assert_vec2_near(sx_body_get_position(w, b), sx_v2(SX_R(2.0), SX_R(3.0)), 0.0);
+    sx_world_destroy(w);
+}
+
+/* ---- the step ------------------------------------------------------------------- */
+
+/* A small scene with contacts: boxes and circles dropped on a ground box. */
+static sx_world *make_drop_scene(sx_body_id *ids, int n) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape ground = sx_box_shape(SX_R(20.0), SX_R(1.0));
+    sx_test_rng rng = sx_test_rng_make(77u);
+    int i;
+    make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-1.0)), &ground);
+    for (i = 0; i < n; ++i) {
+        sx_shape s = (i % 2) ? sx_box_shape(SX_R(0.4), SX_R(0.3))
+                             : sx_circle_shape(sx_v2_zero(), SX_R(0.35));
+        sx_vec2 p = sx_v2(sx_test_rng_range(&rng, -3.0, 3.0), sx_test_rng_range(&rng, 0.5, 6.0));
+        ids[i] = make_body(w, SX_BODY_DYNAMIC, p, &s);
+        assert_int_equal(
+            sx_body_set_angular_velocity(w, ids[i], sx_test_rng_range(&rng, -3.0, 3.0)), SX_OK);
+    }
+    return w;
+}
+
+static void step_with_bad_time_step_returns_status_and_changes_nothing(void **state) {
+    sx_body_id ids[6];
+    sx_world *w = make_drop_scene(ids, 6);
+    sx_real bad[3];
+    sx_vec2 before[6];
+    int i, k;
+    (void)state;
+    bad[0] = SX_R(0.0) / SX_R(0.0);
+    bad[1] = SX_R(1.0) / SX_R(0.0);
+    bad[2] = -SX_R(1.0) / SX_R(0.0);
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    for (i = 0; i < 6; ++i)
+        before[i] = sx_body_get_position(w, ids[i]);
+    assert_int_equal(sx_world_step(w, SX_R(0.0)), SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_world_step(w, SX_R(-0.01)), SX_ERR_INVALID_ARG);
+    for (k = 0; k < 3; ++k) {
+        assert_int_equal(sx_world_step(w, bad[k]), SX_ERR_NONFINITE);
+        assert_int_equal(sx_world_apply_forces(w, bad[k]), SX_ERR_NONFINITE);
+        assert_int_equal(sx_world_solve(w, bad[k]), SX_ERR_NONFINITE);
+        assert_int_equal(sx_world_integrate(w, bad[k]), SX_ERR_NONFINITE);
+        assert_int_equal(sx_world_separate(w, bad[k]), SX_ERR_NONFINITE);
+    }
+    assert_int_equal(sx_world_integrate(w, SX_R(0.0)), SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_world_step(NULL, DT), SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_world_collide(NULL), SX_ERR_INVALID_ARG);
+    for (i = 0; i < 6; ++i)
+        assert_vec2_near(sx_body_get_position(w, ids[i]), before[i], 0.0);
+    sx_world_destroy(w);
+}
+
+static void same_calls_give_bit_identical_state(void **state) {
+    sx_body_id a[12], b[12];
+    sx_world *wa = make_drop_scene(a, 12), *wb = make_drop_scene(b, 12);
+    int i, s;
+    (void)state;
+    for (s = 0; s < 120; ++s) {
+        assert_int_equal(sx_world_step(wa, DT), SX_OK);
+        assert_int_equal(sx_world_step(wb, DT), SX_OK);
+    }
+    assert_true(sx_world_contact_count(wa) > 0);
+    for (i = 0; i < 12; ++i) {
+        sx_xform xa = sx_body_get_transform(wa, a[i]), xb = sx_body_get_transform(wb, b[i]);
+        sx_vec2 va = sx_body_get_linear_velocity(wa, a[i]),
+                vb = sx_body_get_linear_velocity(wb, b[i]);
+        assert_memory_equal(&xa, &xb, sizeof(xa));
+        assert_memory_equal(&va, &vb, sizeof(va));
+    }
+    sx_world_destroy(wa);
+    sx_world_destroy(wb);
+}
+
+static void stages_called_one_by_one_equal_the_step(void **state) {
+    sx_body_id a[8], b[8];
+    sx_world *wa = make_drop_scene(a, 8), *wb = make_drop_scene(b, 8);
+    sx_real h = DT / (sx_real)sx_default_world_def().sub_steps;
+    int i, s, k;
+    (void)state;
+    for (s = 0; s < 90; ++s) {
+        assert_int_equal(sx_world_step(wa, DT), SX_OK);
+        for (k = 0; k < sx_default_world_def().sub_steps; ++k) {
+            assert_int_equal(sx_world_apply_forces(wb, h), SX_OK);
+            assert_int_equal(sx_world_collide(wb), SX_OK);
+            assert_int_equal(sx_world_solve(wb, h), SX_OK);
+            assert_int_equal(sx_world_integrate(wb, h), SX_OK);
+            assert_int_equal(sx_world_separate(wb, h), SX_OK);
+        }
+        assert_int_equal(sx_world_clear_forces(wb), SX_OK);
+    }
+    for (i = 0; i < 8; ++i) {
+        sx_xform xa = sx_body_get_transform(wa, a[i]), xb = sx_body_get_transform(wb, b[i]);
+        assert_memory_equal(&xa, &xb, sizeof(xa));
+    }
+    sx_world_destroy(wa);
+    sx_world_destroy(wb);
+}
+
+static void resting_box_contact_carries_its_weight(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(1.0)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_body_id b;
+    sx_contact_data c;
+    sx_real h = DT / (sx_real)sx_default_world_def().sub_steps;
+    (void)state;
+    make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-1.0)), &ground);
+    b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.5)), &box);
+    {
+        int i;
+        for (i = 0; i < 120; ++i)
+            assert_int_equal(sx_world_step(w, DT), SX_OK);
+    }
+    assert_int_equal(sx_world_contact_count(w), 1);
+    assert_int_equal(sx_world_get_contact(w, 0, &c), SX_OK);
+    assert_int_equal(c.count, 2);
+    /* the two points share the weight m g over one sub-step h, and the
+     * normal points from the ground (A, the first created) up to the box */
+    assert_near(c.normal_impulses[0] + c.normal_impulses[1], 10.0 * (double)h,
+                1e-3 * 10.0 * (double)h);
+    assert_near(c.normal_impulses[0], c.normal_impulses[1], 1e-2 * 10.0 * (double)h);
+    assert_vec2_near(c.normal, sx_v2(SX_R(0.0), SX_R(1.0)), SX_TEST_EPS);
+    assert_near(sx_body_get_position(w, b).y, 0.5, (double)sx_world_linear_slop(w));
+    assert_int_equal(sx_world_get_contact(w, 1, &c), SX_ERR_INVALID_ARG);
+    sx_world_destroy(w);
+}
+
+static void filtered_pairs_and_sensors_make_no_contacts(void **state) {
+    sx_world *w = make_world(sx_v2_zero());
+    sx_body_def bd = sx_default_body_def();
+    sx_collider_def cd = sx_default_collider_def();
+    sx_body_id ids[8];
+    int i;
+    (void)state;
+    bd.type = SX_BODY_DYNAMIC;
+    /* pairs of overlapping circles, each pair filtered one way */
+    for (i = 0; i < 8; ++i) {
+        bd.position = sx_v2(SX_R(10.0) * (sx_real)(i / 2), SX_R(0.5) * (sx_real)(i % 2));
+        assert_int_equal(sx_create_body(w, &bd, &ids[i]), SX_OK);
+        cd = sx_default_collider_def();
+        if (i / 2 == 0) cd.filter.mask = (i % 2) ? 0xFFFFFFFFu : 0xFFFFFFFEu; /* masked out */
+        if (i / 2 == 1) cd.filter.group = -3;                                 /* never */
+        if (i / 2 == 2) cd.sensor = (i % 2) == 1;                             /* sensor */
+        if (i / 2 == 3) {                                                     /* group wins */
+            cd.filter.group = 5;
+            cd.filter.mask = 0;
+        }
+        assert_int_equal(sx_body_add_collider(w, ids[i], &cd, NULL), SX_OK);
+    }
+    assert_int_equal(sx_world_collide(w), SX_OK);
+    assert_int_equal(sx_world_contact_count(w), 1);
+    {
+        sx_contact_data c;
+        assert_int_equal(sx_world_get_contact(w, 0, &c), SX_OK);
+        assert_true(sx_body_id_to_u64(c.body_a) == sx_body_id_to_u64(ids[6]));
+        assert_true(sx_body_id_to_u64(c.body_b) == sx_body_id_to_u64(ids[7]));
+    }
+    sx_world_destroy(w);
+}
+
+static void contact_events_report_begin_once_and_end_once(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(1.0)),
+             ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    sx_body_id g = make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-1.0)), &ground);
+    sx_body_id b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(1.5)), &ball);
+    sx_contact_events e;
+    int s, begins = 0, ends = 0, began_at = -1;
+    (void)state;
+    e = sx_world_get_contact_events(NULL);
+    assert_int_equal(e.begin_count + e.end_count, 0);
+    assert_int_equal(sx_world_clear_events(NULL), SX_ERR_INVALID_ARG);
+    /* falls 1 m: touches after about 0.45 s, then rests */
+    for (s = 0; s < 120; ++s) {
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+        e = sx_world_get_contact_events(w);
+        if (e.begin_count > 0 && began_at < 0) {
+            began_at = s;
+            assert_true(sx_body_id_to_u64(e.begin[0].body_a) == sx_body_id_to_u64(g));
+            assert_true(sx_body_id_to_u64(e.begin[0].body_b) == sx_body_id_to_u64(b));
+            assert_true(sx_collider_is_valid(w, e.begin[0].collider_a));
+        }
+        begins += e.begin_count;
+        ends += e.end_count;
+    }
+    assert_int_equal(begins, 1);
+    assert_int_equal(ends, 0);
+    /* sqrt(2 x 1 m / 10) = 0.447 s; the margin reports it up to a step early */
+    assert_true(began_at >= 24 && began_at <= 27);
+    assert_int_equal(sx_body_set_transform(w, b, sx_v2(SX_R(0.0), SX_R(5.0)), SX_R(0.0)), SX_OK);
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    e = sx_world_get_contact_events(w);
+    assert_int_equal(e.begin_count, 0);
+    assert_int_equal(e.end_count, 1);
+    assert_true(sx_body_id_to_u64(e.end[0].body_b) == sx_body_id_to_u64(b));
+    assert_int_equal(sx_world_clear_events(w), SX_OK);
+    assert_int_equal(sx_world_get_contact_events(w).end_count, 0);
+    sx_world_destroy(w);
+}
+
+/* Collects the body handles a query reports. */
+typedef struct found_bodies {
+    uint64_t ids[8];
+    int count, stop_after;
+} found_bodies;
+
+static bool collect(sx_collider_id collider, sx_body_id body, void *context) {
+    found_bodies *f = (found_bodies *)context;
+    (void)collider;
+    if (f->count < 8) f->ids[f->count] = sx_body_id_to_u64(body);
+    f->count++;
+    return f->stop_after == 0 || f->count < f->stop_after;
+}
+
+static void world_queries_find_the_colliders_at_their_current_place(void **state) {
+    sx_world *w = make_world(sx_v2_zero());
+    sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5)),
+             ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    sx_shape probe = sx_circle_shape(sx_v2_zero(), SX_R(0.2));
+    sx_body_id a = make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(0.0)), &box);
+    sx_body_id b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(3.0), SX_R(0.0)), &ball);
+    found_bodies f;
+    sx_ray_input ray;
+    sx_world_ray_hit hit;
+    (void)state;
+    memset(&f, 0, sizeof(f));
+    assert_int_equal(sx_world_query_aabb(
+                         w,
+                         sx_aabb_make(sx_v2(SX_R(-1.0), SX_R(-1.0)), sx_v2(SX_R(4.0), SX_R(1.0))),
+                         collect, &f),
+                     2);
+    assert_true(f.ids[0] == sx_body_id_to_u64(a) && f.ids[1] == sx_body_id_to_u64(b));
+    /* the callback can stop the query */
+    memset(&f, 0, sizeof(f));
+    f.stop_after = 1;
+    assert_int_equal(sx_world_query_aabb(
+                         w,
+                         sx_aabb_make(sx_v2(SX_R(-1.0), SX_R(-1.0)), sx_v2(SX_R(4.0), SX_R(1.0))),
+                         collect, &f),
+                     1);
+    /* a point in the box's bounds corner but outside the ball */
+    assert_int_equal(sx_world_query_point(w, sx_v2(SX_R(0.4), SX_R(0.4)), NULL, NULL), 1);
+    assert_int_equal(sx_world_query_point(w, sx_v2(SX_R(3.45), SX_R(0.45)), NULL, NULL), 0);
+    /* queries see teleports at once, without a step */
+    assert_int_equal(sx_body_set_transform(w, b, sx_v2(SX_R(10.0), SX_R(0.0)), SX_R(0.0)), SX_OK);
+    memset(&f, 0, sizeof(f));
+    assert_int_equal(sx_world_query_shape(w, &probe,
+                                          sx_xform_make(sx_v2(SX_R(10.6), SX_R(0.0)), SX_R(0.0)),
+                                          collect, &f),
+                     1);
+    assert_true(f.ids[0] == sx_body_id_to_u64(b));
+    /* a ray along +x from the left hits the box first, at x = -0.5 */
+    ray.origin = sx_v2(SX_R(-5.0), SX_R(0.0));
+    ray.translation = sx_v2(SX_R(20.0), SX_R(0.0));
+    ray.max_fraction = SX_R(1.0);
+    assert_true(sx_world_cast_ray(w, &ray, &hit));
+    assert_true(sx_body_id_to_u64(hit.body) == sx_body_id_to_u64(a));
+    assert_vec2_near(hit.point, sx_v2(SX_R(-0.5), SX_R(0.0)), 10.0 * SX_TEST_EPS);
+    assert_vec2_near(hit.normal, sx_v2(SX_R(-1.0), SX_R(0.0)), SX_TEST_EPS);
+    assert_near(hit.fraction, 4.5 / 20.0, SX_TEST_EPS);
+    /* from the right it hits the ball at x = 10.5 */
+    ray.origin = sx_v2(SX_R(15.0), SX_R(0.0));
+    ray.translation = sx_v2(SX_R(-20.0), SX_R(0.0));
+    assert_true(sx_world_cast_ray(w, &ray, &hit));
+    assert_true(sx_body_id_to_u64(hit.body) == sx_body_id_to_u64(b));
+    assert_vec2_near(hit.point, sx_v2(SX_R(10.5), SX_R(0.0)), 10.0 * SX_TEST_EPS);
+    /* bad input answers nothing */
+    ray.translation = sx_v2_zero();
+    assert_false(sx_world_cast_ray(w, &ray, &hit));
+    assert_false(sx_world_cast_ray(NULL, &ray, &hit));
+    assert_int_equal(sx_world_query_point(w, sx_v2(SX_R(0.0) / SX_R(0.0), SX_R(0.0)), NULL, NULL),
+                     0);
+    probe.u.circle.radius = SX_R(-1.0);
+    assert_int_equal(sx_world_query_shape(w, &probe, sx_xform_identity(), NULL, NULL), 0);
+    sx_world_destroy(w);
+}
+
+typedef struct draw_counts {
+    int shapes, contacts, boxes, static_shapes;
+} draw_counts;
+
+static void count_shape(const sx_shape *shape, sx_xform xf, sx_body_type type, bool sensor,
+                        void *context) {
+    draw_counts *d = (draw_counts *)context;
+    (void)shape;
+    (void)xf;
+    (void)sensor;
+    d->shapes++;
+    if (type == SX_BODY_STATIC) d->static_shapes++;
+}
+
+static void count_contact(sx_vec2 point, sx_vec2 normal, sx_real depth, void *context) {
+    (void)point;
+    (void)depth;
+    assert_true(sx_is_normalized(normal));
+    ((draw_counts *)context)->contacts++;
+}
+
+static void count_box(sx_aabb box, void *context) {
+    assert_true(sx_aabb_is_valid(box));
+    ((draw_counts *)context)->boxes++;
+}
+
+static void debug_draw_visits_every_collider_and_contact_point(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(1.0)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_debug_draw dd;
+    draw_counts counts;
+    int i;
+    (void)state;
+    make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-1.0)), &ground);
+    make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.5)), &box);
+    for (i = 0; i < 10; ++i)
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+    memset(&counts, 0, sizeof(counts));
+    memset(&dd, 0, sizeof(dd));
+    dd.context = &counts;
+    assert_int_equal(sx_world_draw(w, &dd), SX_OK);
+    assert_int_equal(counts.shapes + counts.contacts + counts.boxes, 0);
+    dd.draw_shape = count_shape;
+    dd.draw_contact = count_contact;
+    dd.draw_aabb = count_box;
+    assert_int_equal(sx_world_draw(w, &dd), SX_OK);
+    assert_int_equal(counts.shapes, 2);
+    assert_int_equal(counts.static_shapes, 1);
+    assert_int_equal(counts.boxes, 2);
+    assert_int_equal(counts.contacts, 2);
+    assert_int_equal(sx_world_draw(w, NULL), SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_world_draw(NULL, &dd), SX_ERR_INVALID_ARG);
+    sx_world_destroy(w);
+}
+
+static void angular_velocity_survives_adding_colliders_and_fixed_rotation_holds(void **state) {
+    sx_world *w = make_world(sx_v2_zero());
+    sx_body_def bd = sx_default_body_def();
+    sx_collider_def cd = sx_default_collider_def();
+    sx_body_id spin, fixed;
+    (void)state;
+    bd.type = SX_BODY_DYNAMIC;
+    bd.angular_velocity = SX_R(2.0);
+    assert_int_equal(sx_create_body(w, &bd, &spin), SX_OK);
+    cd.shape = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    assert_int_equal(sx_body_add_collider(w, spin, &cd, NULL), SX_OK);
+    assert_near(sx_body_get_angular_velocity(w, spin), 2.0, 0.0);
+    bd.fixed_rotation = true;
+    bd.position = sx_v2(SX_R(5.0), SX_R(0.0));
+    assert_int_equal(sx_create_body(w, &bd, &fixed), SX_OK);
+    assert_int_equal(sx_body_add_collider(w, fixed, &cd, NULL), SX_OK);
+    assert_near(sx_body_get_angular_velocity(w, fixed), 0.0, 0.0);
+    assert_near(sx_body_get_inertia(w, fixed), 0.0, 0.0);
+    assert_int_equal(sx_body_apply_impulse_at_point(w, fixed, sx_v2(SX_R(0.0), SX_R(1.0)),
+                                                    sx_v2(SX_R(5.5), SX_R(0.0))),
+                     SX_OK);
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_near(sx_body_get_angle(w, fixed), 0.0, 0.0);
+    assert_near(sx_body_get_linear_velocity(w, fixed).y, 1.0, SX_TEST_EPS);
+    /* a free spin at 2 rad/s for 1 s turns the box by 2 rad */
+    {
+        int i;
+        for (i = 1; i < 60; ++i)
+            assert_int_equal(sx_world_step(w, DT), SX_OK);
+    }
+    assert_near(sx_body_get_angle(w, spin), 2.0, 1e-3);
+    sx_world_destroy(w);
+}
+
+/* A ground and a column of `n` unit boxes resting on it. */
+static sx_world *make_column(bool sleep, sx_body_id *ids, int n) {
+    sx_world_def def = sx_default_world_def();
+    sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(1.0)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_world *w;
+    int i;
+    def.enable_sleep = sleep;
+    w = sx_world_create(&def);
+    assert_non_null(w);
+    make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-1.0)), &ground);
+    for (i = 0; i < n; ++i) {
+        ids[i] = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.5) + (sx_real)i), &box);
+    }
+    return w;
+}
+
+static void step_seconds(sx_world *w, int seconds) {
+    int i;
+    for (i = 0; i < 60 * seconds; ++i)
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+}
+
+static void resting_column_falls_asleep_and_stays_put(void **state) {
+    sx_body_id ids[3];
+    sx_world *w = make_column(true, ids, 3);
+    sx_xform before;
+    (void)state;
+    assert_int_equal(sx_world_awake_body_count(w), 3);
+    step_seconds(w, 2);
+    assert_int_equal(sx_world_awake_body_count(w), 0);
+    assert_false(sx_body_is_awake(w, ids[2]));
+    before = sx_body_get_transform(w, ids[2]);
+    step_seconds(w, 1);
+    {
+        sx_xform after = sx_body_get_transform(w, ids[2]);
+        assert_memory_equal(&before, &after, sizeof(before));
+    }
+    /* the sleeping pile keeps its contacts (no end events) */
+    assert_int_equal(sx_world_contact_count(w), 3);
+    assert_int_equal(sx_world_get_contact_events(w).end_count, 0);
+    sx_world_destroy(w);
+    /* and with sleeping off, nothing sleeps */
+    w = make_column(false, ids, 3);
+    step_seconds(w, 2);
+    assert_int_equal(sx_world_awake_body_count(w), 3);
+    sx_world_destroy(w);
+}
+
+static void pushing_one_sleeping_body_wakes_its_whole_island(void **state) {
+    sx_body_id ids[3];
+    sx_world *w = make_column(true, ids, 3);
+    (void)state;
+    step_seconds(w, 2);
+    assert_int_equal(sx_world_awake_body_count(w), 0);
+    assert_int_equal(sx_body_apply_impulse(w, ids[2], sx_v2(SX_R(0.1), SX_R(0.0))), SX_OK);
+    assert_int_equal(sx_world_awake_body_count(w), 3);
+    assert_true(sx_body_is_awake(w, ids[0]));
+    assert_int_equal(sx_body_set_awake(w, ids[1], false), SX_OK);
+    assert_false(sx_body_is_awake(w, ids[1]));
+    assert_int_equal(sx_body_set_awake(w, ids[1], true), SX_OK);
+    assert_true(sx_body_is_awake(w, ids[1]));
+    step_seconds(w, 2);
+    assert_int_equal(sx_world_awake_body_count(w), 0);
+    /* a new gravity wakes everything */
+    assert_int_equal(sx_world_set_gravity(w, sx_v2(SX_R(1.0), SX_R(-10.0))), SX_OK);
+    assert_int_equal(sx_world_awake_body_count(w), 3);
+    sx_world_destroy(w);
+}
+
+static void body_landing_on_a_sleeping_pile_wakes_it(void **state) {
+    sx_body_id ids[3], ball;
+    sx_world *w = make_column(true, ids, 3);
+    sx_shape shape = sx_circle_shape(sx_v2_zero(), SX_R(0.25));
+    int s, woke_at = -1;
+    (void)state;
+    step_seconds(w, 2);
+    assert_int_equal(sx_world_awake_body_count(w), 0);
+    ball = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(6.0)), &shape);
+    for (s = 0; s < 120 && woke_at < 0; ++s) {
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+        if (sx_body_is_awake(w, ids[0])) woke_at = s;
+    }
+    /* it falls 2.75 m (0.74 s) before it touches the top box, then the
+     * bottom box wakes with the top one */
+    assert_true(woke_at >= 40 && woke_at <= 46);
+    assert_true(sx_body_is_awake(w, ball));
+    sx_world_destroy(w);
+}
+
+static void destroying_the_support_of_a_sleeping_pile_lets_it_fall(void **state) {
+    sx_body_id ids[2];
+    sx_world *w = make_column(true, ids, 2);
+    (void)state;
+    step_seconds(w, 2);
+    assert_false(sx_body_is_awake(w, ids[1]));
+    assert_int_equal(sx_destroy_body(w, ids[0]), SX_OK);
+    assert_true(sx_body_is_awake(w, ids[1]));
+    step_seconds(w, 1);
+    /* it fell the 1 m onto the ground */
+    assert_near(sx_body_get_position(w, ids[1]).y, 0.5, 2.0 * (double)sx_world_linear_slop(w));
+    sx_world_destroy(w);
+}
+
+static void destroying_a_collider_drops_its_contacts_and_lets_the_body_fall(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(1.0)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_body_id g = make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-1.0)), NULL), b;
+    sx_collider_def cd = sx_default_collider_def();
+    sx_collider_id floor_collider;
+    (void)state;
+    cd.shape = ground;
+    assert_int_equal(sx_body_add_collider(w, g, &cd, &floor_collider), SX_OK);
+    b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.5)), &box);
+    step_seconds(w, 1);
+    assert_int_equal(sx_world_contact_count(w), 1);
+    assert_int_equal(sx_destroy_collider(w, floor_collider), SX_OK);
+    assert_int_equal(sx_world_contact_count(w), 0);
+    assert_true(sx_body_is_valid(w, g));
+    step_seconds(w, 1);
+    /* nothing holds it any more: a free fall of about 5 m in 1 s */
+    assert_true(sx_body_get_position(w, b).y < SX_R(-4.0));
+    /* a static platform teleported from under a sleeping box */
+    {
+        sx_body_id platform = make_body(w, SX_BODY_STATIC, sx_v2(SX_R(30.0), SX_R(-20.0)), &ground);
+        sx_body_id c = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(30.0), SX_R(-18.5)), &box);
+        step_seconds(w, 1);
+        assert_false(sx_body_is_awake(w, c));
+        assert_int_equal(
+            sx_body_set_transform(w, platform, sx_v2(SX_R(80.0), SX_R(-20.0)), SX_R(0.0)), SX_OK);
+        assert_true(sx_body_is_awake(w, c));
+    }
+    assert_int_equal(sx_world_update_sleep(w, SX_R(0.0)), SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_world_update_sleep(w, SX_R(1.0) / SX_R(0.0)), SX_ERR_NONFINITE);
+    assert_int_equal(sx_world_update_sleep(NULL, DT), SX_ERR_INVALID_ARG);
+    sx_world_destroy(w);
+}
+
+static void sensor_reports_a_ball_falling_through_it_without_touching_it(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape zone = sx_box_shape(SX_R(2.0), SX_R(1.0)),
+             ball = sx_circle_shape(sx_v2_zero(), SX_R(0.25));
+    sx_body_def bd = sx_default_body_def();
+    sx_collider_def cd = sx_default_collider_def();
+    sx_body_id region, b, ignored;
+    sx_collider_id sensor;
+    sx_sensor_events e;
+    int s, began = -1, ended = -1, begins = 0, ends = 0;
+    (void)state;
+    assert_int_equal(sx_create_body(w, &bd, &region), SX_OK);
+    cd.shape = zone;
+    cd.sensor = true;
+    cd.filter.mask = 1u; /* sees category 1 only */
+    assert_int_equal(sx_body_add_collider(w, region, &cd, &sensor), SX_OK);
+    b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(3.0)), &ball);
+    bd.type = SX_BODY_DYNAMIC;
+    bd.position = sx_v2(SX_R(1.0), SX_R(3.0));
+    assert_int_equal(sx_create_body(w, &bd, &ignored), SX_OK);
+    cd = sx_default_collider_def();
+    cd.shape = ball;
+    cd.filter.category = 2u;
+    assert_int_equal(sx_body_add_collider(w, ignored, &cd, NULL), SX_OK);
+    for (s = 0; s < 90; ++s) {
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+        e = sx_world_get_sensor_events(w);
+        if (e.begin_count > 0 && began < 0) {
+            began = s;
+            assert_true(sx_collider_id_to_u64(e.begin[0].sensor) == sx_collider_id_to_u64(sensor));
+            assert_true(sx_body_id_to_u64(e.begin[0].visitor_body) == sx_body_id_to_u64(b));
+        }
+        if (e.end_count > 0 && ended < 0) ended = s;
+        begins += e.begin_count;
+        ends += e.end_count;
+    }
+    /* the ball's bottom reaches y = 1 after falling 1.75 m (0.59 s) and its
+     * top leaves y = -1 after 4.25 m (0.92 s); the category-2 ball is never
+     * seen */
+    assert_int_equal(begins, 1);
+    assert_int_equal(ends, 1);
+    assert_true(began >= 34 && began <= 36);
+    assert_true(ended >= 54 && ended <= 56);
+    /* no response: the ball fell freely (4.5 m of free fall in 1.5 s,
+     * within the integrator's first-order error) */
+    assert_near(sx_body_get_position(w, b).y, 3.0 - 0.5 * 10.0 * 1.5 * 1.5, 0.1);
+    assert_int_equal(sx_world_get_sensor_events(NULL).begin_count, 0);
+    sx_world_destroy(w);
+}
+
+/* A random value: mostly ordinary, sometimes huge, zero, NaN or infinite. */
+static sx_real hostile(sx_test_rng *rng) {
+    double u = sx_test_rng_unit(rng);
+    if (u < 0.03) return SX_R(0.0) / SX_R(0.0);
+    if (u < 0.06) return SX_R(1.0) / SX_R(0.0);
+    if (u < 0.09) return SX_R(0.0);
+    if (u < 0.12) return sx_test_rng_range(rng, -1.0e4, 1.0e4);
+    return sx_test_rng_range(rng, -5.0, 5.0);
+}
+
+static void random_api_calls_never_crash_or_make_nan(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_test_rng rng = sx_test_rng_make(99u);
+    sx_body_id ids[32];
+    int n = 0, s, i;
+    (void)state;
+    memset(ids, 0, sizeof(ids));
+    for (s = 0; s < 600; ++s) {
+        double u = sx_test_rng_unit(&rng);
+        sx_body_id pick = n > 0 ? ids[(int)(sx_test_rng_unit(&rng) * (double)n)] : ids[0];
+        sx_vec2 v = sx_v2(hostile(&rng), hostile(&rng));
+        if (u < 0.15 && n < 32) {
+            sx_body_def bd = sx_default_body_def();
+            sx_collider_def cd = sx_default_collider_def();
+            bd.type = (sx_body_type)(sx_test_rng_next(&rng) % 3);
+            bd.position =
+                sx_v2(sx_test_rng_range(&rng, -5.0, 5.0), sx_test_rng_range(&rng, 0.0, 5.0));
+            if (sx_create_body(w, &bd, &ids[n]) == SX_OK) {
+                cd.shape = (n % 2) ? sx_box_shape(SX_R(0.3), SX_R(0.4))
+                                   : sx_capsule_shape(sx_v2_zero(), sx_v2(SX_R(0.5), SX_R(0.0)),
+                                                      SX_R(0.2));
+                cd.restitution = sx_test_rng_range(&rng, 0.0, 1.0);
+                assert_int_equal(sx_body_add_collider(w, ids[n], &cd, NULL), SX_OK);
+                ++n;
+            }
+        } else if (u < 0.2) {
+            (void)sx_destroy_body(w, pick);
+        } else if (u < 0.3) {
+            (void)sx_body_apply_impulse_at_point(w, pick, v, sx_v2(hostile(&rng), hostile(&rng)));
+        } else if (u < 0.35) {
+            (void)sx_body_set_transform(w, pick, v, hostile(&rng));
+        } else if (u < 0.4) {
+            (void)sx_body_set_linear_velocity(w, pick, v);
+        } else if (u < 0.45) {
+            (void)sx_body_apply_force(w, pick, v);
+        } else if (u < 0.48) {
+            (void)sx_body_set_type(w, pick, (sx_body_type)(sx_test_rng_next(&rng) % 4));
+        } else {
+            sx_real dt = sx_test_rng_unit(&rng) < 0.05 ? hostile(&rng) : DT;
+            (void)sx_world_step(w, dt);
+        }
+        for (i = 0; i < n; ++i) {
+            if (!sx_body_is_valid(w, ids[i])) continue;
+            assert_true(sx_vec2_is_finite(sx_body_get_position(w, ids[i])));
+            assert_true(sx_vec2_is_finite(sx_body_get_linear_velocity(w, ids[i])));
+            assert_true(sx_is_finite(sx_body_get_angle(w, ids[i])));
+        }
+    }
+    sx_world_destroy(w);
+}
+
+static void destroying_bodies_mid_run_and_the_world_frees_everything(void **state) {
+    size_t start = sx_live_bytes();
+    sx_body_id ids[10];
+    sx_world *w;
+    int i, s;
+    (void)state;
+    w = make_drop_scene(ids, 10);
+    for (s = 0; s < 90; ++s) {
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+        if (s == 60) {
+            for (i = 0; i < 10; i += 3)
+                assert_int_equal(sx_destroy_body(w, ids[i]), SX_OK);
+        }
+    }
+    for (i = 0; i < sx_world_contact_count(w); ++i) {
+        sx_contact_data c;
+        assert_int_equal(sx_world_get_contact(w, i, &c), SX_OK);
+        assert_true(sx_body_is_valid(w, c.body_a) && sx_body_is_valid(w, c.body_b));
+    }
+    assert_int_equal(sx_world_body_count(w), 11 - 4);
+    sx_world_destroy(w);
+    assert_true(sx_live_bytes() == start);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(world_create_refuses_bad_settings_with_null),
+        cmocka_unit_test(body_handles_pack_into_u64_and_go_stale_after_destroy),
+        cmocka_unit_test(create_body_rejects_bad_definitions),
+        cmocka_unit_test(add_collider_validates_shape_and_material),
+        cmocka_unit_test(mass_and_inertia_come_from_collider_density),
+        cmocka_unit_test(free_flight_matches_symplectic_euler_bit_for_bit),
+        cmocka_unit_test(forces_and_impulses_accumulate_and_clear),
+        cmocka_unit_test(static_and_kinematic_bodies_ignore_forces_and_gravity),
+        cmocka_unit_test(teleport_sets_position_and_angle),
+        cmocka_unit_test(step_with_bad_time_step_returns_status_and_changes_nothing),
+        cmocka_unit_test(same_calls_give_bit_identical_state),
+        cmocka_unit_test(stages_called_one_by_one_equal_the_step),
+        cmocka_unit_test(resting_box_contact_carries_its_weight),
+        cmocka_unit_test(filtered_pairs_and_sensors_make_no_contacts),
+        cmocka_unit_test(contact_events_report_begin_once_and_end_once),
+        cmocka_unit_test(world_queries_find_the_colliders_at_their_current_place),
+        cmocka_unit_test(debug_draw_visits_every_collider_and_contact_point),
+        cmocka_unit_test(angular_velocity_survives_adding_colliders_and_fixed_rotation_holds),
+        cmocka_unit_test(resting_column_falls_asleep_and_stays_put),
+        cmocka_unit_test(pushing_one_sleeping_body_wakes_its_whole_island),
+        cmocka_unit_test(body_landing_on_a_sleeping_pile_wakes_it),
+        cmocka_unit_test(destroying_the_support_of_a_sleeping_pile_lets_it_fall),
+        cmocka_unit_test(destroying_a_collider_drops_its_contacts_and_lets_the_body_fall),
+        cmocka_unit_test(sensor_reports_a_ball_falling_through_it_without_touching_it),
+        cmocka_unit_test(random_api_calls_never_crash_or_make_nan),
+        cmocka_unit_test(destroying_bodies_mid_run_and_the_world_frees_everything),
+    };
+    return cmocka_run_group_tests_name("world", tests, sx_test_group_setup, sx_test_group_teardown);
+}
