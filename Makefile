@@ -132,7 +132,7 @@ BENCH_CXX_SRCS := $(sort $(wildcard bench/*.cpp))
 BENCH_OBJS := $(BENCH_SRCS:bench/%.c=$(OUT)/obj/bench/%.o) \
               $(BENCH_CXX_SRCS:bench/%.cpp=$(OUT)/obj/bench/%.o)
 BENCH_BIN := $(OUT)/bench/sepax_bench
-BENCH_CFLAGS = $(filter-out -O2 -g,$(CFLAGS_ALL)) -O2 -DNDEBUG -Ibench
+BENCH_CFLAGS = $(filter-out -O2 -g,$(CFLAGS_ALL)) -O2 -DNDEBUG -Ibench -Itests/support
 
 deps-bench:
 	@sh scripts/deps.sh box2d chipmunk
@@ -144,8 +144,10 @@ $(OUT)/obj/bench/%.o: bench/%.c | $(OUT)/obj/bench deps-bench
 $(OUT)/obj/bench/%.o: bench/%.cpp | $(OUT)/obj/bench deps-bench
 	$(CXX) -std=c++17 -O2 -DNDEBUG $(DEFS) -Iinclude -Ibench -MMD -MP -c $< -o $@
 
-$(BENCH_BIN): $(BENCH_OBJS) $(LIB_A) | $(OUT)/bench
-	$(CXX) $(SANFLAGS) -o $@ $(BENCH_OBJS) $(LIB_A) -lbox2d $(LDLIBS_ALL)
+# The depth reference of the tests (tests/support/reference.c) is linked too.
+BENCH_REF_OBJ := $(OUT)/obj/tests/support/reference.o
+$(BENCH_BIN): $(BENCH_OBJS) $(BENCH_REF_OBJ) $(LIB_A) | $(OUT)/bench
+	$(CXX) $(SANFLAGS) -o $@ $(BENCH_OBJS) $(BENCH_REF_OBJ) $(LIB_A) -lbox2d $(LDLIBS_ALL)
 
 bench: $(BENCH_BIN)
 	./$(BENCH_BIN) --out $(OUT)/bench

@@ -96,8 +96,8 @@ double bench_ref_extent(const bench_shape *s, const bench_pose *x, double ux, do
 
 /** What a peer is asked to run on a set of pairs. */
 typedef enum bench_fn {
-    BENCH_FN_OVERLAP = 0, /**< the boolean test */
-    BENCH_FN_COLLIDE,     /**< the contact manifold in the engine's own form */
+    BENCH_FN_OVERLAP = 0,   /**< the boolean test */
+    BENCH_FN_COLLIDE,       /**< the contact manifold in the engine's own form */
     BENCH_FN_COLLIDE_WORLD, /**< the manifold plus its world-space points and depths */
     BENCH_FN_COUNT
 } bench_fn;
@@ -121,6 +121,21 @@ void bench_box2d_depths(const bench_box2d_set *set, double *depth);
 void bench_box2d_version(char *out, int size);
 /** Box2D's overlap answer per pair (b2TestOverlap). */
 void bench_box2d_overlaps(const bench_box2d_set *set, int *overlap);
+
+/* ---- the Chipmunk 7 peer (bench/peer_chipmunk.cpp) ---------------------- */
+
+typedef struct bench_chipmunk_set bench_chipmunk_set;
+
+/** "Chipmunk x.y.z". */
+void bench_chipmunk_version(char *out, int size);
+/** Builds Chipmunk shapes (every kind exists there) placed by the poses. */
+bench_chipmunk_set *bench_chipmunk_build(const bench_pair *pairs, int n);
+void bench_chipmunk_free(bench_chipmunk_set *set);
+/** cpShapesCollide over all pairs `passes` times; returns a checksum. */
+double bench_chipmunk_run(const bench_chipmunk_set *set, int passes);
+/** Chipmunk's depth per pair: minus the least contact distance, 0 without
+ *  contact points. */
+void bench_chipmunk_depths(const bench_chipmunk_set *set, double *depth);
 
 #ifdef __cplusplus
 }

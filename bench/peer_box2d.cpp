@@ -70,7 +70,8 @@ bool build(const bench_shape &s, b2PolygonShape *out) {
         out->SetAsBox((float)s.hx, (float)s.hy);
     } else if (s.kind == BENCH_POLYGON || s.kind == BENCH_ROUNDED) {
         b2Vec2 v[b2_maxPolygonVertices];
-        for (int i = 0; i < s.count; ++i) v[i].Set((float)s.v[i][0], (float)s.v[i][1]);
+        for (int i = 0; i < s.count; ++i)
+            v[i].Set((float)s.v[i][0], (float)s.v[i][1]);
         out->Set(v, s.count);
         if (out->m_count != s.count) return false;
     } else {
