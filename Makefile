@@ -123,7 +123,8 @@ test: lib check-headers readme-example $(TEST_BINS)
 # ---- benchmarks --------------------------------------------------------------
 #
 # bench/*.c is our code (strict flags, the float or double build of the
-# library); bench/*.cpp are the peers (C++, relaxed flags). `make bench`
+# library); bench/*.cpp are the peers, Box2D 2.4 and Chipmunk 7 (C++, relaxed
+# flags). `make bench`
 # prints the table and writes $(OUT)/bench/narrowphase.csv (build/bench for
 # the float build); `make bench-smoke` runs every pair type a few times only.
 
@@ -147,7 +148,7 @@ $(OUT)/obj/bench/%.o: bench/%.cpp | $(OUT)/obj/bench deps-bench
 # The depth reference of the tests (tests/support/reference.c) is linked too.
 BENCH_REF_OBJ := $(OUT)/obj/tests/support/reference.o
 $(BENCH_BIN): $(BENCH_OBJS) $(BENCH_REF_OBJ) $(LIB_A) | $(OUT)/bench
-	$(CXX) $(SANFLAGS) -o $@ $(BENCH_OBJS) $(BENCH_REF_OBJ) $(LIB_A) -lbox2d $(LDLIBS_ALL)
+	$(CXX) $(SANFLAGS) -o $@ $(BENCH_OBJS) $(BENCH_REF_OBJ) $(LIB_A) -lbox2d -lchipmunk $(LDLIBS_ALL)
 
 bench: $(BENCH_BIN)
 	./$(BENCH_BIN) --out $(OUT)/bench

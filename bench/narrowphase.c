@@ -42,13 +42,14 @@ enum {
     ROW_B2_OVERLAP,
     ROW_B2_COLLIDE,
     ROW_B2_COLLIDE_WORLD,
+    ROW_CP_COLLIDE,
     ROW_COUNT
 };
 
-static const char *const row_engine[ROW_COUNT] = {"sepax", "sepax", "sepax",
-                                                  "box2d", "box2d", "box2d"};
-static const char *const row_function[ROW_COUNT] = {"overlap", "mtv",     "collide",
-                                                    "overlap", "collide", "collide_world"};
+static const char *const row_engine[ROW_COUNT] = {"sepax", "sepax", "sepax",   "box2d",
+                                                  "box2d", "box2d", "chipmunk"};
+static const char *const row_function[ROW_COUNT] = {
+    "overlap", "mtv", "collide", "overlap", "collide", "collide_world", "collide"};
 
 typedef struct sepax_pair {
     sx_shape a, b;
@@ -131,11 +132,13 @@ static double sepax_run(const sepax_pair *p, int n, int row, int passes) {
 }
 
 /* Runs one row over all pairs `passes` times; returns the elapsed ns. */
-static double time_row(int row, const sepax_pair *sp, const bench_box2d_set *b2, int n,
-                       int passes) {
+static double time_row(int row, const sepax_pair *sp, const bench_box2d_set *b2,
+                       const bench_chipmunk_set *cp, int n, int passes) {
     double t0 = now_ns(), sum;
     if (row <= ROW_SX_COLLIDE) {
         sum = sepax_run(sp, n, row, passes);
+    } else if (row == ROW_CP_COLLIDE) {
+        sum = bench_chipmunk_run(cp, passes);
     } else {
         int fn = row == ROW_B2_OVERLAP   ? BENCH_FN_OVERLAP
                  : row == ROW_B2_COLLIDE ? BENCH_FN_COLLIDE
@@ -181,7 +184,7 @@ static int count_wrong(const double *ref, const int *overlap, int n) {
 /* The accuracy side of one pair type: answers of every engine against the
  * reference (untimed). */
 static void measure_accuracy(const double *ref, const sepax_pair *sp, const bench_box2d_set *b2,
-                             int ka, int kb, int n, result *res) {
+                             const bench_chipmunk_set *cp, int ka, int kb, int n, result *res) {
     double *depth = malloc((size_t)n * sizeof *depth);
     double *scratch = malloc((size_t)n * sizeof *scratch);
     int *ovl = malloc((size_t)n * sizeof *ovl);
@@ -225,13 +228,20 @@ static void measure_accuracy(const double *ref, const sepax_pair *sp, const benc
         depth_errors(ref, depth, n, scratch, &res[ROW_B2_COLLIDE]);
         res[ROW_B2_COLLIDE_WORLD] = res[ROW_B2_COLLIDE];
     }
+    if (cp) {
+        bench_chipmunk_depths(cp, depth);
+        for (int i = 0; i < n; ++i)
+            ovl[i] = depth[i] > 0.0;
+        res[ROW_CP_COLLIDE].wrong = count_wrong(ref, ovl, n);
+        depth_errors(ref, depth, n, scratch, &res[ROW_CP_COLLIDE]);
+    }
     free(depth);
     free(scratch);
     free(ovl);
 }
 
-static void measure_speed(const sepax_pair *sp, const bench_box2d_set *b2, int n,
-                          const options *opt, result *res) {
+static void measure_speed(const sepax_pair *sp, const bench_box2d_set *b2,
+                          const bench_chipmunk_set *cp, int n, const options *opt, result *res) {
     int passes[ROW_COUNT];
     double *times = malloc((size_t)(ROW_COUNT * opt->reps) * sizeof *times);
     if (!times) {
@@ -242,7 +252,7 @@ static void measure_speed(const sepax_pair *sp, const bench_box2d_set *b2, int n
     for (int r = 0; r < ROW_COUNT; ++r) {
         passes[r] = 1;
         if (!res[r].available || opt->smoke) continue;
-        double t = time_row(r, sp, b2, n, 1);
+        double t = time_row(r, sp, b2, cp, n, 1);
         double want = opt->target_ms * 1e6 / (t > 1.0 ? t : 1.0);
         passes[r] = want < 1.0 ? 1 : (want > 1e6 ? 1000000 : (int)want);
     }
@@ -250,7 +260,7 @@ static void measure_speed(const sepax_pair *sp, const bench_box2d_set *b2, int n
         for (int r = 0; r < ROW_COUNT; ++r)
             if (res[r].available)
                 times[r * opt->reps + rep] =
-                    time_row(r, sp, b2, n, passes[r]) / ((double)passes[r] * (double)n);
+                    time_row(r, sp, b2, cp, n, passes[r]) / ((double)passes[r] * (double)n);
     for (int r = 0; r < ROW_COUNT; ++r)
         if (res[r].available) res[r].ns = median(&times[r * opt->reps], opt->reps);
     free(times);
@@ -377,10 +387,12 @@ int main(int argc, char **argv) {
            "sx mtv", "sx col", "b2 ovl", "b2 col", "b2 c+wm", "ratio", "ovl x", "sx max", "sx p99",
            "b2 max", "b2 p99", "wrong: sx o/m/c b2 o/c");
 
-    int failures = 0;
+    int failures = 0, ntypes = 0;
+    static result all[BENCH_KIND_COUNT * (BENCH_KIND_COUNT + 1) / 2][ROW_COUNT];
+    static char names[BENCH_KIND_COUNT * (BENCH_KIND_COUNT + 1) / 2][40];
     for (int ka = 0; ka < BENCH_KIND_COUNT; ++ka) {
         for (int kb = 0; kb <= ka; ++kb) {
-            char name[40];
+            char name[sizeof names[0]];
             snprintf(name, sizeof name, "%s-%s", bench_kind_name(ka), bench_kind_name(kb));
             bench_make_pairs(ka, kb, opt.seed, pairs, n);
             int ok = 1;
@@ -406,8 +418,12 @@ int main(int argc, char **argv) {
                 if (gap > ref_disagreement) ref_disagreement = gap;
             }
             bench_box2d_set *b2 = bench_box2d_build(pairs, n);
-            result res[ROW_COUNT];
-            memset(res, 0, sizeof res);
+            bench_chipmunk_set *cp = bench_chipmunk_build(pairs, n);
+            result *res = all[ntypes];
+            snprintf(names[ntypes], sizeof names[ntypes], "%s", name);
+            ++ntypes;
+            memset(res, 0, sizeof all[0]);
+            res[ROW_CP_COLLIDE].available = cp != NULL;
             res[ROW_SX_OVERLAP].available = res[ROW_SX_MTV].available =
                 res[ROW_SX_COLLIDE].available = 1;
             res[ROW_B2_OVERLAP].available = b2 && bench_box2d_supports(ka, kb, BENCH_FN_OVERLAP);
@@ -418,8 +434,8 @@ int main(int argc, char **argv) {
                 ++failures;
             }
 
-            measure_accuracy(ref, sp, b2, ka, kb, n, res);
-            measure_speed(sp, b2, n, &opt, res);
+            measure_accuracy(ref, sp, b2, cp, ka, kb, n, res);
+            measure_speed(sp, b2, cp, n, &opt, res);
 
             const result *sc = &res[ROW_SX_COLLIDE], *bc = &res[ROW_B2_COLLIDE];
             printf("%-17s", name);
@@ -460,7 +476,25 @@ int main(int argc, char **argv) {
                     fprintf(csv, ",,%d\n", n);
             }
             bench_box2d_free(b2);
+            bench_chipmunk_free(cp);
         }
+    }
+    char cp_name[64];
+    bench_chipmunk_version(cp_name, (int)sizeof cp_name);
+    printf("\n%s (double precision, cpShapesCollide) on the same pairs:\n", cp_name);
+    printf("%-17s %7s %7s | %5s | %9s %9s | %s\n", "pair", "sx col", "cp col", "ratio", "cp max",
+           "cp p99", "wrong cp");
+    for (int t = 0; t < ntypes; ++t) {
+        const result *sc = &all[t][ROW_SX_COLLIDE], *cc = &all[t][ROW_CP_COLLIDE];
+        printf("%-17s", names[t]);
+        print_ns(sc->ns, 1);
+        print_ns(cc->ns, cc->available);
+        if (cc->available)
+            printf(" | %5.2f |", sc->ns / cc->ns);
+        else
+            printf(" | %5s |", "n/a");
+        print_err(cc);
+        printf(" | %d\n", cc->wrong);
     }
     printf("\nsx mtv depth = |mtv|; its errors are in %s. Box2D shapes carry the benchmark "
            "shapes' own radii (0 for sharp polygons and segments) instead of "

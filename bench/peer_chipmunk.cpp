@@ -22,18 +22,18 @@
 
 namespace {
 
-cpShape *build(const bench_shape &s) {
+cpShape *build(cpBody *body, const bench_shape &s) {
     switch (s.kind) {
     case BENCH_CIRCLE:
-        return cpCircleShapeNew(nullptr, s.radius, cpv(s.v[0][0], s.v[0][1]));
+        return cpCircleShapeNew(body, s.radius, cpv(s.v[0][0], s.v[0][1]));
     case BENCH_SEGMENT:
     case BENCH_CAPSULE:
-        return cpSegmentShapeNew(nullptr, cpv(s.v[0][0], s.v[0][1]), cpv(s.v[1][0], s.v[1][1]),
+        return cpSegmentShapeNew(body, cpv(s.v[0][0], s.v[0][1]), cpv(s.v[1][0], s.v[1][1]),
                                  s.radius);
     default: {
         cpVect v[BENCH_MAX_VERTICES];
         for (int i = 0; i < s.count; ++i) v[i] = cpv(s.v[i][0], s.v[i][1]);
-        return cpPolyShapeNewRaw(nullptr, s.count, v, s.radius);
+        return cpPolyShapeNewRaw(body, s.count, v, s.radius);
     }
     }
 }
@@ -50,7 +50,11 @@ double deepest(const cpContactPointSet &set) {
 
 } // namespace
 
+/* cpCollide reads the shapes' body (the rotation of a segment's neighbour
+ * tangents, zero here), so every shape hangs off one static body; the pose
+ * itself goes through cpShapeUpdate with the exact cos/sin pair. */
 struct bench_chipmunk_set {
+    cpBody *body;
     std::vector<cpShape *> a, b;
 };
 
@@ -60,11 +64,12 @@ extern "C" void bench_chipmunk_version(char *out, int size) {
 
 extern "C" bench_chipmunk_set *bench_chipmunk_build(const bench_pair *pairs, int n) {
     bench_chipmunk_set *set = new bench_chipmunk_set();
+    set->body = cpBodyNewStatic();
     set->a.resize((size_t)n);
     set->b.resize((size_t)n);
     for (int i = 0; i < n; ++i) {
-        set->a[(size_t)i] = build(pairs[i].b);
-        set->b[(size_t)i] = build(pairs[i].a);
+        set->a[(size_t)i] = build(set->body, pairs[i].b);
+        set->b[(size_t)i] = build(set->body, pairs[i].a);
         cpShapeUpdate(set->a[(size_t)i], to_cp(pairs[i].xb));
         cpShapeUpdate(set->b[(size_t)i], to_cp(pairs[i].xa));
     }
@@ -75,6 +80,7 @@ extern "C" void bench_chipmunk_free(bench_chipmunk_set *set) {
     if (!set) return;
     for (cpShape *s : set->a) cpShapeFree(s);
     for (cpShape *s : set->b) cpShapeFree(s);
+    cpBodyFree(set->body);
     delete set;
 }
 
