@@ -84,8 +84,9 @@ sx_shape sx_segment_shape(sx_vec2 a, sx_vec2 b);
 /** A capsule. Not checked: see sx_shape_validate. a == b is a circle. */
 sx_shape sx_capsule_shape(sx_vec2 a, sx_vec2 b, sx_real radius);
 /** An axis-aligned box centred on the local origin, half-extents hw x hh.
- *  Not checked: non-positive or non-finite extents make a shape that
- *  sx_shape_validate reports (SX_ERR_DEGENERATE / SX_ERR_NONFINITE). */
+ *  Not checked: bad extents make a shape that sx_shape_validate reports
+ *  (zero: SX_ERR_DEGENERATE; NaN/Inf: SX_ERR_NONFINITE; negative: the
+ *  vertices turn clockwise or away from their normals, SX_ERR_INVALID_ARG). */
 sx_shape sx_box_shape(sx_real half_width, sx_real half_height);
 /** A box with half-extents hw x hh, centred at `center` and turned by `angle`
  *  radians in the local frame (an oriented, offset box). Not checked, as
@@ -127,10 +128,14 @@ sx_status sx_polygon_shape(const sx_vec2 *points, int count, sx_real radius, sx_
 sx_status sx_polygon_shape_ex(const sx_vec2 *points, int count, sx_real radius,
                               sx_real weld_tolerance, sx_shape *out);
 
-/** Builds a polygon from a hull already known to be valid (sx_compute_hull's
- *  output). Errors: SX_ERR_INVALID_ARG (NULL, count outside
- *  3..SX_MAX_POLYGON_VERTICES, negative radius), SX_ERR_NONFINITE,
- *  SX_ERR_DEGENERATE (zero area). */
+/** Builds a polygon from a hull (normally sx_compute_hull's output): unit
+ *  outward normals (normalised in wider precision) and the area centroid of
+ *  the core polygon. Errors: SX_ERR_INVALID_ARG (NULL, count outside
+ *  3..SX_MAX_POLYGON_VERTICES, negative radius, or points that are not a
+ *  strictly convex counter-clockwise polygon without coincident points, i.e.
+ *  sx_validate_hull(hull, 0) fails), SX_ERR_NONFINITE (NaN/Inf point or
+ *  radius), SX_ERR_DEGENERATE (exactly zero area, e.g. all points collinear).
+ *  On error *out is left unchanged. */
 sx_status sx_polygon_from_hull(const sx_hull *hull, sx_real radius, sx_shape *out);
 
 /** Checks a shape value. SX_OK, or: SX_ERR_INVALID_ARG (NULL, unknown type,
