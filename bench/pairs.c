@@ -141,13 +141,61 @@ static void make_shape(bench_rng *rng, int kind, bench_shape *s) {
     }
 }
 
-static bench_pose make_pose(double x, double y, double angle) {
+/* Rotations. A float cos/sin pair is never exactly unit: rounding cos and sin
+ * leaves c^2 + s^2 off 1 by up to ~1e-7, and an engine that inverts a
+ * rotation by transposing it (all of them) then works on a slightly
+ * different placement than the reference, which applies (c, s) as given.
+ * That is invisible in float but would be the whole error of a double build.
+ * So poses draw from a table of float pairs picked for unit length: for each
+ * of BENCH_ROTATIONS angles, among the floats within BENCH_ROTATION_SEARCH
+ * ulps of cos(angle), the one whose rounded companion sin makes c^2 + s^2
+ * closest to 1 (about 1e-11 off; float products are exact in double). */
+#define BENCH_ROTATIONS 1024
+#define BENCH_ROTATION_SEARCH 2048
+
+typedef struct rotation {
+    double c, s;
+} rotation;
+
+static rotation unit_rotation(double angle) {
+    rotation best = {fl(cos(angle)), fl(sin(angle))};
+    double best_err = fabs(best.c * best.c + best.s * best.s - 1.0);
+    for (int dir = -1; dir <= 1; dir += 2) {
+        float c = (float)cos(angle);
+        for (int k = 0; k < BENCH_ROTATION_SEARCH; ++k) {
+            c = nextafterf(c, dir < 0 ? -2.0f : 2.0f);
+            double cd = (double)c;
+            if (cd < -1.0 || cd > 1.0) break;
+            double sd = fl(copysign(sqrt(1.0 - cd * cd), sin(angle)));
+            double err = fabs(cd * cd + sd * sd - 1.0);
+            if (err < best_err) {
+                best_err = err;
+                best.c = cd;
+                best.s = sd;
+            }
+        }
+    }
+    return best;
+}
+
+static bench_pose make_pose(double x, double y, int rotation_index) {
+    static rotation table[BENCH_ROTATIONS];
+    static int ready = 0;
+    if (!ready) {
+        for (int i = 0; i < BENCH_ROTATIONS; ++i)
+            table[i] = unit_rotation(-BENCH_PI + 2.0 * BENCH_PI * (i + 0.5) / BENCH_ROTATIONS);
+        ready = 1;
+    }
     bench_pose p;
     p.x = fl(x);
     p.y = fl(y);
-    p.c = fl(cos(angle));
-    p.s = fl(sin(angle));
+    p.c = table[rotation_index].c;
+    p.s = table[rotation_index].s;
     return p;
+}
+
+static int random_rotation(bench_rng *rng) {
+    return (int)bench_rng_range(rng, 0.0, (double)BENCH_ROTATIONS);
 }
 
 void bench_make_pairs(int kind_a, int kind_b, uint64_t seed, bench_pair *pairs, int n) {
@@ -163,19 +211,17 @@ void bench_make_pairs(int kind_a, int kind_b, uint64_t seed, bench_pair *pairs, 
              * the compiler. */
             double ax = bench_rng_range(&rng, -4.0, 4.0);
             double ay = bench_rng_range(&rng, -4.0, 4.0);
-            double angle_a = bench_rng_range(&rng, -BENCH_PI, BENCH_PI);
+            int rot_a = random_rotation(&rng);
             double dir = bench_rng_range(&rng, -BENCH_PI, BENCH_PI);
-            double angle_b = bench_rng_range(&rng, -BENCH_PI, BENCH_PI);
+            int rot_b = random_rotation(&rng);
             double ux = cos(dir), uy = sin(dir);
-            p->xa = make_pose(ax, ay, angle_a);
-            bench_pose xb = make_pose(0.0, 0.0, angle_b);
+            p->xa = make_pose(ax, ay, rot_a);
+            bench_pose xb = make_pose(0.0, 0.0, rot_b);
             double reach =
                 bench_ref_extent(&p->a, &p->xa, ux, uy) + bench_ref_extent(&p->b, &xb, -ux, -uy);
             double t =
                 want_overlap ? bench_rng_range(&rng, 0.1, 1.0) : bench_rng_range(&rng, 0.7, 1.3);
-            p->xb = make_pose(p->xa.x + t * reach * ux, p->xa.y + t * reach * uy, 0.0);
-            p->xb.c = xb.c;
-            p->xb.s = xb.s;
+            p->xb = make_pose(p->xa.x + t * reach * ux, p->xa.y + t * reach * uy, rot_b);
             p->ref_depth = bench_ref_depth(&p->a, &p->xa, &p->b, &p->xb);
             if (want_overlap && p->ref_depth >= BENCH_MIN_ABS_DEPTH) break;
             if (!want_overlap && p->ref_depth <= -BENCH_MIN_ABS_DEPTH) break;
