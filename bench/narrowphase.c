@@ -426,6 +426,9 @@ int main(int argc, char **argv) {
            "(half overlapping), best of %d reps\n",
            opt.smoke ? " (smoke)" : "", sizeof(sx_real) == sizeof(double) ? "double" : "float",
            peer, n, opt.reps);
+    printf("working set: %d pairs x %d bytes per sepax pair (two sx_shape of %d bytes and two "
+           "transforms)\n",
+           n, (int)sizeof(sepax_pair), (int)sizeof(sx_shape));
     printf("ns per pair; ratio = sepax collide / box2d collide (< 1: sepax faster); "
            "ovl x = sepax collide / sepax overlap;\n"
            "depth errors |depth - reference| in metres over the overlapping pairs "
