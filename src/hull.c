@@ -11,20 +11,22 @@
  * "more clockwise" comparison is a consistent order even when welded or
  * rounding-displaced points sit just outside the hull already built. And
  * every loop is bounded. Welding happens during the wrap (points within the
- * tolerance of the current vertex are not candidates); near-collinear
- * vertices are pruned afterwards, closest-to-collinear first, and also
- * during the wrap whenever its fixed buffer fills up, so a long, nearly
- * straight run of points does not overflow it. SX_ERR_CAPACITY comes only
- * when the vertices that survive pruning are too many: nothing is dropped
- * silently. */
+ * tolerance of the current vertex are not candidates). The wrap records the
+ * exact hull as indices into the input (a fixed buffer of
+ * SX_HULL_MAX_RAW_VERTICES); near-collinear vertices are then pruned from
+ * it, and because the exact hull stays on record, each drop is checked
+ * against every point it would leave outside. SX_ERR_CAPACITY comes only
+ * when the vertices that survive pruning are too many (or the exact hull
+ * overflows that buffer): nothing is dropped silently. */
 #include "wide.h"
 
-/* Room for the raw wrap. The exact hull of a cloud whose tolerance-pruned
- * hull fits SX_MAX_POLYGON_VERTICES can carry extra vertices that are
- * collinear only within the tolerance (rounding noise on an edge, a dense
- * nearly straight arc); they are pruned from the chain whenever the buffer
- * fills, so its size only sets how often that happens. */
-#define SX_HULL_WRAP_CAPACITY (4 * SX_MAX_POLYGON_VERTICES + 32)
+/* Room for the exact (welded) hull before pruning, as input indices. A
+ * cloud whose pruned hull fits SX_MAX_POLYGON_VERTICES can still have many
+ * more exact hull vertices that are collinear only within the tolerance
+ * (rounding noise along an edge, a dense and nearly straight arc); 64 per
+ * allowed vertex covers such clouds, and bounds the wrap's work at O(n) per
+ * recorded vertex. A larger exact hull is answered with SX_ERR_CAPACITY. */
+#define SX_HULL_MAX_RAW_VERTICES (64 * SX_MAX_POLYGON_VERTICES)
 
 static void hull_clear(sx_hull *out) {
     int i;
@@ -66,51 +68,62 @@ static int wrap_step(const sx_vec2 *points, int count, int p, sx_wvec2 d, sx_wid
     return q;
 }
 
-static void remove_at(sx_vec2 *v, int *n, int i) {
-    int k;
-    for (k = i; k + 1 < *n; ++k)
-        v[k] = v[k + 1];
-    --*n;
-}
-
-/* The cloud being wrapped, with its tolerance. */
-typedef struct hull_cloud {
+/* The wrap's record and the pruning state: raw[] holds the input indices of
+ * the exact hull in CCW order; keep[] the positions in raw[] of the
+ * vertices still in the hull, in the same order. */
+typedef struct hull_work {
     const sx_vec2 *points;
     int count;
     sx_wide tol, tol2;
-} hull_cloud;
+    int raw[SX_HULL_MAX_RAW_VERTICES];
+    int raw_count;
+    int keep[SX_HULL_MAX_RAW_VERTICES];
+    int n;
+} hull_work;
 
-/* How far the farthest input point lies outside the chord a -> b when it
- * replaces the hull vertices between a and b. Only points in the cap the
- * chord cuts off can lie on its right, so scanning every point is exact, and
- * it stays exact however many vertices were pruned before. */
-static sx_wide chord_deviation(const hull_cloud *c, sx_vec2 a, sx_vec2 b) {
-    sx_wvec2 e = sx_wdiff(b, a);
-    sx_wide worst = SX_W(0.0), len = sx_wsqrt(sx_wdot(e, e));
-    int i;
-    for (i = 0; i < c->count; ++i) {
-        sx_wide out = -sx_wcross(e, sx_wdiff(c->points[i], a));
-        if (out > worst) worst = out;
-    }
-    return len > SX_W(0.0) ? worst / len : worst;
+static sx_vec2 kept(const hull_work *w, int i) { return w->points[w->raw[w->keep[i]]]; }
+
+static void drop_kept(hull_work *w, int i) {
+    int k;
+    for (k = i; k + 1 < w->n; ++k)
+        w->keep[k] = w->keep[k + 1];
+    --w->n;
 }
 
-/* The input point farthest outside the chord a -> b (the apex of the cap it
- * cuts off, so a hull vertex), and that distance in *dist. */
-static sx_vec2 cap_apex(const hull_cloud *c, sx_vec2 a, sx_vec2 b, sx_wide *dist) {
-    sx_wvec2 e = sx_wdiff(b, a);
-    sx_wide worst = SX_W(0.0), len = sx_wsqrt(sx_wdot(e, e));
-    sx_vec2 apex = a;
-    int i;
-    for (i = 0; i < c->count; ++i) {
-        sx_wide out = -sx_wcross(e, sx_wdiff(c->points[i], a));
-        if (out > worst) {
-            worst = out;
-            apex = c->points[i];
+/* The exact hull vertex strictly between raw positions a and b (going CCW)
+ * that lies farthest outside the chord from one to the other: the apex of
+ * the cap the chord cuts off. Every input point outside the chord lies in
+ * that cap, so its distance (in *height, 0 if nothing is outside) bounds how
+ * far any input point would end up outside the hull. Returns the raw
+ * position of the apex, or -1 when the span is empty. */
+static int cap_apex(const hull_work *w, int a, int b, sx_wide *height) {
+    sx_vec2 pa = w->points[w->raw[a]], pb = w->points[w->raw[b]];
+    sx_wvec2 e = sx_wdiff(pb, pa);
+    sx_wide best = SX_W(0.0), len = sx_wsqrt(sx_wdot(e, e));
+    int k, apex = -1;
+    for (k = (a + 1) % w->raw_count; k != b; k = (k + 1) % w->raw_count) {
+        sx_wide out = -sx_wcross(e, sx_wdiff(w->points[w->raw[k]], pa));
+        if (apex < 0 || out > best) {
+            best = out;
+            apex = k;
         }
     }
-    *dist = len > SX_W(0.0) ? worst / len : SX_W(0.0);
+    *height = len > SX_W(0.0) && best > SX_W(0.0) ? best / len : SX_W(0.0);
     return apex;
+}
+
+/* True if no input point lies more than the tolerance outside the chord
+ * a -> b. The exact hull bounds the cap (cap_apex), but points welded away
+ * during the wrap may sit up to the tolerance outside the exact hull, so a
+ * drop is confirmed against every point once before it is made. */
+static bool chord_keeps_points(const hull_work *w, sx_vec2 a, sx_vec2 b) {
+    sx_wvec2 e = sx_wdiff(b, a);
+    sx_wide limit = -w->tol * sx_wsqrt(sx_wdot(e, e));
+    int i;
+    for (i = 0; i < w->count; ++i) {
+        if (sx_wcross(e, sx_wdiff(w->points[i], a)) < limit) return false;
+    }
+    return true;
 }
 
 /* Welds consecutive vertices within the tolerance and drops vertices within
@@ -118,45 +131,40 @@ static sx_vec2 cap_apex(const hull_cloud *c, sx_vec2 a, sx_vec2 b, sx_wide *dist
  * Phase 0 makes only drops that leave every input point within the
  * tolerance of the hull, the one that moves the hull least first (dropping
  * the most collinear vertex first instead lets small deviations add up along
- * a dense, slightly curved run). Phase 1 (closed loops) handles the
- * collinear vertices phase 0 had to keep, most collinear first: such a
- * vertex is moved to the apex of the cap its neighbours' chord cuts off when
- * that makes it stand out by more than the tolerance and keeps every point
- * within it; otherwise it is dropped anyway, so the hull never has a
- * collinear triple, and only then can points of a curved run lie up to about
- * twice the tolerance outside. Phase 2, a last resort after too many moves,
- * only drops. A closed loop stops at fewer than 3 vertices; an open chain
- * (the wrap so far) never moves its ends, so the wrap can go on from its
- * last vertex. */
-static void prune(const hull_cloud *c, sx_vec2 *v, int *n, bool closed) {
+ * a dense, slightly curved run). Phase 1 handles the collinear vertices that
+ * phase 0 had to keep, most collinear first: such a vertex moves to the apex
+ * of the cap its neighbours' chord cuts off when that makes it stand out by
+ * more than the tolerance and keeps every point within it; otherwise it is
+ * dropped anyway, so the hull never has a collinear triple, and only then
+ * can points of a curved run lie up to about twice the tolerance outside.
+ * After too many moves (phase 2) it only drops. Stops below 3 vertices. */
+static void prune(hull_work *w) {
+    bool rejected[SX_HULL_MAX_RAW_VERTICES];
     int iter, phase = 0, moves = 0;
-    for (iter = 0; iter < 6 * SX_HULL_WRAP_CAPACITY + 4 && *n >= 3; ++iter) {
-        int i, best = -1, pairs = closed ? *n : *n - 1;
-        int lo = closed ? 0 : 1, hi = closed ? *n : *n - 1;
-        sx_wide best_key = SX_W(0.0);
-        sx_vec2 prev, next;
-        for (i = 0; i < pairs; ++i) {
-            sx_wvec2 e = sx_wdiff(v[(i + 1) % *n], v[i]);
-            if (sx_wdot(e, e) <= c->tol2) break;
+    for (iter = 0; iter < SX_HULL_MAX_RAW_VERTICES; ++iter)
+        rejected[iter] = false;
+    for (iter = 0; iter < 8 * SX_HULL_MAX_RAW_VERTICES && w->n >= 3; ++iter) {
+        int i, best = -1, pa, pb, apex;
+        sx_wide best_key = SX_W(0.0), height;
+        for (i = 0; i < w->n; ++i) {
+            sx_wvec2 e = sx_wdiff(kept(w, (i + 1) % w->n), kept(w, i));
+            if (sx_wdot(e, e) <= w->tol2) break;
         }
-        if (i < pairs) {
-            /* Keep the earlier one, except where that would move index 0
-             * (closed) or the chain's last vertex (open). */
-            int drop = (closed ? i + 1 < *n : i + 1 < *n - 1) ? i + 1 : i;
-            if (drop > 0) {
-                remove_at(v, n, drop);
-                continue;
-            }
+        if (i < w->n) {
+            drop_kept(w, (i + 1) % w->n);
+            for (i = 0; i < w->n; ++i)
+                rejected[i] = false;
+            continue;
         }
-        for (i = lo; i < hi; ++i) {
-            sx_wide key;
-            prev = v[(i + *n - 1) % *n];
-            next = v[(i + 1) % *n];
-            key = sx_wline_distance(next, prev, v[i]); /* > 0: convex */
-            if (key > c->tol) continue;
+        for (i = 0; i < w->n; ++i) {
+            int ia = (i + w->n - 1) % w->n, ib = (i + 1) % w->n;
+            /* > 0: a convex corner */
+            sx_wide key = sx_wline_distance(kept(w, ib), kept(w, ia), kept(w, i));
+            if (key > w->tol) continue;
             if (phase == 0) {
-                key = chord_deviation(c, prev, next);
-                if (key > c->tol) continue;
+                if (rejected[i]) continue;
+                cap_apex(w, w->keep[ia], w->keep[ib], &key);
+                if (key > w->tol) continue;
             }
             if (best < 0 || key < best_key) {
                 best = i;
@@ -164,34 +172,44 @@ static void prune(const hull_cloud *c, sx_vec2 *v, int *n, bool closed) {
             }
         }
         if (best < 0) {
-            if (!closed || phase > 0) return;
+            if (phase > 0) return;
             phase = 1;
             continue;
         }
-        prev = v[(best + *n - 1) % *n];
-        next = v[(best + 1) % *n];
+        pa = w->keep[(best + w->n - 1) % w->n];
+        pb = w->keep[(best + 1) % w->n];
+        if (phase == 0 && !chord_keeps_points(w, w->points[w->raw[pa]], w->points[w->raw[pb]])) {
+            rejected[best] = true;
+            continue;
+        }
         if (phase == 1) {
-            sx_wide height;
-            sx_vec2 apex = cap_apex(c, prev, next, &height);
-            sx_wvec2 ea = sx_wdiff(apex, prev), eb = sx_wdiff(next, apex);
-            if (height > c->tol && sx_wdot(ea, ea) > c->tol2 && sx_wdot(eb, eb) > c->tol2 &&
-                chord_deviation(c, prev, apex) <= c->tol &&
-                chord_deviation(c, apex, next) <= c->tol) {
-                v[best] = apex;
-                if (++moves >= SX_HULL_WRAP_CAPACITY) phase = 2;
-                continue;
+            apex = cap_apex(w, pa, pb, &height);
+            if (apex >= 0 && apex != w->keep[best] && height > w->tol) {
+                sx_vec2 va = w->points[w->raw[pa]], vb = w->points[w->raw[pb]];
+                sx_vec2 v = w->points[w->raw[apex]];
+                sx_wvec2 ea = sx_wdiff(v, va), eb = sx_wdiff(vb, v);
+                sx_wide ha, hb;
+                cap_apex(w, pa, apex, &ha);
+                cap_apex(w, apex, pb, &hb);
+                if (sx_wdot(ea, ea) > w->tol2 && sx_wdot(eb, eb) > w->tol2 && ha <= w->tol &&
+                    hb <= w->tol) {
+                    w->keep[best] = apex;
+                    if (++moves >= SX_HULL_MAX_RAW_VERTICES) phase = 2;
+                    continue;
+                }
             }
         }
-        remove_at(v, n, best);
+        drop_kept(w, best);
+        for (i = 0; i < w->n; ++i)
+            rejected[i] = false;
     }
 }
 
 sx_status sx_compute_hull(const sx_vec2 *points, int count, sx_real weld_tolerance, sx_hull *out) {
-    sx_vec2 raw[SX_HULL_WRAP_CAPACITY];
-    hull_cloud cloud;
+    hull_work w;
     sx_wvec2 d, edge;
-    sx_wide tol, tol2, area2 = SX_W(0.0);
-    int i, n, start, p, first;
+    sx_wide area2 = SX_W(0.0);
+    int i, start, p, first;
     if (out == NULL) return SX_ERR_INVALID_ARG;
     hull_clear(out);
     if (points == NULL || count < 0 || !sx_is_finite(weld_tolerance) ||
@@ -202,12 +220,10 @@ sx_status sx_compute_hull(const sx_vec2 *points, int count, sx_real weld_toleran
         if (!sx_vec2_is_finite(points[i])) return SX_ERR_NONFINITE;
     }
     if (count < 3) return SX_ERR_DEGENERATE;
-    tol = (sx_wide)weld_tolerance;
-    tol2 = tol * tol;
-    cloud.points = points;
-    cloud.count = count;
-    cloud.tol = tol;
-    cloud.tol2 = tol2;
+    w.points = points;
+    w.count = count;
+    w.tol = (sx_wide)weld_tolerance;
+    w.tol2 = w.tol * w.tol;
 
     start = 0;
     for (i = 1; i < count; ++i) {
@@ -216,41 +232,39 @@ sx_status sx_compute_hull(const sx_vec2 *points, int count, sx_real weld_toleran
     /* Arriving at the lowest-left point from above: every other point is
      * ahead of this virtual downward edge. */
     d = sx_wv(SX_W(0.0), SX_W(-1.0));
-    raw[0] = points[start];
-    n = 1;
+    w.raw[0] = start;
+    w.raw_count = 1;
     p = start;
     for (;;) {
-        int q = wrap_step(points, count, p, d, tol2, &edge);
+        int q = wrap_step(points, count, p, d, w.tol2, &edge);
         sx_wvec2 back;
         if (q < 0) break;
         back = sx_wdiff(points[q], points[start]);
-        if (sx_wdot(back, back) <= tol2) break; /* closed the loop */
-        if (n == SX_HULL_WRAP_CAPACITY) {
-            /* Full: make room by pruning the chain built so far (a long run
-             * of nearly collinear points); refuse only if nothing goes. */
-            prune(&cloud, raw, &n, false);
-            if (n == SX_HULL_WRAP_CAPACITY) return SX_ERR_CAPACITY;
-        }
-        raw[n++] = points[q];
+        if (sx_wdot(back, back) <= w.tol2) break; /* closed the loop */
+        if (w.raw_count == SX_HULL_MAX_RAW_VERTICES) return SX_ERR_CAPACITY;
+        w.raw[w.raw_count++] = q;
         d = edge;
         p = q;
     }
+    for (i = 0; i < w.raw_count; ++i)
+        w.keep[i] = i;
+    w.n = w.raw_count;
 
-    prune(&cloud, raw, &n, true);
-    if (n < 3) return SX_ERR_DEGENERATE;
-    if (n > SX_MAX_POLYGON_VERTICES) return SX_ERR_CAPACITY;
+    prune(&w);
+    if (w.n < 3) return SX_ERR_DEGENERATE;
+    if (w.n > SX_MAX_POLYGON_VERTICES) return SX_ERR_CAPACITY;
 
     first = 0;
-    for (i = 1; i < n; ++i) {
-        if (lower_left(raw[i], raw[first])) first = i;
+    for (i = 1; i < w.n; ++i) {
+        if (lower_left(kept(&w, i), kept(&w, first))) first = i;
     }
-    for (i = 0; i < n; ++i)
-        out->points[i] = raw[(first + i) % n];
-    for (i = 1; i + 1 < n; ++i) {
+    for (i = 0; i < w.n; ++i)
+        out->points[i] = kept(&w, (first + i) % w.n);
+    for (i = 1; i + 1 < w.n; ++i) {
         area2 += sx_wcross(sx_wdiff(out->points[i], out->points[0]),
                            sx_wdiff(out->points[i + 1], out->points[0]));
     }
-    out->count = n;
+    out->count = w.n;
     /* The wrap is convex by construction and pruning keeps it so; the check
      * is the last guard against a cloud too close to degenerate for the
      * wide arithmetic to order. */

@@ -5,7 +5,12 @@
  * builders that never fail; sx_shape_validate says whether a value is usable.
  * Polygons only come out of sx_polygon_from_hull (and the builders that feed
  * it), which refuses anything that is not a finite, non-degenerate,
- * counter-clockwise convex hull, so code downstream can trust every polygon. */
+ * counter-clockwise convex hull, so code downstream can trust every polygon.
+ * Mass properties are exact sums of simple parts (triangles, rectangles,
+ * disc sectors) taken about a reference point near the shape's centre in the
+ * wide real of wide.h, so a unit box 1e5 m from the origin keeps its inertia.
+ * Bounds are the hot-path functions: they trust the shape but clamp the
+ * polygon count and never return NaN. */
 #include "wide.h"
 
 sx_shape sx_circle_shape(sx_vec2 center, sx_real radius) {
@@ -69,7 +74,8 @@ sx_shape sx_box_shape(sx_real half_width, sx_real half_height) {
 /* ---- polygons --------------------------------------------------------------- */
 
 /* Twice the signed area of the hull, summed as a fan about its first vertex
- * in the wide type (exactly zero for exactly collinear float points). */
+ * in the wide type (exactly zero for collinear points with short binary
+ * expansions, such as integer or float coordinates in the float build). */
 static sx_wide hull_area2(const sx_vec2 *v, int n) {
     sx_wide a2 = SX_W(0.0);
     int i;
@@ -418,8 +424,7 @@ static sx_real max_dot(const sx_vec2 *v, int n, sx_vec2 axis) {
     return best;
 }
 
-sx_real sx_shape_support(const sx_shape *shape, sx_vec2 axis) {
-    if (shape == NULL) return SX_R(0.0);
+static sx_real shape_support(const sx_shape *shape, sx_vec2 axis) {
     switch (shape->type) {
     case SX_SHAPE_CIRCLE:
         return sx_dot(shape->u.circle.center, axis) + shape->u.circle.radius * sx_length(axis);
@@ -435,4 +440,11 @@ sx_real sx_shape_support(const sx_shape *shape, sx_vec2 axis) {
     }
     default: return SX_R(0.0);
     }
+}
+
+sx_real sx_shape_support(const sx_shape *shape, sx_vec2 axis) {
+    sx_real h;
+    if (shape == NULL) return SX_R(0.0);
+    h = shape_support(shape, axis);
+    return h == h ? h : SX_R(0.0); /* NaN in the shape or the axis */
 }

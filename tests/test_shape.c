@@ -580,6 +580,7 @@ static void bounds_of_bad_values_are_finite_and_never_nan(void **state) {
     box = sx_shape_aabb(&s, x);
     assert_vec2_near(box.lower, sx_v2_zero(), 0);
     assert_near(sx_shape_support(NULL, sx_v2(1, 0)), 0, 0);
+    assert_near(sx_shape_support(&s, sx_v2((sx_real)NAN, 0)), 0, 0);
     s.type = SX_SHAPE_TYPE_COUNT;
     assert_near(sx_shape_support(&s, sx_v2(1, 0)), 0, 0);
 }

@@ -55,7 +55,7 @@ typedef struct sx_capsule {
 typedef struct sx_polygon {
     sx_vec2 vertices[SX_MAX_POLYGON_VERTICES];
     sx_vec2 normals[SX_MAX_POLYGON_VERTICES];
-    sx_vec2 centroid;
+    sx_vec2 centroid; /**< area centroid of the core polygon (without rounding) */
     sx_real radius;
     int count;
 } sx_polygon;
@@ -101,15 +101,23 @@ typedef struct sx_hull {
 } sx_hull;
 
 /** Computes the convex hull of `count` points (any order, any count: the input
- *  is not modified and no memory is allocated). Points closer than
- *  `weld_tolerance` are welded, and hull points within `weld_tolerance` of the
- *  line through their neighbours are dropped as collinear. The hull is
- *  counter-clockwise, starting at the lowest-x (then lowest-y) point.
+ *  is not modified and no memory is allocated; gift wrapping, O(count x hull
+ *  size)). Points within `weld_tolerance` of each other are welded (exact
+ *  duplicates always are, even at tolerance 0), and hull points within
+ *  `weld_tolerance` of the line through their neighbours are dropped as
+ *  collinear. Every hull point is one of the input points; the hull is
+ *  counter-clockwise, starting at the lowest-x (then lowest-y) point, and
+ *  passes sx_validate_hull(out, weld_tolerance). Every input point lies
+ *  inside it or within `weld_tolerance` outside (only a dense, slightly
+ *  curved run of points, where dropping a collinear vertex and staying within
+ *  the tolerance conflict, may reach about twice that).
  *  Errors: SX_ERR_INVALID_ARG (points or out NULL, count < 0, negative or
  *  non-finite tolerance); SX_ERR_NONFINITE (a NaN/Inf coordinate);
  *  SX_ERR_DEGENERATE (fewer than 3 usable points, or zero area);
- *  SX_ERR_CAPACITY (the hull has more than SX_MAX_POLYGON_VERTICES vertices:
- *  nothing is dropped silently). On error out->count is 0. */
+ *  SX_ERR_CAPACITY (the hull has more than SX_MAX_POLYGON_VERTICES vertices,
+ *  or the exact hull before collinear pruning has more than
+ *  64 x SX_MAX_POLYGON_VERTICES: nothing is dropped silently). On error
+ *  out->count is 0. */
 sx_status sx_compute_hull(const sx_vec2 *points, int count, sx_real weld_tolerance, sx_hull *out);
 
 /** True if the hull is convex, CCW, with no collinear or coincident points
@@ -140,32 +148,50 @@ sx_status sx_polygon_from_hull(const sx_hull *hull, sx_real radius, sx_shape *ou
 
 /** Checks a shape value. SX_OK, or: SX_ERR_INVALID_ARG (NULL, unknown type,
  *  negative radius, polygon count outside 3..SX_MAX_POLYGON_VERTICES, polygon
- *  not CCW-convex or normals not unit); SX_ERR_NONFINITE (NaN/Inf anywhere);
- *  SX_ERR_DEGENERATE (a zero-length segment, a zero-area polygon). A circle of
- *  radius 0 (a point) is valid; so is a capsule with a == b (a circle). */
+ *  not strictly convex and CCW, or a normal not unit or more than
+ *  SX_ANGULAR_SLOP away from its edge's outward direction); SX_ERR_NONFINITE
+ *  (NaN/Inf in any used field); SX_ERR_DEGENERATE (a segment no longer than
+ *  SX_REAL_EPSILON, a polygon of exactly zero area). Checked in that order
+ *  per field group: count, finiteness, radius, area, convexity, normals. A
+ *  circle of radius 0 (a point) is valid; so is a capsule with a == b (a
+ *  circle) or radius 0 (a segment). */
 sx_status sx_shape_validate(const sx_shape *shape);
 
 /* ---- mass properties and bounds ----------------------------------------- */
 
 /** Mass properties of a shape of uniform density. */
 typedef struct sx_mass_data {
-    sx_real mass;              /**< kg (density x area) */
-    sx_vec2 center;            /**< centre of mass, in the shape's local frame */
+    sx_real mass;               /**< kg (density x area) */
+    sx_vec2 center;             /**< centre of mass, in the shape's local frame */
     sx_real rotational_inertia; /**< kg m^2, about the centre of mass */
 } sx_mass_data;
 
-/** Area in square metres (segments: 0; rounded polygons include the rounding). */
+/** Area in square metres (segments: 0; rounded polygons include the rounding:
+ *  A + perimeter r + pi r^2). An invalid shape (sx_shape_validate) gives 0. */
 sx_real sx_shape_area(const sx_shape *shape);
-/** Area centroid in the local frame (segments: midpoint). */
+/** Area centroid in the local frame, including any rounding (segments: the
+ *  midpoint, even of a zero-length one). Otherwise invalid shapes give the
+ *  zero vector. */
 sx_vec2 sx_shape_centroid(const sx_shape *shape);
-/** Mass, centre of mass and inertia about it for `density` (kg/m^2).
- *  Segments have no area: zero mass and inertia. Negative or non-finite
- *  density, or an invalid shape, gives all zeros. */
+/** Mass, centre of mass and inertia about it for `density` (kg/m^2), summed
+ *  in wider precision about a point near the centre (accurate far from the
+ *  origin). Capsules are exact (a rectangle plus two half discs); polygons
+ *  are a triangle fan; a rounded polygon is exact too: the core, plus one
+ *  r-thick rectangle outside each edge, plus a disc sector at each vertex
+ *  (the sectors make up one full disc). Segments have no area: zero mass and
+ *  inertia, centre at the midpoint. Density 0 gives zero mass and inertia
+ *  with the centre at the centroid. Negative or non-finite density, or an
+ *  invalid shape, gives all zeros. */
 sx_mass_data sx_shape_mass(const sx_shape *shape, sx_real density);
-/** The tight world-space AABB of the shape placed by x (including rounding). */
+/** The tight world-space AABB of the shape placed by x (including rounding).
+ *  Not validated (hot path), but never NaN: a shape or transform with NaN, a
+ *  negative radius, or a polygon count outside 1..SX_MAX_POLYGON_VERTICES
+ *  gives the empty box at x.p (at the origin if x.p is not finite). */
 sx_aabb sx_shape_aabb(const sx_shape *shape, sx_xform x);
-/** The extent of the shape along a unit `axis` in its local frame: the
- *  support value max over the shape of dot(point, axis). */
+/** The extent of the shape along `axis` in its local frame: the support
+ *  value max over the shape of dot(point, axis) (for a non-unit axis too:
+ *  the radius counts |axis| times). NULL, an unknown type, a polygon count
+ *  outside 1..SX_MAX_POLYGON_VERTICES or NaN in the shape or axis gives 0. */
 sx_real sx_shape_support(const sx_shape *shape, sx_vec2 axis);
 
 #ifdef __cplusplus
