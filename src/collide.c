@@ -1,0 +1,730 @@
+/* sepax — the narrowphase entry points: the thirty public pair functions
+ * (overlap, MTV and manifold for each unordered pair of shape types) and the
+ * generic sx_overlap / sx_mtv / sx_collide / sx_collide_ex, which dispatch
+ * through one static table indexed [type of A][type of B].
+ *
+ * Each pair is computed in one canonical order only, in A's local frame: B is
+ * moved into it with sx_xform_inv_mul, the core routines of narrow_core.c do
+ * the work, and the answer is rotated (and translated) back. The reverse
+ * order of a mixed pair wraps the canonical function and negates; for a
+ * same-type pair the overlap and MTV functions pick the order themselves from
+ * the inputs (transforms first, then the shape values, compared as bytes), so
+ * sx_mtv(b, a) is bitwise the negation of sx_mtv(a, b) whichever order the
+ * caller uses. Two identical inputs (same shape value, same transform) are
+ * indistinguishable, so both orders are the same call and give the same
+ * vector, not its negation. Manifolds of same-type pairs are computed in the
+ * caller's order (A's face wins near-ties), so the solver, which always asks
+ * in one order, gets feature ids that stay stable while the bodies move. */
+#include <string.h>
+
+#include "narrow.h"
+
+/* ---- shared plumbing ---------------------------------------------------- */
+
+/* B's placement in A's frame; false if either transform is not finite. */
+static bool relative_xform(sx_xform xa, sx_xform xb, sx_xform *rel) {
+    if (!sx_xform_is_finite(xa) || !sx_xform_is_finite(xb)) return false;
+    *rel = sx_xform_inv_mul(xa, xb);
+    return sx_xform_is_finite(*rel);
+}
+
+/* Rotates a local MTV to world space; a non-finite result (overflow of huge
+ * inputs) is answered as no overlap. */
+static bool finish_mtv(bool hit, sx_vec2 local, sx_xform xa, sx_vec2 *mtv) {
+    sx_vec2 w = sx_xform_vector(xa, local);
+    if (!hit || !sx_vec2_is_finite(w)) {
+        if (mtv) *mtv = sx_v2_zero();
+        return false;
+    }
+    if (mtv) *mtv = w;
+    return true;
+}
+
+/* Runs the core manifold and moves it to world space. */
+static int finish_collide(const sx_core *ca, const sx_core *cb, sx_xform xa, sx_real margin,
+                          sx_manifold *out) {
+    sx_manifold local, world;
+    int i;
+    if (!sx_is_finite(margin) || margin < SX_R(0.0)) margin = SX_R(0.0);
+    sx_core_manifold(ca, cb, margin, &local);
+    world.normal = sx_xform_vector(xa, local.normal);
+    world.count = local.count;
+    for (i = 0; i < local.count; ++i) {
+        world.points[i].point = sx_xform_point(xa, local.points[i].point);
+        world.points[i].depth = local.points[i].depth;
+        world.points[i].id = local.points[i].id;
+        if (!sx_vec2_is_finite(world.points[i].point) || !sx_is_finite(world.points[i].depth)) {
+            world.count = 0;
+        }
+    }
+    if (world.count == 0 || !sx_vec2_is_finite(world.normal)) {
+        world.count = 0;
+        world.normal = sx_v2_zero();
+    }
+    for (i = world.count; i < 2; ++i) {
+        world.points[i].point = sx_v2_zero();
+        world.points[i].depth = SX_R(0.0);
+        world.points[i].id = 0;
+    }
+    if (out) *out = world;
+    return world.count;
+}
+
+static void clear_manifold(sx_manifold *out) {
+    if (out) memset(out, 0, sizeof(*out));
+}
+
+/* The manifold of (B, A) from that of (A, B): same points and depths, the
+ * normal reversed, and the flipped bit of every id toggled (the reference
+ * face now belongs to the other argument). */
+static void mirror_manifold(sx_manifold *m) {
+    int i;
+    m->normal = sx_neg(m->normal);
+    for (i = 0; i < m->count; ++i) m->points[i].id ^= (uint32_t)1 << 16;
+}
+
+/* Lexicographic byte order of two runs of reals: arbitrary but total and
+ * deterministic, which is all the canonical order needs. */
+static int order_reals(const sx_real *a, const sx_real *b, int n) {
+    return memcmp(a, b, (size_t)n * sizeof(sx_real));
+}
+
+static int order_xforms(sx_xform xa, sx_xform xb) {
+    sx_real a[4], b[4];
+    a[0] = xa.p.x;
+    a[1] = xa.p.y;
+    a[2] = xa.q.c;
+    a[3] = xa.q.s;
+    b[0] = xb.p.x;
+    b[1] = xb.p.y;
+    b[2] = xb.q.c;
+    b[3] = xb.q.s;
+    return order_reals(a, b, 4);
+}
+
+static int order_vecs(const sx_vec2 *a, const sx_vec2 *b, int n) {
+    int i, c;
+    for (i = 0; i < n; ++i) {
+        sx_real ra[2], rb[2];
+        ra[0] = a[i].x;
+        ra[1] = a[i].y;
+        rb[0] = b[i].x;
+        rb[1] = b[i].y;
+        c = order_reals(ra, rb, 2);
+        if (c != 0) return c;
+    }
+    return 0;
+}
+
+/* ---- circle - circle ---------------------------------------------------- */
+
+/* Circles skip the core machinery: the centre offset is formed from the
+ * world delta of the two positions (exact for nearby bodies far from the
+ * origin) plus the rotated local centres, and the test is on squared
+ * distance. */
+static sx_vec2 circle_offset(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
+    return sx_sub(sx_add(sx_sub(xb.p, xa.p), sx_rotate(xb.q, b->center)), sx_rotate(xa.q, a->center));
+}
+
+static bool circles_valid(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
+    return a != NULL && b != NULL && sx_xform_is_finite(xa) && sx_xform_is_finite(xb) &&
+           sx_vec2_is_finite(a->center) && sx_vec2_is_finite(b->center) &&
+           sx_is_finite(a->radius) && sx_is_finite(b->radius) && a->radius >= SX_R(0.0) &&
+           b->radius >= SX_R(0.0);
+}
+
+static int order_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
+    sx_real ra[3], rb[3];
+    int c = order_xforms(xa, xb);
+    if (c != 0) return c;
+    ra[0] = a->center.x;
+    ra[1] = a->center.y;
+    ra[2] = a->radius;
+    rb[0] = b->center.x;
+    rb[1] = b->center.y;
+    rb[2] = b->radius;
+    return order_reals(ra, rb, 3);
+}
+
+static bool overlap_circles_ordered(const sx_circle *a, sx_xform xa, const sx_circle *b,
+                                    sx_xform xb) {
+    sx_vec2 d = circle_offset(a, xa, b, xb);
+    sx_real r = a->radius + b->radius;
+    return sx_length_sq(d) <= r * r;
+}
+
+static bool mtv_circles_ordered(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                                sx_vec2 *mtv) {
+    sx_vec2 d = circle_offset(a, xa, b, xb);
+    sx_real r = a->radius + b->radius;
+    sx_real dsq = sx_length_sq(d), dist;
+    sx_vec2 n;
+    *mtv = sx_v2_zero();
+    if (!(dsq <= r * r)) return false;
+    dist = sx_sqrt(dsq);
+    /* Coincident centres have no direction: A's local +x, documented. */
+    n = dist > SX_R(64.0) * SX_REAL_EPSILON * sx_maxr(r, sx_maxr(sx_absr(d.x), sx_absr(d.y)))
+            ? sx_scale(d, SX_R(1.0) / dist)
+            : sx_v2(xa.q.c, xa.q.s);
+    *mtv = sx_scale(n, sx_minr(dist - r, SX_R(0.0)));
+    return sx_vec2_is_finite(*mtv);
+}
+
+bool sx_overlap_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
+    if (!circles_valid(a, xa, b, xb)) return false;
+    if (order_circles(a, xa, b, xb) > 0) return overlap_circles_ordered(b, xb, a, xa);
+    return overlap_circles_ordered(a, xa, b, xb);
+}
+
+bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb, sx_vec2 *mtv) {
+    sx_vec2 v = sx_v2_zero();
+    bool hit = false;
+    if (circles_valid(a, xa, b, xb)) {
+        if (order_circles(a, xa, b, xb) > 0) {
+            hit = mtv_circles_ordered(b, xb, a, xa, &v);
+            v = hit ? sx_neg(v) : sx_v2_zero();
+        } else {
+            hit = mtv_circles_ordered(a, xa, b, xb, &v);
+        }
+    }
+    if (!hit) v = sx_v2_zero();
+    if (mtv) *mtv = v;
+    return hit;
+}
+
+/* ---- the other pairs: cores in A's frame -------------------------------- */
+
+typedef bool sx_core_builder(const void *shape, sx_xform x, sx_core *out);
+
+static bool build_circle(const void *s, sx_xform x, sx_core *out) {
+    return sx_core_from_circle((const sx_circle *)s, x, out);
+}
+static bool build_segment(const void *s, sx_xform x, sx_core *out) {
+    return sx_core_from_segment((const sx_segment *)s, x, out);
+}
+static bool build_capsule(const void *s, sx_xform x, sx_core *out) {
+    return sx_core_from_capsule((const sx_capsule *)s, x, out);
+}
+static bool build_polygon(const void *s, sx_xform x, sx_core *out) {
+    return sx_core_from_polygon((const sx_polygon *)s, x, out);
+}
+
+/* Builds both cores in A's frame; false on any invalid input. */
+static bool build_pair(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
+                       const void *b, sx_xform xb, sx_core *ca, sx_core *cb) {
+    sx_xform rel;
+    return relative_xform(xa, xb, &rel) && fa(a, sx_xform_identity(), ca) && fb(b, rel, cb);
+}
+
+static bool pair_overlap(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
+                         const void *b, sx_xform xb) {
+    sx_core ca, cb;
+    return build_pair(fa, a, xa, fb, b, xb, &ca, &cb) && sx_core_overlap(&ca, &cb);
+}
+
+static bool pair_mtv(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
+                     const void *b, sx_xform xb, sx_vec2 *mtv) {
+    sx_core ca, cb;
+    sx_vec2 local = sx_v2_zero();
+    bool hit = build_pair(fa, a, xa, fb, b, xb, &ca, &cb) && sx_core_mtv(&ca, &cb, &local);
+    return finish_mtv(hit, local, xa, mtv);
+}
+
+static int pair_collide(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
+                        const void *b, sx_xform xb, sx_real margin, sx_manifold *out) {
+    sx_core ca, cb;
+    if (!build_pair(fa, a, xa, fb, b, xb, &ca, &cb)) {
+        clear_manifold(out);
+        return 0;
+    }
+    return finish_collide(&ca, &cb, xa, margin, out);
+}
+
+/* Same-type pairs: overlap and MTV in the canonical order. `order` > 0 means
+ * (b, a) is the canonical order. */
+static bool pair_overlap_sym(sx_core_builder *f, const void *a, sx_xform xa, const void *b,
+                             sx_xform xb, int order) {
+    if (order > 0) return pair_overlap(f, b, xb, f, a, xa);
+    return pair_overlap(f, a, xa, f, b, xb);
+}
+
+static bool pair_mtv_sym(sx_core_builder *f, const void *a, sx_xform xa, const void *b,
+                         sx_xform xb, int order, sx_vec2 *mtv) {
+    sx_vec2 v;
+    bool hit;
+    if (order > 0) {
+        hit = pair_mtv(f, b, xb, f, a, xa, &v);
+        v = hit ? sx_neg(v) : sx_v2_zero();
+    } else {
+        hit = pair_mtv(f, a, xa, f, b, xb, &v);
+    }
+    if (mtv) *mtv = v;
+    return hit;
+}
+
+/* A pair at margin 0 whose manifold found no point although the canonical
+ * order says it touches (the two orders round differently by a few ulps) is
+ * asked again with this margin and its depths clamped to 0: 1 % of the slop,
+ * far above any rounding and far below anything physical. */
+#define SX_TOUCH_RESCUE_MARGIN (SX_R(0.01) * SX_LINEAR_SLOP)
+
+/* Same-type manifolds follow the caller's order (stable feature ids), but at
+ * margin 0 whether the pair touches at all is the canonical order's answer
+ * (`overlap`), so sx_collide reports points exactly when sx_overlap is
+ * true. Speculative calls (margin > 0) need no such agreement. */
+static int collide_gated(sx_core_builder *f, const void *a, sx_xform xa, const void *b,
+                         sx_xform xb, sx_real margin, bool overlap, sx_manifold *out) {
+    sx_manifold m;
+    int count, i;
+    if (sx_is_finite(margin) && margin > SX_R(0.0)) return pair_collide(f, a, xa, f, b, xb, margin, out);
+    if (!overlap) {
+        clear_manifold(out);
+        return 0;
+    }
+    count = pair_collide(f, a, xa, f, b, xb, SX_R(0.0), &m);
+    if (count == 0) {
+        count = pair_collide(f, a, xa, f, b, xb, SX_TOUCH_RESCUE_MARGIN, &m);
+        for (i = 0; i < count; ++i) m.points[i].depth = sx_maxr(m.points[i].depth, SX_R(0.0));
+    }
+    if (out) *out = m;
+    return count;
+}
+
+int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                       sx_real margin, sx_manifold *out) {
+    bool overlap = !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_circles(a, xa, b, xb);
+    return collide_gated(build_circle, a, xa, b, xb, margin, overlap, out);
+}
+
+/* ---- segment - circle --------------------------------------------------- */
+
+bool sx_overlap_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
+    return pair_overlap(build_segment, a, xa, build_circle, b, xb);
+}
+bool sx_mtv_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                           sx_vec2 *mtv) {
+    return pair_mtv(build_segment, a, xa, build_circle, b, xb, mtv);
+}
+int sx_collide_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                              sx_real margin, sx_manifold *out) {
+    return pair_collide(build_segment, a, xa, build_circle, b, xb, margin, out);
+}
+
+/* ---- segment - segment -------------------------------------------------- */
+
+static int order_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb) {
+    sx_vec2 va[2], vb[2];
+    int c = order_xforms(xa, xb);
+    if (c != 0 || a == NULL || b == NULL) return c;
+    va[0] = a->a;
+    va[1] = a->b;
+    vb[0] = b->a;
+    vb[1] = b->b;
+    return order_vecs(va, vb, 2);
+}
+
+bool sx_overlap_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb) {
+    return pair_overlap_sym(build_segment, a, xa, b, xb, order_segments(a, xa, b, xb));
+}
+bool sx_mtv_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
+                     sx_vec2 *mtv) {
+    return pair_mtv_sym(build_segment, a, xa, b, xb, order_segments(a, xa, b, xb), mtv);
+}
+int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
+                        sx_real margin, sx_manifold *out) {
+    bool overlap = !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_segments(a, xa, b, xb);
+    return collide_gated(build_segment, a, xa, b, xb, margin, overlap, out);
+}
+
+/* ---- capsule - circle / segment / capsule ------------------------------- */
+
+bool sx_overlap_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
+    return pair_overlap(build_capsule, a, xa, build_circle, b, xb);
+}
+bool sx_mtv_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                           sx_vec2 *mtv) {
+    return pair_mtv(build_capsule, a, xa, build_circle, b, xb, mtv);
+}
+int sx_collide_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                              sx_real margin, sx_manifold *out) {
+    return pair_collide(build_capsule, a, xa, build_circle, b, xb, margin, out);
+}
+
+bool sx_overlap_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b,
+                                sx_xform xb) {
+    return pair_overlap(build_capsule, a, xa, build_segment, b, xb);
+}
+bool sx_mtv_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb,
+                            sx_vec2 *mtv) {
+    return pair_mtv(build_capsule, a, xa, build_segment, b, xb, mtv);
+}
+int sx_collide_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb,
+                               sx_real margin, sx_manifold *out) {
+    return pair_collide(build_capsule, a, xa, build_segment, b, xb, margin, out);
+}
+
+static int order_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb) {
+    sx_real ra[5], rb[5];
+    int c = order_xforms(xa, xb);
+    if (c != 0 || a == NULL || b == NULL) return c;
+    ra[0] = a->a.x;
+    ra[1] = a->a.y;
+    ra[2] = a->b.x;
+    ra[3] = a->b.y;
+    ra[4] = a->radius;
+    rb[0] = b->a.x;
+    rb[1] = b->a.y;
+    rb[2] = b->b.x;
+    rb[3] = b->b.y;
+    rb[4] = b->radius;
+    return order_reals(ra, rb, 5);
+}
+
+bool sx_overlap_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb) {
+    return pair_overlap_sym(build_capsule, a, xa, b, xb, order_capsules(a, xa, b, xb));
+}
+bool sx_mtv_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
+                     sx_vec2 *mtv) {
+    return pair_mtv_sym(build_capsule, a, xa, b, xb, order_capsules(a, xa, b, xb), mtv);
+}
+int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
+                        sx_real margin, sx_manifold *out) {
+    bool overlap = !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_capsules(a, xa, b, xb);
+    return collide_gated(build_capsule, a, xa, b, xb, margin, overlap, out);
+}
+
+/* ---- polygon - circle / segment / capsule ------------------------------- */
+
+bool sx_overlap_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
+    return pair_overlap(build_polygon, a, xa, build_circle, b, xb);
+}
+bool sx_mtv_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                           sx_vec2 *mtv) {
+    return pair_mtv(build_polygon, a, xa, build_circle, b, xb, mtv);
+}
+int sx_collide_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                              sx_real margin, sx_manifold *out) {
+    return pair_collide(build_polygon, a, xa, build_circle, b, xb, margin, out);
+}
+
+bool sx_overlap_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b,
+                                sx_xform xb) {
+    return pair_overlap(build_polygon, a, xa, build_segment, b, xb);
+}
+bool sx_mtv_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb,
+                            sx_vec2 *mtv) {
+    return pair_mtv(build_polygon, a, xa, build_segment, b, xb, mtv);
+}
+int sx_collide_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb,
+                               sx_real margin, sx_manifold *out) {
+    return pair_collide(build_polygon, a, xa, build_segment, b, xb, margin, out);
+}
+
+bool sx_overlap_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b,
+                                sx_xform xb) {
+    return pair_overlap(build_polygon, a, xa, build_capsule, b, xb);
+}
+bool sx_mtv_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
+                            sx_vec2 *mtv) {
+    return pair_mtv(build_polygon, a, xa, build_capsule, b, xb, mtv);
+}
+int sx_collide_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
+                               sx_real margin, sx_manifold *out) {
+    return pair_collide(build_polygon, a, xa, build_capsule, b, xb, margin, out);
+}
+
+/* ---- polygon - polygon -------------------------------------------------- */
+
+static int order_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb) {
+    sx_real ra[2], rb[2];
+    int c = order_xforms(xa, xb);
+    if (c != 0 || a == NULL || b == NULL) return c;
+    if (a->count != b->count) return a->count < b->count ? -1 : 1;
+    if (a->count < 0 || a->count > SX_MAX_POLYGON_VERTICES) return 0;
+    ra[0] = a->radius;
+    rb[0] = b->radius;
+    c = order_reals(ra, rb, 1);
+    if (c != 0) return c;
+    c = order_vecs(a->vertices, b->vertices, a->count);
+    if (c != 0) return c;
+    c = order_vecs(a->normals, b->normals, a->count);
+    if (c != 0) return c;
+    ra[0] = a->centroid.x;
+    ra[1] = a->centroid.y;
+    rb[0] = b->centroid.x;
+    rb[1] = b->centroid.y;
+    return order_reals(ra, rb, 2);
+}
+
+/* A sharp 4-gon whose normals are exactly the local axes. */
+static bool is_axis_box(const sx_polygon *p) {
+    int i;
+    if (p->count != 4 || p->radius != SX_R(0.0)) return false;
+    for (i = 0; i < 4; ++i) {
+        sx_vec2 n = p->normals[i];
+        bool along_x = n.y == SX_R(0.0) && (n.x == SX_R(1.0) || n.x == SX_R(-1.0));
+        bool along_y = n.x == SX_R(0.0) && (n.y == SX_R(1.0) || n.y == SX_R(-1.0));
+        if (!along_x && !along_y) return false;
+    }
+    return true;
+}
+
+/* Fast path for two axis-aligned boxes whose relative rotation is a multiple
+ * of 90 degrees (to within one epsilon of a rotation component, i.e. below
+ * rounding): SAT over A's four faces against B's bounding interval, which is
+ * the same axis set the general SAT would find (B's faces are parallel to
+ * A's). Returns false when the pair does not qualify; *hit and *local then
+ * are untouched. */
+static bool box_fast_path(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
+                          bool *hit, sx_vec2 *local) {
+    sx_xform rel;
+    sx_vec2 lo, hi;
+    sx_real best = -SX_REAL_MAX;
+    int i, face = 0;
+    if (a == NULL || b == NULL || !is_axis_box(a) || !is_axis_box(b)) return false;
+    if (!relative_xform(xa, xb, &rel)) return false;
+    if (!(sx_absr(rel.q.s) <= SX_REAL_EPSILON || sx_absr(rel.q.c) <= SX_REAL_EPSILON)) return false;
+    lo = sx_v2(SX_REAL_MAX, SX_REAL_MAX);
+    hi = sx_v2(-SX_REAL_MAX, -SX_REAL_MAX);
+    for (i = 0; i < 4; ++i) {
+        sx_vec2 v = sx_xform_point(rel, b->vertices[i]);
+        if (!sx_vec2_is_finite(v) || !sx_vec2_is_finite(a->vertices[i])) return false;
+        lo = sx_vmin(lo, v);
+        hi = sx_vmax(hi, v);
+    }
+    for (i = 0; i < 4; ++i) {
+        sx_vec2 n = a->normals[i], v = a->vertices[i];
+        sx_real s;
+        if (n.x > SX_R(0.0)) {
+            s = lo.x - v.x;
+        } else if (n.x < SX_R(0.0)) {
+            s = v.x - hi.x;
+        } else if (n.y > SX_R(0.0)) {
+            s = lo.y - v.y;
+        } else {
+            s = v.y - hi.y;
+        }
+        if (s > SX_R(0.0)) {
+            *hit = false;
+            *local = sx_v2_zero();
+            return true;
+        }
+        if (s > best) {
+            best = s;
+            face = i;
+        }
+    }
+    *hit = true;
+    *local = sx_scale(a->normals[face], best);
+    return true;
+}
+
+static bool overlap_polygons_ordered(const sx_polygon *a, sx_xform xa, const sx_polygon *b,
+                                     sx_xform xb) {
+    bool hit;
+    sx_vec2 local;
+    if (box_fast_path(a, xa, b, xb, &hit, &local)) return hit;
+    return pair_overlap(build_polygon, a, xa, build_polygon, b, xb);
+}
+
+static bool mtv_polygons_ordered(const sx_polygon *a, sx_xform xa, const sx_polygon *b,
+                                 sx_xform xb, sx_vec2 *mtv) {
+    bool hit;
+    sx_vec2 local;
+    if (box_fast_path(a, xa, b, xb, &hit, &local)) return finish_mtv(hit, local, xa, mtv);
+    return pair_mtv(build_polygon, a, xa, build_polygon, b, xb, mtv);
+}
+
+bool sx_overlap_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb) {
+    if (order_polygons(a, xa, b, xb) > 0) return overlap_polygons_ordered(b, xb, a, xa);
+    return overlap_polygons_ordered(a, xa, b, xb);
+}
+bool sx_mtv_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
+                     sx_vec2 *mtv) {
+    sx_vec2 v;
+    bool hit;
+    if (order_polygons(a, xa, b, xb) > 0) {
+        hit = mtv_polygons_ordered(b, xb, a, xa, &v);
+        v = hit ? sx_neg(v) : sx_v2_zero();
+    } else {
+        hit = mtv_polygons_ordered(a, xa, b, xb, &v);
+    }
+    if (mtv) *mtv = v;
+    return hit;
+}
+int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
+                        sx_real margin, sx_manifold *out) {
+    bool overlap = !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_polygons(a, xa, b, xb);
+    return collide_gated(build_polygon, a, xa, b, xb, margin, overlap, out);
+}
+
+/* ---- the dispatch table ------------------------------------------------- */
+
+typedef bool sx_overlap_entry(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb);
+typedef bool sx_mtv_entry(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                          sx_vec2 *mtv);
+typedef int sx_collide_entry(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                             sx_real margin, sx_manifold *out);
+
+typedef struct sx_pair_entry {
+    sx_overlap_entry *overlap;
+    sx_mtv_entry *mtv;
+    sx_collide_entry *collide;
+} sx_pair_entry;
+
+/* Entries for the canonical order call the pair function directly; entries
+ * for the reverse order (suffix _rev) swap the arguments, negate the MTV and
+ * mirror the manifold. Written out by a generator macro per unordered pair so
+ * that the sixteen ordered entries cannot drift apart. */
+#define SX_PAIR_ENTRIES(NAME, MA, MB)                                                              \
+    static bool ov_##NAME(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {        \
+        return sx_overlap_##NAME(&a->u.MA, xa, &b->u.MB, xb);                                      \
+    }                                                                                              \
+    static bool mtv_##NAME(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,         \
+                           sx_vec2 *mtv) {                                                         \
+        return sx_mtv_##NAME(&a->u.MA, xa, &b->u.MB, xb, mtv);                                     \
+    }                                                                                              \
+    static int col_##NAME(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,          \
+                          sx_real margin, sx_manifold *out) {                                      \
+        return sx_collide_##NAME(&a->u.MA, xa, &b->u.MB, xb, margin, out);                         \
+    }                                                                                              \
+    static bool ov_##NAME##_rev(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {  \
+        return sx_overlap_##NAME(&b->u.MA, xb, &a->u.MB, xa);                                      \
+    }                                                                                              \
+    static bool mtv_##NAME##_rev(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,   \
+                                 sx_vec2 *mtv) {                                                   \
+        sx_vec2 v;                                                                                 \
+        bool hit = sx_mtv_##NAME(&b->u.MA, xb, &a->u.MB, xa, &v);                                  \
+        if (mtv) *mtv = hit ? sx_neg(v) : sx_v2_zero();                                            \
+        return hit;                                                                                \
+    }                                                                                              \
+    static int col_##NAME##_rev(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,    \
+                                sx_real margin, sx_manifold *out) {                                \
+        sx_manifold m;                                                                             \
+        sx_collide_##NAME(&b->u.MA, xb, &a->u.MB, xa, margin, &m);                                 \
+        mirror_manifold(&m);                                                                       \
+        *out = m;                                                                                  \
+        return m.count;                                                                            \
+    }
+
+SX_PAIR_ENTRIES(segment_circle, segment, circle)
+SX_PAIR_ENTRIES(capsule_circle, capsule, circle)
+SX_PAIR_ENTRIES(capsule_segment, capsule, segment)
+SX_PAIR_ENTRIES(polygon_circle, polygon, circle)
+SX_PAIR_ENTRIES(polygon_segment, polygon, segment)
+SX_PAIR_ENTRIES(polygon_capsule, polygon, capsule)
+
+#undef SX_PAIR_ENTRIES
+
+/* Same-type pairs: the pair functions order overlap and MTV themselves, and
+ * manifolds follow the caller's order. */
+static bool ov_circles(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
+    return sx_overlap_circles(&a->u.circle, xa, &b->u.circle, xb);
+}
+static bool mtv_circles(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                        sx_vec2 *mtv) {
+    return sx_mtv_circles(&a->u.circle, xa, &b->u.circle, xb, mtv);
+}
+static int col_circles(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                       sx_real margin, sx_manifold *out) {
+    return sx_collide_circles(&a->u.circle, xa, &b->u.circle, xb, margin, out);
+}
+static bool ov_segments(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
+    return sx_overlap_segments(&a->u.segment, xa, &b->u.segment, xb);
+}
+static bool mtv_segments(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                         sx_vec2 *mtv) {
+    return sx_mtv_segments(&a->u.segment, xa, &b->u.segment, xb, mtv);
+}
+static int col_segments(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                        sx_real margin, sx_manifold *out) {
+    return sx_collide_segments(&a->u.segment, xa, &b->u.segment, xb, margin, out);
+}
+static bool ov_capsules(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
+    return sx_overlap_capsules(&a->u.capsule, xa, &b->u.capsule, xb);
+}
+static bool mtv_capsules(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                         sx_vec2 *mtv) {
+    return sx_mtv_capsules(&a->u.capsule, xa, &b->u.capsule, xb, mtv);
+}
+static int col_capsules(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                        sx_real margin, sx_manifold *out) {
+    return sx_collide_capsules(&a->u.capsule, xa, &b->u.capsule, xb, margin, out);
+}
+static bool ov_polygons(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
+    return sx_overlap_polygons(&a->u.polygon, xa, &b->u.polygon, xb);
+}
+static bool mtv_polygons(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                         sx_vec2 *mtv) {
+    return sx_mtv_polygons(&a->u.polygon, xa, &b->u.polygon, xb, mtv);
+}
+static int col_polygons(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                        sx_real margin, sx_manifold *out) {
+    return sx_collide_polygons(&a->u.polygon, xa, &b->u.polygon, xb, margin, out);
+}
+
+static const sx_pair_entry sx_pair_table[SX_SHAPE_TYPE_COUNT][SX_SHAPE_TYPE_COUNT] = {
+    /* A = circle */
+    {{ov_circles, mtv_circles, col_circles},
+     {ov_segment_circle_rev, mtv_segment_circle_rev, col_segment_circle_rev},
+     {ov_capsule_circle_rev, mtv_capsule_circle_rev, col_capsule_circle_rev},
+     {ov_polygon_circle_rev, mtv_polygon_circle_rev, col_polygon_circle_rev}},
+    /* A = segment */
+    {{ov_segment_circle, mtv_segment_circle, col_segment_circle},
+     {ov_segments, mtv_segments, col_segments},
+     {ov_capsule_segment_rev, mtv_capsule_segment_rev, col_capsule_segment_rev},
+     {ov_polygon_segment_rev, mtv_polygon_segment_rev, col_polygon_segment_rev}},
+    /* A = capsule */
+    {{ov_capsule_circle, mtv_capsule_circle, col_capsule_circle},
+     {ov_capsule_segment, mtv_capsule_segment, col_capsule_segment},
+     {ov_capsules, mtv_capsules, col_capsules},
+     {ov_polygon_capsule_rev, mtv_polygon_capsule_rev, col_polygon_capsule_rev}},
+    /* A = polygon */
+    {{ov_polygon_circle, mtv_polygon_circle, col_polygon_circle},
+     {ov_polygon_segment, mtv_polygon_segment, col_polygon_segment},
+     {ov_polygon_capsule, mtv_polygon_capsule, col_polygon_capsule},
+     {ov_polygons, mtv_polygons, col_polygons}},
+};
+
+static const sx_pair_entry *pair_entry(const sx_shape *a, const sx_shape *b) {
+    if (a == NULL || b == NULL) return NULL;
+    if ((unsigned)a->type >= (unsigned)SX_SHAPE_TYPE_COUNT ||
+        (unsigned)b->type >= (unsigned)SX_SHAPE_TYPE_COUNT) {
+        return NULL;
+    }
+    return &sx_pair_table[a->type][b->type];
+}
+
+/* ---- generic entry points ----------------------------------------------- */
+
+bool sx_overlap(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
+    const sx_pair_entry *e = pair_entry(a, b);
+    return e != NULL && e->overlap(a, xa, b, xb);
+}
+
+bool sx_mtv(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_vec2 *mtv) {
+    const sx_pair_entry *e = pair_entry(a, b);
+    if (e == NULL) {
+        if (mtv) *mtv = sx_v2_zero();
+        return false;
+    }
+    return e->mtv(a, xa, b, xb, mtv);
+}
+
+int sx_collide_ex(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_real margin,
+                  sx_manifold *out) {
+    const sx_pair_entry *e = pair_entry(a, b);
+    sx_manifold m;
+    int count;
+    if (e == NULL) {
+        clear_manifold(out);
+        return 0;
+    }
+    count = e->collide(a, xa, b, xb, margin, &m);
+    if (out) *out = m;
+    return count;
+}
+
+int sx_collide(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_manifold *out) {
+    return sx_collide_ex(a, xa, b, xb, SX_R(0.0), out);
+}

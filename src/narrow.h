@@ -1,0 +1,51 @@
+/* sepax — private interface of the narrowphase core (src/narrow_core.c),
+ * used by the pair functions and the dispatch table in src/collide.c.
+ *
+ * Every shape enters the narrowphase as a "core": a convex set of 1, 2 or
+ * n >= 3 points plus a rounding radius. A circle is one point, a segment two
+ * points with radius 0, a capsule two points with its radius, a polygon its
+ * vertices with its rounding radius. A 2-point core is a polygon with two
+ * faces, a->b (normal n) and b->a (normal -n), so one SAT, one distance and
+ * one clipping routine serve every pair. Both cores of a pair live in A's
+ * local frame. */
+#ifndef SEPAX_NARROW_H
+#define SEPAX_NARROW_H
+
+#include "core.h"
+
+/** A convex core plus radius, in some working frame. */
+typedef struct sx_core {
+    /** Points, CCW for count >= 3; count 2: a and b of the segment. */
+    sx_vec2 v[SX_MAX_POLYGON_VERTICES];
+    /** Outward unit normal of face i (v[i] -> v[(i+1) % count]); unused for
+     *  count 1. For count 2, n[1] = -n[0]. */
+    sx_vec2 n[SX_MAX_POLYGON_VERTICES];
+    sx_real radius;
+    /** 1 (point), 2 (segment) or 3..SX_MAX_POLYGON_VERTICES (polygon). */
+    int count;
+} sx_core;
+
+/* Core builders: place the shape by x into the working frame. Each returns
+ * false (and leaves *out unusable) for NULL, a negative or non-finite radius,
+ * a polygon count outside 3..SX_MAX_POLYGON_VERTICES or any non-finite value,
+ * before or after the transform. A zero-length segment or capsule becomes a
+ * 1-point core at its end point a. */
+bool sx_core_from_circle(const sx_circle *c, sx_xform x, sx_core *out);
+bool sx_core_from_segment(const sx_segment *s, sx_xform x, sx_core *out);
+bool sx_core_from_capsule(const sx_capsule *c, sx_xform x, sx_core *out);
+bool sx_core_from_polygon(const sx_polygon *p, sx_xform x, sx_core *out);
+
+/** True if the rounded cores overlap or touch. Same decisions as
+ *  sx_core_mtv, with early outs. */
+bool sx_core_overlap(const sx_core *a, const sx_core *b);
+
+/** True if the rounded cores overlap or touch; *mtv (in the working frame)
+ *  receives the shortest translation of a separating it from b. */
+bool sx_core_mtv(const sx_core *a, const sx_core *b, sx_vec2 *mtv);
+
+/** The contact manifold of a against b in the working frame (normal from a
+ *  to b), keeping points with depth >= -margin (margin >= 0). Returns the
+ *  point count and fills *out. */
+int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_manifold *out);
+
+#endif /* SEPAX_NARROW_H */

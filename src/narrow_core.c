@@ -1,0 +1,499 @@
+/* sepax — the narrowphase core: overlap, exact penetration (MTV) and contact
+ * manifolds of two rounded convex cores (see narrow.h) in one working frame.
+ *
+ * The idea: the Minkowski difference of two rounded cores is the difference
+ * of the cores grown by ra + rb. If the cores overlap, the penetration depth
+ * is the SAT minimum over the edge normals of both cores (those are the edge
+ * normals of the cores' Minkowski difference) plus ra + rb. If the cores are
+ * disjoint, the depth is ra + rb minus the core distance, along the
+ * closest-point direction; with convex cores the closest pair is always a
+ * vertex against an edge or a vertex, so a sweep over those pairs gives it
+ * exactly. Both answers are exact up to rounding, which is what the MTV
+ * promises. Two-point cores (segments) also get their direction as a "cap"
+ * axis in the disjointness test, because a zero-area core makes the edge
+ * normals alone an incomplete set (collinear segments, a point beyond the end
+ * of a segment). Manifolds clip the incident face against the side planes of
+ * the reference face (Sutherland-Hodgman), the reference face chosen by least
+ * penetration with hysteresis in favour of A's face; vertex-vertex contacts
+ * of disjoint rounded cores give one point on the closest-point line. */
+#include "narrow.h"
+
+/* B's face becomes the reference only when its separation beats A's by this
+ * much (Box2D's choice): two nearly equal faces then do not make the
+ * manifold flip from frame to frame. Part of the public contract. */
+#define SX_REFERENCE_HYSTERESIS (SX_R(0.1) * SX_LINEAR_SLOP)
+
+/* Disjoint rounded cores whose distance exceeds their best face separation
+ * by no more than this are treated as a face contact (clipped, up to two
+ * points) rather than a vertex contact. Aligned edges (a box resting exactly
+ * on another, end points over end points) have distance == face separation
+ * only up to rounding; 1 % of the slop keeps the depth error far below the
+ * slop while catching them. */
+#define SX_FACE_CONTACT_TOLERANCE (SX_R(0.01) * SX_LINEAR_SLOP)
+
+/* A difference of two points computed from coordinates of magnitude `scale`
+ * carries an error of a few ulps of scale; below 64 epsilon x scale its
+ * direction is noise, and also a point counts as touching within it. */
+#define SX_DIRECTION_EPSILON (SX_R(64.0) * SX_REAL_EPSILON)
+
+/* ---- core builders ------------------------------------------------------ */
+
+static bool core_radius_ok(sx_real r) { return sx_is_finite(r) && r >= SX_R(0.0); }
+
+bool sx_core_from_circle(const sx_circle *c, sx_xform x, sx_core *out) {
+    if (c == NULL || !core_radius_ok(c->radius) || !sx_vec2_is_finite(c->center)) return false;
+    out->v[0] = sx_xform_point(x, c->center);
+    out->radius = c->radius;
+    out->count = 1;
+    return sx_vec2_is_finite(out->v[0]);
+}
+
+/* Builds the 2-point core a-b (or a 1-point core when a-b has no direction).
+ * The normal is taken in the shape's frame and rotated, like polygon normals,
+ * so it does not depend on the translation. */
+static bool core_set_segment(sx_vec2 a, sx_vec2 b, sx_real radius, sx_xform x, sx_core *out) {
+    sx_real len;
+    sx_vec2 t;
+    if (!sx_vec2_is_finite(a) || !sx_vec2_is_finite(b)) return false;
+    t = sx_normalize_len(sx_sub(b, a), &len);
+    out->radius = radius;
+    out->v[0] = sx_xform_point(x, a);
+    if (!sx_vec2_is_finite(out->v[0])) return false;
+    if (len == SX_R(0.0)) {
+        out->count = 1;
+        return true;
+    }
+    out->v[1] = sx_xform_point(x, b);
+    out->n[0] = sx_rotate(x.q, sx_v2(t.y, -t.x));
+    out->n[1] = sx_neg(out->n[0]);
+    out->count = 2;
+    return sx_vec2_is_finite(out->v[1]) && sx_vec2_is_finite(out->n[0]);
+}
+
+bool sx_core_from_segment(const sx_segment *s, sx_xform x, sx_core *out) {
+    if (s == NULL) return false;
+    return core_set_segment(s->a, s->b, SX_R(0.0), x, out);
+}
+
+bool sx_core_from_capsule(const sx_capsule *c, sx_xform x, sx_core *out) {
+    if (c == NULL || !core_radius_ok(c->radius)) return false;
+    return core_set_segment(c->a, c->b, c->radius, x, out);
+}
+
+bool sx_core_from_polygon(const sx_polygon *p, sx_xform x, sx_core *out) {
+    int i;
+    if (p == NULL || !core_radius_ok(p->radius)) return false;
+    if (p->count < 3 || p->count > SX_MAX_POLYGON_VERTICES) return false;
+    for (i = 0; i < p->count; ++i) {
+        out->v[i] = sx_xform_point(x, p->vertices[i]);
+        out->n[i] = sx_rotate(x.q, p->normals[i]);
+        if (!sx_vec2_is_finite(p->vertices[i]) || !sx_vec2_is_finite(p->normals[i]) ||
+            !sx_vec2_is_finite(out->v[i]) || !sx_vec2_is_finite(out->n[i])) {
+            return false;
+        }
+    }
+    out->radius = p->radius;
+    out->count = p->count;
+    return true;
+}
+
+/* ---- separating axes ---------------------------------------------------- */
+
+static int face_count(const sx_core *c) { return c->count >= 2 ? c->count : 0; }
+
+static int next_index(const sx_core *c, int i) { return i + 1 < c->count ? i + 1 : 0; }
+
+/* Separation of q from face i of p: how far q's nearest point lies in front
+ * of the face's line (negative: q reaches behind it). */
+static sx_real face_separation(const sx_core *p, int i, const sx_core *q) {
+    sx_vec2 n = p->n[i], v = p->v[i];
+    sx_real best = SX_REAL_MAX;
+    int j;
+    for (j = 0; j < q->count; ++j) {
+        sx_real s = sx_dot(n, sx_sub(q->v[j], v));
+        if (s < best) best = s;
+    }
+    return best;
+}
+
+/* Separation of q from the end caps of the 2-point core p, along p's
+ * direction t (out of b) and -t (out of a); *axis gets the better one. */
+static sx_real cap_separation(const sx_core *p, const sx_core *q, sx_vec2 *axis) {
+    sx_vec2 t = sx_perp(p->n[0]);
+    sx_real beyond_b = SX_REAL_MAX, beyond_a = SX_REAL_MAX;
+    int j;
+    for (j = 0; j < q->count; ++j) {
+        sx_real sb = sx_dot(t, sx_sub(q->v[j], p->v[1]));
+        sx_real sa = sx_dot(t, sx_sub(p->v[0], q->v[j]));
+        if (sb < beyond_b) beyond_b = sb;
+        if (sa < beyond_a) beyond_a = sa;
+    }
+    if (beyond_b >= beyond_a) {
+        *axis = t;
+        return beyond_b;
+    }
+    *axis = sx_neg(t);
+    return beyond_a;
+}
+
+typedef struct sx_sat {
+    sx_real sep_a, sep_b; /* best separation over A's / B's faces (-max: none) */
+    int face_a, face_b;   /* their faces (-1: none) */
+    sx_real sep;          /* best over every axis, caps included */
+    sx_vec2 axis;         /* unit axis of sep, from A towards B */
+    bool has_axes;
+} sx_sat;
+
+/* Runs SAT over the faces of both cores (and the caps when both have zero
+ * area). Returns false as soon as an axis separates by more than `limit`
+ * (the cores then lie farther apart than limit). */
+static bool sat_run(const sx_core *a, const sx_core *b, sx_real limit, sx_sat *out) {
+    int i, na = face_count(a), nb = face_count(b);
+    out->sep_a = -SX_REAL_MAX;
+    out->sep_b = -SX_REAL_MAX;
+    out->face_a = -1;
+    out->face_b = -1;
+    for (i = 0; i < na; ++i) {
+        sx_real s = face_separation(a, i, b);
+        if (s > limit) return false;
+        if (s > out->sep_a) {
+            out->sep_a = s;
+            out->face_a = i;
+        }
+    }
+    for (i = 0; i < nb; ++i) {
+        sx_real s = face_separation(b, i, a);
+        if (s > limit) return false;
+        if (s > out->sep_b) {
+            out->sep_b = s;
+            out->face_b = i;
+        }
+    }
+    out->has_axes = na + nb > 0;
+    out->axis = sx_v2_zero();
+    if (out->face_a >= 0 && out->sep_a >= out->sep_b) {
+        out->sep = out->sep_a;
+        out->axis = a->n[out->face_a];
+    } else if (out->face_b >= 0) {
+        out->sep = out->sep_b;
+        out->axis = sx_neg(b->n[out->face_b]);
+    } else {
+        out->sep = -SX_REAL_MAX;
+    }
+    if (out->has_axes && a->count <= 2 && b->count <= 2) {
+        sx_vec2 axis;
+        sx_real s;
+        if (a->count == 2) {
+            s = cap_separation(a, b, &axis);
+            if (s > limit) return false;
+            if (s > out->sep) {
+                out->sep = s;
+                out->axis = axis;
+            }
+        }
+        if (b->count == 2) {
+            s = cap_separation(b, a, &axis);
+            if (s > limit) return false;
+            if (s > out->sep) {
+                out->sep = s;
+                out->axis = sx_neg(axis);
+            }
+        }
+    }
+    return true;
+}
+
+/* ---- closest features of disjoint cores --------------------------------- */
+
+enum { SX_CLOSEST_VERTICES, SX_CLOSEST_FACE_A, SX_CLOSEST_FACE_B };
+
+typedef struct sx_closest {
+    sx_real distance; /* core distance */
+    sx_real dist_sq;  /* its square, the sweep's comparison key */
+    sx_vec2 pa, pb;   /* closest points on the cores */
+    sx_vec2 normal;   /* unit, A towards B; zero when it has no direction */
+    int kind;         /* SX_CLOSEST_* */
+    int ia, ib;       /* vertex indices (VERTICES), or the face index */
+} sx_closest;
+
+/* Offers the pair (vertex q of one core, edge i of core p) to the sweep.
+ * p_is_a says which core owns the edge. */
+static void offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index, bool p_is_a,
+                       sx_closest *best) {
+    int i2 = next_index(p, i);
+    sx_vec2 v1 = p->v[i], e = sx_sub(p->v[i2], v1), w = sx_sub(q, v1);
+    sx_real t = sx_dot(w, e);
+    sx_vec2 on_p, n;
+    sx_real dsq, s;
+    int face = i, vertex = -1;
+    if (t <= SX_R(0.0)) {
+        vertex = i;
+    } else if (t >= sx_dot(e, e)) {
+        vertex = i2;
+    }
+    if (vertex >= 0) {
+        on_p = p->v[vertex];
+        dsq = sx_distance_sq(on_p, q);
+        if (!(dsq < best->dist_sq)) return;
+        best->dist_sq = dsq;
+        best->distance = sx_sqrt(dsq);
+        best->kind = SX_CLOSEST_VERTICES;
+        best->ia = p_is_a ? vertex : q_index;
+        best->ib = p_is_a ? q_index : vertex;
+        best->pa = p_is_a ? on_p : q;
+        best->pb = p_is_a ? q : on_p;
+        best->normal = sx_v2_zero();
+        return;
+    }
+    n = p->n[i];
+    s = sx_dot(w, n);
+    if (p->count == 2 && s < SX_R(0.0)) {
+        n = p->n[1];
+        s = -s;
+        face = 1;
+    }
+    dsq = s * s;
+    if (!(dsq < best->dist_sq)) return;
+    on_p = sx_mul_sub(q, s, n);
+    best->dist_sq = dsq;
+    best->distance = sx_absr(s);
+    best->kind = p_is_a ? SX_CLOSEST_FACE_A : SX_CLOSEST_FACE_B;
+    best->ia = p_is_a ? face : q_index;
+    best->ib = p_is_a ? q_index : face;
+    best->pa = p_is_a ? on_p : q;
+    best->pb = p_is_a ? q : on_p;
+    best->normal = p_is_a ? n : sx_neg(n);
+}
+
+static sx_real max_abs_coord(sx_vec2 a, sx_vec2 b) {
+    return sx_maxr(sx_maxr(sx_absr(a.x), sx_absr(a.y)), sx_maxr(sx_absr(b.x), sx_absr(b.y)));
+}
+
+/* Distance and closest features of two disjoint cores: every vertex of one
+ * against every edge of the other (A's edges first, so ties keep A's face). */
+static void closest_features(const sx_core *a, const sx_core *b, sx_closest *out) {
+    int ea = a->count >= 3 ? a->count : a->count - 1;
+    int eb = b->count >= 3 ? b->count : b->count - 1;
+    int i, j;
+    out->dist_sq = SX_REAL_MAX;
+    out->distance = SX_REAL_MAX;
+    out->kind = SX_CLOSEST_VERTICES;
+    out->ia = 0;
+    out->ib = 0;
+    out->pa = a->v[0];
+    out->pb = b->v[0];
+    out->normal = sx_v2_zero();
+    for (i = 0; i < ea; ++i) {
+        for (j = 0; j < b->count; ++j) offer_edge(a, i, b->v[j], j, true, out);
+    }
+    for (i = 0; i < eb; ++i) {
+        for (j = 0; j < a->count; ++j) offer_edge(b, i, a->v[j], j, false, out);
+    }
+    if (ea == 0 && eb == 0) {
+        out->dist_sq = sx_distance_sq(a->v[0], b->v[0]);
+        out->distance = sx_sqrt(out->dist_sq);
+    }
+    if (out->kind == SX_CLOSEST_VERTICES &&
+        out->distance > SX_DIRECTION_EPSILON * max_abs_coord(out->pa, out->pb)) {
+        out->normal = sx_scale(sx_sub(out->pb, out->pa), SX_R(1.0) / out->distance);
+    }
+}
+
+/* The direction of a contact whose closest points coincide: the best SAT
+ * axis, or A's local +x when there is none (two coincident points). */
+static sx_vec2 fallback_normal(const sx_sat *sat) {
+    if (sat->has_axes) return sat->axis;
+    return sx_v2(SX_R(1.0), SX_R(0.0));
+}
+
+/* ---- overlap and MTV ---------------------------------------------------- */
+
+bool sx_core_overlap(const sx_core *a, const sx_core *b) {
+    sx_real r = a->radius + b->radius;
+    sx_sat sat;
+    sx_closest cl;
+    if (!sat_run(a, b, r, &sat)) return false;
+    if (sat.has_axes && sat.sep <= SX_R(0.0)) return true;
+    closest_features(a, b, &cl);
+    return cl.distance <= r;
+}
+
+bool sx_core_mtv(const sx_core *a, const sx_core *b, sx_vec2 *mtv) {
+    sx_real r = a->radius + b->radius;
+    sx_sat sat;
+    sx_closest cl;
+    sx_vec2 n;
+    *mtv = sx_v2_zero();
+    if (!sat_run(a, b, r, &sat)) return false;
+    if (sat.has_axes && sat.sep <= SX_R(0.0)) {
+        /* The cores overlap: least penetration over the faces of both. */
+        sx_real depth;
+        if (sat.face_a >= 0 && sat.sep_a >= sat.sep_b) {
+            depth = r - sat.sep_a;
+            n = a->n[sat.face_a];
+        } else {
+            depth = r - sat.sep_b;
+            n = sx_neg(b->n[sat.face_b]);
+        }
+        *mtv = sx_scale(n, -depth);
+        return true;
+    }
+    closest_features(a, b, &cl);
+    if (!(cl.distance <= r)) return false;
+    n = cl.normal;
+    if (n.x == SX_R(0.0) && n.y == SX_R(0.0)) n = fallback_normal(&sat);
+    *mtv = sx_scale(n, cl.distance - r);
+    return true;
+}
+
+/* ---- manifolds ---------------------------------------------------------- */
+
+/* Clips the incident feature of `inc` against face i of `ref` and writes the
+ * contact points (working frame). flip: ref is B. Points deeper than -margin
+ * (less a rounding allowance) are kept; if none is, the deepest one is, so an
+ * overlapping pair always reports a contact. */
+static int clip_face(const sx_core *ref, int i, const sx_core *inc, sx_real margin, bool flip,
+                     sx_manifold_point out[2]) {
+    sx_vec2 nref = ref->n[i];
+    sx_vec2 v1 = ref->v[i], v2 = ref->v[next_index(ref, i)];
+    sx_vec2 t = sx_perp(nref);
+    sx_vec2 w[2];
+    int k[2], nw, j, m, count = 0, deepest = 0;
+    sx_real depth[2], sc[2], scale, slack;
+    if (inc->count == 1) {
+        w[0] = inc->v[0];
+        k[0] = 0;
+        nw = 1;
+    } else {
+        /* The incident face is the one most anti-parallel to the reference
+         * normal; its end points are clipped to the reference face's slab. */
+        sx_real lo = SX_REAL_MAX, lower, upper, d0, d1;
+        int f = 0;
+        for (j = 0; j < inc->count; ++j) {
+            sx_real d = sx_dot(inc->n[j], nref);
+            if (d < lo) {
+                lo = d;
+                f = j;
+            }
+        }
+        k[0] = f;
+        k[1] = next_index(inc, f);
+        w[0] = inc->v[k[0]];
+        w[1] = inc->v[k[1]];
+        nw = 2;
+        lower = sx_dot(t, v1);
+        upper = sx_dot(t, v2);
+        d0 = sx_dot(t, w[0]) - lower;
+        d1 = sx_dot(t, w[1]) - lower;
+        if (d0 < SX_R(0.0) && d1 < SX_R(0.0)) {
+            nw = 0;
+        } else if (d0 < SX_R(0.0)) {
+            w[0] = sx_lerp(w[0], w[1], d0 / (d0 - d1));
+        } else if (d1 < SX_R(0.0)) {
+            w[1] = sx_lerp(w[1], w[0], d1 / (d1 - d0));
+        }
+        if (nw == 2) {
+            d0 = upper - sx_dot(t, w[0]);
+            d1 = upper - sx_dot(t, w[1]);
+            if (d0 < SX_R(0.0) && d1 < SX_R(0.0)) {
+                nw = 0;
+            } else if (d0 < SX_R(0.0)) {
+                w[0] = sx_lerp(w[0], w[1], d0 / (d0 - d1));
+            } else if (d1 < SX_R(0.0)) {
+                w[1] = sx_lerp(w[1], w[0], d1 / (d1 - d0));
+            }
+        }
+        if (nw == 0) {
+            /* The incident face misses the slab entirely (a corner against a
+             * short face): keep its end point nearest the reference face. */
+            sx_real s0 = sx_dot(nref, sx_sub(inc->v[k[0]], v1));
+            sx_real s1 = sx_dot(nref, sx_sub(inc->v[k[1]], v1));
+            nw = 1;
+            if (s1 < s0) {
+                k[0] = k[1];
+            }
+            w[0] = inc->v[k[0]];
+        }
+    }
+    scale = max_abs_coord(v1, v2);
+    for (j = 0; j < nw; ++j) {
+        sc[j] = sx_dot(nref, sx_sub(w[j], v1));
+        depth[j] = ref->radius + inc->radius - sc[j];
+        scale = sx_maxr(scale, max_abs_coord(w[j], w[j]));
+        if (depth[j] > depth[deepest]) deepest = j;
+    }
+    if (nw == 2) {
+        /* The deepest incident vertex can lie outside the reference face's
+         * slab (a corner reaching past the end of a short face, a capsule
+         * end beyond the other's end): clipping then slides it along a steep
+         * incident face and loses depth. Keep that vertex unclipped so the
+         * deepest point still carries the exact penetration. */
+        for (j = 0; j < 2; ++j) {
+            sx_vec2 o = inc->v[k[j]];
+            sx_real so = sx_dot(nref, sx_sub(o, v1));
+            sx_real od = ref->radius + inc->radius - so;
+            if (od > depth[deepest] + SX_FACE_CONTACT_TOLERANCE) {
+                w[j] = o;
+                sc[j] = so;
+                depth[j] = od;
+                deepest = j;
+            }
+        }
+    }
+    scale = sx_maxr(scale, ref->radius + inc->radius);
+    slack = SX_DIRECTION_EPSILON * scale;
+    for (m = 0; m < 2; ++m) {
+        for (j = 0; j < nw; ++j) {
+            bool keep = m == 0 ? depth[j] >= -margin - slack : j == deepest;
+            if (!keep) continue;
+            out[count].point = sx_mul_add(w[j], SX_R(0.5) * (ref->radius - inc->radius - sc[j]), nref);
+            out[count].depth = sx_maxr(depth[j], -margin);
+            out[count].id = SX_FEATURE_ID(i, k[j], flip);
+            ++count;
+        }
+        if (count > 0) break;
+    }
+    return count;
+}
+
+int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_manifold *out) {
+    sx_real r = a->radius + b->radius;
+    sx_real limit = r + margin;
+    sx_sat sat;
+    sx_closest cl;
+    bool face_contact;
+    out->count = 0;
+    out->normal = sx_v2_zero();
+    if (!sat_run(a, b, limit, &sat)) return 0;
+    if (sat.has_axes && sat.sep <= SX_R(0.0)) {
+        face_contact = true;
+    } else {
+        closest_features(a, b, &cl);
+        if (!(cl.distance <= limit)) return 0;
+        face_contact = (sat.face_a >= 0 || sat.face_b >= 0) &&
+                       (cl.kind != SX_CLOSEST_VERTICES ||
+                        cl.distance <= sx_maxr(sat.sep_a, sat.sep_b) + SX_FACE_CONTACT_TOLERANCE);
+        if (!face_contact) {
+            /* Rounded corner against rounded corner: one point on the line
+             * between the closest core points, midway between the surfaces. */
+            sx_vec2 n = cl.normal;
+            if (n.x == SX_R(0.0) && n.y == SX_R(0.0)) n = fallback_normal(&sat);
+            out->normal = n;
+            out->points[0].point = sx_mul_add(sx_lerp(cl.pa, cl.pb, SX_R(0.5)),
+                                              SX_R(0.5) * (a->radius - b->radius), n);
+            out->points[0].depth = sx_maxr(r - cl.distance, -margin);
+            out->points[0].id = SX_FEATURE_ID(cl.ia, cl.ib, 0);
+            out->count = 1;
+            return 1;
+        }
+    }
+    if (sat.face_b >= 0 &&
+        (sat.face_a < 0 || sat.sep_b > sat.sep_a + SX_REFERENCE_HYSTERESIS)) {
+        out->count = clip_face(b, sat.face_b, a, margin, true, out->points);
+        out->normal = sx_neg(b->n[sat.face_b]);
+    } else {
+        out->count = clip_face(a, sat.face_a, b, margin, false, out->points);
+        out->normal = a->n[sat.face_a];
+    }
+    return out->count;
+}

@@ -1,0 +1,760 @@
+/* sepax tests — the narrowphase: overlap, MTV and manifolds for every pair of
+ * shape types, in both argument orders, on configurations whose answers are
+ * known analytically (separated, touching, shallow, deep, contained,
+ * identical, rotated, vertex and edge contacts), plus the contract's edge
+ * cases: exact negation of the MTV under swapped arguments, the box fast path
+ * agreeing with the general SAT, translation invariance far from the origin,
+ * degenerate shapes, non-finite input, and stable feature ids. */
+#include <string.h>
+
+#include "test_support.h"
+
+#ifdef SX_DOUBLE
+#define TOL 1e-9
+#else
+#define TOL 2e-5
+#endif
+
+/* The manifold's deepest point may exceed the MTV by the reference-face
+ * hysteresis (collide.h). */
+/* pi in double: angles are passed to X() as doubles. */
+#define PI 3.14159265358979323846
+
+#define HYSTERESIS (0.1 * (double)SX_LINEAR_SLOP)
+
+static sx_vec2 V(double x, double y) { return sx_v2((sx_real)x, (sx_real)y); }
+static sx_xform X(double x, double y, double angle) {
+    return sx_xform_make(V(x, y), (sx_real)angle);
+}
+static sx_xform I(void) { return sx_xform_identity(); }
+
+static sx_shape circle(double x, double y, double r) { return sx_circle_shape(V(x, y), (sx_real)r); }
+static sx_shape segment(double ax, double ay, double bx, double by) {
+    return sx_segment_shape(V(ax, ay), V(bx, by));
+}
+static sx_shape capsule(double ax, double ay, double bx, double by, double r) {
+    return sx_capsule_shape(V(ax, ay), V(bx, by), (sx_real)r);
+}
+static sx_shape box(double hw, double hh) { return sx_box_shape((sx_real)hw, (sx_real)hh); }
+static sx_shape hull_shape(const double *xy, int n, double radius) {
+    sx_hull h;
+    sx_shape s;
+    int i;
+    h.count = n;
+    for (i = 0; i < n; ++i) h.points[i] = V(xy[2 * i], xy[2 * i + 1]);
+    assert_int_equal(sx_polygon_from_hull(&h, (sx_real)radius, &s), SX_OK);
+    return s;
+}
+static sx_shape rounded_box(double hw, double hh, double radius) {
+    double xy[8];
+    xy[0] = -hw;
+    xy[1] = -hh;
+    xy[2] = hw;
+    xy[3] = -hh;
+    xy[4] = hw;
+    xy[5] = hh;
+    xy[6] = -hw;
+    xy[7] = hh;
+    return hull_shape(xy, 4, radius);
+}
+
+static double deepest(const sx_manifold *m) {
+    double d = -1e30;
+    int i;
+    for (i = 0; i < m->count; ++i) {
+        if ((double)m->points[i].depth > d) d = (double)m->points[i].depth;
+    }
+    return d;
+}
+
+/* Checks one configuration in both argument orders through the generic entry
+ * points: overlap, MTV (value, and exact negation when swapped), and the
+ * manifold (count, unit normal opposite to the MTV, deepest depth equal to
+ * the MTV length, depths >= 0, normals opposite when swapped). */
+static void check_pair(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                       bool overlap, sx_vec2 mtv, double tol) {
+    sx_vec2 m1, m2;
+    sx_manifold c1, c2;
+    int n1, n2, i;
+    double len;
+    assert_int_equal(sx_overlap(a, xa, b, xb), overlap);
+    assert_int_equal(sx_overlap(b, xb, a, xa), overlap);
+    assert_int_equal(sx_mtv(a, xa, b, xb, &m1), overlap);
+    assert_int_equal(sx_mtv(b, xb, a, xa, &m2), overlap);
+    assert_vec2_near(m1, mtv, tol);
+    assert_true(m2.x == -m1.x && m2.y == -m1.y);
+    n1 = sx_collide(a, xa, b, xb, &c1);
+    n2 = sx_collide(b, xb, a, xa, &c2);
+    assert_int_equal(n1, c1.count);
+    assert_int_equal(n2, c2.count);
+    if (!overlap) {
+        assert_int_equal(n1, 0);
+        assert_int_equal(n2, 0);
+        return;
+    }
+    assert_in_range(n1, 1, 2);
+    assert_in_range(n2, 1, 2);
+    assert_near(sx_length(c1.normal), 1.0, tol);
+    /* Mixed pairs mirror one computation exactly; same-type manifolds follow
+     * the caller's order, and near-equal faces (hysteresis) or a zero-area
+     * contact may then pick another face. */
+    if (a->type != b->type) {
+        assert_true(c2.normal.x == -c1.normal.x && c2.normal.y == -c1.normal.y);
+    }
+    len = (double)sx_length(m1);
+    assert_true(deepest(&c1) >= len - tol && deepest(&c1) <= len + tol + HYSTERESIS);
+    assert_true(deepest(&c2) >= len - tol && deepest(&c2) <= len + tol + HYSTERESIS);
+    /* The normal opposes the MTV. Same-type pairs are left out: their MTV
+     * comes from the canonical order and their manifold from the caller's,
+     * which may pick the other of two tied faces (the depth still agrees,
+     * checked above); the cases below check those normals explicitly. */
+    if (len > 10 * tol && a->type != b->type) {
+        assert_vec2_near(c1.normal, sx_scale(m1, (sx_real)(-1.0 / len)), 10 * tol);
+    }
+    for (i = 0; i < n1; ++i) {
+        assert_true(c1.points[i].depth >= SX_R(0.0));
+        assert_true(sx_vec2_is_finite(c1.points[i].point));
+    }
+    for (i = 0; i < n2; ++i) assert_true(c2.points[i].depth >= SX_R(0.0));
+}
+
+/* Asserts the manifold holds exactly the given points (either order). */
+static void expect_points(const sx_manifold *m, int count, sx_vec2 p0, sx_vec2 p1, double tol) {
+    assert_int_equal(m->count, count);
+    if (count == 1) {
+        assert_vec2_near(m->points[0].point, p0, tol);
+    } else if (sx_distance(m->points[0].point, p0) <= (sx_real)tol) {
+        assert_vec2_near(m->points[1].point, p1, tol);
+    } else {
+        assert_vec2_near(m->points[0].point, p1, tol);
+        assert_vec2_near(m->points[1].point, p0, tol);
+    }
+}
+
+/* ---- circle - circle ---------------------------------------------------- */
+
+static void circles_separated_touching_and_overlapping(void **state) {
+    sx_shape a = circle(0, 0, 1), b = circle(0, 0, 1);
+    sx_manifold m;
+    (void)state;
+    check_pair(&a, I(), &b, X(3, 0, 0), false, V(0, 0), TOL);
+    check_pair(&a, I(), &b, X(2, 0, 0), true, V(0, 0), TOL);
+    check_pair(&a, I(), &b, X(1.5, 0, 0), true, V(-0.5, 0), TOL);
+    check_pair(&a, I(), &b, X(0, -1.2, 0.3), true, V(0, 0.8), TOL);
+    assert_int_equal(sx_collide(&a, I(), &b, X(1.5, 0, 0), &m), 1);
+    assert_vec2_near(m.normal, V(1, 0), TOL);
+    assert_vec2_near(m.points[0].point, V(0.75, 0), TOL);
+    assert_near(m.points[0].depth, 0.5, TOL);
+    assert_int_equal(sx_collide(&a, I(), &b, X(2, 0, 0), &m), 1);
+    assert_near(m.points[0].depth, 0.0, TOL);
+    assert_vec2_near(m.points[0].point, V(1, 0), TOL);
+}
+
+static void circles_with_offset_centres_use_the_local_centres(void **state) {
+    sx_shape a = circle(1, 0, 0.5), b = circle(0, 1, 0.5);
+    (void)state;
+    /* A's centre at (1, 0); B's local (0, 1) turned 90 degrees is (-1, 0),
+     * so B placed at x has its centre at x - 1. */
+    check_pair(&a, I(), &b, X(1.0, 0, PI / 2), true, V(0, 0), 1e-4);
+    check_pair(&a, I(), &b, X(1.2, 0, PI / 2), true, V(0.2, 0), 1e-4);
+}
+
+static void concentric_circles_push_by_the_sum_of_radii(void **state) {
+    sx_shape a = circle(0, 0, 1), b = circle(0, 0, 0.5);
+    sx_vec2 mtv;
+    (void)state;
+    /* No direction exists: the first circle of the canonical order pushes
+     * along its local x axis, so the answer is +-x here. */
+    assert_true(sx_mtv(&a, I(), &b, I(), &mtv));
+    assert_near(sx_absr(mtv.x), 1.5, TOL);
+    assert_near(mtv.y, 0.0, TOL);
+    check_pair(&a, I(), &b, I(), true, mtv, TOL);
+    assert_true(sx_mtv(&a, X(4, 4, PI / 2), &b, X(4, 4, 0), &mtv));
+    assert_near(sx_length(mtv), 1.5, TOL);
+    check_pair(&a, X(4, 4, PI / 2), &b, X(4, 4, 0), true, mtv, TOL);
+}
+
+static void point_inside_circle_is_pushed_out_radially(void **state) {
+    sx_shape p = sx_point_shape(V(0, 0)), c = circle(0, 0, 1);
+    (void)state;
+    check_pair(&p, X(0.5, 0, 0), &c, I(), true, V(0.5, 0), TOL);
+    check_pair(&p, X(0, 1, 0), &c, I(), true, V(0, 0), TOL);
+    check_pair(&p, X(0, 1.01, 0), &c, I(), false, V(0, 0), TOL);
+}
+
+/* ---- segment - circle --------------------------------------------------- */
+
+static void segment_circle_face_end_and_separated(void **state) {
+    sx_shape s = segment(-1, 0, 1, 0), c = circle(0, 0, 0.5);
+    sx_manifold m;
+    (void)state;
+    check_pair(&s, I(), &c, X(0, 2, 0), false, V(0, 0), TOL);
+    check_pair(&s, I(), &c, X(0, 0.5, 0), true, V(0, 0), TOL);
+    check_pair(&s, I(), &c, X(0, 0.3, 0), true, V(0, -0.2), TOL);
+    check_pair(&s, I(), &c, X(0.2, -0.4, 0), true, V(0, 0.1), TOL);
+    check_pair(&s, I(), &c, X(1.3, 0, 0), true, V(-0.2, 0), TOL);
+    check_pair(&s, I(), &c, X(-1.3, 0.4, 0), true, V(0, 0), TOL);
+    check_pair(&s, I(), &c, X(-1.3, 0.41, 0), false, V(0, 0), TOL);
+    assert_int_equal(sx_collide(&s, I(), &c, X(0, 0.3, 0), &m), 1);
+    assert_vec2_near(m.normal, V(0, 1), TOL);
+    assert_vec2_near(m.points[0].point, V(0, -0.1), TOL);
+}
+
+static void circle_centred_on_segment_is_pushed_by_full_radius(void **state) {
+    sx_shape s = segment(-1, 0, 1, 0), c = circle(0, 0, 0.5);
+    sx_vec2 mtv;
+    (void)state;
+    assert_true(sx_mtv(&s, I(), &c, I(), &mtv));
+    assert_near(sx_length(mtv), 0.5, TOL);
+    assert_near(mtv.x, 0.0, TOL);
+    check_pair(&s, I(), &c, I(), true, mtv, TOL);
+}
+
+static void zero_length_segment_acts_as_a_point(void **state) {
+    sx_shape s = segment(0.5, 0, 0.5, 0), c = circle(0, 0, 1);
+    (void)state;
+    check_pair(&s, I(), &c, I(), true, V(0.5, 0), TOL);
+    check_pair(&s, X(1, 0, 0), &c, I(), false, V(0, 0), TOL);
+    check_pair(&s, X(0.5, 0, 0), &c, I(), true, V(0, 0), TOL);
+}
+
+/* ---- segment - segment -------------------------------------------------- */
+
+static void crossing_segments_overlap_by_the_shorter_push(void **state) {
+    sx_shape a = segment(-1, 0, 1, 0), b = segment(0.2, -0.3, 0.2, 1);
+    (void)state;
+    check_pair(&a, I(), &b, I(), true, V(0, -0.3), TOL);
+    check_pair(&a, I(), &b, X(5, 5, 0), false, V(0, 0), TOL);
+}
+
+static void parallel_and_collinear_segments(void **state) {
+    sx_shape a = segment(-1, 0, 1, 0);
+    sx_shape above = segment(-1, 0.5, 1, 0.5);
+    sx_shape beyond = segment(2, 0, 3, 0);
+    sx_shape sharing = segment(0.5, 0, 2, 0);
+    sx_shape end_to_end = segment(1, 0, 2, 0);
+    sx_shape tee = segment(0, 0, 0, 1);
+    (void)state;
+    check_pair(&a, I(), &above, I(), false, V(0, 0), TOL);
+    check_pair(&a, I(), &beyond, I(), false, V(0, 0), TOL);
+    check_pair(&a, I(), &sharing, I(), true, V(0, 0), TOL);
+    check_pair(&a, I(), &end_to_end, I(), true, V(0, 0), TOL);
+    check_pair(&a, I(), &tee, I(), true, V(0, 0), TOL);
+}
+
+static void near_parallel_crossing_segments_have_tiny_depth(void **state) {
+    sx_shape a = segment(-1, 0, 1, 0), b = segment(-1, 1e-3, 1, -1e-3);
+    sx_vec2 mtv;
+    (void)state;
+    assert_true(sx_mtv(&a, I(), &b, I(), &mtv));
+    /* Each end of B lies 1e-3 off A's line and each end of A 1e-3 x cos off
+     * B's: the shorter push is A's end out of B's line, ~0.9999995e-3. */
+    assert_near(sx_length(mtv), 0.9999995e-3, 1e-4 * 1e-3 + TOL);
+    check_pair(&a, I(), &b, I(), true, mtv, TOL);
+}
+
+/* ---- capsule - circle / segment / capsule ------------------------------- */
+
+static void capsule_circle_side_cap_and_inside(void **state) {
+    sx_shape k = capsule(-1, 0, 1, 0, 0.5), c = circle(0, 0, 0.25);
+    (void)state;
+    check_pair(&k, I(), &c, X(0, 1, 0), false, V(0, 0), TOL);
+    check_pair(&k, I(), &c, X(0, 0.75, 0), true, V(0, 0), TOL);
+    check_pair(&k, I(), &c, X(0.3, 0.6, 0), true, V(0, -0.15), TOL);
+    check_pair(&k, I(), &c, X(1.6, 0, 0), true, V(-0.15, 0), TOL);
+    check_pair(&k, I(), &c, X(0, -0.1, 0), true, V(0, 0.65), TOL);
+    check_pair(&k, X(10, 0, PI / 2), &c, X(10, 1.6, 0), true, V(0, -0.15), TOL);
+}
+
+static void degenerate_capsule_is_a_circle(void **state) {
+    sx_shape k = capsule(0, 0, 0, 0, 1), c = circle(0, 0, 1);
+    (void)state;
+    check_pair(&k, I(), &c, X(1.5, 0, 0), true, V(-0.5, 0), TOL);
+    check_pair(&k, I(), &c, X(0, 2.5, 0), false, V(0, 0), TOL);
+}
+
+static void capsule_segment_crossing_and_parallel(void **state) {
+    sx_shape k = capsule(-1, 0, 1, 0, 0.5);
+    sx_shape across = segment(0, -0.2, 0, 2);
+    sx_shape parallel = segment(-0.5, 0.4, 0.5, 0.4);
+    sx_manifold m;
+    (void)state;
+    /* Cores cross: core depth 0.2 along y, plus the radius. */
+    check_pair(&k, I(), &across, I(), true, V(0, -0.7), TOL);
+    check_pair(&k, I(), &parallel, I(), true, V(0, -0.1), TOL);
+    check_pair(&k, I(), &parallel, X(0, 0.2, 0), false, V(0, 0), TOL);
+    assert_int_equal(sx_collide(&k, I(), &parallel, I(), &m), 2);
+    expect_points(&m, 2, V(-0.5, 0.45), V(0.5, 0.45), TOL);
+}
+
+static void parallel_capsules_give_two_points(void **state) {
+    sx_shape a = capsule(-1, 0, 1, 0, 0.5), b = capsule(-1, 0, 1, 0, 0.5);
+    sx_manifold m;
+    (void)state;
+    check_pair(&a, I(), &b, X(0, 0.8, 0), true, V(0, -0.2), TOL);
+    assert_int_equal(sx_collide(&a, I(), &b, X(0, 0.8, 0), &m), 2);
+    expect_points(&m, 2, V(-1, 0.4), V(1, 0.4), TOL);
+    assert_near(m.points[0].depth, 0.2, TOL);
+    assert_near(m.points[1].depth, 0.2, TOL);
+    /* Shifted along: the points are clipped to the overlap of the two. */
+    assert_int_equal(sx_collide(&a, I(), &b, X(1.5, 0.8, 0), &m), 2);
+    expect_points(&m, 2, V(0.5, 0.4), V(1, 0.4), TOL);
+}
+
+static void capsules_end_to_end_and_crossed(void **state) {
+    sx_shape a = capsule(-1, 0, 1, 0, 0.5), b = capsule(0, 0, 1.5, 0, 0.5);
+    sx_shape cross = capsule(0, -1, 0, 1, 0.25);
+    sx_manifold m;
+    (void)state;
+    check_pair(&a, I(), &b, X(1.5, 0, 0), true, V(-0.5, 0), TOL);
+    assert_int_equal(sx_collide(&a, I(), &b, X(1.5, 0, 0), &m), 1);
+    assert_vec2_near(m.points[0].point, V(1.25, 0), TOL);
+    check_pair(&a, I(), &b, X(2.0, 0, 0), true, V(0, 0), TOL);
+    check_pair(&a, I(), &b, X(2.1, 0, 0), false, V(0, 0), TOL);
+    /* Crossed: the cores cross; the cheapest core push is 0.5 along x (B's
+     * face), plus 0.75 of rounding. */
+    check_pair(&a, I(), &cross, X(0.5, 0, 0), true, V(-1.25, 0), TOL);
+}
+
+/* ---- polygon - circle --------------------------------------------------- */
+
+static void box_circle_face_corner_inside_touching(void **state) {
+    sx_shape bx = box(1, 1), c = circle(0, 0, 0.5);
+    double d = 1.3 * sqrt(2.0) - sqrt(2.0);
+    sx_manifold m;
+    (void)state;
+    check_pair(&bx, I(), &c, X(3, 0, 0), false, V(0, 0), TOL);
+    check_pair(&bx, I(), &c, X(1.5, 0, 0), true, V(0, 0), TOL);
+    check_pair(&bx, I(), &c, X(1.3, 0.2, 0), true, V(-0.2, 0), TOL);
+    check_pair(&bx, I(), &c, X(0.5, 0, 0), true, V(-1.0, 0), TOL);
+    /* Corner region: along the diagonal, depth 0.5 - 0.3 sqrt 2. */
+    check_pair(&bx, I(), &c, X(1.3, 1.3, 0), true,
+               V(-(0.5 - d) / sqrt(2.0), -(0.5 - d) / sqrt(2.0)), TOL);
+    check_pair(&bx, I(), &c, X(1.4, 1.4, 0), false, V(0, 0), TOL);
+    assert_int_equal(sx_collide(&bx, I(), &c, X(1.3, 0.2, 0), &m), 1);
+    assert_vec2_near(m.points[0].point, V(0.9, 0.2), TOL);
+    assert_int_equal(m.points[0].id, SX_FEATURE_ID(1, 0, 0));
+}
+
+static void rotated_box_and_point(void **state) {
+    sx_shape bx = box(1, 1), p = sx_point_shape(V(0, 0));
+    (void)state;
+    /* A diamond (box turned 45 degrees) at the origin; the point sits 0.1
+     * inside the upper-right face, whose normal is (1, 1)/sqrt 2. */
+    double s = 0.9;
+    check_pair(&bx, X(0, 0, PI / 4), &p, X(s / sqrt(2.0), s / sqrt(2.0), 0), true,
+               V(-0.1 / sqrt(2.0), -0.1 / sqrt(2.0)), 1e-4);
+    check_pair(&bx, X(0, 0, PI / 4), &p, X(1.42, 0, 0), false, V(0, 0), TOL);
+}
+
+static void rounded_polygon_and_circle(void **state) {
+    /* Binary-exact sizes so that "touching" is exact in both builds. */
+    sx_shape rb = rounded_box(1, 1, 0.125), c = circle(0, 0, 0.5);
+    double k = 0.625 / sqrt(2.0);
+    (void)state;
+    check_pair(&rb, I(), &c, X(1.5, 0, 0), true, V(-0.125, 0), TOL);
+    check_pair(&rb, I(), &c, X(1.625, 0, 0), true, V(0, 0), TOL);
+    check_pair(&rb, I(), &c, X(1.75, 0, 0), false, V(0, 0), TOL);
+    /* Rounded corner touching along the diagonal (1e-6 inside: the exact
+     * contact is irrational and would round either way). */
+    check_pair(&rb, I(), &c, X(1 + k - 1e-6, 1 + k - 1e-6, 0), true, V(0, 0), 1e-4);
+    check_pair(&rb, I(), &c, X(1.01 + k, 1.01 + k, 0), false, V(0, 0), TOL);
+}
+
+/* ---- polygon - segment / capsule ---------------------------------------- */
+
+static void box_segment_through_and_resting(void **state) {
+    sx_shape bx = box(1, 1);
+    sx_shape through = segment(-2, 0.5, 2, 0.5);
+    sx_shape on_top = segment(-0.5, 1, 0.5, 1);
+    sx_shape hovering = segment(-0.5, 1.01, 0.5, 1.01);
+    sx_manifold m;
+    (void)state;
+    check_pair(&bx, I(), &through, I(), true, V(0, -0.5), TOL);
+    check_pair(&bx, I(), &on_top, I(), true, V(0, 0), TOL);
+    check_pair(&bx, I(), &hovering, I(), false, V(0, 0), TOL);
+    assert_int_equal(sx_collide(&bx, I(), &on_top, I(), &m), 2);
+    expect_points(&m, 2, V(-0.5, 1), V(0.5, 1), TOL);
+    /* Speculative: within the margin the points come with negative depth. */
+    assert_int_equal(sx_collide_ex(&bx, I(), &hovering, I(), SX_R(0.02), &m), 2);
+    assert_near(m.points[0].depth, -0.01, TOL);
+    assert_int_equal(sx_collide_ex(&bx, I(), &hovering, I(), SX_R(0.005), &m), 0);
+}
+
+static void capsule_on_box_face_gives_two_points_tilted_gives_one(void **state) {
+    sx_shape bx = box(1, 1), k = capsule(-0.5, 0, 0.5, 0, 0.5);
+    sx_manifold m;
+    (void)state;
+    check_pair(&bx, I(), &k, X(0, 1.4, 0), true, V(0, -0.1), TOL);
+    assert_int_equal(sx_collide(&bx, I(), &k, X(0, 1.4, 0), &m), 2);
+    expect_points(&m, 2, V(-0.5, 0.95), V(0.5, 0.95), TOL);
+    /* Tilted by 0.3 rad: only the low end touches. */
+    assert_int_equal(sx_collide(&bx, I(), &k, X(0, 1.4 + 0.5 * sin(0.3), 0.3), &m), 1);
+    assert_near(m.points[0].depth, 0.1, 1e-4);
+    check_pair(&bx, I(), &k, X(0, 1.4 + 0.5 * sin(0.3), 0.3), true, V(0, -0.1), 1e-4);
+    check_pair(&bx, I(), &k, X(0, 1.6, 0), false, V(0, 0), TOL);
+    /* Capsule cap against the box corner. */
+    check_pair(&bx, I(), &k, X(1.5 + 0.3 / sqrt(2.0), 1 + 0.3 / sqrt(2.0), 0), true,
+               V(-0.2 / sqrt(2.0), -0.2 / sqrt(2.0)), 1e-4);
+}
+
+static void capsule_through_box_centre(void **state) {
+    sx_shape bx = box(2, 1), k = capsule(-3, 0, 3, 0, 0.25);
+    (void)state;
+    /* Centred: the two faces tie; the first (-y) wins. */
+    check_pair(&bx, I(), &k, I(), true, V(0, 1.25), TOL);
+    check_pair(&bx, I(), &k, X(0, 0.5, 0), true, V(0, -0.75), TOL);
+}
+
+/* ---- polygon - polygon -------------------------------------------------- */
+
+static void boxes_separated_touching_shallow_deep(void **state) {
+    sx_shape a = box(1, 1), b = box(0.5, 0.5);
+    sx_manifold m;
+    (void)state;
+    check_pair(&a, I(), &b, X(2, 0.2, 0), false, V(0, 0), TOL);
+    check_pair(&a, I(), &b, X(1.5, 0.2, 0), true, V(0, 0), TOL);
+    check_pair(&a, I(), &b, X(1.4, 0.2, 0), true, V(-0.1, 0), TOL);
+    check_pair(&a, I(), &b, X(0.2, -0.9, 0), true, V(0, 0.6), TOL);
+    check_pair(&a, I(), &b, X(0.1, 0.2, 0), true, V(0, -1.3), TOL);
+    assert_int_equal(sx_collide(&a, I(), &b, X(1.4, 0.2, 0), &m), 2);
+    assert_vec2_near(m.normal, V(1, 0), TOL);
+    expect_points(&m, 2, V(0.95, -0.3), V(0.95, 0.7), TOL);
+    assert_near(m.points[0].depth, 0.1, TOL);
+    assert_near(m.points[1].depth, 0.1, TOL);
+    assert_int_equal(sx_collide(&a, I(), &b, X(1.5, 0.2, 0), &m), 2);
+    assert_near(m.points[0].depth, 0.0, TOL);
+}
+
+static void identical_boxes_at_the_same_pose(void **state) {
+    sx_shape a = box(1, 0.5), b = box(1, 0.5);
+    sx_vec2 m1, m2;
+    sx_manifold m;
+    (void)state;
+    /* Identical inputs: both orders are the same call and give the same
+     * vector (documented); the depth is the smaller full extent. */
+    assert_true(sx_mtv(&a, X(3, 3, 0.2), &b, X(3, 3, 0.2), &m1));
+    assert_true(sx_mtv(&b, X(3, 3, 0.2), &a, X(3, 3, 0.2), &m2));
+    assert_true(m1.x == m2.x && m1.y == m2.y);
+    assert_near(sx_length(m1), 1.0, 1e-4);
+    assert_int_equal(sx_collide(&a, X(3, 3, 0.2), &b, X(3, 3, 0.2), &m), 2);
+    assert_near(deepest(&m), 1.0, 1e-4);
+}
+
+static void diamond_corner_into_box_face_gives_one_point(void **state) {
+    sx_shape a = box(1, 1), b = box(0.5, 0.5);
+    double h = 0.5 * sqrt(2.0);
+    sx_manifold m;
+    (void)state;
+    check_pair(&a, I(), &b, X(0.3, 1 + h - 0.1, PI / 4), true, V(0, -0.1), 1e-4);
+    assert_int_equal(sx_collide(&a, I(), &b, X(0.3, 1 + h - 0.1, PI / 4), &m), 1);
+    assert_vec2_near(m.points[0].point, V(0.3, 0.95), 1e-4);
+    assert_near(m.points[0].depth, 0.1, 1e-4);
+}
+
+static void boxes_vertex_to_vertex(void **state) {
+    sx_shape a = box(1, 1), b = box(1, 1);
+    double h = sqrt(2.0);
+    sx_vec2 mtv;
+    (void)state;
+    /* Two diamonds corner to corner along x: touching, then overlapping by
+     * 0.1 along x; SAT gives the depth along the face normals. */
+    check_pair(&a, X(0, 0, PI / 4), &b, X(2 * h - 1e-6, 0, PI / 4), true, V(0, 0), 1e-4);
+    check_pair(&a, X(0, 0, PI / 4), &b, X(2 * h + 0.01, 0, PI / 4), false, V(0, 0), TOL);
+    assert_true(sx_mtv(&a, X(0, 0, PI / 4), &b, X(2 * h - 0.1, 0, PI / 4), &mtv));
+    assert_near(sx_length(mtv), 0.1 / sqrt(2.0), 1e-4);
+}
+
+static void box_fast_path_matches_general_path(void **state) {
+    sx_shape a = box(1, 0.5), b = box(0.5, 0.25);
+    sx_xform quarter;
+    sx_vec2 fast, general;
+    (void)state;
+    quarter.p = V(1.2, 0.3);
+    quarter.q.c = SX_R(0.0);
+    quarter.q.s = SX_R(1.0);
+    /* B turned exactly 90 degrees: its half extents swap to 0.25 x 0.5, so it
+     * reaches x in [0.95, 1.45]; overlap along x is 0.05. */
+    assert_true(sx_mtv(&a, I(), &b, quarter, &fast));
+    assert_vec2_near(fast, V(-0.05, 0), TOL);
+    check_pair(&a, I(), &b, quarter, true, V(-0.05, 0), TOL);
+    assert_true(sx_mtv(&a, I(), &b, X(1.2, 0.3, PI / 2 + 0.001), &general));
+    assert_vec2_near(general, fast, 1e-3);
+    quarter.p = V(1.5, 0.3);
+    check_pair(&a, I(), &b, quarter, false, V(0, 0), TOL);
+    assert_false(sx_overlap(&a, I(), &b, X(1.5, 0.3, PI / 2 + 0.001)));
+}
+
+static void triangles_from_hand_written_hulls(void **state) {
+    const double tri[] = {0, 0, 2, 0, 0, 2};
+    const double flipped[] = {0, 0, 1, 1, -1, 1};
+    sx_shape a = hull_shape(tri, 3, 0.0), b = hull_shape(flipped, 3, 0.0);
+    (void)state;
+    /* b is a downward-pointing triangle; moved by (1, 1) its lower-left edge
+     * lies on a's hypotenuse x + y = 2 (edge to edge, touching). */
+    check_pair(&a, I(), &b, X(1, 1, 0), true, V(0, 0), TOL);
+    check_pair(&a, I(), &b, X(1.1, 1.1, 0), false, V(0, 0), TOL);
+    check_pair(&a, I(), &b, X(0.9, 0.9, 0), true, V(-0.1, -0.1), TOL);
+}
+
+static void rounded_boxes_face_and_corner(void **state) {
+    sx_shape a = rounded_box(1, 1, 0.1), b = rounded_box(1, 1, 0.1);
+    sx_manifold m;
+    double k = 0.2 / sqrt(2.0);
+    (void)state;
+    /* Cores 0.15 apart, rounding 0.2 in total: 0.05 deep, two points. */
+    check_pair(&a, I(), &b, X(2.15, 0.5, 0), true, V(-0.05, 0), TOL);
+    assert_int_equal(sx_collide(&a, I(), &b, X(2.15, 0.5, 0), &m), 2);
+    expect_points(&m, 2, V(1.075, -0.5), V(1.075, 1), TOL);
+    check_pair(&a, I(), &b, X(2.25, 0.5, 0), false, V(0, 0), TOL);
+    /* Corner to corner along the diagonal, touching (1e-6 inside). */
+    check_pair(&a, I(), &b, X(2 + k - 1e-6, 2 + k - 1e-6, 0), true, V(0, 0), 1e-4);
+    assert_int_equal(sx_collide(&a, I(), &b, X(2 + k - 1e-6, 2 + k - 1e-6, 0), &m), 1);
+    assert_vec2_near(m.normal, V(sqrt(0.5), sqrt(0.5)), 1e-4);
+    assert_vec2_near(m.points[0].point, V(1 + 0.5 * k, 1 + 0.5 * k), 1e-4);
+}
+
+static void polygon_with_a_tiny_edge(void **state) {
+    const double chamfered[] = {-1, -1, 1, -1, 1, 1 - 0.7e-6, 1 - 0.7e-6, 1, -1, 1};
+    sx_shape a = hull_shape(chamfered, 5, 0.0), b = box(0.5, 0.5);
+    (void)state;
+    check_pair(&a, I(), &b, X(1.4, 0.2, 0), true, V(-0.1, 0), TOL);
+    check_pair(&a, I(), &b, X(0.2, 1.4, 0), true, V(0, -0.1), TOL);
+    check_pair(&a, I(), &b, X(1.6, 1.6, 0), false, V(0, 0), TOL);
+}
+
+/* ---- every pair: both orders through the table and the pair functions --- */
+
+static void pair_functions_agree_with_the_dispatch_table(void **state) {
+    sx_shape c = circle(0.1, 0, 0.5), s = segment(-0.5, 0.1, 0.6, 0.2);
+    sx_shape k = capsule(-0.4, 0, 0.4, 0.1, 0.3), p = box(0.6, 0.4);
+    sx_xform xa = X(0.3, -0.2, 0.4), xb = X(0.6, 0.1, -0.7);
+    sx_vec2 v, w;
+    sx_manifold m1, m2;
+    (void)state;
+    assert_int_equal(sx_overlap_circles(&c.u.circle, xa, &c.u.circle, xb), sx_overlap(&c, xa, &c, xb));
+    assert_int_equal(sx_mtv_circles(&c.u.circle, xa, &c.u.circle, xb, &v), sx_mtv(&c, xa, &c, xb, &w));
+    assert_true(v.x == w.x && v.y == w.y);
+    assert_int_equal(sx_mtv_segment_circle(&s.u.segment, xa, &c.u.circle, xb, &v),
+                     sx_mtv(&s, xa, &c, xb, &w));
+    assert_true(v.x == w.x && v.y == w.y);
+    assert_int_equal(sx_mtv_polygon_capsule(&p.u.polygon, xa, &k.u.capsule, xb, &v),
+                     sx_mtv(&p, xa, &k, xb, &w));
+    assert_true(v.x == w.x && v.y == w.y);
+    assert_int_equal(sx_mtv(&k, xb, &p, xa, &w), true);
+    assert_true(v.x == -w.x && v.y == -w.y);
+    assert_int_equal(sx_collide_polygon_segment(&p.u.polygon, xa, &s.u.segment, xb, SX_R(0.0), &m1),
+                     sx_collide(&p, xa, &s, xb, &m2));
+    assert_true(m1.count > 0);
+    assert_true(m1.normal.x == m2.normal.x && m1.normal.y == m2.normal.y);
+    assert_int_equal(sx_collide(&s, xb, &p, xa, &m2), m1.count);
+    assert_true(m1.normal.x == -m2.normal.x && m1.normal.y == -m2.normal.y);
+    assert_int_equal(m2.points[0].id, m1.points[0].id ^ (1u << 16));
+    assert_true(m2.points[0].depth == m1.points[0].depth);
+}
+
+/* Every ordered pair through the table, on a mildly overlapping scene and a
+ * separated one: overlap agrees with mtv, the swapped MTV is the exact
+ * negation, and the manifold agrees with the MTV. */
+static void every_ordered_pair_is_consistent(void **state) {
+    sx_shape shapes[5];
+    sx_xform xa = X(0.05, -0.1, 0.35), xb = X(0.45, 0.3, -0.6), far = X(9, 9, 0);
+    int i, j;
+    (void)state;
+    shapes[0] = circle(0.1, 0, 0.5);
+    shapes[1] = segment(-0.9, -0.2, 0.9, -0.1);
+    shapes[2] = capsule(-0.4, 0, 0.4, 0.1, 0.3);
+    shapes[3] = box(0.6, 0.4);
+    shapes[4] = rounded_box(0.3, 0.2, 0.15);
+    for (i = 0; i < 5; ++i) {
+        for (j = 0; j < 5; ++j) {
+            sx_vec2 mtv;
+            bool hit = sx_mtv(&shapes[i], xa, &shapes[j], xb, &mtv);
+            assert_true(hit);
+            check_pair(&shapes[i], xa, &shapes[j], xb, true, mtv, TOL);
+            check_pair(&shapes[i], xa, &shapes[j], far, false, V(0, 0), TOL);
+            /* Moving A by the MTV (plus a hair) separates; by most of it
+             * does not. */
+            if (sx_length(mtv) > SX_R(1e-3)) {
+                sx_xform moved = xa, half = xa;
+                moved.p = sx_add(xa.p, sx_scale(mtv, SX_R(1.001)));
+                half.p = sx_add(xa.p, sx_scale(mtv, SX_R(0.99)));
+                assert_false(sx_overlap(&shapes[i], moved, &shapes[j], xb));
+                assert_true(sx_overlap(&shapes[i], half, &shapes[j], xb));
+            }
+        }
+    }
+}
+
+/* ---- precision, degenerate and hostile input ---------------------------- */
+
+static void far_from_the_origin_gives_the_same_answers(void **state) {
+    sx_shape shapes[4];
+    double off = 1e5;
+    int i, j;
+    (void)state;
+    shapes[0] = circle(0, 0, 0.5);
+    shapes[1] = capsule(-0.5, 0, 0.5, 0, 0.25);
+    shapes[2] = box(0.5, 0.5);
+    shapes[3] = segment(-0.5, -0.5, 0.5, 0.5);
+    for (i = 0; i < 4; ++i) {
+        for (j = 0; j < 4; ++j) {
+            sx_vec2 near0, far0;
+            bool h0 = sx_mtv(&shapes[i], X(0, 0, 0.25), &shapes[j], X(0.625, 0.25, -0.5), &near0);
+            bool h1 = sx_mtv(&shapes[i], X(off, -off, 0.25), &shapes[j],
+                             X(off + 0.625, -off + 0.25, -0.5), &far0);
+            assert_int_equal(h0, h1);
+            assert_vec2_near(near0, far0, 1e-4);
+        }
+    }
+}
+
+static void non_finite_input_answers_no_contact(void **state) {
+    sx_shape good[4], bad[6];
+    sx_xform nan_x = X(0, 0, 0), inf_x = X(0, 0, 0);
+    sx_vec2 mtv;
+    sx_manifold m;
+    int i, j;
+    (void)state;
+    nan_x.p.x = (sx_real)NAN;
+    inf_x.q.s = (sx_real)INFINITY;
+    good[0] = circle(0, 0, 1);
+    good[1] = segment(-1, 0, 1, 0);
+    good[2] = capsule(-1, 0, 1, 0, 0.5);
+    good[3] = box(1, 1);
+    bad[0] = circle(0, 0, 1);
+    bad[0].u.circle.radius = (sx_real)NAN;
+    bad[1] = capsule(-1, 0, 1, 0, 0.5);
+    bad[1].u.capsule.radius = (sx_real)INFINITY;
+    bad[2] = segment(-1, 0, 1, 0);
+    bad[2].u.segment.b.y = (sx_real)NAN;
+    bad[3] = box(1, 1);
+    bad[3].u.polygon.vertices[2].x = (sx_real)INFINITY;
+    bad[4] = circle(0, 0, -1);
+    bad[5] = box(1, 1);
+    bad[5].u.polygon.count = 0;
+    for (i = 0; i < 4; ++i) {
+        for (j = 0; j < 4; ++j) {
+            assert_false(sx_overlap(&good[i], nan_x, &good[j], I()));
+            assert_false(sx_overlap(&good[i], I(), &good[j], inf_x));
+            mtv = V(7, 7);
+            assert_false(sx_mtv(&good[i], nan_x, &good[j], I(), &mtv));
+            assert_true(mtv.x == SX_R(0.0) && mtv.y == SX_R(0.0));
+            assert_int_equal(sx_collide(&good[i], I(), &good[j], inf_x, &m), 0);
+            assert_int_equal(m.count, 0);
+        }
+        for (j = 0; j < 6; ++j) {
+            assert_false(sx_overlap(&good[i], I(), &bad[j], I()));
+            assert_false(sx_overlap(&bad[j], I(), &good[i], I()));
+            mtv = V(7, 7);
+            assert_false(sx_mtv(&bad[j], I(), &good[i], I(), &mtv));
+            assert_true(mtv.x == SX_R(0.0) && mtv.y == SX_R(0.0));
+            assert_int_equal(sx_collide(&good[i], I(), &bad[j], I(), &m), 0);
+            assert_int_equal(sx_collide_ex(&bad[j], I(), &good[i], I(), SX_R(1.0), &m), 0);
+        }
+    }
+    /* A non-finite or negative margin is taken as zero. */
+    assert_int_equal(sx_collide_ex(&good[3], I(), &good[3], X(2.1, 0, 0), (sx_real)NAN, &m), 0);
+    assert_int_equal(sx_collide_ex(&good[3], I(), &good[3], X(2.1, 0, 0), SX_R(-1.0), &m), 0);
+    assert_int_equal(sx_collide_ex(&good[3], I(), &good[3], X(2.01, 0, 0), SX_R(0.02), &m), 2);
+}
+
+static void null_and_unknown_types_answer_no_contact(void **state) {
+    sx_shape a = box(1, 1), odd = box(1, 1);
+    sx_vec2 mtv = V(1, 1);
+    sx_manifold m;
+    (void)state;
+    odd.type = SX_SHAPE_TYPE_COUNT;
+    assert_false(sx_overlap(NULL, I(), &a, I()));
+    assert_false(sx_overlap(&a, I(), &odd, I()));
+    assert_false(sx_mtv(&odd, I(), &a, I(), &mtv));
+    assert_true(mtv.x == SX_R(0.0) && mtv.y == SX_R(0.0));
+    assert_true(sx_mtv(&a, I(), &a, X(1, 0, 0), NULL));
+    assert_int_equal(sx_collide(&a, I(), NULL, I(), &m), 0);
+    assert_int_equal(sx_collide(&a, I(), &a, X(1, 0, 0), NULL), 2);
+}
+
+/* ---- feature ids and reference faces ------------------------------------ */
+
+static void feature_ids_stay_stable_when_b_moves_slightly(void **state) {
+    sx_shape a = box(2, 0.5), b = box(0.5, 0.5);
+    sx_manifold m0, m1;
+    (void)state;
+    assert_int_equal(sx_collide(&a, I(), &b, X(0.3, 0.99, 0.01), &m0), 2);
+    assert_int_equal(sx_collide(&a, I(), &b, X(0.302, 0.9895, 0.0102), &m1), 2);
+    assert_int_equal(m0.points[0].id, m1.points[0].id);
+    assert_int_equal(m0.points[1].id, m1.points[1].id);
+    assert_true(m0.points[0].id != m0.points[1].id);
+    /* A capsule resting on the box keeps its ids while it slides. */
+    {
+        sx_shape k = capsule(-0.4, 0, 0.4, 0, 0.2);
+        assert_int_equal(sx_collide(&a, I(), &k, X(0.0, 0.69, 0), &m0), 2);
+        assert_int_equal(sx_collide(&a, I(), &k, X(0.05, 0.695, 0.001), &m1), 2);
+        assert_int_equal(m0.points[0].id, m1.points[0].id);
+        assert_int_equal(m0.points[1].id, m1.points[1].id);
+    }
+}
+
+static void reference_face_does_not_flip_between_nearly_equal_faces(void **state) {
+    sx_shape a = box(1, 1), b = box(1, 1);
+    sx_manifold m;
+    (void)state;
+    /* Same size boxes overlapping by 0.1 along x: A's +x face and B's -x
+     * face are equally good; A keeps the reference (flipped bit clear). */
+    assert_int_equal(sx_collide(&a, I(), &b, X(1.9, 0.5, 0), &m), 2);
+    assert_int_equal(m.points[0].id >> 16, 0);
+    assert_int_equal(m.points[1].id >> 16, 0);
+    /* B turned by t: B's face beats A's by about t / 2. With t = 5e-4 that
+     * is half the hysteresis: still A's face. */
+    assert_true(sx_collide(&a, I(), &b, X(1.9, 0.5, 5e-4), &m) >= 1);
+    assert_int_equal(m.points[0].id >> 16, 0);
+    assert_vec2_near(m.normal, V(1, 0), TOL);
+    /* With t = 0.2 B's face is clearly better and becomes the reference;
+     * the normal still points from A to B, along B's face normal. */
+    assert_true(sx_collide(&a, I(), &b, X(1.9, 0.5, 0.2), &m) >= 1);
+    assert_int_equal(m.points[0].id >> 16, 1);
+    assert_vec2_near(m.normal, V(cos(0.2), sin(0.2)), 1e-4);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(circles_separated_touching_and_overlapping),
+        cmocka_unit_test(circles_with_offset_centres_use_the_local_centres),
+        cmocka_unit_test(concentric_circles_push_by_the_sum_of_radii),
+        cmocka_unit_test(point_inside_circle_is_pushed_out_radially),
+        cmocka_unit_test(segment_circle_face_end_and_separated),
+        cmocka_unit_test(circle_centred_on_segment_is_pushed_by_full_radius),
+        cmocka_unit_test(zero_length_segment_acts_as_a_point),
+        cmocka_unit_test(crossing_segments_overlap_by_the_shorter_push),
+        cmocka_unit_test(parallel_and_collinear_segments),
+        cmocka_unit_test(near_parallel_crossing_segments_have_tiny_depth),
+        cmocka_unit_test(capsule_circle_side_cap_and_inside),
+        cmocka_unit_test(degenerate_capsule_is_a_circle),
+        cmocka_unit_test(capsule_segment_crossing_and_parallel),
+        cmocka_unit_test(parallel_capsules_give_two_points),
+        cmocka_unit_test(capsules_end_to_end_and_crossed),
+        cmocka_unit_test(box_circle_face_corner_inside_touching),
+        cmocka_unit_test(rotated_box_and_point),
+        cmocka_unit_test(rounded_polygon_and_circle),
+        cmocka_unit_test(box_segment_through_and_resting),
+        cmocka_unit_test(capsule_on_box_face_gives_two_points_tilted_gives_one),
+        cmocka_unit_test(capsule_through_box_centre),
+        cmocka_unit_test(boxes_separated_touching_shallow_deep),
+        cmocka_unit_test(identical_boxes_at_the_same_pose),
+        cmocka_unit_test(diamond_corner_into_box_face_gives_one_point),
+        cmocka_unit_test(boxes_vertex_to_vertex),
+        cmocka_unit_test(box_fast_path_matches_general_path),
+        cmocka_unit_test(triangles_from_hand_written_hulls),
+        cmocka_unit_test(rounded_boxes_face_and_corner),
+        cmocka_unit_test(polygon_with_a_tiny_edge),
+        cmocka_unit_test(pair_functions_agree_with_the_dispatch_table),
+        cmocka_unit_test(every_ordered_pair_is_consistent),
+        cmocka_unit_test(far_from_the_origin_gives_the_same_answers),
+        cmocka_unit_test(non_finite_input_answers_no_contact),
+        cmocka_unit_test(null_and_unknown_types_answer_no_contact),
+        cmocka_unit_test(feature_ids_stay_stable_when_b_moves_slightly),
+        cmocka_unit_test(reference_face_does_not_flip_between_nearly_equal_faces),
+    };
+    return cmocka_run_group_tests_name("collide", tests, sx_test_group_setup,
+                                       sx_test_group_teardown);
+}
