@@ -48,16 +48,16 @@
  * errors of a 4 m coordinate. MOVE_MIN: the separation check needs 1e-3 of
  * the depth to stand clear of rounding noise. */
 #ifdef SX_DOUBLE
-#define PROP_LEN_TOL 1e-9
-#define PROP_SIGN_BAND 1e-9
+#define PROP_LEN_TOL 1e-12
+#define PROP_SIGN_BAND 1e-12
 #define PROP_ANGLE_TOL 1e-7
 #define PROP_COND 1e-4
 #define PROP_HAIR 1e-13
 #define PROP_MOVE_MIN 1e-6
 #define PROP_UNIT_TOL 1e-12
 #else
-#define PROP_LEN_TOL 1e-4
-#define PROP_SIGN_BAND 1e-4
+#define PROP_LEN_TOL 1e-5
+#define PROP_SIGN_BAND 1e-5
 #define PROP_ANGLE_TOL 1e-3
 #define PROP_COND 1e-2
 #define PROP_HAIR 4e-6
@@ -532,10 +532,16 @@ static const struct {
  *   polygon-segment, 1.05 m for capsule-capsule pair #8383). Near-vertex
  *   contacts taken as face contacts (within 1 % of the slop) give the mild
  *   cases (1.4 mm segment-circle, 5.3 mm polygon-circle).
- * - Escape along the MTV: in the float build only, sx_mtv's direction on a
- *   rounded vertex-vertex contact is up to 3.8e-4 rad off (sx_collide's normal
- *   for the same pair is exact), so moving A by its MTV leaves up to 1.5e-4 m
- *   of overlap (capsule-capsule pair #14178). */
+ * - Escape along the MTV (float build only): closest_features() picks between
+ *   a vertex and an adjacent face by comparing squared distances, which agree
+ *   to second order when the other core's point projects just inside the
+ *   face; float rounding then keeps the vertex, whose direction is off by up
+ *   to sqrt(2 eps) ~ 4.9e-4 rad while the distance stays exact (polygon-circle
+ *   pair #71558: 2.7e-4 rad; capsule-capsule pair #14178: 3.3e-4 rad, where
+ *   sx_collide's normal happens to be exact). Moving A by its MTV then leaves
+ *   up to 1.5e-4 m of overlap. The same defect breaks translation invariance
+ *   for same-type pairs, whose canonical order (hence working frame) depends
+ *   on the poses' bytes (capsule-capsule pair #41661: 2.4e-5 m). */
 static const struct {
     int row, check;
     long bound;
@@ -544,10 +550,11 @@ static const struct {
     {2, CHECK_DEEPEST_ON_SURFACES, 12}, {2, CHECK_POINT_NOT_OUTSIDE, 12},
     {4, CHECK_DEEPEST_ON_SURFACES, 30}, {4, CHECK_POINT_NOT_OUTSIDE, 30},
     {5, CHECK_DEEPEST_ON_SURFACES, 12}, {5, CHECK_POINT_NOT_OUTSIDE, 12},
-    {5, CHECK_ESCAPE_ALONG_MTV, 2},     {6, CHECK_DEEPEST_ON_SURFACES, 10},
+    {5, CHECK_ESCAPE_ALONG_MTV, 6},     {5, CHECK_TRANSLATION, 12},
+    {6, CHECK_ESCAPE_ALONG_MTV, 2},     {6, CHECK_DEEPEST_ON_SURFACES, 10},
     {6, CHECK_POINT_NOT_OUTSIDE, 10},   {7, CHECK_DEEPEST_ON_SURFACES, 94},
     {7, CHECK_POINT_NOT_OUTSIDE, 94},   {8, CHECK_DEEPEST_ON_SURFACES, 36},
-    {8, CHECK_POINT_NOT_OUTSIDE, 36},   {8, CHECK_ESCAPE_ALONG_MTV, 2},
+    {8, CHECK_POINT_NOT_OUTSIDE, 36},   {8, CHECK_ESCAPE_ALONG_MTV, 6},
     {9, CHECK_DEEPEST_ON_SURFACES, 89}, {9, CHECK_POINT_NOT_OUTSIDE, 89},
 };
 
