@@ -100,6 +100,7 @@ enum prop_check {
     CHECK_DEEPEST_ON_SURFACES,
     CHECK_POINT_NOT_OUTSIDE,
     CHECK_SEPARATED_NO_CONTACT,
+    CHECK_PAIR_FUNCTION,
     CHECK_COUNT
 };
 
@@ -123,6 +124,7 @@ static const char *const check_names[CHECK_COUNT] = {
     "deepest point within depth/2 of both surfaces",
     "every point at most depth/2 outside either shape",
     "separated -> no contact",
+    "pair function == generic dispatch",
 };
 
 /* How many violations of a check to print in full per pair type. */
@@ -330,6 +332,91 @@ static bool well_conditioned(const sx_ref_result *r) {
            fabsl(r->core_distance) > (long double)PROP_COND;
 }
 
+/* The typed pair function of collide.h for (a, b) in its published order
+ * (the larger type first): its overlap, MTV and manifold at margin 0.
+ * Returns false when (a, b) is not in that order. */
+static bool pair_function(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                          bool *overlap, bool *hit, sx_vec2 *mtv, int *count, sx_manifold *man) {
+    const sx_polygon *pa = &a->u.polygon;
+    const sx_capsule *ca = &a->u.capsule;
+    const sx_segment *sa = &a->u.segment;
+    switch (a->type * SX_SHAPE_TYPE_COUNT + b->type) {
+    case SX_SHAPE_CIRCLE *SX_SHAPE_TYPE_COUNT + SX_SHAPE_CIRCLE:
+        *overlap = sx_overlap_circles(&a->u.circle, xa, &b->u.circle, xb);
+        *hit = sx_mtv_circles(&a->u.circle, xa, &b->u.circle, xb, mtv);
+        *count = sx_collide_circles(&a->u.circle, xa, &b->u.circle, xb, SX_R(0.0), man);
+        return true;
+    case SX_SHAPE_SEGMENT *SX_SHAPE_TYPE_COUNT + SX_SHAPE_CIRCLE:
+        *overlap = sx_overlap_segment_circle(sa, xa, &b->u.circle, xb);
+        *hit = sx_mtv_segment_circle(sa, xa, &b->u.circle, xb, mtv);
+        *count = sx_collide_segment_circle(sa, xa, &b->u.circle, xb, SX_R(0.0), man);
+        return true;
+    case SX_SHAPE_SEGMENT *SX_SHAPE_TYPE_COUNT + SX_SHAPE_SEGMENT:
+        *overlap = sx_overlap_segments(sa, xa, &b->u.segment, xb);
+        *hit = sx_mtv_segments(sa, xa, &b->u.segment, xb, mtv);
+        *count = sx_collide_segments(sa, xa, &b->u.segment, xb, SX_R(0.0), man);
+        return true;
+    case SX_SHAPE_CAPSULE *SX_SHAPE_TYPE_COUNT + SX_SHAPE_CIRCLE:
+        *overlap = sx_overlap_capsule_circle(ca, xa, &b->u.circle, xb);
+        *hit = sx_mtv_capsule_circle(ca, xa, &b->u.circle, xb, mtv);
+        *count = sx_collide_capsule_circle(ca, xa, &b->u.circle, xb, SX_R(0.0), man);
+        return true;
+    case SX_SHAPE_CAPSULE *SX_SHAPE_TYPE_COUNT + SX_SHAPE_SEGMENT:
+        *overlap = sx_overlap_capsule_segment(ca, xa, &b->u.segment, xb);
+        *hit = sx_mtv_capsule_segment(ca, xa, &b->u.segment, xb, mtv);
+        *count = sx_collide_capsule_segment(ca, xa, &b->u.segment, xb, SX_R(0.0), man);
+        return true;
+    case SX_SHAPE_CAPSULE *SX_SHAPE_TYPE_COUNT + SX_SHAPE_CAPSULE:
+        *overlap = sx_overlap_capsules(ca, xa, &b->u.capsule, xb);
+        *hit = sx_mtv_capsules(ca, xa, &b->u.capsule, xb, mtv);
+        *count = sx_collide_capsules(ca, xa, &b->u.capsule, xb, SX_R(0.0), man);
+        return true;
+    case SX_SHAPE_POLYGON *SX_SHAPE_TYPE_COUNT + SX_SHAPE_CIRCLE:
+        *overlap = sx_overlap_polygon_circle(pa, xa, &b->u.circle, xb);
+        *hit = sx_mtv_polygon_circle(pa, xa, &b->u.circle, xb, mtv);
+        *count = sx_collide_polygon_circle(pa, xa, &b->u.circle, xb, SX_R(0.0), man);
+        return true;
+    case SX_SHAPE_POLYGON *SX_SHAPE_TYPE_COUNT + SX_SHAPE_SEGMENT:
+        *overlap = sx_overlap_polygon_segment(pa, xa, &b->u.segment, xb);
+        *hit = sx_mtv_polygon_segment(pa, xa, &b->u.segment, xb, mtv);
+        *count = sx_collide_polygon_segment(pa, xa, &b->u.segment, xb, SX_R(0.0), man);
+        return true;
+    case SX_SHAPE_POLYGON *SX_SHAPE_TYPE_COUNT + SX_SHAPE_CAPSULE:
+        *overlap = sx_overlap_polygon_capsule(pa, xa, &b->u.capsule, xb);
+        *hit = sx_mtv_polygon_capsule(pa, xa, &b->u.capsule, xb, mtv);
+        *count = sx_collide_polygon_capsule(pa, xa, &b->u.capsule, xb, SX_R(0.0), man);
+        return true;
+    case SX_SHAPE_POLYGON *SX_SHAPE_TYPE_COUNT + SX_SHAPE_POLYGON:
+        *overlap = sx_overlap_polygons(pa, xa, &b->u.polygon, xb);
+        *hit = sx_mtv_polygons(pa, xa, &b->u.polygon, xb, mtv);
+        *count = sx_collide_polygons(pa, xa, &b->u.polygon, xb, SX_R(0.0), man);
+        return true;
+    default: return false;
+    }
+}
+
+/* The typed pair function, where (a, b) is in its order, answers exactly as
+ * the generic entry points (which dispatch to it). */
+static void check_pair_function(const prop_ctx *c, const sx_shape *a, sx_xform xa,
+                                const sx_shape *b, sx_xform xb, bool ov, bool hit, sx_vec2 m) {
+    sx_manifold man, gen;
+    sx_vec2 pm = sx_v2_zero();
+    bool pov = false, phit = false;
+    int pn = 0, gn;
+    memset(&man, 0, sizeof man);
+    memset(&gen, 0, sizeof gen);
+    if (!pair_function(a, xa, b, xb, &pov, &phit, &pm, &pn, &man)) return;
+    gn = sx_collide(a, xa, b, xb, &gen);
+    check(c, CHECK_PAIR_FUNCTION,
+          pov == ov && phit == hit && pm.x == m.x && pm.y == m.y && pn == gn &&
+              man.normal.x == gen.normal.x && man.normal.y == gen.normal.y &&
+              (pn < 1 || man.points[0].depth == gen.points[0].depth),
+          "pair function: overlap %d mtv %d (%.9g, %.9g) %d points; generic: overlap %d mtv %d "
+          "(%.9g, %.9g) %d points",
+          (int)pov, (int)phit, (double)pm.x, (double)pm.y, pn, (int)ov, (int)hit, (double)m.x,
+          (double)m.y, gn);
+}
+
 /* Checks the ordered pair (A, B) = (shape[o], shape[1 - o]); `ref` is the
  * reference answer for that order and pa, pb the placed reference shapes. */
 static void check_ordered(const prop_pair *p, int o, const sx_ref_shape *pa, const sx_ref_shape *pb,
@@ -368,6 +455,7 @@ static void check_ordered(const prop_pair *p, int o, const sx_ref_shape *pa, con
         check(&c, CHECK_SEPARATED_NO_CONTACT, n == 0, "collide gave %d points for a gap of %.9g", n,
               -depth);
     }
+    check_pair_function(&c, a, xa, b, xb, ov, hit, m);
     if (!hit || !(depth > PROP_SIGN_BAND)) return;
     st->overlapping++;
 
