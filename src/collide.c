@@ -80,13 +80,26 @@ static void clear_manifold(sx_manifold *out) {
 static void mirror_manifold(sx_manifold *m) {
     int i;
     m->normal = sx_neg(m->normal);
-    for (i = 0; i < m->count; ++i) m->points[i].id ^= (uint32_t)1 << 16;
+    for (i = 0; i < m->count; ++i)
+        m->points[i].id ^= (uint32_t)1 << 16;
 }
 
-/* Lexicographic byte order of two runs of reals: arbitrary but total and
- * deterministic, which is all the canonical order needs. */
+/* Lexicographic order of the bit patterns of two runs of reals: arbitrary
+ * but total and deterministic (NaN and -0 included), which is all the
+ * canonical order needs. */
 static int order_reals(const sx_real *a, const sx_real *b, int n) {
-    return memcmp(a, b, (size_t)n * sizeof(sx_real));
+    int i;
+    for (i = 0; i < n; ++i) {
+#ifdef SX_DOUBLE
+        uint64_t ba, bb;
+#else
+        uint32_t ba, bb;
+#endif
+        memcpy(&ba, &a[i], sizeof(ba));
+        memcpy(&bb, &b[i], sizeof(bb));
+        if (ba != bb) return ba < bb ? -1 : 1;
+    }
+    return 0;
 }
 
 static int order_xforms(sx_xform xa, sx_xform xb) {
@@ -123,7 +136,8 @@ static int order_vecs(const sx_vec2 *a, const sx_vec2 *b, int n) {
  * origin) plus the rotated local centres, and the test is on squared
  * distance. */
 static sx_vec2 circle_offset(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
-    return sx_sub(sx_add(sx_sub(xb.p, xa.p), sx_rotate(xb.q, b->center)), sx_rotate(xa.q, a->center));
+    return sx_sub(sx_add(sx_sub(xb.p, xa.p), sx_rotate(xb.q, b->center)),
+                  sx_rotate(xa.q, a->center));
 }
 
 static bool circles_valid(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
@@ -176,7 +190,8 @@ bool sx_overlap_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_
     return overlap_circles_ordered(a, xa, b, xb);
 }
 
-bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb, sx_vec2 *mtv) {
+bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                    sx_vec2 *mtv) {
     sx_vec2 v = sx_v2_zero();
     bool hit = false;
     if (circles_valid(a, xa, b, xb)) {
@@ -194,18 +209,18 @@ bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xfor
 
 /* ---- the other pairs: cores in A's frame -------------------------------- */
 
-typedef bool sx_core_builder(const void *shape, sx_xform x, sx_core *out);
+typedef bool sx_core_builder(const void *shape, const sx_xform *x, sx_core *out);
 
-static bool build_circle(const void *s, sx_xform x, sx_core *out) {
+static bool build_circle(const void *s, const sx_xform *x, sx_core *out) {
     return sx_core_from_circle((const sx_circle *)s, x, out);
 }
-static bool build_segment(const void *s, sx_xform x, sx_core *out) {
+static bool build_segment(const void *s, const sx_xform *x, sx_core *out) {
     return sx_core_from_segment((const sx_segment *)s, x, out);
 }
-static bool build_capsule(const void *s, sx_xform x, sx_core *out) {
+static bool build_capsule(const void *s, const sx_xform *x, sx_core *out) {
     return sx_core_from_capsule((const sx_capsule *)s, x, out);
 }
-static bool build_polygon(const void *s, sx_xform x, sx_core *out) {
+static bool build_polygon(const void *s, const sx_xform *x, sx_core *out) {
     return sx_core_from_polygon((const sx_polygon *)s, x, out);
 }
 
@@ -213,7 +228,7 @@ static bool build_polygon(const void *s, sx_xform x, sx_core *out) {
 static bool build_pair(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
                        const void *b, sx_xform xb, sx_core *ca, sx_core *cb) {
     sx_xform rel;
-    return relative_xform(xa, xb, &rel) && fa(a, sx_xform_identity(), ca) && fb(b, rel, cb);
+    return relative_xform(xa, xb, &rel) && fa(a, NULL, ca) && fb(b, &rel, cb);
 }
 
 static bool pair_overlap(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
@@ -248,8 +263,8 @@ static bool pair_overlap_sym(sx_core_builder *f, const void *a, sx_xform xa, con
     return pair_overlap(f, a, xa, f, b, xb);
 }
 
-static bool pair_mtv_sym(sx_core_builder *f, const void *a, sx_xform xa, const void *b,
-                         sx_xform xb, int order, sx_vec2 *mtv) {
+static bool pair_mtv_sym(sx_core_builder *f, const void *a, sx_xform xa, const void *b, sx_xform xb,
+                         int order, sx_vec2 *mtv) {
     sx_vec2 v;
     bool hit;
     if (order > 0) {
@@ -272,11 +287,12 @@ static bool pair_mtv_sym(sx_core_builder *f, const void *a, sx_xform xa, const v
  * margin 0 whether the pair touches at all is the canonical order's answer
  * (`overlap`), so sx_collide reports points exactly when sx_overlap is
  * true. Speculative calls (margin > 0) need no such agreement. */
-static int collide_gated(sx_core_builder *f, const void *a, sx_xform xa, const void *b,
-                         sx_xform xb, sx_real margin, bool overlap, sx_manifold *out) {
+static int collide_gated(sx_core_builder *f, const void *a, sx_xform xa, const void *b, sx_xform xb,
+                         sx_real margin, bool overlap, sx_manifold *out) {
     sx_manifold m;
     int count, i;
-    if (sx_is_finite(margin) && margin > SX_R(0.0)) return pair_collide(f, a, xa, f, b, xb, margin, out);
+    if (sx_is_finite(margin) && margin > SX_R(0.0))
+        return pair_collide(f, a, xa, f, b, xb, margin, out);
     if (!overlap) {
         clear_manifold(out);
         return 0;
@@ -284,7 +300,8 @@ static int collide_gated(sx_core_builder *f, const void *a, sx_xform xa, const v
     count = pair_collide(f, a, xa, f, b, xb, SX_R(0.0), &m);
     if (count == 0) {
         count = pair_collide(f, a, xa, f, b, xb, SX_TOUCH_RESCUE_MARGIN, &m);
-        for (i = 0; i < count; ++i) m.points[i].depth = sx_maxr(m.points[i].depth, SX_R(0.0));
+        for (i = 0; i < count; ++i)
+            m.points[i].depth = sx_maxr(m.points[i].depth, SX_R(0.0));
     }
     if (out) *out = m;
     return count;
@@ -292,7 +309,8 @@ static int collide_gated(sx_core_builder *f, const void *a, sx_xform xa, const v
 
 int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                        sx_real margin, sx_manifold *out) {
-    bool overlap = !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_circles(a, xa, b, xb);
+    bool overlap =
+        !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_circles(a, xa, b, xb);
     return collide_gated(build_circle, a, xa, b, xb, margin, overlap, out);
 }
 
@@ -332,7 +350,8 @@ bool sx_mtv_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_x
 }
 int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
-    bool overlap = !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_segments(a, xa, b, xb);
+    bool overlap =
+        !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_segments(a, xa, b, xb);
     return collide_gated(build_segment, a, xa, b, xb, margin, overlap, out);
 }
 
@@ -389,7 +408,8 @@ bool sx_mtv_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_x
 }
 int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
-    bool overlap = !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_capsules(a, xa, b, xb);
+    bool overlap =
+        !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_capsules(a, xa, b, xb);
     return collide_gated(build_capsule, a, xa, b, xb, margin, overlap, out);
 }
 
@@ -481,9 +501,10 @@ static bool box_fast_path(const sx_polygon *a, sx_xform xa, const sx_polygon *b,
     sx_vec2 lo, hi;
     sx_real best = -SX_REAL_MAX;
     int i, face = 0;
+    rel.q = sx_rot_inv_mul(xa.q, xb.q);
+    if (!(sx_absr(rel.q.s) <= SX_REAL_EPSILON || sx_absr(rel.q.c) <= SX_REAL_EPSILON)) return false;
     if (a == NULL || b == NULL || !is_axis_box(a) || !is_axis_box(b)) return false;
     if (!relative_xform(xa, xb, &rel)) return false;
-    if (!(sx_absr(rel.q.s) <= SX_REAL_EPSILON || sx_absr(rel.q.c) <= SX_REAL_EPSILON)) return false;
     lo = sx_v2(SX_REAL_MAX, SX_REAL_MAX);
     hi = sx_v2(-SX_REAL_MAX, -SX_REAL_MAX);
     for (i = 0; i < 4; ++i) {
@@ -527,8 +548,8 @@ static bool overlap_polygons_ordered(const sx_polygon *a, sx_xform xa, const sx_
     return pair_overlap(build_polygon, a, xa, build_polygon, b, xb);
 }
 
-static bool mtv_polygons_ordered(const sx_polygon *a, sx_xform xa, const sx_polygon *b,
-                                 sx_xform xb, sx_vec2 *mtv) {
+static bool mtv_polygons_ordered(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
+                                 sx_vec2 *mtv) {
     bool hit;
     sx_vec2 local;
     if (box_fast_path(a, xa, b, xb, &hit, &local)) return finish_mtv(hit, local, xa, mtv);
@@ -554,7 +575,8 @@ bool sx_mtv_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_x
 }
 int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
-    bool overlap = !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_polygons(a, xa, b, xb);
+    bool overlap =
+        !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_polygons(a, xa, b, xb);
     return collide_gated(build_polygon, a, xa, b, xb, margin, overlap, out);
 }
 

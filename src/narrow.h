@@ -13,27 +13,33 @@
 
 #include "core.h"
 
-/** A convex core plus radius, in some working frame. */
+/** A convex core plus radius, in some working frame. Pass it by pointer
+ *  only: v and n may point into its own storage. */
 typedef struct sx_core {
-    /** Points, CCW for count >= 3; count 2: a and b of the segment. */
-    sx_vec2 v[SX_MAX_POLYGON_VERTICES];
+    /** Points, CCW for count >= 3; count 2: a and b of the segment. Either
+     *  vs, or a polygon's own vertices when it is read in place. */
+    const sx_vec2 *v;
     /** Outward unit normal of face i (v[i] -> v[(i+1) % count]); unused for
      *  count 1. For count 2, n[1] = -n[0]. */
-    sx_vec2 n[SX_MAX_POLYGON_VERTICES];
+    const sx_vec2 *n;
+    /** Storage for a shape placed into the working frame. */
+    sx_vec2 vs[SX_MAX_POLYGON_VERTICES];
+    sx_vec2 ns[SX_MAX_POLYGON_VERTICES];
     sx_real radius;
     /** 1 (point), 2 (segment) or 3..SX_MAX_POLYGON_VERTICES (polygon). */
     int count;
 } sx_core;
 
-/* Core builders: place the shape by x into the working frame. Each returns
+/* Core builders: place the shape by *x into the working frame (x NULL: keep
+ * the shape's own frame, as for shape A). Each returns
  * false (and leaves *out unusable) for NULL, a negative or non-finite radius,
  * a polygon count outside 3..SX_MAX_POLYGON_VERTICES or any non-finite value,
  * before or after the transform. A zero-length segment or capsule becomes a
  * 1-point core at its end point a. */
-bool sx_core_from_circle(const sx_circle *c, sx_xform x, sx_core *out);
-bool sx_core_from_segment(const sx_segment *s, sx_xform x, sx_core *out);
-bool sx_core_from_capsule(const sx_capsule *c, sx_xform x, sx_core *out);
-bool sx_core_from_polygon(const sx_polygon *p, sx_xform x, sx_core *out);
+bool sx_core_from_circle(const sx_circle *c, const sx_xform *x, sx_core *out);
+bool sx_core_from_segment(const sx_segment *s, const sx_xform *x, sx_core *out);
+bool sx_core_from_capsule(const sx_capsule *c, const sx_xform *x, sx_core *out);
+bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out);
 
 /** True if the rounded cores overlap or touch. Same decisions as
  *  sx_core_mtv, with early outs. */

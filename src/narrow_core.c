@@ -38,63 +38,87 @@
 
 /* ---- core builders ------------------------------------------------------ */
 
+/* x == NULL keeps the shape's own frame (shape A). */
+static sx_vec2 place_point(const sx_xform *x, sx_vec2 v) { return x ? sx_xform_point(*x, v) : v; }
+static sx_vec2 place_vector(const sx_xform *x, sx_vec2 v) { return x ? sx_rotate(x->q, v) : v; }
+
 static bool core_radius_ok(sx_real r) { return sx_is_finite(r) && r >= SX_R(0.0); }
 
-bool sx_core_from_circle(const sx_circle *c, sx_xform x, sx_core *out) {
+/* Sum of (x - x) over n vectors: exactly 0 when all are finite, NaN
+ * otherwise; one branch for the whole array. */
+static bool all_finite(const sx_vec2 *v, int n) {
+    sx_real acc = SX_R(0.0);
+    int i;
+    for (i = 0; i < n; ++i)
+        acc += (v[i].x - v[i].x) + (v[i].y - v[i].y);
+    return acc == SX_R(0.0);
+}
+
+bool sx_core_from_circle(const sx_circle *c, const sx_xform *x, sx_core *out) {
     if (c == NULL || !core_radius_ok(c->radius) || !sx_vec2_is_finite(c->center)) return false;
-    out->v[0] = sx_xform_point(x, c->center);
+    out->vs[0] = place_point(x, c->center);
+    out->v = out->vs;
+    out->n = out->ns;
     out->radius = c->radius;
     out->count = 1;
-    return sx_vec2_is_finite(out->v[0]);
+    return sx_vec2_is_finite(out->vs[0]);
 }
 
 /* Builds the 2-point core a-b (or a 1-point core when a-b has no direction).
  * The normal is taken in the shape's frame and rotated, like polygon normals,
  * so it does not depend on the translation. */
-static bool core_set_segment(sx_vec2 a, sx_vec2 b, sx_real radius, sx_xform x, sx_core *out) {
+static bool core_set_segment(sx_vec2 a, sx_vec2 b, sx_real radius, const sx_xform *x,
+                             sx_core *out) {
     sx_real len;
     sx_vec2 t;
     if (!sx_vec2_is_finite(a) || !sx_vec2_is_finite(b)) return false;
     t = sx_normalize_len(sx_sub(b, a), &len);
+    out->v = out->vs;
+    out->n = out->ns;
     out->radius = radius;
-    out->v[0] = sx_xform_point(x, a);
-    if (!sx_vec2_is_finite(out->v[0])) return false;
+    out->vs[0] = place_point(x, a);
+    if (!sx_vec2_is_finite(out->vs[0])) return false;
     if (len == SX_R(0.0)) {
         out->count = 1;
         return true;
     }
-    out->v[1] = sx_xform_point(x, b);
-    out->n[0] = sx_rotate(x.q, sx_v2(t.y, -t.x));
-    out->n[1] = sx_neg(out->n[0]);
+    out->vs[1] = place_point(x, b);
+    out->ns[0] = place_vector(x, sx_v2(t.y, -t.x));
+    out->ns[1] = sx_neg(out->ns[0]);
     out->count = 2;
-    return sx_vec2_is_finite(out->v[1]) && sx_vec2_is_finite(out->n[0]);
+    return sx_vec2_is_finite(out->vs[1]) && sx_vec2_is_finite(out->ns[0]);
 }
 
-bool sx_core_from_segment(const sx_segment *s, sx_xform x, sx_core *out) {
+bool sx_core_from_segment(const sx_segment *s, const sx_xform *x, sx_core *out) {
     if (s == NULL) return false;
     return core_set_segment(s->a, s->b, SX_R(0.0), x, out);
 }
 
-bool sx_core_from_capsule(const sx_capsule *c, sx_xform x, sx_core *out) {
+bool sx_core_from_capsule(const sx_capsule *c, const sx_xform *x, sx_core *out) {
     if (c == NULL || !core_radius_ok(c->radius)) return false;
     return core_set_segment(c->a, c->b, c->radius, x, out);
 }
 
-bool sx_core_from_polygon(const sx_polygon *p, sx_xform x, sx_core *out) {
-    int i;
+bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) {
+    int i, n;
     if (p == NULL || !core_radius_ok(p->radius)) return false;
-    if (p->count < 3 || p->count > SX_MAX_POLYGON_VERTICES) return false;
-    for (i = 0; i < p->count; ++i) {
-        out->v[i] = sx_xform_point(x, p->vertices[i]);
-        out->n[i] = sx_rotate(x.q, p->normals[i]);
-        if (!sx_vec2_is_finite(p->vertices[i]) || !sx_vec2_is_finite(p->normals[i]) ||
-            !sx_vec2_is_finite(out->v[i]) || !sx_vec2_is_finite(out->n[i])) {
-            return false;
-        }
-    }
+    n = p->count;
+    if (n < 3 || n > SX_MAX_POLYGON_VERTICES) return false;
     out->radius = p->radius;
-    out->count = p->count;
-    return true;
+    out->count = n;
+    if (x == NULL) {
+        /* Shape A is read in place: no copy. */
+        out->v = p->vertices;
+        out->n = p->normals;
+    } else {
+        for (i = 0; i < n; ++i) {
+            out->vs[i] = sx_xform_point(*x, p->vertices[i]);
+            out->ns[i] = sx_rotate(x->q, p->normals[i]);
+        }
+        out->v = out->vs;
+        out->n = out->ns;
+    }
+    return all_finite(out->v, n) && all_finite(out->n, n);
 }
 
 /* ---- separating axes ---------------------------------------------------- */
@@ -284,10 +308,12 @@ static void closest_features(const sx_core *a, const sx_core *b, sx_closest *out
     out->pb = b->v[0];
     out->normal = sx_v2_zero();
     for (i = 0; i < ea; ++i) {
-        for (j = 0; j < b->count; ++j) offer_edge(a, i, b->v[j], j, true, out);
+        for (j = 0; j < b->count; ++j)
+            offer_edge(a, i, b->v[j], j, true, out);
     }
     for (i = 0; i < eb; ++i) {
-        for (j = 0; j < a->count; ++j) offer_edge(b, i, a->v[j], j, false, out);
+        for (j = 0; j < a->count; ++j)
+            offer_edge(b, i, a->v[j], j, false, out);
     }
     if (ea == 0 && eb == 0) {
         out->dist_sq = sx_distance_sq(a->v[0], b->v[0]);
@@ -415,13 +441,14 @@ static int clip_face(const sx_core *ref, int i, const sx_core *inc, sx_real marg
             w[0] = inc->v[k[0]];
         }
     }
-    scale = max_abs_coord(v1, v2);
+    scale = sx_maxr(max_abs_coord(v1, v2), ref->radius + inc->radius);
     for (j = 0; j < nw; ++j) {
         sc[j] = sx_dot(nref, sx_sub(w[j], v1));
         depth[j] = ref->radius + inc->radius - sc[j];
         scale = sx_maxr(scale, max_abs_coord(w[j], w[j]));
         if (depth[j] > depth[deepest]) deepest = j;
     }
+    slack = SX_DIRECTION_EPSILON * scale;
     if (nw == 2) {
         /* The deepest incident vertex can lie outside the reference face's
          * slab (a corner reaching past the end of a short face, a capsule
@@ -432,7 +459,7 @@ static int clip_face(const sx_core *ref, int i, const sx_core *inc, sx_real marg
             sx_vec2 o = inc->v[k[j]];
             sx_real so = sx_dot(nref, sx_sub(o, v1));
             sx_real od = ref->radius + inc->radius - so;
-            if (od > depth[deepest] + SX_FACE_CONTACT_TOLERANCE) {
+            if (od > depth[deepest] + slack) {
                 w[j] = o;
                 sc[j] = so;
                 depth[j] = od;
@@ -440,13 +467,12 @@ static int clip_face(const sx_core *ref, int i, const sx_core *inc, sx_real marg
             }
         }
     }
-    scale = sx_maxr(scale, ref->radius + inc->radius);
-    slack = SX_DIRECTION_EPSILON * scale;
     for (m = 0; m < 2; ++m) {
         for (j = 0; j < nw; ++j) {
             bool keep = m == 0 ? depth[j] >= -margin - slack : j == deepest;
             if (!keep) continue;
-            out[count].point = sx_mul_add(w[j], SX_R(0.5) * (ref->radius - inc->radius - sc[j]), nref);
+            out[count].point =
+                sx_mul_add(w[j], SX_R(0.5) * (ref->radius - inc->radius - sc[j]), nref);
             out[count].depth = sx_maxr(depth[j], -margin);
             out[count].id = SX_FEATURE_ID(i, k[j], flip);
             ++count;
@@ -487,8 +513,7 @@ int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_mani
             return 1;
         }
     }
-    if (sat.face_b >= 0 &&
-        (sat.face_a < 0 || sat.sep_b > sat.sep_a + SX_REFERENCE_HYSTERESIS)) {
+    if (sat.face_b >= 0 && (sat.face_a < 0 || sat.sep_b > sat.sep_a + SX_REFERENCE_HYSTERESIS)) {
         out->count = clip_face(b, sat.face_b, a, margin, true, out->points);
         out->normal = sx_neg(b->n[sat.face_b]);
     } else {

@@ -28,7 +28,9 @@ static sx_xform X(double x, double y, double angle) {
 }
 static sx_xform I(void) { return sx_xform_identity(); }
 
-static sx_shape circle(double x, double y, double r) { return sx_circle_shape(V(x, y), (sx_real)r); }
+static sx_shape circle(double x, double y, double r) {
+    return sx_circle_shape(V(x, y), (sx_real)r);
+}
 static sx_shape segment(double ax, double ay, double bx, double by) {
     return sx_segment_shape(V(ax, ay), V(bx, by));
 }
@@ -41,7 +43,8 @@ static sx_shape hull_shape(const double *xy, int n, double radius) {
     sx_shape s;
     int i;
     h.count = n;
-    for (i = 0; i < n; ++i) h.points[i] = V(xy[2 * i], xy[2 * i + 1]);
+    for (i = 0; i < n; ++i)
+        h.points[i] = V(xy[2 * i], xy[2 * i + 1]);
     assert_int_equal(sx_polygon_from_hull(&h, (sx_real)radius, &s), SX_OK);
     return s;
 }
@@ -71,8 +74,8 @@ static double deepest(const sx_manifold *m) {
  * points: overlap, MTV (value, and exact negation when swapped), and the
  * manifold (count, unit normal opposite to the MTV, deepest depth equal to
  * the MTV length, depths >= 0, normals opposite when swapped). */
-static void check_pair(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                       bool overlap, sx_vec2 mtv, double tol) {
+static void check_pair(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, bool overlap,
+                       sx_vec2 mtv, double tol) {
     sx_vec2 m1, m2;
     sx_manifold c1, c2;
     int n1, n2, i;
@@ -115,7 +118,8 @@ static void check_pair(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xfo
         assert_true(c1.points[i].depth >= SX_R(0.0));
         assert_true(sx_vec2_is_finite(c1.points[i].point));
     }
-    for (i = 0; i < n2; ++i) assert_true(c2.points[i].depth >= SX_R(0.0));
+    for (i = 0; i < n2; ++i)
+        assert_true(c2.points[i].depth >= SX_R(0.0));
 }
 
 /* Asserts the manifold holds exactly the given points (either order). */
@@ -523,6 +527,53 @@ static void polygon_with_a_tiny_edge(void **state) {
     check_pair(&a, I(), &b, X(1.6, 1.6, 0), false, V(0, 0), TOL);
 }
 
+static void identical_shapes_of_every_type_overlap_fully(void **state) {
+    sx_shape c = circle(0, 0, 0.5), k = capsule(-1, 0, 1, 0, 0.25), s = segment(-1, 0, 1, 0);
+    sx_vec2 m1, m2;
+    sx_manifold m;
+    (void)state;
+    assert_true(sx_mtv(&c, X(2, 1, 0.5), &c, X(2, 1, 0.5), &m1));
+    assert_near(sx_length(m1), 1.0, TOL);
+    assert_int_equal(sx_collide(&c, X(2, 1, 0.5), &c, X(2, 1, 0.5), &m), 1);
+    assert_near(m.points[0].depth, 1.0, TOL);
+    /* A capsule on itself: the cheapest push is across, 2 radii. */
+    assert_true(sx_mtv(&k, X(2, 1, 0.5), &k, X(2, 1, 0.5), &m1));
+    assert_true(sx_mtv(&k, X(2, 1, 0.5), &k, X(2, 1, 0.5), &m2));
+    assert_true(m1.x == m2.x && m1.y == m2.y);
+    assert_near(sx_length(m1), 0.5, 1e-4);
+    assert_int_equal(sx_collide(&k, X(2, 1, 0.5), &k, X(2, 1, 0.5), &m), 2);
+    assert_near(deepest(&m), 0.5, 1e-4);
+    /* A segment on itself: zero area, touching. */
+    assert_true(sx_mtv(&s, X(2, 1, 0.5), &s, X(2, 1, 0.5), &m1));
+    assert_near(sx_length(m1), 0.0, 1e-4);
+    assert_true(sx_collide(&s, X(2, 1, 0.5), &s, X(2, 1, 0.5), &m) >= 1);
+}
+
+static void one_shape_inside_another(void **state) {
+    sx_shape big = box(2, 2), small_box = box(0.25, 0.25), k = capsule(-0.5, 0, 0.5, 0, 0.25);
+    sx_shape fat = capsule(-1, 0, 1, 0, 1.5), dot = circle(0, 0, 0.1);
+    (void)state;
+    /* Capsule inside a box, 0.5 below the top: out through the top face. */
+    check_pair(&big, I(), &k, X(0.2, 1.25, 0), true, V(0, -1.0), TOL);
+    /* Box inside a fat capsule: out through the capsule's side (1.5 + 0.25
+     * from the core, box centre 0.3 above the core line). */
+    check_pair(&fat, I(), &small_box, X(0.1, 0.3, 0), true, V(0, -1.45), TOL);
+    /* Circle inside a capsule's cap region. */
+    check_pair(&fat, I(), &dot, X(1.5, 0, 0), true, V(-1.1, 0), TOL);
+}
+
+static void capsule_end_beyond_the_other_end_keeps_its_full_depth(void **state) {
+    sx_shape a = capsule(-1, 0, 1, 0, 0.5), b = capsule(0, 0, 0.45, 0.95, 0.1);
+    double dx = 0.05, dy = 0.55, d = sqrt(dx * dx + dy * dy), depth = 0.6 - d;
+    sx_manifold m;
+    (void)state;
+    /* B's lower end (1.05, 0.55) sits just past A's end (1, 0): the contact
+     * is cap to cap along the line between the two end points. */
+    check_pair(&a, I(), &b, X(1.05, 0.55, 0), true, V(-depth * dx / d, -depth * dy / d), TOL);
+    assert_true(sx_collide(&a, I(), &b, X(1.05, 0.55, 0), &m) >= 1);
+    assert_near(deepest(&m), depth, TOL);
+}
+
 /* ---- every pair: both orders through the table and the pair functions --- */
 
 static void pair_functions_agree_with_the_dispatch_table(void **state) {
@@ -532,8 +583,10 @@ static void pair_functions_agree_with_the_dispatch_table(void **state) {
     sx_vec2 v, w;
     sx_manifold m1, m2;
     (void)state;
-    assert_int_equal(sx_overlap_circles(&c.u.circle, xa, &c.u.circle, xb), sx_overlap(&c, xa, &c, xb));
-    assert_int_equal(sx_mtv_circles(&c.u.circle, xa, &c.u.circle, xb, &v), sx_mtv(&c, xa, &c, xb, &w));
+    assert_int_equal(sx_overlap_circles(&c.u.circle, xa, &c.u.circle, xb),
+                     sx_overlap(&c, xa, &c, xb));
+    assert_int_equal(sx_mtv_circles(&c.u.circle, xa, &c.u.circle, xb, &v),
+                     sx_mtv(&c, xa, &c, xb, &w));
     assert_true(v.x == w.x && v.y == w.y);
     assert_int_equal(sx_mtv_segment_circle(&s.u.segment, xa, &c.u.circle, xb, &v),
                      sx_mtv(&s, xa, &c, xb, &w));
@@ -581,6 +634,92 @@ static void every_ordered_pair_is_consistent(void **state) {
                 half.p = sx_add(xa.p, sx_scale(mtv, SX_R(0.99)));
                 assert_false(sx_overlap(&shapes[i], moved, &shapes[j], xb));
                 assert_true(sx_overlap(&shapes[i], half, &shapes[j], xb));
+            }
+        }
+    }
+}
+
+/* A random shape of the given type, unit-sized, seeded. Polygons are convex
+ * hulls written out directly: points on an ellipse at well-spread angles. */
+static sx_shape random_shape(sx_test_rng *rng, int type) {
+    switch (type) {
+    case SX_SHAPE_CIRCLE:
+        return circle(
+            (double)sx_test_rng_range(rng, -0.3, 0.3), (double)sx_test_rng_range(rng, -0.3, 0.3),
+            sx_test_rng_unit(rng) < 0.1 ? 0.0 : (double)sx_test_rng_range(rng, 0.05, 0.8));
+    case SX_SHAPE_SEGMENT:
+        return segment((double)sx_test_rng_range(rng, -1, 1), (double)sx_test_rng_range(rng, -1, 1),
+                       (double)sx_test_rng_range(rng, -1, 1),
+                       (double)sx_test_rng_range(rng, -1, 1));
+    case SX_SHAPE_CAPSULE:
+        return capsule((double)sx_test_rng_range(rng, -1, 1), (double)sx_test_rng_range(rng, -1, 1),
+                       (double)sx_test_rng_range(rng, -1, 1), (double)sx_test_rng_range(rng, -1, 1),
+                       (double)sx_test_rng_range(rng, 0, 0.5));
+    default: {
+        double xy[16], rx = (double)sx_test_rng_range(rng, 0.3, 1),
+                       ry = (double)sx_test_rng_range(rng, 0.3, 1);
+        double radius = sx_test_rng_unit(rng) < 0.3 ? (double)sx_test_rng_range(rng, 0, 0.2) : 0.0;
+        double start = (double)sx_test_rng_range(rng, 0, 6.28318);
+        int n = 3 + (int)(sx_test_rng_unit(rng) * 6), i;
+        if (sx_test_rng_unit(rng) < 0.3) return box(rx, ry);
+        for (i = 0; i < n; ++i) {
+            /* Evenly spread angles, jittered by at most a third of a step:
+             * gaps stay between 1/3 and 5/3 of 2 pi / n, so the hull is
+             * strictly convex. */
+            double step = 6.283185307179586 / n;
+            double t = start + step * (i + (double)sx_test_rng_range(rng, -0.33, 0.33));
+            xy[2 * i] = rx * cos(t);
+            xy[2 * i + 1] = ry * sin(t);
+        }
+        return hull_shape(xy, n, radius);
+    }
+    }
+}
+
+/* Seeded random pairs (including pairs moved to exactly touch by their own
+ * MTV): overlap agrees with sx_mtv and with the manifold count, the swapped
+ * MTV is the exact negation, the deepest point carries the MTV length, and
+ * moving A by the MTV separates the pair. */
+static void random_pairs_are_self_consistent(void **state) {
+    sx_test_rng rng = sx_test_rng_make(20261122);
+    int it;
+    (void)state;
+    for (it = 0; it < 3000; ++it) {
+        int ta = (int)(sx_test_rng_unit(&rng) * 4), tb = (int)(sx_test_rng_unit(&rng) * 4);
+        sx_shape a = random_shape(&rng, ta), b = random_shape(&rng, tb);
+        sx_xform xa =
+            X((double)sx_test_rng_range(&rng, -1, 1), (double)sx_test_rng_range(&rng, -1, 1),
+              (double)sx_test_rng_range(&rng, -4, 4));
+        sx_xform xb =
+            X((double)sx_test_rng_range(&rng, -1, 1), (double)sx_test_rng_range(&rng, -1, 1),
+              (double)sx_test_rng_range(&rng, -4, 4));
+        sx_vec2 m1, m2;
+        sx_manifold c;
+        bool hit = sx_mtv(&a, xa, &b, xb, &m1);
+        int pass;
+        for (pass = 0; pass < 2; ++pass) {
+            int n;
+            hit = sx_mtv(&a, xa, &b, xb, &m1);
+            assert_int_equal(sx_overlap(&a, xa, &b, xb), hit);
+            assert_int_equal(sx_overlap(&b, xb, &a, xa), hit);
+            assert_int_equal(sx_mtv(&b, xb, &a, xa, &m2), hit);
+            assert_true(m2.x == -m1.x && m2.y == -m1.y);
+            n = sx_collide(&a, xa, &b, xb, &c);
+            assert_int_equal(n > 0, hit);
+            if (hit) {
+                double len = (double)sx_length(m1);
+                double tol = 1e3 * (double)SX_REAL_EPSILON;
+                assert_true(deepest(&c) >= len - tol && deepest(&c) <= len + tol + HYSTERESIS);
+                if (len > tol) {
+                    sx_xform moved = xa;
+                    moved.p = sx_add(xa.p, sx_add(m1, sx_scale(m1, (sx_real)(tol / len))));
+                    assert_false(sx_overlap(&a, moved, &b, xb));
+                }
+                /* Second pass: A moved by exactly its MTV (touching up to
+                 * rounding), where the orders are most likely to disagree. */
+                xa.p = sx_add(xa.p, m1);
+            } else {
+                break;
             }
         }
     }
@@ -747,8 +886,12 @@ int main(void) {
         cmocka_unit_test(triangles_from_hand_written_hulls),
         cmocka_unit_test(rounded_boxes_face_and_corner),
         cmocka_unit_test(polygon_with_a_tiny_edge),
+        cmocka_unit_test(identical_shapes_of_every_type_overlap_fully),
+        cmocka_unit_test(one_shape_inside_another),
+        cmocka_unit_test(capsule_end_beyond_the_other_end_keeps_its_full_depth),
         cmocka_unit_test(pair_functions_agree_with_the_dispatch_table),
         cmocka_unit_test(every_ordered_pair_is_consistent),
+        cmocka_unit_test(random_pairs_are_self_consistent),
         cmocka_unit_test(far_from_the_origin_gives_the_same_answers),
         cmocka_unit_test(non_finite_input_answers_no_contact),
         cmocka_unit_test(null_and_unknown_types_answer_no_contact),

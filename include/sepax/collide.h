@@ -72,7 +72,13 @@ bool sx_overlap(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb);
 /** True if the shapes overlap (touching counts). When mtv is not NULL it
  *  receives the shortest translation of A that separates it from B (the zero
  *  vector when they do not overlap or merely touch). sx_mtv(b, ..., a, ...)
- *  gives exactly the negated vector. Computed by SAT over normalised axes:
+ *  gives exactly (bitwise) the negated vector: each pair is computed in one
+ *  canonical order, chosen for same-type pairs from the transforms and then
+ *  the shape values. Two identical inputs (same shape value, same transform)
+ *  cannot be told apart, so both orders give the same vector. When no
+ *  direction exists (coincident circle centres, coincident points) the MTV
+ *  runs along the local +x axis of the canonical order's first shape.
+ *  Computed by SAT over normalised axes:
  *  the edge normals of both polygons, the segment normal for segments and
  *  capsules, the centre-to-closest-feature axis for circles and rounded
  *  corners, and x/y only for two axis-aligned boxes. */
@@ -85,7 +91,11 @@ bool sx_mtv(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_v
  *  of least penetration, with hysteresis: B's face is preferred over A's only
  *  when it is better by more than 0.1 x SX_LINEAR_SLOP, so the manifold does
  *  not flip between two near-equal faces. The deepest point's depth equals
- *  the MTV's length up to that hysteresis. */
+ *  the MTV's length up to that hysteresis. Swapped arguments give the
+ *  mirrored manifold (same points and depths, normal negated, flipped bit of
+ *  each id toggled): exactly so for two different types; two shapes of the
+ *  same type are solved in the caller's order (A's face wins near-ties), and
+ *  the manifold has points exactly when sx_overlap is true. */
 int sx_collide(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_manifold *out);
 
 /** As sx_collide, but also reports speculative points of shapes that are
