@@ -101,6 +101,7 @@ enum prop_check {
     CHECK_POINT_NOT_OUTSIDE,
     CHECK_SEPARATED_NO_CONTACT,
     CHECK_PAIR_FUNCTION,
+    CHECK_SPECULATIVE,
     CHECK_COUNT
 };
 
@@ -125,6 +126,7 @@ static const char *const check_names[CHECK_COUNT] = {
     "every point at most depth/2 outside either shape",
     "separated -> no contact",
     "pair function == generic dispatch",
+    "speculative contact within the margin",
 };
 
 /* How many violations of a check to print in full per pair type. */
@@ -135,7 +137,7 @@ typedef struct prop_stats {
     int depth_n, angle_n;
     long checks[CHECK_COUNT];
     long violations[CHECK_COUNT];
-    long pairs, overlapping, separation_checked, manifolds_checked;
+    long pairs, overlapping, separation_checked, manifolds_checked, speculative_checked;
     double max_depth_err, p99_depth_err, max_angle_err, p99_angle_err, max_escape_excess;
     double max_point_excess;
 } prop_stats;
@@ -417,6 +419,33 @@ static void check_pair_function(const prop_ctx *c, const sx_shape *a, sx_xform x
           (double)m.y, gn);
 }
 
+/* Shapes apart by less than the speculative distance: sx_collide_ex with
+ * that margin reports them, its deepest (least negative) depth is minus the
+ * reference gap and its normal is a best separating direction, both up to
+ * the reference-face hysteresis. */
+static void check_speculative(const prop_ctx *c, const sx_shape *a, sx_xform xa, const sx_shape *b,
+                              sx_xform xb, const sx_ref_shape *pa, const sx_ref_shape *pb) {
+    double depth = (double)c->ref->depth, deepest = -1e30, along;
+    sx_manifold man;
+    int n, i;
+    bool ok;
+    memset(&man, 0, sizeof man);
+    n = sx_collide_ex(a, xa, b, xb, SX_SPECULATIVE_DISTANCE, &man);
+    c->stats->speculative_checked++;
+    for (i = 0; i < n && i < 2; ++i) {
+        if ((double)man.points[i].depth > deepest) deepest = (double)man.points[i].depth;
+    }
+    along =
+        (double)sx_ref_depth_along(pa, pb, -(long double)man.normal.x, -(long double)man.normal.y);
+    ok = n >= 1 && n <= 2 && n == man.count && fabs(vlen(man.normal) - 1.0) <= PROP_UNIT_TOL &&
+         fabs(deepest - depth) <= PROP_HYSTERESIS + PROP_LEN_TOL &&
+         along <= depth + PROP_HYSTERESIS + PROP_LEN_TOL;
+    check(c, CHECK_SPECULATIVE, ok,
+          "gap %.9g: collide_ex gave %d points, deepest depth %.9g, normal (%.9g, %.9g), reference "
+          "gap along it %.9g",
+          -depth, n, deepest, (double)man.normal.x, (double)man.normal.y, -along);
+}
+
 /* Checks the ordered pair (A, B) = (shape[o], shape[1 - o]); `ref` is the
  * reference answer for that order and pa, pb the placed reference shapes. */
 static void check_ordered(const prop_pair *p, int o, const sx_ref_shape *pa, const sx_ref_shape *pb,
@@ -454,6 +483,8 @@ static void check_ordered(const prop_pair *p, int o, const sx_ref_shape *pa, con
         int n = sx_collide(a, xa, b, xb, &man);
         check(&c, CHECK_SEPARATED_NO_CONTACT, n == 0, "collide gave %d points for a gap of %.9g", n,
               -depth);
+        if (depth > -0.9 * (double)SX_SPECULATIVE_DISTANCE)
+            check_speculative(&c, a, xa, b, xb, pa, pb);
     }
     check_pair_function(&c, a, xa, b, xb, ov, hit, m);
     if (!hit || !(depth > PROP_SIGN_BAND)) return;
@@ -691,9 +722,10 @@ static void run_pair_type(int row) {
     summarize(s_angle_err, st->angle_n, &st->max_angle_err, &st->p99_angle_err);
     r->done = true;
     printf("  %s-%s: %ld pairs x 2 orders, %.1f%% overlapping; depth error max %.3g p99 %.3g; "
-           "angle error max %.3g p99 %.3g rad (%d directions)\n",
+           "angle error max %.3g p99 %.3g rad (%d directions); %ld speculative pairs\n",
            r->a, r->b, st->pairs, 100.0 * (double)st->overlapping / (2.0 * (double)st->pairs),
-           st->max_depth_err, st->p99_depth_err, st->max_angle_err, st->p99_angle_err, st->angle_n);
+           st->max_depth_err, st->p99_depth_err, st->max_angle_err, st->p99_angle_err, st->angle_n,
+           st->speculative_checked);
     for (k = 0; k < CHECK_COUNT; ++k) {
         long allowed = known_defect_bound(row, k);
         if (st->violations[k] != 0) {
@@ -708,6 +740,8 @@ static void run_pair_type(int row) {
      * of the pairs overlap. */
     assert_true(3 * st->overlapping > 2 * st->pairs);
     assert_true(3 * st->overlapping < 4 * st->pairs);
+    /* Shapes within the speculative distance are rarer (about 1 %). */
+    assert_true(st->speculative_checked > PROP_PAIRS / 1000);
 }
 
 static void circle_circle_properties_hold_on_random_pairs(void **state) {
