@@ -216,7 +216,18 @@ bool sx_ref_penetration_placed(const sx_ref_shape *a, const sx_ref_shape *b, sx_
                 best_ny = nys[i];
             }
         }
-        if (min_off >= 0.0L) {
+        if (min_off == HUGE_VALL) {
+            /* Every edge is a rounding artefact: the hull is a point for all
+             * practical purposes. */
+            long double d = ref_len(hull[0].x, hull[0].y);
+            r.core_distance = d;
+            if (d > 0.0L) {
+                r.dir_x = hull[0].x / d;
+                r.dir_y = hull[0].y / d;
+                r.direction_defined = true;
+                r.tie_gap = HUGE_VALL;
+            }
+        } else if (min_off >= 0.0L) {
             long double gap = HUGE_VALL;
             r.core_distance = -min_off;
             r.dir_x = -best_nx;
