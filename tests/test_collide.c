@@ -152,6 +152,28 @@ static void circles_separated_touching_and_overlapping(void **state) {
     assert_int_equal(sx_collide(&a, I(), &b, X(2, 0, 0), &m), 1);
     assert_near(m.points[0].depth, 0.0, TOL);
     assert_vec2_near(m.points[0].point, V(1, 0), TOL);
+    /* Speculative: 0.01 apart, reported with a margin of 0.02 only. */
+    assert_int_equal(sx_collide_ex(&a, I(), &b, X(2.01, 0, 0), SX_R(0.02), &m), 1);
+    assert_near(m.points[0].depth, -0.01, TOL);
+    assert_vec2_near(m.points[0].point, V(1.005, 0), TOL);
+    assert_int_equal(sx_collide(&a, I(), &b, X(2.01, 0, 0), &m), 0);
+    assert_int_equal(m.count, 0);
+}
+
+static void swapped_circles_give_exactly_mirrored_answers(void **state) {
+    sx_shape a = circle(0.3, -0.2, 0.7), b = circle(-0.1, 0.4, 0.45);
+    sx_xform xa = X(100.25, -3.5, 0.7), xb = X(100.5, -3.0, -2.1);
+    sx_manifold m1, m2;
+    sx_vec2 v1, v2;
+    (void)state;
+    assert_true(sx_mtv(&a, xa, &b, xb, &v1));
+    assert_true(sx_mtv(&b, xb, &a, xa, &v2));
+    assert_true(v1.x == -v2.x && v1.y == -v2.y);
+    assert_int_equal(sx_collide(&a, xa, &b, xb, &m1), 1);
+    assert_int_equal(sx_collide(&b, xb, &a, xa, &m2), 1);
+    assert_true(m1.normal.x == -m2.normal.x && m1.normal.y == -m2.normal.y);
+    assert_true(m1.points[0].depth == m2.points[0].depth);
+    assert_vec2_near(m1.points[0].point, m2.points[0].point, 1e-4);
 }
 
 static void circles_with_offset_centres_use_the_local_centres(void **state) {
@@ -486,6 +508,20 @@ static void box_fast_path_matches_general_path(void **state) {
     assert_vec2_near(general, fast, 1e-3);
     quarter.p = V(1.5, 0.3);
     check_pair(&a, I(), &b, quarter, false, V(0, 0), TOL);
+    /* Half a turn, and an offset box: still the fast path's axes. */
+    {
+        sx_shape off = sx_offset_box_shape(SX_R(0.5), SX_R(0.25), V(1, 0), SX_R(0.0));
+        sx_xform half;
+        half.p = V(0.4, 0.1);
+        half.q.c = SX_R(-1.0);
+        half.q.s = SX_R(0.0);
+        /* off turned half a turn about (0.4, 0.1): its centre goes to
+         * (-0.6, 0.1), so it spans x in [-1.1, -0.1], y in [-0.15, 0.35];
+         * the cheapest push of A is down by 0.5 + 0.15 (right: 0.9). */
+        check_pair(&a, I(), &off, half, true, V(0, -0.65), TOL);
+        assert_true(sx_mtv(&a, I(), &off, X(0.4, 0.1, PI + 0.001), &general));
+        assert_vec2_near(general, V(0, -0.65), 2e-3);
+    }
     assert_false(sx_overlap(&a, I(), &b, X(1.5, 0.3, PI / 2 + 0.001)));
 }
 
@@ -858,6 +894,7 @@ static void reference_face_does_not_flip_between_nearly_equal_faces(void **state
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(circles_separated_touching_and_overlapping),
+        cmocka_unit_test(swapped_circles_give_exactly_mirrored_answers),
         cmocka_unit_test(circles_with_offset_centres_use_the_local_centres),
         cmocka_unit_test(concentric_circles_push_by_the_sum_of_radii),
         cmocka_unit_test(point_inside_circle_is_pushed_out_radially),
