@@ -95,7 +95,8 @@ static void rotated_boxes_rotate_the_answer(void **state) {
     double t = 0.5235987755982988; /* 30 degrees */
     double c = cos(t), s = sin(t);
     /* The axis-aligned case above turned by 30 degrees about the origin. */
-    sx_ref_result r = penetration(&a, pose(0, 0, t), &b, pose(1.5 * c - 0.2 * s, 1.5 * s + 0.2 * c, t));
+    sx_ref_result r =
+        penetration(&a, pose(0, 0, t), &b, pose(1.5 * c - 0.2 * s, 1.5 * s + 0.2 * c, t));
     (void)state;
     assert_near(r.depth, 0.5, REF_TOL);
     assert_dir(&r, -c, -s, REF_TOL);
@@ -137,14 +138,17 @@ static void box_and_circle_centre_inside_escape_through_nearest_face(void **stat
 }
 
 static void rounded_box_rounding_adds_to_the_depth(void **state) {
-    sx_vec2 pts[4] = {{SX_R(-1.0), SX_R(-1.0)}, {SX_R(1.0), SX_R(-1.0)}, {SX_R(1.0), SX_R(1.0)},
+    sx_vec2 pts[4] = {{SX_R(-1.0), SX_R(-1.0)},
+                      {SX_R(1.0), SX_R(-1.0)},
+                      {SX_R(1.0), SX_R(1.0)},
                       {SX_R(-1.0), SX_R(1.0)}};
     sx_hull hull;
     sx_shape rounded, point = sx_point_shape(sx_v2_zero());
     sx_ref_result r;
     int i;
     (void)state;
-    for (i = 0; i < 4; ++i) hull.points[i] = pts[i];
+    for (i = 0; i < 4; ++i)
+        hull.points[i] = pts[i];
     hull.count = 4;
     assert_int_equal(sx_polygon_from_hull(&hull, SX_R(0.125), &rounded), SX_OK);
     r = penetration(&rounded, pose(0, 0, 0), &point, pose(1.0625, 0.5, 0));
@@ -159,8 +163,10 @@ static void rounded_box_rounding_adds_to_the_depth(void **state) {
 static void crossing_capsules_escape_past_the_nearer_end(void **state) {
     /* A horizontal (-1,0)-(1,0) r 0.2; B vertical x = 0.3 from y -0.4 to 1
      * r 0.3. Escapes: down 0.9, left 1.2, up 1.5, right 1.8. */
-    sx_shape a = sx_capsule_shape(sx_v2(SX_R(-1.0), SX_R(0.0)), sx_v2(SX_R(1.0), SX_R(0.0)), SX_R(0.2));
-    sx_shape b = sx_capsule_shape(sx_v2(SX_R(0.0), SX_R(-0.4)), sx_v2(SX_R(0.0), SX_R(1.0)), SX_R(0.3));
+    sx_shape a =
+        sx_capsule_shape(sx_v2(SX_R(-1.0), SX_R(0.0)), sx_v2(SX_R(1.0), SX_R(0.0)), SX_R(0.2));
+    sx_shape b =
+        sx_capsule_shape(sx_v2(SX_R(0.0), SX_R(-0.4)), sx_v2(SX_R(0.0), SX_R(1.0)), SX_R(0.3));
     sx_ref_result r = penetration(&a, pose(0, 0, 0), &b, pose(0.3, 0, 0));
     (void)state;
     assert_near(r.depth, 0.9, REF_TOL);
@@ -199,7 +205,8 @@ static void collinear_overlapping_segments_have_no_unique_direction(void **state
 
 static void segment_against_capsule_side(void **state) {
     sx_shape seg = sx_segment_shape(sx_v2(SX_R(-0.5), SX_R(0.0)), sx_v2(SX_R(0.5), SX_R(0.0)));
-    sx_shape cap = sx_capsule_shape(sx_v2(SX_R(-2.0), SX_R(0.0)), sx_v2(SX_R(2.0), SX_R(0.0)), SX_R(0.5));
+    sx_shape cap =
+        sx_capsule_shape(sx_v2(SX_R(-2.0), SX_R(0.0)), sx_v2(SX_R(2.0), SX_R(0.0)), SX_R(0.5));
     sx_ref_result r = penetration(&seg, pose(0, 0.3, 0), &cap, pose(0, 0, 0));
     (void)state;
     assert_near(r.depth, 0.2, REF_TOL);
@@ -225,11 +232,13 @@ static void depth_along_own_direction_is_depth_and_no_direction_is_shallower(voi
             if (type == 1) shapes[i] = sx_segment_shape(p, q);
             if (type == 2) shapes[i] = sx_capsule_shape(p, q, rad);
             if (type == 3) {
-                shapes[i] = sx_offset_box_shape(sx_test_rng_range(&rng, 0.1, 1), sx_test_rng_range(&rng, 0.1, 1), p,
+                shapes[i] = sx_offset_box_shape(sx_test_rng_range(&rng, 0.1, 1),
+                                                sx_test_rng_range(&rng, 0.1, 1), p,
                                                 sx_test_rng_range(&rng, 0, 3));
             }
-            poses[i] = pose((double)sx_test_rng_range(&rng, -1, 1), (double)sx_test_rng_range(&rng, -1, 1),
-                            (double)sx_test_rng_range(&rng, -3.2, 3.2));
+            poses[i] =
+                pose((double)sx_test_rng_range(&rng, -1, 1), (double)sx_test_rng_range(&rng, -1, 1),
+                     (double)sx_test_rng_range(&rng, -3.2, 3.2));
             assert_true(sx_ref_place(&shapes[i], poses[i], &placed[i]));
         }
         assert_true(sx_ref_penetration_placed(&placed[0], &placed[1], &r));
@@ -258,7 +267,8 @@ static void depth_along_own_direction_is_depth_and_no_direction_is_shallower(voi
 }
 
 static void rotating_both_poses_rotates_the_reference_direction(void **state) {
-    sx_shape a = sx_capsule_shape(sx_v2(SX_R(-0.3), SX_R(0.1)), sx_v2(SX_R(0.7), SX_R(0.4)), SX_R(0.2));
+    sx_shape a =
+        sx_capsule_shape(sx_v2(SX_R(-0.3), SX_R(0.1)), sx_v2(SX_R(0.7), SX_R(0.4)), SX_R(0.2));
     sx_shape b = sx_offset_box_shape(SX_R(0.4), SX_R(0.3), sx_v2(SX_R(0.1), SX_R(0.0)), SX_R(0.3));
     sx_ref_result r0 = penetration(&a, pose(0.1, 0.2, 0.4), &b, pose(0.5, 0.1, -0.2));
     double t = 1.1, c = cos(t), s = sin(t);
@@ -274,7 +284,8 @@ static void rotating_both_poses_rotates_the_reference_direction(void **state) {
 
 static void point_distance_is_signed_and_has_outward_normal(void **state) {
     sx_shape box = sx_box_shape(SX_R(1.0), SX_R(0.5));
-    sx_shape cap = sx_capsule_shape(sx_v2(SX_R(-1.0), SX_R(0.0)), sx_v2(SX_R(1.0), SX_R(0.0)), SX_R(0.5));
+    sx_shape cap =
+        sx_capsule_shape(sx_v2(SX_R(-1.0), SX_R(0.0)), sx_v2(SX_R(1.0), SX_R(0.0)), SX_R(0.5));
     sx_shape seg = sx_segment_shape(sx_v2(SX_R(0.0), SX_R(0.0)), sx_v2(SX_R(2.0), SX_R(0.0)));
     sx_shape circle = sx_circle_shape(sx_v2(SX_R(1.0), SX_R(0.0)), SX_R(1.0));
     /* Box turned 90 degrees at (2, 3): world half-extents 0.5 x 1. */
@@ -321,7 +332,8 @@ static void unplaceable_input_is_reported_not_answered(void **state) {
     assert_false(sx_ref_penetration(NULL, pose(0, 0, 0), &ok, pose(0, 0, 0), &r));
     poly.u.polygon.count = SX_MAX_POLYGON_VERTICES + 1;
     assert_false(sx_ref_place(&poly, pose(0, 0, 0), &placed));
-    assert_true(isinf((double)sx_ref_distance_to_point(&bad, pose(0, 0, 0), 0.0L, 0.0L, NULL, NULL)));
+    assert_true(
+        isinf((double)sx_ref_distance_to_point(&bad, pose(0, 0, 0), 0.0L, 0.0L, NULL, NULL)));
 }
 
 static void angle_between_directions(void **state) {

@@ -49,7 +49,8 @@ static int ref_hull(ref_pt *pts, int n, ref_pt *hull) {
     int i, j, k, m, lower;
     for (i = 1; i < n; ++i) {
         ref_pt p = pts[i];
-        for (j = i; j > 0 && ref_less(p, pts[j - 1]); --j) pts[j] = pts[j - 1];
+        for (j = i; j > 0 && ref_less(p, pts[j - 1]); --j)
+            pts[j] = pts[j - 1];
         pts[j] = p;
     }
     m = 0;
@@ -62,12 +63,14 @@ static int ref_hull(ref_pt *pts, int n, ref_pt *hull) {
     }
     k = 0;
     for (i = 0; i < m; ++i) {
-        while (k >= 2 && ref_cross3(hull[k - 2], hull[k - 1], pts[i]) <= 0.0L) --k;
+        while (k >= 2 && ref_cross3(hull[k - 2], hull[k - 1], pts[i]) <= 0.0L)
+            --k;
         hull[k++] = pts[i];
     }
     lower = k + 1;
     for (i = m - 2; i >= 0; --i) {
-        while (k >= lower && ref_cross3(hull[k - 2], hull[k - 1], pts[i]) <= 0.0L) --k;
+        while (k >= lower && ref_cross3(hull[k - 2], hull[k - 1], pts[i]) <= 0.0L)
+            --k;
         hull[k++] = pts[i];
     }
     return k - 1;
@@ -121,11 +124,11 @@ bool sx_ref_place(const sx_shape *s, sx_xform x, sx_ref_shape *out) {
     case SX_SHAPE_POLYGON:
         n = s->u.polygon.count;
         if (n < 3 || n > SX_MAX_POLYGON_VERTICES) return false;
-        for (i = 0; i < n; ++i) local[i] = s->u.polygon.vertices[i];
+        for (i = 0; i < n; ++i)
+            local[i] = s->u.polygon.vertices[i];
         radius = s->u.polygon.radius;
         break;
-    default:
-        return false;
+    default: return false;
     }
     if (!(radius >= SX_R(0.0))) return false;
     for (i = 0; i < n; ++i) {
@@ -213,7 +216,18 @@ bool sx_ref_penetration_placed(const sx_ref_shape *a, const sx_ref_shape *b, sx_
                 best_ny = nys[i];
             }
         }
-        if (min_off >= 0.0L) {
+        if (min_off == HUGE_VALL) {
+            /* Every edge is a rounding artefact: the hull is a point for all
+             * practical purposes. */
+            long double d = ref_len(hull[0].x, hull[0].y);
+            r.core_distance = d;
+            if (d > 0.0L) {
+                r.dir_x = hull[0].x / d;
+                r.dir_y = hull[0].y / d;
+                r.direction_defined = true;
+                r.tie_gap = HUGE_VALL;
+            }
+        } else if (min_off >= 0.0L) {
             long double gap = HUGE_VALL;
             r.core_distance = -min_off;
             r.dir_x = -best_nx;
@@ -288,8 +302,8 @@ long double sx_ref_depth_along(const sx_ref_shape *a, const sx_ref_shape *b, lon
     return a->radius + b->radius + max_b - min_a;
 }
 
-long double sx_ref_distance_to_point(const sx_shape *s, sx_xform x, long double px,
-                                     long double py, long double *nx, long double *ny) {
+long double sx_ref_distance_to_point(const sx_shape *s, sx_xform x, long double px, long double py,
+                                     long double *nx, long double *ny) {
     sx_ref_shape shape;
     ref_pt core[SX_REF_MAX_CORE], hull[2 * SX_REF_MAX_CORE + 1];
     long double d, out_nx = 0.0L, out_ny = 0.0L, dist;

@@ -25,6 +25,10 @@
 
 #include "sepax/sepax.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 /** Largest number of points of a core (a polygon's vertex count). */
 #define SX_REF_MAX_CORE SX_MAX_POLYGON_VERTICES
 
@@ -93,11 +97,15 @@ long double sx_ref_depth_along(const sx_ref_shape *a, const sx_ref_shape *b, lon
  *  point exactly on a segment core or at a circle's centre, the fallback of
  *  collide.h: the segment's left normal perp(b - a), or +x. A shape that
  *  cannot be placed gives +infinity (never NaN) and a zero normal. */
-long double sx_ref_distance_to_point(const sx_shape *s, sx_xform x, long double px,
-                                     long double py, long double *nx, long double *ny);
+long double sx_ref_distance_to_point(const sx_shape *s, sx_xform x, long double px, long double py,
+                                     long double *nx, long double *ny);
 
 /** The angle in radians between two directions (each normalised here), in
  *  [0, pi]; pi for a zero vector. */
 long double sx_ref_angle_between(long double ax, long double ay, long double bx, long double by);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif /* SEPAX_TEST_REFERENCE_H */
