@@ -137,6 +137,7 @@ typedef struct prop_stats {
     int depth_n, angle_n;
     long checks[CHECK_COUNT];
     long violations[CHECK_COUNT];
+    long print_limit[CHECK_COUNT];
     long pairs, overlapping, separation_checked, manifolds_checked, speculative_checked;
     double max_depth_err, p99_depth_err, max_angle_err, p99_angle_err, max_escape_excess;
     double max_point_excess;
@@ -288,7 +289,7 @@ typedef struct prop_ctx {
 static bool check(const prop_ctx *c, int which, bool ok, const char *format, ...) {
     c->stats->checks[which]++;
     if (ok) return true;
-    if (c->stats->violations[which]++ < PROP_PRINT_LIMIT) {
+    if (c->stats->violations[which]++ < c->stats->print_limit[which]) {
         const prop_pair *p = c->pair;
         int ia = c->order, ib = 1 - c->order;
         va_list args;
@@ -699,6 +700,10 @@ static void run_pair_type(int row) {
     int k;
     bool all_ok = true;
     memset(st, 0, sizeof *st);
+    /* Known defects print one example; anything else its first few. */
+    for (k = 0; k < CHECK_COUNT; ++k) {
+        st->print_limit[k] = known_defect_bound(row, k) > 0 ? 1 : PROP_PRINT_LIMIT;
+    }
     r->a = kind_names[ka];
     r->b = kind_names[kb];
     for (i = 0; i < PROP_PAIRS; ++i) {
