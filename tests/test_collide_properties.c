@@ -15,7 +15,9 @@
  * A moved by MTV (1 + 1e-3) no longer overlapping and by
  * MTV (1 - 1e-3) still overlapping; the same MTV after translating both
  * shapes (by exact offsets) and, rotated, after rotating both about the
- * origin; and the manifold's unit normal, depths and contact points.
+ * origin; the manifold's unit normal, depths and contact points; speculative
+ * contacts (sx_collide_ex) of shapes within SX_SPECULATIVE_DISTANCE; and the
+ * typed pair functions answering exactly as the generic dispatch.
  *
  * Positions are drawn on a 2^-12 m grid so that the translation offsets below
  * add exactly in float: the relative pose of the shapes is then identical, and
@@ -39,7 +41,9 @@
 
 /* Tolerances. Shapes are at most 2 m across and within ~4 m of the origin
  * (1 km in the translation check, where the grid keeps the sums exact).
- * LEN: depth agreement with the reference and every length comparison.
+ * LEN: depth agreement with the reference and every length comparison
+ * (the largest depth errors measured are 7.1e-7 m in float and 1.1e-15 m in
+ * double: the bounds leave a factor of 14 and 900).
  * SIGN_BAND: overlap must agree with the reference's sign beyond this depth.
  * ANGLE: direction agreement where the reference direction is well
  * conditioned, i.e. its core distance and its tie gap both exceed COND (an
