@@ -15,7 +15,9 @@
  * A moved by MTV (1 + 1e-3) no longer overlapping and by
  * MTV (1 - 1e-3) still overlapping; the same MTV after translating both
  * shapes (by exact offsets) and, rotated, after rotating both about the
- * origin; and the manifold's unit normal, depths and contact points.
+ * origin; the manifold's unit normal, depths and contact points; speculative
+ * contacts (sx_collide_ex) of shapes within SX_SPECULATIVE_DISTANCE; and the
+ * typed pair functions answering exactly as the generic dispatch.
  *
  * Positions are drawn on a 2^-12 m grid so that the translation offsets below
  * add exactly in float: the relative pose of the shapes is then identical, and
@@ -39,7 +41,9 @@
 
 /* Tolerances. Shapes are at most 2 m across and within ~4 m of the origin
  * (1 km in the translation check, where the grid keeps the sums exact).
- * LEN: depth agreement with the reference and every length comparison.
+ * LEN: depth agreement with the reference and every length comparison
+ * (the largest depth errors measured are 7.1e-7 m in float and 1.1e-15 m in
+ * double: the bounds leave a factor of 14 and 900).
  * SIGN_BAND: overlap must agree with the reference's sign beyond this depth.
  * ANGLE: direction agreement where the reference direction is well
  * conditioned, i.e. its core distance and its tie gap both exceed COND (an
@@ -137,6 +141,7 @@ typedef struct prop_stats {
     int depth_n, angle_n;
     long checks[CHECK_COUNT];
     long violations[CHECK_COUNT];
+    long print_limit[CHECK_COUNT];
     long pairs, overlapping, separation_checked, manifolds_checked, speculative_checked;
     double max_depth_err, p99_depth_err, max_angle_err, p99_angle_err, max_escape_excess;
     double max_point_excess;
@@ -288,7 +293,7 @@ typedef struct prop_ctx {
 static bool check(const prop_ctx *c, int which, bool ok, const char *format, ...) {
     c->stats->checks[which]++;
     if (ok) return true;
-    if (c->stats->violations[which]++ < PROP_PRINT_LIMIT) {
+    if (c->stats->violations[which]++ < c->stats->print_limit[which]) {
         const prop_pair *p = c->pair;
         int ia = c->order, ib = 1 - c->order;
         va_list args;
@@ -699,6 +704,10 @@ static void run_pair_type(int row) {
     int k;
     bool all_ok = true;
     memset(st, 0, sizeof *st);
+    /* Known defects print one example; anything else its first few. */
+    for (k = 0; k < CHECK_COUNT; ++k) {
+        st->print_limit[k] = known_defect_bound(row, k) > 0 ? 1 : PROP_PRINT_LIMIT;
+    }
     r->a = kind_names[ka];
     r->b = kind_names[kb];
     for (i = 0; i < PROP_PAIRS; ++i) {
