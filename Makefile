@@ -121,6 +121,12 @@ test: lib check-headers readme-example $(TEST_BINS)
 	test $$failed -eq 0
 
 # ---- benchmarks --------------------------------------------------------------
+#
+# bench/*.c is our code (strict flags, the float or double build of the
+# library); bench/*.cpp are the peers, Box2D 2.4 and Chipmunk 7 (C++, relaxed
+# flags). `make bench`
+# prints the table and writes $(OUT)/bench/narrowphase.csv (build/bench for
+# the float build); `make bench-smoke` runs every pair type a few times only.
 
 BENCH_SRCS := $(sort $(wildcard bench/*.c))
 BENCH_CXX_SRCS := $(sort $(wildcard bench/*.cpp))
@@ -137,13 +143,15 @@ $(OUT)/obj/bench/%.o: bench/%.c | $(OUT)/obj/bench deps-bench
 
 # The peer engines are C++ (Box2D 2.4): compiled with relaxed flags.
 $(OUT)/obj/bench/%.o: bench/%.cpp | $(OUT)/obj/bench deps-bench
-	$(CXX) -std=c++17 -O2 -DNDEBUG $(DEFS) -Iinclude -Ibench -Itests/support -MMD -MP -c $< -o $@
+	$(CXX) -std=c++17 -O2 -DNDEBUG $(DEFS) -Iinclude -Ibench -MMD -MP -c $< -o $@
 
-$(BENCH_BIN): $(BENCH_OBJS) $(OUT)/obj/tests/support/reference.o $(LIB_A) | $(OUT)/bench
-	$(CXX) -o $@ $(BENCH_OBJS) $(OUT)/obj/tests/support/reference.o $(LIB_A) -lbox2d -lchipmunk $(LDLIBS_ALL)
+# The depth reference of the tests (tests/support/reference.c) is linked too.
+BENCH_REF_OBJ := $(OUT)/obj/tests/support/reference.o
+$(BENCH_BIN): $(BENCH_OBJS) $(BENCH_REF_OBJ) $(LIB_A) | $(OUT)/bench
+	$(CXX) $(SANFLAGS) -o $@ $(BENCH_OBJS) $(BENCH_REF_OBJ) $(LIB_A) -lbox2d -lchipmunk $(LDLIBS_ALL)
 
 bench: $(BENCH_BIN)
-	./$(BENCH_BIN) --out build/bench
+	./$(BENCH_BIN) --out $(OUT)/bench
 
 bench-smoke: $(BENCH_BIN)
 	./$(BENCH_BIN) --smoke --out $(OUT)/bench-smoke

@@ -1,0 +1,583 @@
+/* sepax benchmarks — the narrowphase benchmark: ns per pair of sx_overlap,
+ * sx_mtv and sx_collide for every pair of shape kinds, beside Box2D 2.4 and
+ * Chipmunk 7 on the very same pairs, with each engine's depth error against
+ * a long double reference.
+ *
+ * For each pair type a few thousand seeded pairs (half overlapping) are built
+ * once per engine in that engine's own types and timed by looping over the
+ * whole array many times; every result feeds a sum that is returned and
+ * stored in a volatile sink, so no call can be dropped. The engines are timed
+ * in turns within each repetition (sepax overlap, mtv, collide, Box2D
+ * overlap, collide, ...), so a burst of noise on the shared machine hits them
+ * alike, and the best repetition is reported: interference only ever adds
+ * time, so the best is the closest to the uncontended cost (the median over
+ * best ratio is printed at the end as a noise gauge). Depth errors are taken
+ * over the overlapping pairs: sepax's depth is its deepest manifold point
+ * (and |mtv| for sx_mtv), Box2D's the deepest b2WorldManifold separation,
+ * Chipmunk's the deepest contact distance; an overlapping pair with no
+ * contact point counts as depth 0. Two independent long double references
+ * (the tests' sx_ref_penetration and bench_ref_depth) must agree, or the run
+ * fails. Writes DIR/narrowphase.csv and prints the tables. */
+#define _POSIX_C_SOURCE 200809L
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+
+#include "pairs.h"
+#include "reference.h"
+#include "sepax/sepax.h"
+
+/* The two references (the project's sx_ref_penetration on the sepax shapes,
+ * bench_ref_depth on the shared descriptions) are computed independently in
+ * long double; more disagreement than this means one of them is wrong, and
+ * the run fails rather than report errors against a bad reference. */
+#define REFERENCE_AGREEMENT 1e-9
+
+/* The engine functions the table has a column for. */
+enum {
+    ROW_SX_OVERLAP = 0,
+    ROW_SX_MTV,
+    ROW_SX_COLLIDE,
+    ROW_B2_OVERLAP,
+    ROW_B2_COLLIDE,
+    ROW_B2_COLLIDE_WORLD,
+    ROW_CP_COLLIDE,
+    ROW_COUNT
+};
+
+static const char *const row_engine[ROW_COUNT] = {"sepax", "sepax", "sepax",   "box2d",
+                                                  "box2d", "box2d", "chipmunk"};
+static const char *const row_function[ROW_COUNT] = {
+    "overlap", "mtv", "collide", "overlap", "collide", "collide_world", "collide"};
+
+typedef struct sepax_pair {
+    sx_shape a, b;
+    sx_xform xa, xb;
+} sepax_pair;
+
+typedef struct options {
+    int smoke;
+    int pairs;
+    int reps;
+    double target_ms;
+    uint64_t seed;
+    const char *out_dir;
+} options;
+
+/* One row of results for one pair type. */
+typedef struct result {
+    int available;
+    double ns;        /* best repetition, ns per pair */
+    double ns_median; /* median repetition: ns_median / ns shows the noise */
+    int has_depth;
+    double max_err, p99_err;
+    int wrong;          /* overlap answers that contradict the reference */
+    int worst;          /* index of the pair of largest depth error */
+    double worst_depth; /* the engine's depth there */
+} result;
+
+static volatile double bench_sink;
+
+static double now_ns(void) {
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec * 1e9 + (double)t.tv_nsec;
+}
+
+static sx_vec2 v2(const double *p) { return sx_v2((sx_real)p[0], (sx_real)p[1]); }
+
+static int to_sepax_shape(const bench_shape *s, sx_shape *out) {
+    sx_vec2 pts[BENCH_MAX_VERTICES];
+    switch (s->kind) {
+    case BENCH_CIRCLE: *out = sx_circle_shape(v2(s->v[0]), (sx_real)s->radius); return 1;
+    case BENCH_SEGMENT: *out = sx_segment_shape(v2(s->v[0]), v2(s->v[1])); return 1;
+    case BENCH_CAPSULE:
+        *out = sx_capsule_shape(v2(s->v[0]), v2(s->v[1]), (sx_real)s->radius);
+        return 1;
+    case BENCH_BOX: *out = sx_box_shape((sx_real)s->hx, (sx_real)s->hy); return 1;
+    default:
+        for (int i = 0; i < s->count; ++i)
+            pts[i] = v2(s->v[i]);
+        return sx_polygon_shape(pts, s->count, (sx_real)s->radius, out) == SX_OK &&
+               out->u.polygon.count == s->count;
+    }
+}
+
+static sx_xform to_sepax_xform(const bench_pose *p) {
+    sx_xform x;
+    x.p = sx_v2((sx_real)p->x, (sx_real)p->y);
+    x.q.c = (sx_real)p->c;
+    x.q.s = (sx_real)p->s;
+    return x;
+}
+
+static double sepax_run(const sepax_pair *p, int n, int row, int passes) {
+    double sum = 0.0;
+    for (int pass = 0; pass < passes; ++pass) {
+        if (row == ROW_SX_OVERLAP) {
+            for (int i = 0; i < n; ++i)
+                sum += sx_overlap(&p[i].a, p[i].xa, &p[i].b, p[i].xb);
+        } else if (row == ROW_SX_MTV) {
+            for (int i = 0; i < n; ++i) {
+                sx_vec2 mtv;
+                sx_mtv(&p[i].a, p[i].xa, &p[i].b, p[i].xb, &mtv);
+                sum += (double)mtv.x;
+            }
+        } else {
+            for (int i = 0; i < n; ++i) {
+                sx_manifold m;
+                sum += sx_collide(&p[i].a, p[i].xa, &p[i].b, p[i].xb, &m);
+            }
+        }
+    }
+    return sum;
+}
+
+/* Runs one row over all pairs `passes` times; returns the elapsed ns. */
+static double time_row(int row, const sepax_pair *sp, const bench_box2d_set *b2,
+                       const bench_chipmunk_set *cp, int n, int passes) {
+    double t0 = now_ns(), sum;
+    if (row <= ROW_SX_COLLIDE) {
+        sum = sepax_run(sp, n, row, passes);
+    } else if (row == ROW_CP_COLLIDE) {
+        sum = bench_chipmunk_run(cp, passes);
+    } else {
+        int fn = row == ROW_B2_OVERLAP   ? BENCH_FN_OVERLAP
+                 : row == ROW_B2_COLLIDE ? BENCH_FN_COLLIDE
+                                         : BENCH_FN_COLLIDE_WORLD;
+        sum = bench_box2d_run(b2, fn, passes);
+    }
+    double t1 = now_ns();
+    bench_sink = bench_sink + sum;
+    return t1 - t0;
+}
+
+static int cmp_double(const void *a, const void *b) {
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : (x > y ? 1 : 0);
+}
+
+static double median(double *v, int n) {
+    qsort(v, (size_t)n, sizeof *v, cmp_double);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/* Max and 99th percentile of |depth - reference| over overlapping pairs. */
+static void depth_errors(const double *ref, const double *depth, int n, double *scratch,
+                         result *r) {
+    int m = 0;
+    double worst = -1.0;
+    for (int i = 0; i < n; ++i) {
+        if (!(ref[i] > 0.0)) continue;
+        scratch[m++] = fabs(depth[i] - ref[i]);
+        if (scratch[m - 1] > worst) {
+            worst = scratch[m - 1];
+            r->worst = i;
+            r->worst_depth = depth[i];
+        }
+    }
+    r->has_depth = m > 0;
+    if (m == 0) return;
+    qsort(scratch, (size_t)m, sizeof *scratch, cmp_double);
+    r->max_err = scratch[m - 1];
+    int k = (int)ceil(0.99 * m) - 1;
+    r->p99_err = scratch[k < 0 ? 0 : k];
+}
+
+static int count_wrong(const double *ref, const int *overlap, int n) {
+    int wrong = 0;
+    for (int i = 0; i < n; ++i)
+        wrong += (overlap[i] != 0) != (ref[i] > 0.0);
+    return wrong;
+}
+
+/* The accuracy side of one pair type: answers of every engine against the
+ * reference (untimed). */
+static void measure_accuracy(const double *ref, const sepax_pair *sp, const bench_box2d_set *b2,
+                             const bench_chipmunk_set *cp, int ka, int kb, int n, result *res) {
+    double *depth = malloc((size_t)n * sizeof *depth);
+    double *scratch = malloc((size_t)n * sizeof *scratch);
+    int *ovl = malloc((size_t)n * sizeof *ovl);
+    if (!depth || !scratch || !ovl) {
+        fprintf(stderr, "sepax_bench: out of memory\n");
+        exit(1);
+    }
+    for (int i = 0; i < n; ++i)
+        ovl[i] = sx_overlap(&sp[i].a, sp[i].xa, &sp[i].b, sp[i].xb);
+    res[ROW_SX_OVERLAP].wrong = count_wrong(ref, ovl, n);
+
+    for (int i = 0; i < n; ++i) {
+        sx_vec2 mtv = sx_v2_zero();
+        ovl[i] = sx_mtv(&sp[i].a, sp[i].xa, &sp[i].b, sp[i].xb, &mtv);
+        depth[i] = hypot((double)mtv.x, (double)mtv.y);
+    }
+    res[ROW_SX_MTV].wrong = count_wrong(ref, ovl, n);
+    depth_errors(ref, depth, n, scratch, &res[ROW_SX_MTV]);
+
+    for (int i = 0; i < n; ++i) {
+        sx_manifold m;
+        int count = sx_collide(&sp[i].a, sp[i].xa, &sp[i].b, sp[i].xb, &m);
+        double d = 0.0;
+        for (int k = 0; k < count && k < 2; ++k)
+            if (k == 0 || (double)m.points[k].depth > d) d = (double)m.points[k].depth;
+        depth[i] = d;
+        ovl[i] = count > 0;
+    }
+    res[ROW_SX_COLLIDE].wrong = count_wrong(ref, ovl, n);
+    depth_errors(ref, depth, n, scratch, &res[ROW_SX_COLLIDE]);
+
+    if (b2 && bench_box2d_supports(ka, kb, BENCH_FN_OVERLAP)) {
+        bench_box2d_overlaps(b2, ovl);
+        res[ROW_B2_OVERLAP].wrong = count_wrong(ref, ovl, n);
+    }
+    if (b2 && bench_box2d_supports(ka, kb, BENCH_FN_COLLIDE)) {
+        bench_box2d_depths(b2, depth);
+        for (int i = 0; i < n; ++i)
+            ovl[i] = depth[i] > 0.0;
+        res[ROW_B2_COLLIDE].wrong = count_wrong(ref, ovl, n);
+        depth_errors(ref, depth, n, scratch, &res[ROW_B2_COLLIDE]);
+        res[ROW_B2_COLLIDE_WORLD] = res[ROW_B2_COLLIDE];
+    }
+    if (cp) {
+        bench_chipmunk_depths(cp, depth);
+        for (int i = 0; i < n; ++i)
+            ovl[i] = depth[i] > 0.0;
+        res[ROW_CP_COLLIDE].wrong = count_wrong(ref, ovl, n);
+        depth_errors(ref, depth, n, scratch, &res[ROW_CP_COLLIDE]);
+    }
+    free(depth);
+    free(scratch);
+    free(ovl);
+}
+
+static void measure_speed(const sepax_pair *sp, const bench_box2d_set *b2,
+                          const bench_chipmunk_set *cp, int n, const options *opt, result *res) {
+    int passes[ROW_COUNT];
+    double *times = malloc((size_t)(ROW_COUNT * opt->reps) * sizeof *times);
+    if (!times) {
+        fprintf(stderr, "sepax_bench: out of memory\n");
+        exit(1);
+    }
+    /* One warm-up pass per row sizes its repetitions to about target_ms. */
+    for (int r = 0; r < ROW_COUNT; ++r) {
+        passes[r] = 1;
+        if (!res[r].available || opt->smoke) continue;
+        double t = time_row(r, sp, b2, cp, n, 1);
+        double want = opt->target_ms * 1e6 / (t > 1.0 ? t : 1.0);
+        passes[r] = want < 1.0 ? 1 : (want > 1e6 ? 1000000 : (int)want);
+    }
+    for (int rep = 0; rep < opt->reps; ++rep)
+        for (int r = 0; r < ROW_COUNT; ++r)
+            if (res[r].available)
+                times[r * opt->reps + rep] =
+                    time_row(r, sp, b2, cp, n, passes[r]) / ((double)passes[r] * (double)n);
+    for (int r = 0; r < ROW_COUNT; ++r) {
+        if (!res[r].available) continue;
+        res[r].ns_median = median(&times[r * opt->reps], opt->reps);
+        res[r].ns = times[r * opt->reps]; /* sorted by median() */
+    }
+    free(times);
+}
+
+static int make_dirs(const char *path) {
+    char buf[1024];
+    size_t len = strlen(path);
+    if (len == 0 || len >= sizeof buf) return 0;
+    memcpy(buf, path, len + 1);
+    for (size_t i = 1; i <= len; ++i) {
+        if (buf[i] != '/' && buf[i] != '\0') continue;
+        char c = buf[i];
+        buf[i] = '\0';
+        if (mkdir(buf, 0777) != 0 && errno != EEXIST) return 0;
+        buf[i] = c;
+    }
+    return 1;
+}
+
+static void dump_shape(FILE *f, const char *label, const bench_shape *s, const bench_pose *x) {
+    fprintf(f, "  %s: %s radius %.9g, pose p = (%.9g, %.9g) cos/sin = (%.9g, %.9g), core", label,
+            bench_kind_name(s->kind), s->radius, x->x, x->y, x->c, x->s);
+    for (int i = 0; i < s->count; ++i)
+        fprintf(f, " (%.9g, %.9g)", s->v[i][0], s->v[i][1]);
+    fprintf(f, "\n");
+}
+
+/* The pair of largest depth error of each sepax function, with every number
+ * needed to replay it (float values printed exactly with %.9g). */
+static void dump_worst(FILE *f, const char *name, const bench_pair *pairs, const double *ref,
+                       const result *res) {
+    for (int r = ROW_SX_MTV; r <= ROW_SX_COLLIDE; ++r) {
+        if (!res[r].has_depth) continue;
+        int i = res[r].worst;
+        fprintf(f, "%s sepax %s: pair %d, depth %.9g, reference %.12g, error %.3g\n", name,
+                row_function[r], i, res[r].worst_depth, ref[i], res[r].max_err);
+        dump_shape(f, "A", &pairs[i].a, &pairs[i].xa);
+        dump_shape(f, "B", &pairs[i].b, &pairs[i].xb);
+    }
+}
+
+static void print_ns(double ns, int available) {
+    if (available)
+        printf(" %7.1f", ns);
+    else
+        printf(" %7s", "n/a");
+}
+
+static void print_err(const result *r) {
+    if (r->available && r->has_depth)
+        printf(" %9.2e %9.2e", r->max_err, r->p99_err);
+    else
+        printf(" %9s %9s", "n/a", "n/a");
+}
+
+static void usage(void) {
+    printf("usage: sepax_bench [--smoke] [--out DIR] [--pairs N] [--reps N] [--seed S]\n"
+           "  --smoke    every pair type for a handful of iterations (proves the suite runs)\n"
+           "  --out DIR  directory of narrowphase.csv (default build/bench)\n"
+           "  --pairs N  pairs per pair type (default 4096)\n"
+           "  --reps N   timed repetitions, the best is reported (default 21)\n"
+           "  --seed S   seed of the pair generator (default 2024)\n");
+}
+
+static int parse(int argc, char **argv, options *o) {
+    o->smoke = 0;
+    o->pairs = 4096;
+    o->reps = 21;
+    o->target_ms = 2.0;
+    o->seed = 2024;
+    o->out_dir = "build/bench";
+    for (int i = 1; i < argc; ++i) {
+        const char *a = argv[i];
+        const char *val = i + 1 < argc ? argv[i + 1] : NULL;
+        if (strcmp(a, "--smoke") == 0) {
+            o->smoke = 1;
+        } else if (strcmp(a, "--out") == 0 && val) {
+            o->out_dir = val;
+            ++i;
+        } else if (strcmp(a, "--pairs") == 0 && val && atoi(val) > 0) {
+            o->pairs = atoi(val);
+            ++i;
+        } else if (strcmp(a, "--reps") == 0 && val && atoi(val) > 0) {
+            o->reps = atoi(val);
+            ++i;
+        } else if (strcmp(a, "--seed") == 0 && val) {
+            o->seed = (uint64_t)strtoull(val, NULL, 10);
+            ++i;
+        } else if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            usage();
+            exit(0);
+        } else {
+            usage();
+            return 0;
+        }
+    }
+    if (o->smoke) {
+        o->pairs = 64;
+        o->reps = 1;
+    }
+    return 1;
+}
+
+int main(int argc, char **argv) {
+    options opt;
+    if (!parse(argc, argv, &opt)) return 2;
+    if (!make_dirs(opt.out_dir)) {
+        fprintf(stderr, "sepax_bench: cannot create %s: %s\n", opt.out_dir, strerror(errno));
+        return 1;
+    }
+    char csv_path[1100];
+    snprintf(csv_path, sizeof csv_path, "%s/narrowphase.csv", opt.out_dir);
+    FILE *csv = fopen(csv_path, "w");
+    if (!csv) {
+        fprintf(stderr, "sepax_bench: cannot write %s: %s\n", csv_path, strerror(errno));
+        return 1;
+    }
+    fprintf(csv, "pair,engine,function,ns_per_pair,max_depth_err,p99_depth_err,n\n");
+    char worst_path[1100];
+    snprintf(worst_path, sizeof worst_path, "%s/narrowphase_worst.txt", opt.out_dir);
+    FILE *worst = fopen(worst_path, "w");
+    if (!worst) {
+        fprintf(stderr, "sepax_bench: cannot write %s: %s\n", worst_path, strerror(errno));
+        return 1;
+    }
+
+    const int n = opt.pairs;
+    bench_pair *pairs = malloc((size_t)n * sizeof *pairs);
+    sepax_pair *sp = malloc((size_t)n * sizeof *sp);
+    double *ref = malloc((size_t)n * sizeof *ref);
+    double ref_disagreement = 0.0;
+    if (!pairs || !sp || !ref) {
+        fprintf(stderr, "sepax_bench: out of memory\n");
+        return 1;
+    }
+    char peer[64];
+    bench_box2d_version(peer, (int)sizeof peer);
+#ifdef SX_DOUBLE
+    const char *sepax_engine = "sepax-double";
+#else
+    const char *sepax_engine = "sepax";
+#endif
+    printf("sepax narrowphase benchmark%s: sx_real = %s, peer %s, %d pairs per type "
+           "(half overlapping), best of %d reps\n",
+           opt.smoke ? " (smoke)" : "", sizeof(sx_real) == sizeof(double) ? "double" : "float",
+           peer, n, opt.reps);
+    printf("working set: %d pairs x %d bytes per sepax pair (two sx_shape of %d bytes and two "
+           "transforms)\n",
+           n, (int)sizeof(sepax_pair), (int)sizeof(sx_shape));
+    printf("ns per pair; ratio = sepax collide / box2d collide (< 1: sepax faster); "
+           "ovl x = sepax collide / sepax overlap;\n"
+           "depth errors |depth - reference| in metres over the overlapping pairs "
+           "(long double reference); wrong = overlap answers contradicting it\n\n");
+    printf("%-17s %7s %7s %7s | %7s %7s %7s | %5s %5s | %9s %9s | %9s %9s | %s\n", "pair", "sx ovl",
+           "sx mtv", "sx col", "b2 ovl", "b2 col", "b2 c+wm", "ratio", "ovl x", "sx max", "sx p99",
+           "b2 max", "b2 p99", "wrong: sx o/m/c b2 o/c");
+
+    int failures = 0, ntypes = 0;
+    static result all[BENCH_KIND_COUNT * (BENCH_KIND_COUNT + 1) / 2][ROW_COUNT];
+    static char names[BENCH_KIND_COUNT * (BENCH_KIND_COUNT + 1) / 2][40];
+    for (int ka = 0; ka < BENCH_KIND_COUNT; ++ka) {
+        for (int kb = 0; kb <= ka; ++kb) {
+            char name[sizeof names[0]];
+            snprintf(name, sizeof name, "%s-%s", bench_kind_name(ka), bench_kind_name(kb));
+            bench_make_pairs(ka, kb, opt.seed, pairs, n);
+            int ok = 1;
+            for (int i = 0; i < n && ok; ++i) {
+                ok = to_sepax_shape(&pairs[i].a, &sp[i].a) && to_sepax_shape(&pairs[i].b, &sp[i].b);
+                sp[i].xa = to_sepax_xform(&pairs[i].xa);
+                sp[i].xb = to_sepax_xform(&pairs[i].xb);
+            }
+            if (!ok) {
+                fprintf(stderr, "sepax_bench: %s: the sepax builder changed a polygon\n", name);
+                ++failures;
+                continue;
+            }
+            for (int i = 0; i < n; ++i) {
+                sx_ref_result rr;
+                if (!sx_ref_penetration(&sp[i].a, sp[i].xa, &sp[i].b, sp[i].xb, &rr)) {
+                    fprintf(stderr, "sepax_bench: %s: sx_ref_penetration refused pair %d\n", name,
+                            i);
+                    return 1;
+                }
+                ref[i] = (double)rr.depth;
+                double gap = fabs(ref[i] - pairs[i].ref_depth);
+                if (gap > ref_disagreement) ref_disagreement = gap;
+            }
+            bench_box2d_set *b2 = bench_box2d_build(pairs, n);
+            bench_chipmunk_set *cp = bench_chipmunk_build(pairs, n);
+            result *res = all[ntypes];
+            snprintf(names[ntypes], sizeof names[ntypes], "%s", name);
+            ++ntypes;
+            memset(res, 0, sizeof all[0]);
+            res[ROW_CP_COLLIDE].available = cp != NULL;
+            res[ROW_SX_OVERLAP].available = res[ROW_SX_MTV].available =
+                res[ROW_SX_COLLIDE].available = 1;
+            res[ROW_B2_OVERLAP].available = b2 && bench_box2d_supports(ka, kb, BENCH_FN_OVERLAP);
+            res[ROW_B2_COLLIDE].available = res[ROW_B2_COLLIDE_WORLD].available =
+                b2 && bench_box2d_supports(ka, kb, BENCH_FN_COLLIDE);
+            if (!b2 && bench_box2d_supports(ka, kb, BENCH_FN_OVERLAP)) {
+                fprintf(stderr, "sepax_bench: %s: Box2D changed a polygon\n", name);
+                ++failures;
+            }
+
+            measure_accuracy(ref, sp, b2, cp, ka, kb, n, res);
+            measure_speed(sp, b2, cp, n, &opt, res);
+
+            const result *sc = &res[ROW_SX_COLLIDE], *bc = &res[ROW_B2_COLLIDE];
+            printf("%-17s", name);
+            print_ns(res[ROW_SX_OVERLAP].ns, 1);
+            print_ns(res[ROW_SX_MTV].ns, 1);
+            print_ns(sc->ns, 1);
+            printf(" |");
+            print_ns(res[ROW_B2_OVERLAP].ns, res[ROW_B2_OVERLAP].available);
+            print_ns(bc->ns, bc->available);
+            print_ns(res[ROW_B2_COLLIDE_WORLD].ns, res[ROW_B2_COLLIDE_WORLD].available);
+            printf(" |");
+            if (bc->available)
+                printf(" %5.2f", sc->ns / bc->ns);
+            else
+                printf(" %5s", "n/a");
+            printf(" %5.1f |", sc->ns / res[ROW_SX_OVERLAP].ns);
+            print_err(sc);
+            printf(" |");
+            print_err(bc);
+            printf(" | %d/%d/%d ", res[ROW_SX_OVERLAP].wrong, res[ROW_SX_MTV].wrong, sc->wrong);
+            if (res[ROW_B2_OVERLAP].available)
+                printf("%d", res[ROW_B2_OVERLAP].wrong);
+            else
+                printf("n/a");
+            if (bc->available)
+                printf("/%d\n", bc->wrong);
+            else
+                printf("/n/a\n");
+
+            for (int r = 0; r < ROW_COUNT; ++r) {
+                if (!res[r].available) continue;
+                fprintf(csv, "%s,%s,%s,%.3f,", name,
+                        r <= ROW_SX_COLLIDE ? sepax_engine : row_engine[r], row_function[r],
+                        res[r].ns);
+                if (res[r].has_depth)
+                    fprintf(csv, "%.9g,%.9g,%d\n", res[r].max_err, res[r].p99_err, n);
+                else
+                    fprintf(csv, ",,%d\n", n);
+            }
+            dump_worst(worst, name, pairs, ref, res);
+            bench_box2d_free(b2);
+            bench_chipmunk_free(cp);
+        }
+    }
+    char cp_name[64];
+    bench_chipmunk_version(cp_name, (int)sizeof cp_name);
+    printf("\n%s (double precision, cpShapesCollide) on the same pairs:\n", cp_name);
+    printf("%-17s %7s %7s | %5s | %9s %9s | %s\n", "pair", "sx col", "cp col", "ratio", "cp max",
+           "cp p99", "wrong cp");
+    for (int t = 0; t < ntypes; ++t) {
+        const result *sc = &all[t][ROW_SX_COLLIDE], *cc = &all[t][ROW_CP_COLLIDE];
+        printf("%-17s", names[t]);
+        print_ns(sc->ns, 1);
+        print_ns(cc->ns, cc->available);
+        if (cc->available)
+            printf(" | %5.2f |", sc->ns / cc->ns);
+        else
+            printf(" | %5s |", "n/a");
+        print_err(cc);
+        printf(" | %d\n", cc->wrong);
+    }
+    printf("\nsx mtv depth = |mtv|; its errors are in %s, the pair of largest error of each "
+           "sepax function in %s. Box2D shapes carry the benchmark "
+           "shapes' own radii (0 for sharp polygons and segments) instead of "
+           "b2_polygonRadius: see bench/peer_box2d.cpp.\n",
+           csv_path, worst_path);
+    {
+        double gauge[BENCH_KIND_COUNT * (BENCH_KIND_COUNT + 1) / 2 * ROW_COUNT];
+        int g = 0;
+        for (int t = 0; t < ntypes; ++t)
+            for (int r = 0; r < ROW_COUNT; ++r)
+                if (all[t][r].available && all[t][r].ns > 0.0)
+                    gauge[g++] = all[t][r].ns_median / all[t][r].ns;
+        if (g > 0) {
+            double med = median(gauge, g);
+            printf("timing noise: median/best repetition over all cells: median %.2f, max %.2f\n",
+                   med, gauge[g - 1]);
+        }
+    }
+    printf("references: sx_ref_penetration (tests/support/reference.c, hull of the Minkowski "
+           "difference) against bench_ref_depth (bench/reference_depth.c, SAT + vertex-edge): "
+           "max disagreement %.2e m\n",
+           ref_disagreement);
+    if (ref_disagreement > REFERENCE_AGREEMENT) {
+        fprintf(stderr, "sepax_bench: the two references disagree by %.3g m\n", ref_disagreement);
+        ++failures;
+    }
+    fclose(csv);
+    fclose(worst);
+    free(ref);
+    free(pairs);
+    free(sp);
+    if (failures) fprintf(stderr, "sepax_bench: %d pair types failed\n", failures);
+    return failures ? 1 : 0;
+}
