@@ -58,7 +58,7 @@ TEST_BINS := $(TEST_SRCS:tests/%.c=$(OUT)/tests/%)
 CMOCKA_CFLAGS = $(shell pkg-config --cflags cmocka 2>/dev/null)
 CMOCKA_LIBS = $(shell pkg-config --libs cmocka 2>/dev/null || echo -lcmocka)
 
-.PHONY: all lib test test-run check-headers readme-example deps-test install clean bench \
+.PHONY: all lib test test-run check-headers readme-example deps-test deps-bench install clean bench \
         bench-smoke format format-check
 .DEFAULT_GOAL := all
 .SECONDARY:
