@@ -202,6 +202,8 @@ demo: $(DEMO_BIN)
 	@mkdir -p build/demo
 	./$(DEMO_BIN) build/demo/final.svg
 
+-include $(ECS_OBJ:.o=.d) $(OUT)/obj/samples/demo.d
+
 # ---- install -----------------------------------------------------------------
 
 install: lib

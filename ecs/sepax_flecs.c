@@ -340,9 +340,9 @@ static void sx_ecs_separate_system(ecs_iter_t *it) {
 
 static void sx_ecs_end_step(ecs_iter_t *it) {
     sx_world *w = ecs_field(it, SxPhysicsWorld, 0)->world;
-    sx_real dt = sx_ecs_h(it);
+    const SxPhysicsSettings *s = ecs_field(it, SxPhysicsSettings, 1);
     sx_world_clear_forces(w);
-    sx_world_update_sleep(w, dt);
+    if (s->enable_sleep) sx_world_update_sleep(w, sx_ecs_h(it));
 }
 
 static void sx_ecs_copy_out(ecs_iter_t *it) {
@@ -625,7 +625,8 @@ static void sx_ecs_reflect(ecs_world_t *world) {
                        .members = {{.name = "gravity", .type = vec2},
                                    {.name = "fixed_time_step", .type = real},
                                    {.name = "sub_steps", .type = ecs_id(ecs_i32_t)},
-                                   {.name = "max_steps_per_frame", .type = ecs_id(ecs_i32_t)}}});
+                                   {.name = "max_steps_per_frame", .type = ecs_id(ecs_i32_t)},
+                                   {.name = "enable_sleep", .type = ecs_id(ecs_bool_t)}}});
 }
 
 static ecs_entity_t sx_ecs_event_type(ecs_world_t *world, const char *name) {
@@ -709,10 +710,12 @@ void SepaxPhysicsImport(ecs_world_t *world) {
     ecs_set_hooks(world, SxCollider,
                   {.on_set = sx_ecs_collider_set, .on_remove = sx_ecs_collider_removed, .ctx = st});
 
+    memset(&settings, 0, sizeof(settings));
     settings.gravity = def.gravity;
     settings.fixed_time_step = SX_R(1.0) / SX_R(60.0);
     settings.sub_steps = def.sub_steps;
     settings.max_steps_per_frame = 8;
+    settings.enable_sleep = def.enable_sleep;
     ecs_singleton_set_ptr(world, SxPhysicsSettings, &settings);
     ecs_singleton_set(world, SxPhysicsWorld, {st->world});
     ecs_singleton_set(world, SxContacts, {NULL, 0});
@@ -775,7 +778,12 @@ void SepaxPhysicsImport(ecs_world_t *world) {
     sx_ecs_system(world, "SxSeparate", SxPhysicsSeparate, sx_ecs_separate_system, st, &world_term,
                   1);
 
-    sx_ecs_system(world, "SxEndStep", SxPhysicsPostStep, sx_ecs_end_step, st, &world_term, 1);
+    memset(terms, 0, sizeof(terms));
+    terms[0] = world_term;
+    terms[1].id = ecs_id(SxPhysicsSettings);
+    terms[1].src.id = ecs_id(SxPhysicsSettings);
+    terms[1].inout = EcsIn;
+    sx_ecs_system(world, "SxEndStep", SxPhysicsPostStep, sx_ecs_end_step, st, terms, 2);
     memset(terms, 0, sizeof(terms));
     terms[0].id = ecs_id(SxTransform);
     terms[0].inout = EcsOut;

@@ -93,8 +93,7 @@ typedef struct SxCollider {
     bool sensor;
 } SxCollider;
 
-/** Singleton: the physics settings, read at every frame (sub_steps when the
- *  module is imported: it sizes the world). */
+/** Singleton: the physics settings, read at every frame. */
 typedef struct SxPhysicsSettings {
     sx_vec2 gravity;         /**< m/s^2; default (0, -10) */
     sx_real fixed_time_step; /**< s, > 0; default 1/60 */
@@ -103,6 +102,10 @@ typedef struct SxPhysicsSettings {
      *  it is dropped, so a long frame slows the simulation down instead of
      *  spiralling. */
     int32_t max_steps_per_frame;
+    /** Lets resting groups of bodies fall asleep (sx_world_update_sleep
+     *  runs after each step). Default true. Turning it off keeps bodies
+     *  that already sleep asleep until something touches or moves them. */
+    bool enable_sleep;
 } SxPhysicsSettings;
 
 /** One contact of the last fixed step (collider pairs with a manifold). */

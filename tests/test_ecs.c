@@ -273,6 +273,33 @@ static void delete_on_begin(ecs_iter_t *it) {
     if (ev->self == *victim) ecs_delete(it->world, ev->self);
 }
 
+/* The copy-in pushes only what the game changed, so a resting box falls
+ * asleep under the module as in the plain world, and a write wakes it. */
+static void resting_bodies_sleep_and_a_velocity_write_wakes_them(void **state) {
+    ecs_world_t *world = make_world();
+    ecs_entity_t box;
+    (void)state;
+    add_ground(world);
+    box = add_dynamic(world, sx_v2(SX_R(0.0), SX_R(0.5)), sx_box_shape(SX_R(0.5), SX_R(0.5)));
+    progress(world, 120, 1.0 / 60.0);
+    assert_false(ecs_get(world, box, SxBody)->awake);
+    assert_int_equal(sx_world_awake_body_count(sx_ecs_world(world)), 0);
+    ecs_get_mut(world, box, SxBody)->velocity = sx_v2(SX_R(0.0), SX_R(3.0));
+    progress(world, 1, 1.0 / 60.0);
+    assert_true(ecs_get(world, box, SxBody)->awake);
+    assert_true(position_of(world, box).y > SX_R(0.5));
+    ecs_fini(world);
+
+    /* with sleeping off nothing sleeps */
+    world = make_world();
+    ecs_singleton_ensure(world, SxPhysicsSettings)->enable_sleep = false;
+    add_ground(world);
+    box = add_dynamic(world, sx_v2(SX_R(0.0), SX_R(0.5)), sx_box_shape(SX_R(0.5), SX_R(0.5)));
+    progress(world, 120, 1.0 / 60.0);
+    assert_true(ecs_get(world, box, SxBody)->awake);
+    ecs_fini(world);
+}
+
 static void deleting_entities_in_the_middle_of_contacts_is_safe(void **state) {
     ecs_world_t *world = make_world();
     ecs_entity_t ground, boxes[4], victim;
@@ -413,6 +440,7 @@ int main(void) {
         cmocka_unit_test(a_long_frame_runs_at_most_max_steps_and_drops_the_rest),
         cmocka_unit_test(contact_begin_and_end_reach_observers_exactly_once),
         cmocka_unit_test(teleport_and_velocity_writes_take_effect_at_the_next_step),
+        cmocka_unit_test(resting_bodies_sleep_and_a_velocity_write_wakes_them),
         cmocka_unit_test(deleting_entities_in_the_middle_of_contacts_is_safe),
         cmocka_unit_test(bodies_without_colliders_and_colliders_without_bodies_work),
         cmocka_unit_test(impulse_helper_and_mass_override),
