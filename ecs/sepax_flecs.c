@@ -41,6 +41,8 @@ ECS_DECLARE(SxPhysicsSeparate);
 ECS_DECLARE(SxPhysicsPostStep);
 ECS_DECLARE(SxContactBegin);
 ECS_DECLARE(SxContactEnd);
+ECS_DECLARE(SxSensorBegin);
+ECS_DECLARE(SxSensorEnd);
 
 /* Frame time that is this close (in fixed steps) to a whole number of steps
  * counts as that number: 0.1 s frames at 1/60 s must give 6 steps although
@@ -432,6 +434,7 @@ static void sx_ecs_publish_contacts(ecs_iter_t *it) {
     sx_world *w = st->world;
     int32_t n = sx_world_contact_count(w), i, kept = 0;
     sx_contact_events events;
+    sx_sensor_events sensors;
     SxContact *swap_items = st->previous;
     int32_t swap_cap = st->previous_cap;
 
@@ -482,6 +485,17 @@ static void sx_ecs_publish_contacts(ecs_iter_t *it) {
         if (a == 0 || b == 0) continue;
         sx_ecs_emit_pair(it->world, SxContactEnd, a, b,
                          sx_ecs_find_contact(st->previous, st->previous_count, a, b));
+    }
+    sensors = sx_world_get_sensor_events(w);
+    for (i = 0; i < sensors.begin_count; ++i) {
+        ecs_entity_t a = sx_ecs_entity_of(st, sensors.begin[i].sensor_body);
+        ecs_entity_t b = sx_ecs_entity_of(st, sensors.begin[i].visitor_body);
+        if (a != 0 && b != 0) sx_ecs_emit_pair(it->world, SxSensorBegin, a, b, NULL);
+    }
+    for (i = 0; i < sensors.end_count; ++i) {
+        ecs_entity_t a = sx_ecs_entity_of(st, sensors.end[i].sensor_body);
+        ecs_entity_t b = sx_ecs_entity_of(st, sensors.end[i].visitor_body);
+        if (a != 0 && b != 0) sx_ecs_emit_pair(it->world, SxSensorEnd, a, b, NULL);
     }
 }
 
@@ -689,6 +703,8 @@ void SepaxPhysicsImport(ecs_world_t *world) {
     /* events with a payload must be components of the payload's type */
     SxContactBegin = sx_ecs_event_type(world, "SxContactBegin");
     SxContactEnd = sx_ecs_event_type(world, "SxContactEnd");
+    SxSensorBegin = sx_ecs_event_type(world, "SxSensorBegin");
+    SxSensorEnd = sx_ecs_event_type(world, "SxSensorEnd");
     ECS_TAG_DEFINE(world, SxPhysicsUpdate);
     ecs_add_id(world, SxPhysicsUpdate, EcsPhase);
     ecs_add_pair(world, SxPhysicsUpdate, EcsDependsOn, EcsOnUpdate);

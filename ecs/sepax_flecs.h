@@ -164,6 +164,11 @@ extern ECS_DECLARE(SxPhysicsPostStep);
 /** Custom events carrying an SxContactEvent. */
 extern ECS_DECLARE(SxContactBegin);
 extern ECS_DECLARE(SxContactEnd);
+/** A collider started or stopped overlapping a sensor collider; emitted on
+ *  the sensor's entity and on the visitor's, as the contact events (normal
+ *  and point are zero). */
+extern ECS_DECLARE(SxSensorBegin);
+extern ECS_DECLARE(SxSensorEnd);
 
 /** The module: ECS_IMPORT(world, SepaxPhysics). */
 void SepaxPhysicsImport(ecs_world_t *world);

@@ -107,6 +107,15 @@ static void spawn_stream(ecs_iter_t *it) {
     }
 }
 
+/* Counts the contacts that begin: an observer of the module's event. Each
+ * begin reaches both entities of the pair; count it once, on the entity with
+ * the smaller id. */
+static void count_begins(ecs_iter_t *it) {
+    const SxContactEvent *ev = (const SxContactEvent *)it->param;
+    int *begins = (int *)it->ctx;
+    if (ev->self < ev->other) ++*begins;
+}
+
 /* ---- SVG through the debug-draw callbacks ---------------------------------- */
 
 typedef struct svg_out {
@@ -207,7 +216,7 @@ int main(int argc, char **argv) {
     int seconds = argc > 2 ? atoi(argv[2]) : 8;
     ecs_world_t *world;
     demo_stream stream = {0.0, 0, 12345u};
-    int frame, i, j, parts;
+    int frame, i, j, parts, begins = 0;
     double elapsed = 0.0;
     int64_t steps_before = 0;
 
@@ -244,6 +253,11 @@ int main(int argc, char **argv) {
                        .callback = spawn_stream,
                        .ctx = &stream});
 
+    ecs_observer(world, {.query.terms = {{ecs_id(SxCollider)}},
+                         .events = {SxContactBegin},
+                         .callback = count_begins,
+                         .ctx = &begins});
+
     for (frame = 1; frame <= 60 * seconds; ++frame) {
         clock_t start = clock();
         ecs_progress(world, (ecs_ftime_t)(1.0 / 60.0));
@@ -251,12 +265,13 @@ int main(int argc, char **argv) {
         if (frame % 60 == 0) {
             const sx_world *w = sx_ecs_world(world);
             int64_t steps = sx_ecs_step_count(world);
-            printf("t = %2d s: %4d bodies, %4d awake, %4d contacts, %.3f ms per step\n", frame / 60,
-                   sx_world_body_count(w), sx_world_awake_body_count(w),
-                   ecs_singleton_get(world, SxContacts)->count,
+            printf("t = %2d s: %4d bodies, %4d awake, %4d contacts (%4d began), %.3f ms per step\n",
+                   frame / 60, sx_world_body_count(w), sx_world_awake_body_count(w),
+                   ecs_singleton_get(world, SxContacts)->count, begins,
                    steps > steps_before ? 1000.0 * elapsed / (double)(steps - steps_before) : 0.0);
             elapsed = 0.0;
             steps_before = steps;
+            begins = 0;
         }
     }
     if (!write_svg(sx_ecs_world(world), svg, seconds)) {

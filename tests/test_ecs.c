@@ -242,6 +242,42 @@ static void contact_begin_and_end_reach_observers_exactly_once(void **state) {
     ecs_fini(world);
 }
 
+static void count_event(ecs_iter_t *it) {
+    event_log *log = (event_log *)it->ctx;
+    const SxContactEvent *ev = (const SxContactEvent *)it->param;
+    if (ev->self != log->watch) return;
+    if (it->event == SxSensorBegin) ++log->begins;
+    if (it->event == SxSensorEnd) ++log->ends;
+    log->last_begin = *ev;
+}
+
+static void a_ball_through_a_sensor_gives_one_sensor_begin_and_end(void **state) {
+    ecs_world_t *world = make_world();
+    ecs_entity_t sensor = ecs_new(world), ball;
+    SxTransform t = {{SX_R(0.0), SX_R(3.0)}, SX_R(0.0)};
+    SxCollider c = sx_ecs_collider(sx_box_shape(SX_R(2.0), SX_R(0.25)));
+    event_log log;
+    (void)state;
+    memset(&log, 0, sizeof(log));
+    c.sensor = true;
+    ecs_set_ptr(world, sensor, SxTransform, &t);
+    ecs_set_ptr(world, sensor, SxCollider, &c);
+    add_ground(world);
+    ball = add_dynamic(world, sx_v2(SX_R(0.0), SX_R(5.0)), sx_circle_shape(sx_v2(0, 0), SX_R(0.3)));
+    log.watch = sensor;
+    ecs_observer(world, {.query.terms = {{ecs_id(SxCollider)}},
+                         .events = {SxSensorBegin, SxSensorEnd},
+                         .callback = count_event,
+                         .ctx = &log});
+    progress(world, 120, 1.0 / 60.0);
+    assert_int_equal(log.begins, 1);
+    assert_int_equal(log.ends, 1);
+    assert_true(log.last_begin.other == ball);
+    /* the ball fell through the sensor onto the ground */
+    assert_near(position_of(world, ball).y, 0.3, 0.02);
+    ecs_fini(world);
+}
+
 static void teleport_and_velocity_writes_take_effect_at_the_next_step(void **state) {
     ecs_world_t *world = make_world();
     ecs_entity_t e;
@@ -439,6 +475,7 @@ int main(void) {
         cmocka_unit_test(fixed_tick_runs_whole_steps_and_stages_once_per_sub_step),
         cmocka_unit_test(a_long_frame_runs_at_most_max_steps_and_drops_the_rest),
         cmocka_unit_test(contact_begin_and_end_reach_observers_exactly_once),
+        cmocka_unit_test(a_ball_through_a_sensor_gives_one_sensor_begin_and_end),
         cmocka_unit_test(teleport_and_velocity_writes_take_effect_at_the_next_step),
         cmocka_unit_test(resting_bodies_sleep_and_a_velocity_write_wakes_them),
         cmocka_unit_test(deleting_entities_in_the_middle_of_contacts_is_safe),
