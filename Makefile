@@ -162,6 +162,9 @@ FLECS_SRC_DIR := $(if $(FLECS_DIR),$(FLECS_DIR),build/deps/flecs)
 FLECS_H := $(FLECS_SRC_DIR)/flecs.h
 FLECS_C := $(FLECS_SRC_DIR)/flecs.c
 FLECS_OBJ := $(if $(SANFLAGS),$(OUT)/obj/flecs/flecs.o,build/deps/flecs-obj/flecs.o)
+ifneq ($(FLECS_DIR),)
+  FLECS_OBJ := $(OUT)/obj/flecs-own/flecs.o
+endif
 FLECS_CFLAGS := -std=c99 -D_POSIX_C_SOURCE=200809L -O2 -fPIC -w $(SANFLAGS)
 ECS_CFLAGS = $(CFLAGS_ALL) -isystem $(FLECS_SRC_DIR) -Iecs
 ECS_LIBS := -lpthread -lm
