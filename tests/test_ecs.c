@@ -75,64 +75,80 @@ static void box_falls_onto_static_ground_and_comes_to_rest(void **state) {
     ecs_fini(world);
 }
 
-/* The same scene through the module and through sx_world_step: every
- * position, angle and velocity must match to the last bit, step by step. */
+/* The same scene through the module and through sx_world_step: a bouncing,
+ * spinning ball and two boxes that land on each other. Every position,
+ * angle and velocity must match to the last bit, frame by frame (static
+ * geometry is created first, then bodies in entity order, as the module
+ * does). */
 static void ball_bounce_is_bit_identical_to_the_plain_world(void **state) {
+    enum { N = 3 };
     ecs_world_t *world = make_world();
     sx_world_def def = sx_default_world_def();
     sx_world *plain = sx_world_create(&def);
     sx_body_def bd = sx_default_body_def();
     sx_collider_def cd = sx_default_collider_def();
-    sx_body_id ball_id;
-    ecs_entity_t ball;
-    SxCollider c;
-    int frame;
+    sx_body_id ids[N], ground_id;
+    ecs_entity_t es[N];
+    sx_vec2 at[N];
+    sx_shape shapes[N];
+    int frame, i;
     bool rebounded = false;
     (void)state;
     assert_non_null(plain);
+    at[0] = sx_v2(SX_R(0.3), SX_R(4.0));
+    shapes[0] = sx_circle_shape(sx_v2(0, 0), SX_R(0.5));
+    at[1] = sx_v2(SX_R(4.0), SX_R(1.0));
+    shapes[1] = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    at[2] = sx_v2(SX_R(4.3), SX_R(3.0));
+    shapes[2] = sx_box_shape(SX_R(0.6), SX_R(0.3));
 
     add_ground(world);
-    ball = add_dynamic(world, sx_v2(SX_R(0.3), SX_R(4.0)), sx_circle_shape(sx_v2(0, 0), SX_R(0.5)));
-    c = *ecs_get(world, ball, SxCollider);
-    c.restitution = SX_R(0.7);
-    ecs_set_ptr(world, ball, SxCollider, &c);
-    ecs_get_mut(world, ball, SxBody)->angular_velocity = SX_R(1.5);
+    for (i = 0; i < N; ++i)
+        es[i] = add_dynamic(world, at[i], shapes[i]);
+    {
+        SxCollider c = *ecs_get(world, es[0], SxCollider);
+        c.restitution = SX_R(0.7);
+        ecs_set_ptr(world, es[0], SxCollider, &c);
+        ecs_get_mut(world, es[0], SxBody)->angular_velocity = SX_R(1.5);
+    }
 
-    /* the module creates static geometry first, then bodies */
     bd.position = sx_v2(SX_R(0.0), SX_R(-1.0));
-    assert_int_equal(sx_create_body(plain, &bd, &ball_id), SX_OK);
+    assert_int_equal(sx_create_body(plain, &bd, &ground_id), SX_OK);
     cd.shape = sx_box_shape(SX_R(20.0), SX_R(1.0));
-    assert_int_equal(sx_body_add_collider(plain, ball_id, &cd, NULL), SX_OK);
-    bd.type = SX_BODY_DYNAMIC;
-    bd.position = sx_v2(SX_R(0.3), SX_R(4.0));
-    bd.angular_velocity = SX_R(1.5);
-    assert_int_equal(sx_create_body(plain, &bd, &ball_id), SX_OK);
-    cd.shape = sx_circle_shape(sx_v2(0, 0), SX_R(0.5));
-    cd.restitution = SX_R(0.7);
-    assert_int_equal(sx_body_add_collider(plain, ball_id, &cd, NULL), SX_OK);
+    assert_int_equal(sx_body_add_collider(plain, ground_id, &cd, NULL), SX_OK);
+    for (i = 0; i < N; ++i) {
+        bd.type = SX_BODY_DYNAMIC;
+        bd.position = at[i];
+        bd.angular_velocity = i == 0 ? SX_R(1.5) : SX_R(0.0);
+        assert_int_equal(sx_create_body(plain, &bd, &ids[i]), SX_OK);
+        cd.shape = shapes[i];
+        cd.restitution = i == 0 ? SX_R(0.7) : SX_R(0.0);
+        assert_int_equal(sx_body_add_collider(plain, ids[i], &cd, NULL), SX_OK);
+    }
 
-    for (frame = 0; frame < 180; ++frame) {
-        const SxTransform *t;
-        const SxBody *b;
-        sx_vec2 p, v;
-        sx_real angle, w;
+    for (frame = 0; frame < 240; ++frame) {
         ecs_progress(world, (ecs_ftime_t)DT);
         assert_int_equal(sx_world_step(plain, DT), SX_OK);
-        t = ecs_get(world, ball, SxTransform);
-        b = ecs_get(world, ball, SxBody);
-        p = sx_body_get_position(plain, ball_id);
-        v = sx_body_get_linear_velocity(plain, ball_id);
-        angle = sx_body_get_angle(plain, ball_id);
-        w = sx_body_get_angular_velocity(plain, ball_id);
-        assert_memory_equal(&t->position, &p, sizeof(p));
-        assert_memory_equal(&t->angle, &angle, sizeof(angle));
-        assert_memory_equal(&b->velocity, &v, sizeof(v));
-        assert_memory_equal(&b->angular_velocity, &w, sizeof(w));
-        if (b->velocity.y > SX_R(2.0)) rebounded = true;
+        for (i = 0; i < N; ++i) {
+            const SxTransform *t = ecs_get(world, es[i], SxTransform);
+            const SxBody *b = ecs_get(world, es[i], SxBody);
+            sx_vec2 p = sx_body_get_position(plain, ids[i]);
+            sx_vec2 v = sx_body_get_linear_velocity(plain, ids[i]);
+            sx_real angle = sx_body_get_angle(plain, ids[i]);
+            sx_real w = sx_body_get_angular_velocity(plain, ids[i]);
+            assert_memory_equal(&t->position, &p, sizeof(p));
+            assert_memory_equal(&t->angle, &angle, sizeof(angle));
+            assert_memory_equal(&b->velocity, &v, sizeof(v));
+            assert_memory_equal(&b->angular_velocity, &w, sizeof(w));
+            assert_int_equal(b->awake, sx_body_is_awake(plain, ids[i]));
+        }
+        if (ecs_get(world, es[0], SxBody)->velocity.y > SX_R(2.0)) rebounded = true;
     }
-    assert_int_equal(sx_ecs_step_count(world), 180);
-    /* the trajectory had contacts in it: the ball came back up */
+    assert_int_equal(sx_ecs_step_count(world), 240);
+    /* the trajectory had contacts in it: the ball came back up, and the
+     * second box rests on the first */
     assert_true(rebounded);
+    assert_near(position_of(world, es[2]).y, 1.3, 0.02);
     sx_world_destroy(plain);
     ecs_fini(world);
 }
