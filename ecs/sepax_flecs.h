@@ -32,8 +32,8 @@
  * A game puts its own system between stages by giving it one of these tags
  * as its DependsOn phase (`.phase = SxPhysicsSolve` in ecs_system_desc_t's
  * ECS_SYSTEM or ecs_dependson(SxPhysicsSolve)): the main pipeline ignores
- * these tags; the module runs their systems itself, in creation order after
- * its own. All of a frame's steps run inside the SxPhysicsUpdate phase, so
+ * these tags; the module runs their systems itself (up to 64 per tag), in
+ * creation order after its own. All of a frame's steps run inside the SxPhysicsUpdate phase, so
  * structural changes made by these systems or by observers of the contact
  * events (deleting an entity, adding SxBody) are deferred as usual: they take
  * effect when the phase's commands are merged, after the frame's last step. */
