@@ -156,6 +156,65 @@ bench: $(BENCH_BIN)
 bench-smoke: $(BENCH_BIN)
 	./$(BENCH_BIN) --smoke --out $(OUT)/bench-smoke
 
+# ---- flecs module and demo ---------------------------------------------------
+#
+# flecs 4's amalgamated flecs.c/flecs.h come from the pinned crates.io package
+# flecs_ecs_sys (fetched with cargo by scripts/fetch_flecs.sh into
+# build/deps/flecs), or from FLECS_DIR=/path (the user's copy). flecs.c is
+# compiled once, with relaxed flags, into its own object (per sanitizer
+# setting: it does not depend on SX_REAL). ecs/ and the code that includes
+# flecs.h get our strict flags; flecs.h comes in with -isystem, which silences
+# the warnings inside flecs.h itself and nothing else.
+
+FLECS_SRC_DIR := $(if $(FLECS_DIR),$(FLECS_DIR),build/deps/flecs)
+FLECS_H := $(FLECS_SRC_DIR)/flecs.h
+FLECS_C := $(FLECS_SRC_DIR)/flecs.c
+FLECS_OBJ := $(if $(SANFLAGS),$(OUT)/obj/flecs/flecs.o,build/deps/flecs-obj/flecs.o)
+ifneq ($(FLECS_DIR),)
+  FLECS_OBJ := $(OUT)/obj/flecs-own/flecs.o
+endif
+FLECS_CFLAGS := -std=c99 -D_POSIX_C_SOURCE=200809L -O2 -fPIC -w $(SANFLAGS)
+ECS_CFLAGS = $(CFLAGS_ALL) -isystem $(FLECS_SRC_DIR) -Iecs
+ECS_LIBS := -lpthread -lm
+ECS_OBJ := $(OUT)/obj/ecs/sepax_flecs.o
+TEST_ECS := $(OUT)/tests/test_ecs
+DEMO_BIN := $(OUT)/samples/demo
+
+.PHONY: demo flecs
+
+$(FLECS_H):
+	@sh scripts/fetch_flecs.sh $(FLECS_SRC_DIR)
+$(FLECS_C): $(FLECS_H)
+flecs: $(FLECS_OBJ)
+
+$(FLECS_OBJ): $(FLECS_C)
+	@mkdir -p $(dir $@)
+	$(CC) $(FLECS_CFLAGS) -c $(FLECS_C) -o $@
+
+$(ECS_OBJ): ecs/sepax_flecs.c ecs/sepax_flecs.h $(FLECS_H)
+	@mkdir -p $(dir $@)
+	$(CC) $(ECS_CFLAGS) -c $< -o $@
+
+$(OUT)/obj/tests/test_ecs.o: tests/test_ecs.c $(FLECS_H) | $(OUT)/obj/tests deps-test
+	$(CC) $(ECS_CFLAGS) $(CMOCKA_CFLAGS) -Itests/support -c $< -o $@
+
+$(TEST_ECS): $(OUT)/obj/tests/test_ecs.o $(ECS_OBJ) $(FLECS_OBJ) $(TEST_SUPPORT_OBJS) $(LIB_A) | $(OUT)/tests
+	$(CC) $(SANFLAGS) -o $@ $< $(ECS_OBJ) $(FLECS_OBJ) $(TEST_SUPPORT_OBJS) $(LIB_A) $(CMOCKA_LIBS) $(ECS_LIBS)
+
+$(OUT)/obj/samples/demo.o: samples/demo.c ecs/sepax_flecs.h $(FLECS_H)
+	@mkdir -p $(dir $@)
+	$(CC) $(ECS_CFLAGS) -c $< -o $@
+
+$(DEMO_BIN): $(OUT)/obj/samples/demo.o $(ECS_OBJ) $(FLECS_OBJ) $(LIB_A)
+	@mkdir -p $(dir $@)
+	$(CC) $(SANFLAGS) -o $@ $< $(ECS_OBJ) $(FLECS_OBJ) $(LIB_A) $(ECS_LIBS)
+
+demo: $(DEMO_BIN)
+	@mkdir -p build/demo
+	./$(DEMO_BIN) build/demo/final.svg
+
+-include $(ECS_OBJ:.o=.d) $(OUT)/obj/samples/demo.d
+
 # ---- install -----------------------------------------------------------------
 
 install: lib

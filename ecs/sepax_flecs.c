@@ -1,0 +1,815 @@
+/* sepax flecs module: the glue between flecs components and a sepax world.
+ *
+ * The idea: the components are the only truth a game sees, and the sepax
+ * world is a mirror the module keeps in step with them. Once per fixed step
+ * the PreStep systems walk the SxTransform/SxBody/SxCollider columns and push
+ * into the world only what differs from the world's own state (a teleport, a
+ * new velocity, a new type), so an untouched body is never woken; new
+ * entities get their world body here. The stage systems then call the
+ * world's public stage functions (all physics lives in src/), and the
+ * PostStep systems copy positions and velocities back into the columns. The
+ * module keeps no state of its own beyond the entity <-> body handles, so
+ * nothing can go stale. Component hooks free a body when its entity dies or
+ * loses its components; they touch only the sepax world, never flecs
+ * structure, so they are safe in deferred mode.
+ *
+ * The fixed step is an accumulator in the SxPhysicsUpdate phase: flecs timers
+ * fire at most once per frame, while a long frame must run several steps. The
+ * driver runs the systems tagged with the physics tags itself with ecs_run,
+ * in entity-id order, passing the step length as `param` (an sx_real) so the
+ * stages see exactly the value sx_world_step would compute. */
+#include "sepax_flecs.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+ECS_COMPONENT_DECLARE(SxTransform);
+ECS_COMPONENT_DECLARE(SxBody);
+ECS_COMPONENT_DECLARE(SxCollider);
+ECS_COMPONENT_DECLARE(SxPhysicsSettings);
+ECS_COMPONENT_DECLARE(SxContacts);
+ECS_COMPONENT_DECLARE(SxPhysicsWorld);
+ECS_COMPONENT_DECLARE(SxContactEvent);
+
+ECS_DECLARE(SxPhysicsUpdate);
+ECS_DECLARE(SxPhysicsPreStep);
+ECS_DECLARE(SxPhysicsApplyForces);
+ECS_DECLARE(SxPhysicsCollide);
+ECS_DECLARE(SxPhysicsSolve);
+ECS_DECLARE(SxPhysicsIntegrate);
+ECS_DECLARE(SxPhysicsSeparate);
+ECS_DECLARE(SxPhysicsPostStep);
+ECS_DECLARE(SxContactBegin);
+ECS_DECLARE(SxContactEnd);
+ECS_DECLARE(SxSensorBegin);
+ECS_DECLARE(SxSensorEnd);
+
+/* Frame time that is this close (in fixed steps) to a whole number of steps
+ * counts as that number: 0.1 s frames at 1/60 s must give 6 steps although
+ * 0.1 / (1/60) rounds either way in binary. */
+#define SX_ECS_TICK_TOLERANCE 1e-6
+
+/* Most systems one physics tag runs per step (ours and the game's). */
+#define SX_ECS_MAX_PHASE_SYSTEMS 64
+
+/* What the module created in the world for one entity, and the body
+ * parameters it was built with (those without a world setter rebuild it). */
+typedef struct sx_ecs_link {
+    sx_body_id body;
+    sx_collider_id collider;
+    bool has_collider;
+    bool collider_dirty;
+    SxBody built;
+} sx_ecs_link;
+
+typedef struct sx_ecs_state {
+    sx_world *world;
+    ecs_map_t links;           /* entity -> sx_ecs_link* */
+    ecs_entity_t *body_entity; /* by body slot index */
+    int32_t body_entity_cap;
+    double accumulator;
+    int64_t steps;
+    SxContact *contacts, *previous;
+    int32_t contact_count, previous_count;
+    int32_t contact_cap, previous_cap;
+} sx_ecs_state;
+
+/* ---- links ------------------------------------------------------------- */
+
+static sx_ecs_link *sx_ecs_find(sx_ecs_state *st, ecs_entity_t e) {
+    return (sx_ecs_link *)ecs_map_get_ptr(&st->links, e);
+}
+
+static bool sx_ecs_remember_entity(sx_ecs_state *st, sx_body_id body, ecs_entity_t e) {
+    int32_t index = (int32_t)body.index;
+    if (index >= st->body_entity_cap) {
+        int32_t cap = st->body_entity_cap ? st->body_entity_cap : 64;
+        ecs_entity_t *grown;
+        while (cap <= index)
+            cap *= 2;
+        grown = (ecs_entity_t *)realloc(st->body_entity, (size_t)cap * sizeof(*grown));
+        if (grown == NULL) return false;
+        memset(grown + st->body_entity_cap, 0,
+               (size_t)(cap - st->body_entity_cap) * sizeof(*grown));
+        st->body_entity = grown;
+        st->body_entity_cap = cap;
+    }
+    st->body_entity[index] = e;
+    return true;
+}
+
+static ecs_entity_t sx_ecs_entity_of(const sx_ecs_state *st, sx_body_id body) {
+    if ((int32_t)body.index >= st->body_entity_cap) return 0;
+    return st->body_entity[body.index];
+}
+
+/* Attaches the entity's collider; a positive SxBody.mass scales the density
+ * so the body weighs exactly that. */
+static void sx_ecs_attach(sx_ecs_state *st, sx_ecs_link *link, const SxBody *b,
+                          const SxCollider *c) {
+    sx_collider_def def = sx_default_collider_def();
+    def.shape = c->shape;
+    def.density = c->density;
+    def.friction = c->friction;
+    def.restitution = c->restitution;
+    def.filter = c->filter;
+    def.sensor = c->sensor;
+    if (b != NULL && b->mass > SX_R(0.0)) {
+        sx_mass_data unit = sx_shape_mass(&c->shape, SX_R(1.0));
+        if (unit.mass > SX_R(0.0)) def.density = b->mass / unit.mass;
+    }
+    link->has_collider =
+        sx_body_add_collider(st->world, link->body, &def, &link->collider) == SX_OK;
+    link->collider_dirty = false;
+}
+
+/* Creates the world body (and collider) of an entity from its components;
+ * b == NULL makes static geometry. */
+static void sx_ecs_build(sx_ecs_state *st, ecs_entity_t e, sx_ecs_link *link, const SxTransform *t,
+                         const SxBody *b, const SxCollider *c) {
+    sx_body_def def = sx_default_body_def();
+    def.position = t->position;
+    def.angle = t->angle;
+    if (b != NULL) {
+        def.type = b->type;
+        def.linear_velocity = b->velocity;
+        def.angular_velocity = b->angular_velocity;
+        def.linear_damping = b->linear_damping;
+        def.angular_damping = b->angular_damping;
+        def.gravity_scale = b->gravity_scale;
+        def.fixed_rotation = b->fixed_rotation;
+        link->built = *b;
+    } else {
+        memset(&link->built, 0, sizeof(link->built));
+    }
+    link->has_collider = false;
+    link->collider_dirty = false;
+    if (sx_create_body(st->world, &def, &link->body) != SX_OK) {
+        link->body = sx_body_id_from_u64(0);
+        return;
+    }
+    if (!sx_ecs_remember_entity(st, link->body, e)) return;
+    if (c != NULL) sx_ecs_attach(st, link, b, c);
+}
+
+static sx_ecs_link *sx_ecs_link_new(sx_ecs_state *st, ecs_entity_t e) {
+    sx_ecs_link *link = (sx_ecs_link *)calloc(1, sizeof(*link));
+    if (link != NULL) ecs_map_insert_ptr(&st->links, e, link);
+    return link;
+}
+
+static void sx_ecs_unlink(sx_ecs_state *st, ecs_entity_t e) {
+    sx_ecs_link *link = (sx_ecs_link *)ecs_map_remove_ptr(&st->links, e);
+    if (link == NULL) return;
+    if (sx_body_is_valid(st->world, link->body)) {
+        if ((int32_t)link->body.index < st->body_entity_cap) st->body_entity[link->body.index] = 0;
+        sx_destroy_body(st->world, link->body);
+    }
+    free(link);
+}
+
+/* ---- hooks: an entity's body lives as long as its components ------------- */
+
+static void sx_ecs_body_removed(ecs_iter_t *it) {
+    sx_ecs_state *st = (sx_ecs_state *)it->ctx;
+    int32_t i;
+    /* The collider, if it stays, comes back as static geometry next step. */
+    for (i = 0; i < it->count; ++i)
+        sx_ecs_unlink(st, it->entities[i]);
+}
+
+static void sx_ecs_collider_removed(ecs_iter_t *it) {
+    sx_ecs_state *st = (sx_ecs_state *)it->ctx;
+    int32_t i;
+    for (i = 0; i < it->count; ++i) {
+        ecs_entity_t e = it->entities[i];
+        sx_ecs_link *link = sx_ecs_find(st, e);
+        if (link == NULL) continue;
+        if (!ecs_has(it->world, e, SxBody)) {
+            sx_ecs_unlink(st, e);
+        } else if (link->has_collider) {
+            sx_destroy_collider(st->world, link->collider);
+            link->has_collider = false;
+        }
+    }
+}
+
+static void sx_ecs_collider_set(ecs_iter_t *it) {
+    sx_ecs_state *st = (sx_ecs_state *)it->ctx;
+    int32_t i;
+    for (i = 0; i < it->count; ++i) {
+        sx_ecs_link *link = sx_ecs_find(st, it->entities[i]);
+        if (link != NULL) link->collider_dirty = true;
+    }
+}
+
+static void sx_ecs_state_free(void *ctx) {
+    sx_ecs_state *st = (sx_ecs_state *)ctx;
+    ecs_map_iter_t mit = ecs_map_iter(&st->links);
+    while (ecs_map_next(&mit))
+        free(ecs_map_ptr(&mit));
+    ecs_map_fini(&st->links);
+    sx_world_destroy(st->world);
+    free(st->body_entity);
+    free(st->contacts);
+    free(st->previous);
+    free(st);
+}
+
+/* ---- PreStep: components -> world ---------------------------------------- */
+
+static bool sx_ecs_params_differ(const SxBody *a, const SxBody *b) {
+    return a->mass != b->mass || a->linear_damping != b->linear_damping ||
+           a->angular_damping != b->angular_damping || a->gravity_scale != b->gravity_scale ||
+           a->fixed_rotation != b->fixed_rotation;
+}
+
+/* Pushes what the game changed since the last copy-out into the world. */
+static void sx_ecs_push(sx_ecs_state *st, ecs_entity_t e, sx_ecs_link *link, const SxTransform *t,
+                        SxBody *b, const SxCollider *c) {
+    sx_world *w = st->world;
+    sx_vec2 p;
+    if (b != NULL && sx_ecs_params_differ(b, &link->built)) {
+        sx_destroy_body(w, link->body);
+        sx_ecs_build(st, e, link, t, b, c);
+        return;
+    }
+    if (b != NULL && b->type != sx_body_get_type(w, link->body)) {
+        sx_body_set_type(w, link->body, b->type);
+        link->built.type = b->type;
+    }
+    p = sx_body_get_position(w, link->body);
+    if (t->position.x != p.x || t->position.y != p.y ||
+        t->angle != sx_body_get_angle(w, link->body)) {
+        sx_body_set_transform(w, link->body, t->position, t->angle);
+    }
+    if (b != NULL) {
+        sx_vec2 v = sx_body_get_linear_velocity(w, link->body);
+        if (b->velocity.x != v.x || b->velocity.y != v.y) {
+            sx_body_set_linear_velocity(w, link->body, b->velocity);
+        }
+        if (b->angular_velocity != sx_body_get_angular_velocity(w, link->body)) {
+            sx_body_set_angular_velocity(w, link->body, b->angular_velocity);
+        }
+    }
+    if (c != NULL && (!link->has_collider || link->collider_dirty)) {
+        if (link->has_collider) sx_destroy_collider(w, link->collider);
+        sx_ecs_attach(st, link, b, c);
+    }
+}
+
+static void sx_ecs_sync_statics(ecs_iter_t *it) {
+    sx_ecs_state *st = (sx_ecs_state *)it->ctx;
+    const SxTransform *t = ecs_field(it, SxTransform, 0);
+    const SxCollider *c = ecs_field(it, SxCollider, 1);
+    int32_t i;
+    for (i = 0; i < it->count; ++i) {
+        ecs_entity_t e = it->entities[i];
+        sx_ecs_link *link = sx_ecs_find(st, e);
+        if (link == NULL) {
+            link = sx_ecs_link_new(st, e);
+            if (link != NULL) sx_ecs_build(st, e, link, &t[i], NULL, &c[i]);
+        } else {
+            sx_ecs_push(st, e, link, &t[i], NULL, &c[i]);
+        }
+    }
+}
+
+static void sx_ecs_sync_bodies(ecs_iter_t *it) {
+    sx_ecs_state *st = (sx_ecs_state *)it->ctx;
+    const SxTransform *t = ecs_field(it, SxTransform, 0);
+    SxBody *b = ecs_field(it, SxBody, 1);
+    const SxCollider *c = ecs_field(it, SxCollider, 2);
+    sx_world *w = st->world;
+    int32_t i;
+    for (i = 0; i < it->count; ++i) {
+        ecs_entity_t e = it->entities[i];
+        const SxCollider *ci = c != NULL ? &c[i] : NULL;
+        sx_ecs_link *link = sx_ecs_find(st, e);
+        SxBody *bi = &b[i];
+        if (link == NULL) {
+            link = sx_ecs_link_new(st, e);
+            if (link == NULL) continue;
+            sx_ecs_build(st, e, link, &t[i], bi, ci);
+        } else {
+            sx_ecs_push(st, e, link, &t[i], bi, ci);
+        }
+        if (bi->force.x != SX_R(0.0) || bi->force.y != SX_R(0.0)) {
+            sx_body_apply_force(w, link->body, bi->force);
+        }
+        if (bi->torque != SX_R(0.0)) sx_body_apply_torque(w, link->body, bi->torque);
+        if (bi->impulse.x != SX_R(0.0) || bi->impulse.y != SX_R(0.0)) {
+            sx_body_apply_impulse(w, link->body, bi->impulse);
+        }
+        if (bi->angular_impulse != SX_R(0.0)) {
+            sx_body_apply_angular_impulse(w, link->body, bi->angular_impulse);
+        }
+        bi->force = sx_v2(SX_R(0.0), SX_R(0.0));
+        bi->torque = SX_R(0.0);
+        bi->impulse = sx_v2(SX_R(0.0), SX_R(0.0));
+        bi->angular_impulse = SX_R(0.0);
+    }
+}
+
+static void sx_ecs_begin_step(ecs_iter_t *it) {
+    SxPhysicsWorld *pw = ecs_field(it, SxPhysicsWorld, 0);
+    sx_world_clear_events(pw->world);
+}
+
+/* ---- the stages: the world's public functions, nothing else --------------- */
+
+static sx_real sx_ecs_h(const ecs_iter_t *it) {
+    return it->param != NULL ? *(const sx_real *)it->param : (sx_real)it->delta_time;
+}
+
+static void sx_ecs_apply_forces_system(ecs_iter_t *it) {
+    sx_world_apply_forces(ecs_field(it, SxPhysicsWorld, 0)->world, sx_ecs_h(it));
+}
+static void sx_ecs_collide_system(ecs_iter_t *it) {
+    sx_world_collide(ecs_field(it, SxPhysicsWorld, 0)->world);
+}
+static void sx_ecs_solve_system(ecs_iter_t *it) {
+    sx_world_solve(ecs_field(it, SxPhysicsWorld, 0)->world, sx_ecs_h(it));
+}
+static void sx_ecs_integrate_system(ecs_iter_t *it) {
+    sx_world_integrate(ecs_field(it, SxPhysicsWorld, 0)->world, sx_ecs_h(it));
+}
+static void sx_ecs_separate_system(ecs_iter_t *it) {
+    sx_world_separate(ecs_field(it, SxPhysicsWorld, 0)->world, sx_ecs_h(it));
+}
+
+/* ---- PostStep: world -> components, contacts, events ---------------------- */
+
+static void sx_ecs_end_step(ecs_iter_t *it) {
+    sx_world *w = ecs_field(it, SxPhysicsWorld, 0)->world;
+    const SxPhysicsSettings *s = ecs_field(it, SxPhysicsSettings, 1);
+    sx_world_clear_forces(w);
+    if (s->enable_sleep) sx_world_update_sleep(w, sx_ecs_h(it));
+}
+
+static void sx_ecs_copy_out(ecs_iter_t *it) {
+    sx_ecs_state *st = (sx_ecs_state *)it->ctx;
+    SxTransform *t = ecs_field(it, SxTransform, 0);
+    SxBody *b = ecs_field(it, SxBody, 1);
+    sx_world *w = st->world;
+    int32_t i;
+    for (i = 0; i < it->count; ++i) {
+        sx_ecs_link *link = sx_ecs_find(st, it->entities[i]);
+        if (link == NULL || !sx_body_is_valid(w, link->body)) continue;
+        t[i].position = sx_body_get_position(w, link->body);
+        t[i].angle = sx_body_get_angle(w, link->body);
+        b[i].velocity = sx_body_get_linear_velocity(w, link->body);
+        b[i].angular_velocity = sx_body_get_angular_velocity(w, link->body);
+        b[i].awake = sx_body_is_awake(w, link->body);
+    }
+}
+
+static int sx_ecs_contact_cmp(const void *pa, const void *pb) {
+    const SxContact *a = (const SxContact *)pa;
+    const SxContact *b = (const SxContact *)pb;
+    if (a->entity_a != b->entity_a) return a->entity_a < b->entity_a ? -1 : 1;
+    if (a->entity_b != b->entity_b) return a->entity_b < b->entity_b ? -1 : 1;
+    return 0;
+}
+
+static const SxContact *sx_ecs_find_contact(const SxContact *items, int32_t count, ecs_entity_t a,
+                                            ecs_entity_t b) {
+    SxContact key;
+    memset(&key, 0, sizeof(key));
+    key.entity_a = a < b ? a : b;
+    key.entity_b = a < b ? b : a;
+    if (count == 0) return NULL;
+    return (const SxContact *)bsearch(&key, items, (size_t)count, sizeof(SxContact),
+                                      sx_ecs_contact_cmp);
+}
+
+/* Emits one event on each entity of a pair, normal from self to other. */
+static void sx_ecs_emit_pair(ecs_world_t *world, ecs_entity_t event, ecs_entity_t a, ecs_entity_t b,
+                             const SxContact *c) {
+    ecs_id_t id = ecs_id(SxCollider);
+    ecs_type_t type;
+    SxContactEvent ev;
+    int side;
+    type.array = &id;
+    type.count = 1;
+    for (side = 0; side < 2; ++side) {
+        ecs_entity_t self = side == 0 ? a : b;
+        ecs_entity_t other = side == 0 ? b : a;
+        ecs_event_desc_t desc;
+        if (!ecs_is_alive(world, self) || !ecs_has(world, self, SxCollider)) continue;
+        memset(&ev, 0, sizeof(ev));
+        ev.self = self;
+        ev.other = other;
+        if (c != NULL) {
+            ev.point = c->point;
+            ev.normal = self == c->entity_a ? c->normal : sx_neg(c->normal);
+        }
+        memset(&desc, 0, sizeof(desc));
+        desc.event = event;
+        desc.ids = &type;
+        desc.entity = self;
+        desc.param = &ev;
+        /* ecs_enqueue copies the payload into the command queue when the
+         * world is deferred (inside a system) and emits now otherwise. */
+        ecs_enqueue(world, &desc);
+    }
+}
+
+static bool sx_ecs_reserve(SxContact **items, int32_t *cap, int32_t count) {
+    SxContact *grown;
+    int32_t n = *cap ? *cap : 64;
+    if (count <= *cap) return true;
+    while (n < count)
+        n *= 2;
+    grown = (SxContact *)realloc(*items, (size_t)n * sizeof(SxContact));
+    if (grown == NULL) return false;
+    *items = grown;
+    *cap = n;
+    return true;
+}
+
+static void sx_ecs_publish_contacts(ecs_iter_t *it) {
+    sx_ecs_state *st = (sx_ecs_state *)it->ctx;
+    SxContacts *out = ecs_field(it, SxContacts, 0);
+    sx_world *w = st->world;
+    int32_t n = sx_world_contact_count(w), i, kept = 0;
+    sx_contact_events events;
+    sx_sensor_events sensors;
+    SxContact *swap_items = st->previous;
+    int32_t swap_cap = st->previous_cap;
+
+    /* last step's buffer becomes `previous` (for end events) */
+    st->previous = st->contacts;
+    st->previous_cap = st->contact_cap;
+    st->previous_count = st->contact_count;
+    st->contacts = swap_items;
+    st->contact_cap = swap_cap;
+    st->contact_count = 0;
+    if (!sx_ecs_reserve(&st->contacts, &st->contact_cap, n)) n = 0;
+    for (i = 0; i < n; ++i) {
+        sx_contact_data d;
+        SxContact *c = &st->contacts[kept];
+        ecs_entity_t ea, eb;
+        if (sx_world_get_contact(w, i, &d) != SX_OK) continue;
+        ea = sx_ecs_entity_of(st, d.body_a);
+        eb = sx_ecs_entity_of(st, d.body_b);
+        c->point_count = d.count;
+        c->point = d.points[0];
+        if (ea <= eb) {
+            c->entity_a = ea;
+            c->entity_b = eb;
+            c->normal = d.normal;
+        } else {
+            c->entity_a = eb;
+            c->entity_b = ea;
+            c->normal = sx_neg(d.normal);
+        }
+        ++kept;
+    }
+    if (kept > 1) qsort(st->contacts, (size_t)kept, sizeof(SxContact), sx_ecs_contact_cmp);
+    st->contact_count = kept;
+    out->items = st->contacts;
+    out->count = kept;
+
+    events = sx_world_get_contact_events(w);
+    for (i = 0; i < events.begin_count; ++i) {
+        ecs_entity_t a = sx_ecs_entity_of(st, events.begin[i].body_a);
+        ecs_entity_t b = sx_ecs_entity_of(st, events.begin[i].body_b);
+        if (a == 0 || b == 0) continue;
+        sx_ecs_emit_pair(it->world, SxContactBegin, a, b,
+                         sx_ecs_find_contact(st->contacts, st->contact_count, a, b));
+    }
+    for (i = 0; i < events.end_count; ++i) {
+        ecs_entity_t a = sx_ecs_entity_of(st, events.end[i].body_a);
+        ecs_entity_t b = sx_ecs_entity_of(st, events.end[i].body_b);
+        if (a == 0 || b == 0) continue;
+        sx_ecs_emit_pair(it->world, SxContactEnd, a, b,
+                         sx_ecs_find_contact(st->previous, st->previous_count, a, b));
+    }
+    sensors = sx_world_get_sensor_events(w);
+    for (i = 0; i < sensors.begin_count; ++i) {
+        ecs_entity_t a = sx_ecs_entity_of(st, sensors.begin[i].sensor_body);
+        ecs_entity_t b = sx_ecs_entity_of(st, sensors.begin[i].visitor_body);
+        if (a != 0 && b != 0) sx_ecs_emit_pair(it->world, SxSensorBegin, a, b, NULL);
+    }
+    for (i = 0; i < sensors.end_count; ++i) {
+        ecs_entity_t a = sx_ecs_entity_of(st, sensors.end[i].sensor_body);
+        ecs_entity_t b = sx_ecs_entity_of(st, sensors.end[i].visitor_body);
+        if (a != 0 && b != 0) sx_ecs_emit_pair(it->world, SxSensorEnd, a, b, NULL);
+    }
+}
+
+/* ---- the fixed-step driver ------------------------------------------------- */
+
+static int sx_ecs_entity_cmp(const void *pa, const void *pb) {
+    ecs_entity_t a = *(const ecs_entity_t *)pa, b = *(const ecs_entity_t *)pb;
+    return a < b ? -1 : a > b;
+}
+
+/* Runs every system whose DependsOn is `tag`, in entity-id order. */
+static void sx_ecs_run_phase(ecs_world_t *world, ecs_entity_t tag, sx_real h) {
+    ecs_entity_t systems[SX_ECS_MAX_PHASE_SYSTEMS];
+    int32_t n = 0, i;
+    ecs_iter_t it = ecs_each_id(world, ecs_pair(EcsDependsOn, tag));
+    while (ecs_each_next(&it)) {
+        for (i = 0; i < it.count && n < SX_ECS_MAX_PHASE_SYSTEMS; ++i) {
+            if (ecs_has_id(world, it.entities[i], EcsSystem)) systems[n++] = it.entities[i];
+        }
+    }
+    qsort(systems, (size_t)n, sizeof(systems[0]), sx_ecs_entity_cmp);
+    for (i = 0; i < n; ++i)
+        ecs_run(world, systems[i], (ecs_ftime_t)h, &h);
+}
+
+static void sx_ecs_drive(ecs_iter_t *it) {
+    sx_ecs_state *st = (sx_ecs_state *)it->ctx;
+    const SxPhysicsSettings *s = ecs_field(it, SxPhysicsSettings, 0);
+    sx_real fixed = s->fixed_time_step;
+    int32_t sub_steps = s->sub_steps, max_steps = s->max_steps_per_frame, steps, k, j;
+    sx_vec2 g = sx_world_get_gravity(st->world);
+
+    if (!(fixed > SX_R(0.0)) || sub_steps < 1 || max_steps < 1) return;
+    if (g.x != s->gravity.x || g.y != s->gravity.y) sx_world_set_gravity(st->world, s->gravity);
+    st->accumulator += (double)it->delta_time;
+    steps = (int32_t)(st->accumulator / (double)fixed + SX_ECS_TICK_TOLERANCE);
+    if (steps > max_steps) {
+        steps = max_steps;
+        st->accumulator = 0.0;
+    } else {
+        st->accumulator -= (double)steps * (double)fixed;
+        if (st->accumulator < 0.0) st->accumulator = 0.0;
+    }
+    for (k = 0; k < steps; ++k) {
+        /* the same h as sx_world_step(world, fixed) */
+        sx_real h = fixed / (sx_real)sub_steps;
+        sx_ecs_run_phase(it->world, SxPhysicsPreStep, fixed);
+        for (j = 0; j < sub_steps; ++j) {
+            sx_ecs_run_phase(it->world, SxPhysicsApplyForces, h);
+            sx_ecs_run_phase(it->world, SxPhysicsCollide, h);
+            sx_ecs_run_phase(it->world, SxPhysicsSolve, h);
+            sx_ecs_run_phase(it->world, SxPhysicsIntegrate, h);
+            sx_ecs_run_phase(it->world, SxPhysicsSeparate, h);
+        }
+        sx_ecs_run_phase(it->world, SxPhysicsPostStep, fixed);
+        ++st->steps;
+    }
+}
+
+/* ---- public helpers ----------------------------------------------------------- */
+
+SxBody sx_ecs_body(sx_body_type type) {
+    SxBody b;
+    memset(&b, 0, sizeof(b));
+    b.type = type;
+    b.gravity_scale = SX_R(1.0);
+    b.awake = true;
+    return b;
+}
+
+SxCollider sx_ecs_collider(sx_shape shape) {
+    sx_collider_def def = sx_default_collider_def();
+    SxCollider c;
+    memset(&c, 0, sizeof(c));
+    c.shape = shape;
+    c.density = def.density;
+    c.friction = def.friction;
+    c.restitution = def.restitution;
+    c.filter = def.filter;
+    c.sensor = def.sensor;
+    return c;
+}
+
+void sx_ecs_apply_force(ecs_world_t *world, ecs_entity_t e, sx_vec2 force) {
+    SxBody *b;
+    if (world == NULL || !ecs_is_alive(world, e)) return;
+    b = ecs_get_mut(world, e, SxBody);
+    if (b != NULL) b->force = sx_add(b->force, force);
+}
+
+void sx_ecs_apply_impulse(ecs_world_t *world, ecs_entity_t e, sx_vec2 impulse) {
+    SxBody *b;
+    if (world == NULL || !ecs_is_alive(world, e)) return;
+    b = ecs_get_mut(world, e, SxBody);
+    if (b != NULL) b->impulse = sx_add(b->impulse, impulse);
+}
+
+sx_world *sx_ecs_world(const ecs_world_t *world) {
+    const SxPhysicsWorld *pw;
+    if (world == NULL || ecs_id(SxPhysicsWorld) == 0) return NULL;
+    pw = ecs_singleton_get(world, SxPhysicsWorld);
+    return pw != NULL ? pw->world : NULL;
+}
+
+int64_t sx_ecs_step_count(const ecs_world_t *world) {
+    const ecs_type_hooks_t *hooks;
+    if (world == NULL || ecs_id(SxBody) == 0) return 0;
+    hooks = ecs_get_hooks(world, SxBody);
+    return hooks != NULL && hooks->ctx != NULL ? ((const sx_ecs_state *)hooks->ctx)->steps : 0;
+}
+
+/* ---- import ------------------------------------------------------------------- */
+
+static void sx_ecs_reflect(ecs_world_t *world) {
+#ifdef SX_DOUBLE
+    ecs_entity_t real = ecs_id(ecs_f64_t);
+#else
+    ecs_entity_t real = ecs_id(ecs_f32_t);
+#endif
+    ecs_entity_t vec2 =
+        ecs_struct(world, {.entity = ecs_entity(world, {.name = "SxVec2"}),
+                           .members = {{.name = "x", .type = real}, {.name = "y", .type = real}}});
+    ecs_struct(world,
+               {.entity = ecs_id(SxTransform),
+                .members = {{.name = "position", .type = vec2}, {.name = "angle", .type = real}}});
+    ecs_struct(world, {.entity = ecs_id(SxBody),
+                       .members = {{.name = "type", .type = ecs_id(ecs_i32_t)},
+                                   {.name = "velocity", .type = vec2},
+                                   {.name = "angular_velocity", .type = real},
+                                   {.name = "mass", .type = real},
+                                   {.name = "force", .type = vec2},
+                                   {.name = "torque", .type = real},
+                                   {.name = "impulse", .type = vec2},
+                                   {.name = "angular_impulse", .type = real},
+                                   {.name = "linear_damping", .type = real},
+                                   {.name = "angular_damping", .type = real},
+                                   {.name = "gravity_scale", .type = real},
+                                   {.name = "fixed_rotation", .type = ecs_id(ecs_bool_t)},
+                                   {.name = "awake", .type = ecs_id(ecs_bool_t)}}});
+    ecs_struct(world, {.entity = ecs_id(SxPhysicsSettings),
+                       .members = {{.name = "gravity", .type = vec2},
+                                   {.name = "fixed_time_step", .type = real},
+                                   {.name = "sub_steps", .type = ecs_id(ecs_i32_t)},
+                                   {.name = "max_steps_per_frame", .type = ecs_id(ecs_i32_t)},
+                                   {.name = "enable_sleep", .type = ecs_id(ecs_bool_t)}}});
+}
+
+static ecs_entity_t sx_ecs_event_type(ecs_world_t *world, const char *name) {
+    ecs_entity_desc_t edesc;
+    ecs_component_desc_t cdesc;
+    memset(&edesc, 0, sizeof(edesc));
+    memset(&cdesc, 0, sizeof(cdesc));
+    edesc.name = name;
+    cdesc.entity = ecs_entity_init(world, &edesc);
+    cdesc.type.size = ECS_SIZEOF(SxContactEvent);
+    cdesc.type.alignment = ECS_ALIGNOF(SxContactEvent);
+    return ecs_component_init(world, &cdesc);
+}
+
+/* A system run by the driver (not by the main pipeline) under `tag`. */
+static void sx_ecs_system(ecs_world_t *world, const char *name, ecs_entity_t tag,
+                          ecs_iter_action_t fn, sx_ecs_state *st, const ecs_term_t *terms,
+                          int32_t term_count) {
+    ecs_system_desc_t desc;
+    ecs_entity_desc_t edesc;
+    ecs_id_t add[2];
+    int32_t i;
+    memset(&desc, 0, sizeof(desc));
+    memset(&edesc, 0, sizeof(edesc));
+    add[0] = ecs_dependson(tag);
+    add[1] = 0;
+    edesc.name = name;
+    edesc.add = add;
+    desc.entity = ecs_entity_init(world, &edesc);
+    for (i = 0; i < term_count; ++i)
+        desc.query.terms[i] = terms[i];
+    desc.callback = fn;
+    desc.ctx = st;
+    ecs_system_init(world, &desc);
+}
+
+void SepaxPhysicsImport(ecs_world_t *world) {
+    sx_world_def def = sx_default_world_def();
+    SxPhysicsSettings settings;
+    sx_ecs_state *st;
+    ecs_term_t world_term, terms[3];
+
+    ECS_MODULE(world, SepaxPhysics);
+    ECS_IMPORT(world, FlecsMeta);
+
+    ECS_COMPONENT_DEFINE(world, SxTransform);
+    ECS_COMPONENT_DEFINE(world, SxBody);
+    ECS_COMPONENT_DEFINE(world, SxCollider);
+    ECS_COMPONENT_DEFINE(world, SxPhysicsSettings);
+    ECS_COMPONENT_DEFINE(world, SxContacts);
+    ECS_COMPONENT_DEFINE(world, SxPhysicsWorld);
+    ECS_COMPONENT_DEFINE(world, SxContactEvent);
+    ECS_TAG_DEFINE(world, SxPhysicsPreStep);
+    ECS_TAG_DEFINE(world, SxPhysicsApplyForces);
+    ECS_TAG_DEFINE(world, SxPhysicsCollide);
+    ECS_TAG_DEFINE(world, SxPhysicsSolve);
+    ECS_TAG_DEFINE(world, SxPhysicsIntegrate);
+    ECS_TAG_DEFINE(world, SxPhysicsSeparate);
+    ECS_TAG_DEFINE(world, SxPhysicsPostStep);
+    /* events with a payload must be components of the payload's type */
+    SxContactBegin = sx_ecs_event_type(world, "SxContactBegin");
+    SxContactEnd = sx_ecs_event_type(world, "SxContactEnd");
+    SxSensorBegin = sx_ecs_event_type(world, "SxSensorBegin");
+    SxSensorEnd = sx_ecs_event_type(world, "SxSensorEnd");
+    ECS_TAG_DEFINE(world, SxPhysicsUpdate);
+    ecs_add_id(world, SxPhysicsUpdate, EcsPhase);
+    ecs_add_pair(world, SxPhysicsUpdate, EcsDependsOn, EcsOnUpdate);
+    sx_ecs_reflect(world);
+
+    /* a body or a collider brings its transform along */
+    ecs_add_pair(world, ecs_id(SxBody), EcsWith, ecs_id(SxTransform));
+    ecs_add_pair(world, ecs_id(SxCollider), EcsWith, ecs_id(SxTransform));
+
+    st = (sx_ecs_state *)calloc(1, sizeof(*st));
+    ecs_assert(st != NULL, ECS_OUT_OF_MEMORY, NULL);
+    st->world = sx_world_create(&def);
+    ecs_assert(st->world != NULL, ECS_OUT_OF_MEMORY, NULL);
+    ecs_map_init(&st->links, NULL);
+
+    /* SxBody's hooks own the state: its ctx_free runs after every on_remove */
+    ecs_set_hooks(world, SxBody,
+                  {.on_remove = sx_ecs_body_removed, .ctx = st, .ctx_free = sx_ecs_state_free});
+    ecs_set_hooks(world, SxCollider,
+                  {.on_set = sx_ecs_collider_set, .on_remove = sx_ecs_collider_removed, .ctx = st});
+
+    memset(&settings, 0, sizeof(settings));
+    settings.gravity = def.gravity;
+    settings.fixed_time_step = SX_R(1.0) / SX_R(60.0);
+    settings.sub_steps = def.sub_steps;
+    settings.max_steps_per_frame = 8;
+    settings.enable_sleep = def.enable_sleep;
+    ecs_singleton_set_ptr(world, SxPhysicsSettings, &settings);
+    ecs_singleton_set(world, SxPhysicsWorld, {st->world});
+    ecs_singleton_set(world, SxContacts, {NULL, 0});
+
+    memset(&world_term, 0, sizeof(world_term));
+    world_term.id = ecs_id(SxPhysicsWorld);
+    world_term.src.id = ecs_id(SxPhysicsWorld);
+    world_term.inout = EcsInOut;
+
+    /* the driver */
+    memset(terms, 0, sizeof(terms));
+    terms[0].id = ecs_id(SxPhysicsSettings);
+    terms[0].src.id = ecs_id(SxPhysicsSettings);
+    terms[0].inout = EcsIn;
+    {
+        ecs_system_desc_t desc;
+        ecs_entity_desc_t edesc;
+        ecs_id_t add[2];
+        memset(&desc, 0, sizeof(desc));
+        memset(&edesc, 0, sizeof(edesc));
+        add[0] = ecs_dependson(SxPhysicsUpdate);
+        add[1] = 0;
+        edesc.name = "SxFixedStep";
+        edesc.add = add;
+        desc.entity = ecs_entity_init(world, &edesc);
+        desc.query.terms[0] = terms[0];
+        desc.callback = sx_ecs_drive;
+        desc.ctx = st;
+        ecs_system_init(world, &desc);
+    }
+
+    /* PreStep: events of the step start empty, then static geometry, then
+     * bodies (so a fresh scene's bodies are created in that order) */
+    sx_ecs_system(world, "SxBeginStep", SxPhysicsPreStep, sx_ecs_begin_step, st, &world_term, 1);
+    memset(terms, 0, sizeof(terms));
+    terms[0].id = ecs_id(SxTransform);
+    terms[0].inout = EcsIn;
+    terms[1].id = ecs_id(SxCollider);
+    terms[1].inout = EcsIn;
+    terms[2].id = ecs_id(SxBody);
+    terms[2].oper = EcsNot;
+    terms[2].inout = EcsInOutNone;
+    sx_ecs_system(world, "SxSyncStatics", SxPhysicsPreStep, sx_ecs_sync_statics, st, terms, 3);
+    memset(terms, 0, sizeof(terms));
+    terms[0].id = ecs_id(SxTransform);
+    terms[0].inout = EcsIn;
+    terms[1].id = ecs_id(SxBody);
+    terms[1].inout = EcsInOut;
+    terms[2].id = ecs_id(SxCollider);
+    terms[2].oper = EcsOptional;
+    terms[2].inout = EcsIn;
+    sx_ecs_system(world, "SxSyncBodies", SxPhysicsPreStep, sx_ecs_sync_bodies, st, terms, 3);
+
+    sx_ecs_system(world, "SxApplyForces", SxPhysicsApplyForces, sx_ecs_apply_forces_system, st,
+                  &world_term, 1);
+    sx_ecs_system(world, "SxCollide", SxPhysicsCollide, sx_ecs_collide_system, st, &world_term, 1);
+    sx_ecs_system(world, "SxSolve", SxPhysicsSolve, sx_ecs_solve_system, st, &world_term, 1);
+    sx_ecs_system(world, "SxIntegrate", SxPhysicsIntegrate, sx_ecs_integrate_system, st,
+                  &world_term, 1);
+    sx_ecs_system(world, "SxSeparate", SxPhysicsSeparate, sx_ecs_separate_system, st, &world_term,
+                  1);
+
+    memset(terms, 0, sizeof(terms));
+    terms[0] = world_term;
+    terms[1].id = ecs_id(SxPhysicsSettings);
+    terms[1].src.id = ecs_id(SxPhysicsSettings);
+    terms[1].inout = EcsIn;
+    sx_ecs_system(world, "SxEndStep", SxPhysicsPostStep, sx_ecs_end_step, st, terms, 2);
+    memset(terms, 0, sizeof(terms));
+    terms[0].id = ecs_id(SxTransform);
+    terms[0].inout = EcsOut;
+    terms[1].id = ecs_id(SxBody);
+    terms[1].inout = EcsInOut;
+    sx_ecs_system(world, "SxCopyOut", SxPhysicsPostStep, sx_ecs_copy_out, st, terms, 2);
+    memset(terms, 0, sizeof(terms));
+    terms[0].id = ecs_id(SxContacts);
+    terms[0].src.id = ecs_id(SxContacts);
+    terms[0].inout = EcsOut;
+    sx_ecs_system(world, "SxPublishContacts", SxPhysicsPostStep, sx_ecs_publish_contacts, st, terms,
+                  1);
+}

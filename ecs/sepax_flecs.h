@@ -1,0 +1,199 @@
+/* sepax flecs module — rigid-body physics for flecs 4 worlds.
+ *
+ *   ECS_IMPORT(world, SepaxPhysics);
+ *   ecs_entity_t box = ecs_new(world);
+ *   ecs_set(world, box, SxTransform, {.position = {0, 4}});
+ *   ecs_set(world, box, SxBody, {.type = SX_BODY_DYNAMIC, .gravity_scale = 1});
+ *   ecs_set(world, box, SxCollider, sx_ecs_collider(sx_box_shape(0.5f, 0.5f)));
+ *   ecs_progress(world, 1.0f / 60.0f);
+ *
+ * The components are the truth: once per fixed step the module copies what
+ * the game wrote into SxTransform (a teleport) and SxBody (velocity, type,
+ * damping, accumulated forces and impulses) into a sepax world, runs the
+ * world's public stage functions, and copies positions and velocities back.
+ * An entity with SxBody is a body (with or without SxCollider); an entity with
+ * SxCollider but no SxBody is static geometry. Adding SxBody or SxCollider
+ * adds SxTransform (identity) when it is missing.
+ *
+ * Physics runs in the phase SxPhysicsUpdate (after EcsOnUpdate): a fixed
+ * time step with an accumulator, SxPhysicsSettings.max_steps_per_frame at
+ * most per frame. Each fixed step runs the systems of these tags in order,
+ * the stage tags once per sub-step:
+ *
+ *   SxPhysicsPreStep      copy components into the world (once per step)
+ *   SxPhysicsApplyForces  sx_world_apply_forces     \
+ *   SxPhysicsCollide      sx_world_collide           |  sub_steps times,
+ *   SxPhysicsSolve        sx_world_solve             |  h = fixed_time_step
+ *   SxPhysicsIntegrate    sx_world_integrate         |      / sub_steps
+ *   SxPhysicsSeparate     sx_world_separate         /
+ *   SxPhysicsPostStep     clear forces, update sleep, copy the world back
+ *                         into the components, fill SxContacts, emit events
+ *
+ * A game puts its own system between stages by giving it one of these tags
+ * as its DependsOn phase (`.phase = SxPhysicsSolve` in ecs_system_desc_t's
+ * ECS_SYSTEM or ecs_dependson(SxPhysicsSolve)): the main pipeline ignores
+ * these tags; the module runs their systems itself (up to 64 per tag), in
+ * creation order after its own. All of a frame's steps run inside the SxPhysicsUpdate phase, so
+ * structural changes made by these systems or by observers of the contact
+ * events (deleting an entity, adding SxBody) are deferred as usual: they take
+ * effect when the phase's commands are merged, after the frame's last step. */
+#ifndef SEPAX_FLECS_H
+#define SEPAX_FLECS_H
+
+#include <sepax/sepax.h>
+
+#include "flecs.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Where an entity is: the body origin and angle (radians). Writing it
+ *  teleports the body at the next step (velocities are kept). */
+typedef struct SxTransform {
+    sx_vec2 position;
+    sx_real angle;
+} SxTransform;
+
+/** A rigid body. Zero-initialised it is a static body with gravity scale 0:
+ *  start from sx_ecs_body(type). After each step velocity and
+ *  angular_velocity hold the world's values; writing them sets the velocity
+ *  at the next step. */
+typedef struct SxBody {
+    sx_body_type type;
+    sx_vec2 velocity;         /**< of the centre of mass, m/s */
+    sx_real angular_velocity; /**< rad/s */
+    /** kg; 0 = from the colliders' densities. A positive mass scales the
+     *  collider's density to give it (a body without a collider weighs 1 kg,
+     *  as in the plain world). Changing it rebuilds the body. */
+    sx_real mass;
+    /** Accumulators: forces (N) and torque (N m) act over the next fixed
+     *  step, impulses (N s, N m s) once; the module zeroes them after
+     *  applying them. See sx_ecs_apply_force / sx_ecs_apply_impulse. */
+    sx_vec2 force;
+    sx_real torque;
+    sx_vec2 impulse;
+    sx_real angular_impulse;
+    /** As sx_body_def; changing one of them rebuilds the world body (its
+     *  contacts restart from scratch). */
+    sx_real linear_damping;
+    sx_real angular_damping;
+    sx_real gravity_scale;
+    bool fixed_rotation;
+    /** Output: false while the body sleeps. */
+    bool awake;
+} SxBody;
+
+/** A collider attached to the entity's body (or, without SxBody, static
+ *  geometry). Fields as sx_collider_def; start from sx_ecs_collider(shape).
+ *  Writing a different value rebuilds the collider. */
+typedef struct SxCollider {
+    sx_shape shape;
+    sx_real density;
+    sx_real friction;
+    sx_real restitution;
+    sx_filter filter;
+    bool sensor;
+} SxCollider;
+
+/** Singleton: the physics settings, read at every frame. */
+typedef struct SxPhysicsSettings {
+    sx_vec2 gravity;         /**< m/s^2; default (0, -10) */
+    sx_real fixed_time_step; /**< s, > 0; default 1/60 */
+    int32_t sub_steps;       /**< >= 1; default 4 (the world's default) */
+    /** Most fixed steps one frame runs (>= 1; default 8); the time beyond
+     *  it is dropped, so a long frame slows the simulation down instead of
+     *  spiralling. */
+    int32_t max_steps_per_frame;
+    /** Lets resting groups of bodies fall asleep (sx_world_update_sleep
+     *  runs after each step). Default true. Turning it off keeps bodies
+     *  that already sleep asleep until something touches or moves them. */
+    bool enable_sleep;
+} SxPhysicsSettings;
+
+/** One contact of the last fixed step (collider pairs with a manifold). */
+typedef struct SxContact {
+    ecs_entity_t entity_a, entity_b; /**< entity_a < entity_b */
+    sx_vec2 normal;                  /**< unit, from entity_a to entity_b */
+    sx_vec2 point;                   /**< first contact point, world */
+    int32_t point_count;
+} SxContact;
+
+/** Singleton: the contacts of the last fixed step, sorted by (entity_a,
+ *  entity_b). Owned by the module; valid until the next step. */
+typedef struct SxContacts {
+    const SxContact *items;
+    int32_t count;
+} SxContacts;
+
+/** Singleton: the module's world, for queries and debug drawing
+ *  (sx_world_draw, sx_world_cast_ray, ...). Do not create or destroy bodies
+ *  in it: the components own them. */
+typedef struct SxPhysicsWorld {
+    sx_world *world;
+} SxPhysicsWorld;
+
+/** The payload of SxContactBegin / SxContactEnd, emitted once on each of the
+ *  two entities (with self and other swapped) when their colliders start or
+ *  stop touching. Observe with ecs_observer({ .query.terms =
+ *  {{ ecs_id(SxCollider) }}, .events = { SxContactBegin }, ... }) and read
+ *  it->param. normal and point are those of the contact (for an end, of the
+ *  last step it existed); the normal points from self to other. Deleting an
+ *  entity ends its contacts without an end event. */
+typedef struct SxContactEvent {
+    ecs_entity_t self, other;
+    sx_vec2 normal;
+    sx_vec2 point;
+} SxContactEvent;
+
+extern ECS_COMPONENT_DECLARE(SxTransform);
+extern ECS_COMPONENT_DECLARE(SxBody);
+extern ECS_COMPONENT_DECLARE(SxCollider);
+extern ECS_COMPONENT_DECLARE(SxPhysicsSettings);
+extern ECS_COMPONENT_DECLARE(SxContacts);
+extern ECS_COMPONENT_DECLARE(SxPhysicsWorld);
+extern ECS_COMPONENT_DECLARE(SxContactEvent);
+
+/** The phase in which physics runs (depends on EcsOnUpdate). */
+extern ECS_DECLARE(SxPhysicsUpdate);
+/** The tags ordering the systems of one fixed step (see the top). */
+extern ECS_DECLARE(SxPhysicsPreStep);
+extern ECS_DECLARE(SxPhysicsApplyForces);
+extern ECS_DECLARE(SxPhysicsCollide);
+extern ECS_DECLARE(SxPhysicsSolve);
+extern ECS_DECLARE(SxPhysicsIntegrate);
+extern ECS_DECLARE(SxPhysicsSeparate);
+extern ECS_DECLARE(SxPhysicsPostStep);
+/** Custom events carrying an SxContactEvent. */
+extern ECS_DECLARE(SxContactBegin);
+extern ECS_DECLARE(SxContactEnd);
+/** A collider started or stopped overlapping a sensor collider; emitted on
+ *  the sensor's entity and on the visitor's, as the contact events (normal
+ *  and point are zero). */
+extern ECS_DECLARE(SxSensorBegin);
+extern ECS_DECLARE(SxSensorEnd);
+
+/** The module: ECS_IMPORT(world, SepaxPhysics). */
+void SepaxPhysicsImport(ecs_world_t *world);
+
+/** A body of the given type with gravity scale 1 and everything else 0. */
+SxBody sx_ecs_body(sx_body_type type);
+/** sx_default_collider_def's values with this shape. */
+SxCollider sx_ecs_collider(sx_shape shape);
+
+/** Adds a force (N, at the centre of mass) to the entity's SxBody force
+ *  accumulator: it acts over the next fixed step. Ignored without SxBody. */
+void sx_ecs_apply_force(ecs_world_t *world, ecs_entity_t e, sx_vec2 force);
+/** Adds a linear impulse (N s) to the entity's SxBody, applied at the next
+ *  fixed step. Ignored without SxBody. */
+void sx_ecs_apply_impulse(ecs_world_t *world, ecs_entity_t e, sx_vec2 impulse);
+/** The module's sepax world (NULL before the import). */
+sx_world *sx_ecs_world(const ecs_world_t *world);
+/** Fixed steps run since the import. */
+int64_t sx_ecs_step_count(const ecs_world_t *world);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SEPAX_FLECS_H */

@@ -1,0 +1,504 @@
+/* sepax tests — the flecs module: a real flecs world in each test. Bodies
+ * and static geometry from components, a trajectory bit-identical to the
+ * plain world's, the fixed tick and its cap, contact events, writes to the
+ * components taking effect, deletion in mid-contact, helpers, reflection,
+ * and many entities (leaks are ASan's to find in the SAN=1 build). */
+#include <string.h>
+
+#include "sepax_flecs.h"
+#include "test_support.h"
+
+#define DT (SX_R(1.0) / SX_R(60.0))
+
+static ecs_world_t *make_world(void) {
+    ecs_world_t *world = ecs_init();
+    assert_non_null(world);
+    ECS_IMPORT(world, SepaxPhysics);
+    return world;
+}
+
+static void set_gravity(ecs_world_t *world, sx_vec2 g) {
+    SxPhysicsSettings *s = ecs_singleton_ensure(world, SxPhysicsSettings);
+    s->gravity = g;
+}
+
+static ecs_entity_t add_ground(ecs_world_t *world) {
+    ecs_entity_t e = ecs_new(world);
+    SxTransform t = {{SX_R(0.0), SX_R(-1.0)}, SX_R(0.0)};
+    SxCollider c = sx_ecs_collider(sx_box_shape(SX_R(20.0), SX_R(1.0)));
+    ecs_set_ptr(world, e, SxTransform, &t);
+    ecs_set_ptr(world, e, SxCollider, &c);
+    return e;
+}
+
+static ecs_entity_t add_dynamic(ecs_world_t *world, sx_vec2 p, sx_shape shape) {
+    ecs_entity_t e = ecs_new(world);
+    SxTransform t;
+    SxBody b = sx_ecs_body(SX_BODY_DYNAMIC);
+    SxCollider c = sx_ecs_collider(shape);
+    t.position = p;
+    t.angle = SX_R(0.0);
+    ecs_set_ptr(world, e, SxTransform, &t);
+    ecs_set_ptr(world, e, SxBody, &b);
+    ecs_set_ptr(world, e, SxCollider, &c);
+    return e;
+}
+
+static void progress(ecs_world_t *world, int frames, double dt) {
+    int i;
+    for (i = 0; i < frames; ++i)
+        ecs_progress(world, (ecs_ftime_t)dt);
+}
+
+static sx_vec2 position_of(ecs_world_t *world, ecs_entity_t e) {
+    const SxTransform *t = ecs_get(world, e, SxTransform);
+    assert_non_null(t);
+    return t->position;
+}
+
+static void box_falls_onto_static_ground_and_comes_to_rest(void **state) {
+    ecs_world_t *world = make_world();
+    ecs_entity_t box;
+    const SxBody *b;
+    (void)state;
+    add_ground(world);
+    box = add_dynamic(world, sx_v2(SX_R(0.0), SX_R(3.0)), sx_box_shape(SX_R(0.5), SX_R(0.5)));
+    progress(world, 240, 1.0 / 60.0);
+    /* resting on the surface y = 0, within the linear slop */
+    assert_near(position_of(world, box).y, 0.5, 0.01);
+    assert_near(position_of(world, box).x, 0.0, 1e-3);
+    b = ecs_get(world, box, SxBody);
+    assert_non_null(b);
+    assert_true(sx_length(b->velocity) < SX_R(0.05));
+    assert_int_equal(sx_world_body_count(sx_ecs_world(world)), 2);
+    assert_true(ecs_singleton_get(world, SxContacts)->count >= 1);
+    ecs_fini(world);
+}
+
+/* The same scene through the module and through sx_world_step: a bouncing,
+ * spinning ball and two boxes that land on each other. Every position,
+ * angle and velocity must match to the last bit, frame by frame (static
+ * geometry is created first, then bodies in entity order, as the module
+ * does). */
+static void ball_bounce_is_bit_identical_to_the_plain_world(void **state) {
+    enum { N = 3 };
+    ecs_world_t *world = make_world();
+    sx_world_def def = sx_default_world_def();
+    sx_world *plain = sx_world_create(&def);
+    sx_body_def bd = sx_default_body_def();
+    sx_collider_def cd = sx_default_collider_def();
+    sx_body_id ids[N], ground_id;
+    ecs_entity_t es[N];
+    sx_vec2 at[N];
+    sx_shape shapes[N];
+    int frame, i;
+    bool rebounded = false;
+    (void)state;
+    assert_non_null(plain);
+    at[0] = sx_v2(SX_R(0.3), SX_R(4.0));
+    shapes[0] = sx_circle_shape(sx_v2(0, 0), SX_R(0.5));
+    at[1] = sx_v2(SX_R(4.0), SX_R(1.0));
+    shapes[1] = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    at[2] = sx_v2(SX_R(4.3), SX_R(3.0));
+    shapes[2] = sx_box_shape(SX_R(0.6), SX_R(0.3));
+
+    add_ground(world);
+    for (i = 0; i < N; ++i)
+        es[i] = add_dynamic(world, at[i], shapes[i]);
+    {
+        SxCollider c = *ecs_get(world, es[0], SxCollider);
+        c.restitution = SX_R(0.7);
+        ecs_set_ptr(world, es[0], SxCollider, &c);
+        ecs_get_mut(world, es[0], SxBody)->angular_velocity = SX_R(1.5);
+    }
+
+    bd.position = sx_v2(SX_R(0.0), SX_R(-1.0));
+    assert_int_equal(sx_create_body(plain, &bd, &ground_id), SX_OK);
+    cd.shape = sx_box_shape(SX_R(20.0), SX_R(1.0));
+    assert_int_equal(sx_body_add_collider(plain, ground_id, &cd, NULL), SX_OK);
+    for (i = 0; i < N; ++i) {
+        bd.type = SX_BODY_DYNAMIC;
+        bd.position = at[i];
+        bd.angular_velocity = i == 0 ? SX_R(1.5) : SX_R(0.0);
+        assert_int_equal(sx_create_body(plain, &bd, &ids[i]), SX_OK);
+        cd.shape = shapes[i];
+        cd.restitution = i == 0 ? SX_R(0.7) : SX_R(0.0);
+        assert_int_equal(sx_body_add_collider(plain, ids[i], &cd, NULL), SX_OK);
+    }
+
+    for (frame = 0; frame < 240; ++frame) {
+        ecs_progress(world, (ecs_ftime_t)DT);
+        assert_int_equal(sx_world_step(plain, DT), SX_OK);
+        for (i = 0; i < N; ++i) {
+            const SxTransform *t = ecs_get(world, es[i], SxTransform);
+            const SxBody *b = ecs_get(world, es[i], SxBody);
+            sx_vec2 p = sx_body_get_position(plain, ids[i]);
+            sx_vec2 v = sx_body_get_linear_velocity(plain, ids[i]);
+            sx_real angle = sx_body_get_angle(plain, ids[i]);
+            sx_real w = sx_body_get_angular_velocity(plain, ids[i]);
+            assert_memory_equal(&t->position, &p, sizeof(p));
+            assert_memory_equal(&t->angle, &angle, sizeof(angle));
+            assert_memory_equal(&b->velocity, &v, sizeof(v));
+            assert_memory_equal(&b->angular_velocity, &w, sizeof(w));
+            assert_int_equal(b->awake, sx_body_is_awake(plain, ids[i]));
+        }
+        if (ecs_get(world, es[0], SxBody)->velocity.y > SX_R(2.0)) rebounded = true;
+    }
+    assert_int_equal(sx_ecs_step_count(world), 240);
+    /* the trajectory had contacts in it: the ball came back up, and the
+     * second box rests on the first */
+    assert_true(rebounded);
+    assert_near(position_of(world, es[2]).y, 1.3, 0.02);
+    sx_world_destroy(plain);
+    ecs_fini(world);
+}
+
+static void count_system(ecs_iter_t *it) {
+    int *count = (int *)it->ctx;
+    ++*count;
+}
+
+static void fixed_tick_runs_whole_steps_and_stages_once_per_sub_step(void **state) {
+    ecs_world_t *world = make_world();
+    int solves = 0;
+    ecs_entity_desc_t ed;
+    ecs_system_desc_t sd;
+    ecs_id_t add[2];
+    (void)state;
+    ecs_singleton_ensure(world, SxPhysicsSettings)->max_steps_per_frame = 100;
+    add_dynamic(world, sx_v2(SX_R(0.0), SX_R(0.0)), sx_box_shape(SX_R(0.5), SX_R(0.5)));
+    /* a game system between the stages */
+    memset(&ed, 0, sizeof(ed));
+    memset(&sd, 0, sizeof(sd));
+    add[0] = ecs_dependson(SxPhysicsSolve);
+    add[1] = 0;
+    ed.add = add;
+    sd.entity = ecs_entity_init(world, &ed);
+    sd.callback = count_system;
+    sd.ctx = &solves;
+    ecs_system_init(world, &sd);
+
+    progress(world, 10, 0.1);
+    assert_int_equal(sx_ecs_step_count(world), 60);
+    assert_int_equal(solves, 60 * 4);
+    ecs_fini(world);
+
+    world = make_world();
+    progress(world, 10, 1.0 / 240.0);
+    assert_true(sx_ecs_step_count(world) >= 2 && sx_ecs_step_count(world) <= 3);
+    ecs_fini(world);
+}
+
+static void a_long_frame_runs_at_most_max_steps_and_drops_the_rest(void **state) {
+    ecs_world_t *world = make_world();
+    (void)state;
+    ecs_singleton_ensure(world, SxPhysicsSettings)->max_steps_per_frame = 5;
+    progress(world, 1, 1.0);
+    assert_int_equal(sx_ecs_step_count(world), 5);
+    /* the second long of time is not caught up later */
+    progress(world, 1, 1.0 / 60.0);
+    assert_int_equal(sx_ecs_step_count(world), 6);
+    ecs_fini(world);
+}
+
+typedef struct event_log {
+    int begins, ends;
+    ecs_entity_t watch;
+    SxContactEvent last_begin;
+} event_log;
+
+static void on_begin(ecs_iter_t *it) {
+    event_log *log = (event_log *)it->ctx;
+    const SxContactEvent *ev = (const SxContactEvent *)it->param;
+    if (ev->self != log->watch) return;
+    ++log->begins;
+    log->last_begin = *ev;
+}
+
+static void on_end(ecs_iter_t *it) {
+    event_log *log = (event_log *)it->ctx;
+    const SxContactEvent *ev = (const SxContactEvent *)it->param;
+    if (ev->self == log->watch) ++log->ends;
+}
+
+static void observe(ecs_world_t *world, event_log *log) {
+    ecs_observer(world, {.query.terms = {{ecs_id(SxCollider)}},
+                         .events = {SxContactBegin},
+                         .callback = on_begin,
+                         .ctx = log});
+    ecs_observer(world, {.query.terms = {{ecs_id(SxCollider)}},
+                         .events = {SxContactEnd},
+                         .callback = on_end,
+                         .ctx = log});
+}
+
+static void contact_begin_and_end_reach_observers_exactly_once(void **state) {
+    ecs_world_t *world = make_world();
+    ecs_entity_t ground, box;
+    event_log log;
+    SxTransform up = {{SX_R(0.0), SX_R(10.0)}, SX_R(0.0)};
+    (void)state;
+    memset(&log, 0, sizeof(log));
+    observe(world, &log);
+    ground = add_ground(world);
+    box = add_dynamic(world, sx_v2(SX_R(0.0), SX_R(2.0)), sx_box_shape(SX_R(0.5), SX_R(0.5)));
+    log.watch = box;
+    progress(world, 120, 1.0 / 60.0);
+    assert_int_equal(log.begins, 1);
+    assert_int_equal(log.ends, 0);
+    assert_true(log.last_begin.other == ground);
+    /* from the box (self) down to the ground */
+    assert_vec2_near(log.last_begin.normal, sx_v2(SX_R(0.0), SX_R(-1.0)), 1e-4);
+    assert_near(log.last_begin.point.y, 0.0, 0.05);
+
+    ecs_set_ptr(world, box, SxTransform, &up); /* lift it away */
+    progress(world, 2, 1.0 / 60.0);
+    assert_int_equal(log.begins, 1);
+    assert_int_equal(log.ends, 1);
+    ecs_fini(world);
+}
+
+static void count_event(ecs_iter_t *it) {
+    event_log *log = (event_log *)it->ctx;
+    const SxContactEvent *ev = (const SxContactEvent *)it->param;
+    if (ev->self != log->watch) return;
+    if (it->event == SxSensorBegin) ++log->begins;
+    if (it->event == SxSensorEnd) ++log->ends;
+    log->last_begin = *ev;
+}
+
+static void a_ball_through_a_sensor_gives_one_sensor_begin_and_end(void **state) {
+    ecs_world_t *world = make_world();
+    ecs_entity_t sensor = ecs_new(world), ball;
+    SxTransform t = {{SX_R(0.0), SX_R(3.0)}, SX_R(0.0)};
+    SxCollider c = sx_ecs_collider(sx_box_shape(SX_R(2.0), SX_R(0.25)));
+    event_log log;
+    (void)state;
+    memset(&log, 0, sizeof(log));
+    c.sensor = true;
+    ecs_set_ptr(world, sensor, SxTransform, &t);
+    ecs_set_ptr(world, sensor, SxCollider, &c);
+    add_ground(world);
+    ball = add_dynamic(world, sx_v2(SX_R(0.0), SX_R(5.0)), sx_circle_shape(sx_v2(0, 0), SX_R(0.3)));
+    log.watch = sensor;
+    ecs_observer(world, {.query.terms = {{ecs_id(SxCollider)}},
+                         .events = {SxSensorBegin, SxSensorEnd},
+                         .callback = count_event,
+                         .ctx = &log});
+    progress(world, 120, 1.0 / 60.0);
+    assert_int_equal(log.begins, 1);
+    assert_int_equal(log.ends, 1);
+    assert_true(log.last_begin.other == ball);
+    /* the ball fell through the sensor onto the ground */
+    assert_near(position_of(world, ball).y, 0.3, 0.02);
+    ecs_fini(world);
+}
+
+static void teleport_and_velocity_writes_take_effect_at_the_next_step(void **state) {
+    ecs_world_t *world = make_world();
+    ecs_entity_t e;
+    SxTransform t = {{SX_R(5.0), SX_R(7.0)}, SX_R(0.25)};
+    SxBody *b;
+    sx_vec2 p;
+    (void)state;
+    set_gravity(world, sx_v2(0, 0));
+    e = add_dynamic(world, sx_v2(SX_R(0.0), SX_R(0.0)), sx_box_shape(SX_R(0.5), SX_R(0.5)));
+    progress(world, 1, 1.0 / 60.0);
+    ecs_set_ptr(world, e, SxTransform, &t);
+    progress(world, 1, 1.0 / 60.0);
+    assert_vec2_near(position_of(world, e), sx_v2(SX_R(5.0), SX_R(7.0)), 1e-6);
+    assert_near(ecs_get(world, e, SxTransform)->angle, 0.25, 1e-5);
+
+    b = ecs_get_mut(world, e, SxBody);
+    b->velocity = sx_v2(SX_R(3.0), SX_R(-1.5));
+    progress(world, 1, 1.0 / 60.0);
+    p = position_of(world, e);
+    assert_near(p.x, 5.0 + 3.0 / 60.0, 1e-5);
+    assert_near(p.y, 7.0 - 1.5 / 60.0, 1e-5);
+    assert_vec2_near(ecs_get(world, e, SxBody)->velocity, sx_v2(SX_R(3.0), SX_R(-1.5)), 1e-6);
+    ecs_fini(world);
+}
+
+static void delete_on_begin(ecs_iter_t *it) {
+    const SxContactEvent *ev = (const SxContactEvent *)it->param;
+    ecs_entity_t *victim = (ecs_entity_t *)it->ctx;
+    if (ev->self == *victim) ecs_delete(it->world, ev->self);
+}
+
+/* The copy-in pushes only what the game changed, so a resting box falls
+ * asleep under the module as in the plain world, and a write wakes it. */
+static void resting_bodies_sleep_and_a_velocity_write_wakes_them(void **state) {
+    ecs_world_t *world = make_world();
+    ecs_entity_t box;
+    (void)state;
+    add_ground(world);
+    box = add_dynamic(world, sx_v2(SX_R(0.0), SX_R(0.5)), sx_box_shape(SX_R(0.5), SX_R(0.5)));
+    progress(world, 120, 1.0 / 60.0);
+    assert_false(ecs_get(world, box, SxBody)->awake);
+    assert_int_equal(sx_world_awake_body_count(sx_ecs_world(world)), 0);
+    ecs_get_mut(world, box, SxBody)->velocity = sx_v2(SX_R(0.0), SX_R(3.0));
+    progress(world, 1, 1.0 / 60.0);
+    assert_true(ecs_get(world, box, SxBody)->awake);
+    assert_true(position_of(world, box).y > SX_R(0.5));
+    ecs_fini(world);
+
+    /* with sleeping off nothing sleeps */
+    world = make_world();
+    ecs_singleton_ensure(world, SxPhysicsSettings)->enable_sleep = false;
+    add_ground(world);
+    box = add_dynamic(world, sx_v2(SX_R(0.0), SX_R(0.5)), sx_box_shape(SX_R(0.5), SX_R(0.5)));
+    progress(world, 120, 1.0 / 60.0);
+    assert_true(ecs_get(world, box, SxBody)->awake);
+    ecs_fini(world);
+}
+
+static void deleting_entities_in_the_middle_of_contacts_is_safe(void **state) {
+    ecs_world_t *world = make_world();
+    ecs_entity_t ground, boxes[4], victim;
+    const SxContacts *contacts;
+    int i;
+    (void)state;
+    ground = add_ground(world);
+    for (i = 0; i < 4; ++i) {
+        boxes[i] = add_dynamic(world, sx_v2(SX_R(0.0), SX_R(0.5) + (sx_real)i * SX_R(1.0)),
+                               sx_box_shape(SX_R(0.5), SX_R(0.5)));
+    }
+    progress(world, 30, 1.0 / 60.0);
+    assert_true(ecs_singleton_get(world, SxContacts)->count >= 4);
+    /* a box in the middle of the stack, between frames */
+    ecs_delete(world, boxes[1]);
+    progress(world, 30, 1.0 / 60.0);
+    assert_int_equal(sx_world_body_count(sx_ecs_world(world)), 4);
+    /* an entity deleted from an observer while the step is deferred */
+    victim =
+        add_dynamic(world, sx_v2(SX_R(3.0), SX_R(2.0)), sx_circle_shape(sx_v2(0, 0), SX_R(0.3)));
+    ecs_observer(world, {.query.terms = {{ecs_id(SxCollider)}},
+                         .events = {SxContactBegin},
+                         .callback = delete_on_begin,
+                         .ctx = &victim});
+    progress(world, 60, 1.0 / 60.0);
+    assert_false(ecs_is_alive(world, victim));
+    assert_int_equal(sx_world_body_count(sx_ecs_world(world)), 4);
+    /* the ground goes: the rest falls */
+    ecs_delete(world, ground);
+    progress(world, 60, 1.0 / 60.0);
+    assert_true(position_of(world, boxes[0]).y < SX_R(-1.0));
+    contacts = ecs_singleton_get(world, SxContacts);
+    for (i = 0; i < contacts->count; ++i) {
+        assert_true(contacts->items[i].entity_a != ground && contacts->items[i].entity_b != ground);
+        assert_true(i == 0 || contacts->items[i - 1].entity_a <= contacts->items[i].entity_a);
+    }
+    ecs_fini(world);
+}
+
+static void bodies_without_colliders_and_colliders_without_bodies_work(void **state) {
+    ecs_world_t *world = make_world();
+    ecs_entity_t bare = ecs_new(world), box;
+    SxBody b = sx_ecs_body(SX_BODY_DYNAMIC);
+    sx_vec2 before;
+    (void)state;
+    ecs_set_ptr(world, bare, SxBody, &b); /* SxTransform comes along */
+    assert_true(ecs_has(world, bare, SxTransform));
+    progress(world, 60, 1.0 / 60.0);
+    /* free fall for 1 s: about 5 m (symplectic Euler: a little more) */
+    assert_near(position_of(world, bare).y, -5.0, 0.1);
+
+    add_ground(world);
+    box = add_dynamic(world, sx_v2(SX_R(5.0), SX_R(3.0)), sx_box_shape(SX_R(0.5), SX_R(0.5)));
+    progress(world, 10, 1.0 / 60.0);
+    ecs_remove(world, box, SxBody); /* now static geometry, frozen in the air */
+    progress(world, 1, 1.0 / 60.0);
+    before = position_of(world, box);
+    assert_true(before.y > SX_R(1.0));
+    progress(world, 30, 1.0 / 60.0);
+    assert_vec2_near(position_of(world, box), before, 0.0);
+    assert_int_equal(sx_world_body_count(sx_ecs_world(world)), 3);
+    /* and a body again, which loses its collider and falls through the ground */
+    ecs_set_ptr(world, box, SxBody, &b);
+    ecs_remove(world, box, SxCollider);
+    progress(world, 60, 1.0 / 60.0);
+    assert_true(position_of(world, box).y < SX_R(-1.0));
+    ecs_fini(world);
+}
+
+static void impulse_helper_and_mass_override(void **state) {
+    ecs_world_t *world = make_world();
+    ecs_entity_t e;
+    SxBody *b;
+    (void)state;
+    set_gravity(world, sx_v2(0, 0));
+    e = add_dynamic(world, sx_v2(0, 0), sx_box_shape(SX_R(0.5), SX_R(0.5)));
+    b = ecs_get_mut(world, e, SxBody);
+    b->mass = SX_R(4.0);
+    ecs_modified(world, e, SxBody);
+    progress(world, 1, 1.0 / 60.0);
+    sx_ecs_apply_impulse(world, e, sx_v2(SX_R(2.0), SX_R(0.0)));
+    progress(world, 1, 1.0 / 60.0);
+    assert_vec2_near(ecs_get(world, e, SxBody)->velocity, sx_v2(SX_R(0.5), SX_R(0.0)), 1e-6);
+    assert_vec2_near(ecs_get(world, e, SxBody)->impulse, sx_v2(0, 0), 0.0);
+    /* a force of 4 N on 4 kg for one step of 1/60 s: +1/60 m/s */
+    sx_ecs_apply_force(world, e, sx_v2(SX_R(0.0), SX_R(4.0)));
+    progress(world, 1, 1.0 / 60.0);
+    assert_near(ecs_get(world, e, SxBody)->velocity.y, 1.0 / 60.0, 1e-6);
+    progress(world, 1, 1.0 / 60.0);
+    assert_near(ecs_get(world, e, SxBody)->velocity.y, 1.0 / 60.0, 1e-6);
+    ecs_fini(world);
+}
+
+static void components_are_reflected(void **state) {
+    ecs_world_t *world = make_world();
+    SxTransform t = {{SX_R(1.5), SX_R(-2.0)}, SX_R(0.5)};
+    char *json;
+    (void)state;
+    json = ecs_ptr_to_json(world, ecs_id(SxTransform), &t);
+    assert_non_null(json);
+    assert_non_null(strstr(json, "\"position\""));
+    assert_non_null(strstr(json, "1.5"));
+    ecs_os_free(json);
+    ecs_fini(world);
+}
+
+static void many_entities_step_and_go_without_leaks(void **state) {
+    ecs_world_t *world = make_world();
+    ecs_entity_t es[300];
+    sx_test_rng rng = sx_test_rng_make(7);
+    int i;
+    (void)state;
+    add_ground(world);
+    for (i = 0; i < 300; ++i) {
+        sx_vec2 p = sx_v2(sx_test_rng_range(&rng, -15.0, 15.0), sx_test_rng_range(&rng, 1.0, 40.0));
+        sx_shape s =
+            i % 2 ? sx_box_shape(SX_R(0.3), SX_R(0.2)) : sx_circle_shape(sx_v2(0, 0), SX_R(0.25));
+        es[i] = add_dynamic(world, p, s);
+    }
+    progress(world, 60, 1.0 / 60.0);
+    assert_int_equal(sx_world_body_count(sx_ecs_world(world)), 301);
+    for (i = 0; i < 300; i += 2)
+        ecs_delete(world, es[i]);
+    progress(world, 30, 1.0 / 60.0);
+    assert_int_equal(sx_world_body_count(sx_ecs_world(world)), 151);
+    for (i = 1; i < 300; i += 2) {
+        sx_vec2 p = position_of(world, es[i]);
+        assert_true(p.y > SX_R(-0.1) && p.y < SX_R(41.0));
+    }
+    ecs_fini(world);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(box_falls_onto_static_ground_and_comes_to_rest),
+        cmocka_unit_test(ball_bounce_is_bit_identical_to_the_plain_world),
+        cmocka_unit_test(fixed_tick_runs_whole_steps_and_stages_once_per_sub_step),
+        cmocka_unit_test(a_long_frame_runs_at_most_max_steps_and_drops_the_rest),
+        cmocka_unit_test(contact_begin_and_end_reach_observers_exactly_once),
+        cmocka_unit_test(a_ball_through_a_sensor_gives_one_sensor_begin_and_end),
+        cmocka_unit_test(teleport_and_velocity_writes_take_effect_at_the_next_step),
+        cmocka_unit_test(resting_bodies_sleep_and_a_velocity_write_wakes_them),
+        cmocka_unit_test(deleting_entities_in_the_middle_of_contacts_is_safe),
+        cmocka_unit_test(bodies_without_colliders_and_colliders_without_bodies_work),
+        cmocka_unit_test(impulse_helper_and_mass_override),
+        cmocka_unit_test(components_are_reflected),
+        cmocka_unit_test(many_entities_step_and_go_without_leaks),
+    };
+    return cmocka_run_group_tests_name("ecs", tests, sx_test_group_setup, sx_test_group_teardown);
+}
