@@ -43,34 +43,33 @@ static bool finish_mtv(bool hit, sx_vec2 local, sx_xform xa, sx_vec2 *mtv) {
     return true;
 }
 
-/* Runs the core manifold and moves it to world space. */
+/* Runs the core manifold and moves it to world space, in place: the
+ * manifold is written once, straight into *out (a local when out is NULL). */
 static int finish_collide(const sx_core *ca, const sx_core *cb, sx_xform xa, sx_real margin,
                           sx_manifold *out) {
-    sx_manifold local, world;
-    int i;
+    sx_manifold scratch;
+    sx_manifold *m = out ? out : &scratch;
+    int i, count;
     if (!sx_is_finite(margin) || margin < SX_R(0.0)) margin = SX_R(0.0);
-    sx_core_manifold(ca, cb, margin, &local);
-    world.normal = sx_xform_vector(xa, local.normal);
-    world.count = local.count;
-    for (i = 0; i < local.count; ++i) {
-        world.points[i].point = sx_xform_point(xa, local.points[i].point);
-        world.points[i].depth = local.points[i].depth;
-        world.points[i].id = local.points[i].id;
-        if (!sx_vec2_is_finite(world.points[i].point) || !sx_is_finite(world.points[i].depth)) {
-            world.count = 0;
+    count = sx_core_manifold(ca, cb, margin, m);
+    m->normal = sx_xform_vector(xa, m->normal);
+    for (i = 0; i < count; ++i) {
+        m->points[i].point = sx_xform_point(xa, m->points[i].point);
+        if (!sx_vec2_is_finite(m->points[i].point) || !sx_is_finite(m->points[i].depth)) {
+            count = 0;
         }
     }
-    if (world.count == 0 || !sx_vec2_is_finite(world.normal)) {
-        world.count = 0;
-        world.normal = sx_v2_zero();
+    if (count == 0 || !sx_vec2_is_finite(m->normal)) {
+        count = 0;
+        m->normal = sx_v2_zero();
     }
-    for (i = world.count; i < 2; ++i) {
-        world.points[i].point = sx_v2_zero();
-        world.points[i].depth = SX_R(0.0);
-        world.points[i].id = 0;
+    m->count = count;
+    for (i = count; i < 2; ++i) {
+        m->points[i].point = sx_v2_zero();
+        m->points[i].depth = SX_R(0.0);
+        m->points[i].id = 0;
     }
-    if (out) *out = world;
-    return world.count;
+    return count;
 }
 
 static void clear_manifold(sx_manifold *out) {
@@ -666,11 +665,9 @@ typedef struct sx_pair_entry {
     }                                                                                              \
     static int col_##NAME##_rev(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,    \
                                 sx_real margin, sx_manifold *out) {                                \
-        sx_manifold m;                                                                             \
-        sx_collide_##NAME(&b->u.MA, xb, &a->u.MB, xa, margin, &m);                                 \
-        mirror_manifold(&m);                                                                       \
-        *out = m;                                                                                  \
-        return m.count;                                                                            \
+        sx_collide_##NAME(&b->u.MA, xb, &a->u.MB, xa, margin, out);                                \
+        mirror_manifold(out);                                                                      \
+        return out->count;                                                                         \
     }
 
 SX_PAIR_ENTRIES(segment_circle, segment, circle)
@@ -780,15 +777,12 @@ bool sx_mtv(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_v
 int sx_collide_ex(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_real margin,
                   sx_manifold *out) {
     const sx_pair_entry *e = pair_entry(a, b);
-    sx_manifold m;
-    int count;
+    sx_manifold scratch;
     if (e == NULL) {
         clear_manifold(out);
         return 0;
     }
-    count = e->collide(a, xa, b, xb, margin, &m);
-    if (out) *out = m;
-    return count;
+    return e->collide(a, xa, b, xb, margin, out ? out : &scratch);
 }
 
 int sx_collide(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_manifold *out) {

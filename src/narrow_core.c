@@ -137,10 +137,8 @@ static sx_real face_separation(const sx_core *p, int i, const sx_core *q) {
     sx_vec2 n = p->n[i], v = p->v[i];
     sx_real best = SX_REAL_MAX;
     int j;
-    for (j = 0; j < q->count; ++j) {
-        sx_real s = sx_dot(n, sx_sub(q->v[j], v));
-        if (s < best) best = s;
-    }
+    for (j = 0; j < q->count; ++j)
+        best = sx_minr(best, sx_dot(n, sx_sub(q->v[j], v)));
     return best;
 }
 
