@@ -24,11 +24,17 @@
 
 /* ---- shared plumbing ---------------------------------------------------- */
 
+/* (x - x) is 0 for finite x and NaN otherwise: one comparison checks a
+ * whole transform. */
+static bool xform_finite(sx_xform x) {
+    return (x.p.x - x.p.x) + (x.p.y - x.p.y) + (x.q.c - x.q.c) + (x.q.s - x.q.s) == SX_R(0.0);
+}
+
 /* B's placement in A's frame; false if either transform is not finite. */
 static bool relative_xform(sx_xform xa, sx_xform xb, sx_xform *rel) {
-    if (!sx_xform_is_finite(xa) || !sx_xform_is_finite(xb)) return false;
+    if (!xform_finite(xa) || !xform_finite(xb)) return false;
     *rel = sx_xform_inv_mul(xa, xb);
-    return sx_xform_is_finite(*rel);
+    return xform_finite(*rel);
 }
 
 /* Rotates a local MTV to world space; a non-finite result (overflow of huge
@@ -43,15 +49,10 @@ static bool finish_mtv(bool hit, sx_vec2 local, sx_xform xa, sx_vec2 *mtv) {
     return true;
 }
 
-/* Runs the core manifold and moves it to world space, in place: the
- * manifold is written once, straight into *out (a local when out is NULL). */
-static int finish_collide(const sx_core *ca, const sx_core *cb, sx_xform xa, sx_real margin,
-                          sx_manifold *out) {
-    sx_manifold scratch;
-    sx_manifold *m = out ? out : &scratch;
-    int i, count;
-    if (!sx_is_finite(margin) || margin < SX_R(0.0)) margin = SX_R(0.0);
-    count = sx_core_manifold(ca, cb, margin, m);
+/* Moves a local manifold of `count` points to world space in place; a
+ * non-finite result (overflow of huge inputs) becomes 0 points. */
+static int world_manifold(sx_manifold *m, int count, sx_xform xa) {
+    int i;
     m->normal = sx_xform_vector(xa, m->normal);
     for (i = 0; i < count; ++i) {
         m->points[i].point = sx_xform_point(xa, m->points[i].point);
@@ -70,6 +71,19 @@ static int finish_collide(const sx_core *ca, const sx_core *cb, sx_xform xa, sx_
         m->points[i].id = 0;
     }
     return count;
+}
+
+static sx_real clean_margin(sx_real margin) {
+    return sx_is_finite(margin) && margin > SX_R(0.0) ? margin : SX_R(0.0);
+}
+
+/* Runs the core manifold and moves it to world space: the manifold is
+ * written once, straight into *out (a local when out is NULL). */
+static int finish_collide(const sx_core *ca, const sx_core *cb, sx_xform xa, sx_real margin,
+                          sx_manifold *out) {
+    sx_manifold scratch;
+    sx_manifold *m = out ? out : &scratch;
+    return world_manifold(m, sx_core_manifold(ca, cb, clean_margin(margin), m), xa);
 }
 
 static void clear_manifold(sx_manifold *out) {
@@ -240,9 +254,6 @@ int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_x
 
 typedef bool sx_core_builder(const void *shape, const sx_xform *x, sx_core *out);
 
-static bool build_circle(const void *s, const sx_xform *x, sx_core *out) {
-    return sx_core_from_circle((const sx_circle *)s, x, out);
-}
 static bool build_segment(const void *s, const sx_xform *x, sx_core *out) {
     return sx_core_from_segment((const sx_segment *)s, x, out);
 }
@@ -282,6 +293,50 @@ static int pair_collide(sx_core_builder *fa, const void *a, sx_xform xa, sx_core
         return 0;
     }
     return finish_collide(&ca, &cb, xa, margin, out);
+}
+
+/* A core against a circle B (segment, capsule or polygon first): B's centre
+ * is placed in A's frame (the relative transform applied to it), and
+ * the point routines of narrow_core.c answer without a core for B. */
+static bool circle_in_frame(const sx_circle *b, sx_xform xa, sx_xform xb, sx_vec2 *c) {
+    sx_xform rel;
+    if (b == NULL || !(b->radius >= SX_R(0.0)) || !sx_is_finite(b->radius) ||
+        !sx_vec2_is_finite(b->center) || !relative_xform(xa, xb, &rel)) {
+        return false;
+    }
+    *c = sx_xform_point(rel, b->center);
+    return sx_vec2_is_finite(*c);
+}
+
+static bool point_overlap(sx_core_builder *fa, const void *a, sx_xform xa, const sx_circle *b,
+                          sx_xform xb) {
+    sx_core ca;
+    sx_vec2 c;
+    return circle_in_frame(b, xa, xb, &c) && fa(a, NULL, &ca) &&
+           sx_core_point_overlap(&ca, c, b->radius);
+}
+
+static bool point_mtv(sx_core_builder *fa, const void *a, sx_xform xa, const sx_circle *b,
+                      sx_xform xb, sx_vec2 *mtv) {
+    sx_core ca;
+    sx_vec2 c, local = sx_v2_zero();
+    bool hit = circle_in_frame(b, xa, xb, &c) && fa(a, NULL, &ca) &&
+               sx_core_point_mtv(&ca, c, b->radius, &local);
+    return finish_mtv(hit, local, xa, mtv);
+}
+
+static int point_collide(sx_core_builder *fa, const void *a, sx_xform xa, const sx_circle *b,
+                         sx_xform xb, sx_real margin, sx_manifold *out) {
+    sx_core ca;
+    sx_vec2 c;
+    sx_manifold scratch;
+    sx_manifold *m = out ? out : &scratch;
+    if (!circle_in_frame(b, xa, xb, &c) || !fa(a, NULL, &ca)) {
+        clear_manifold(out);
+        return 0;
+    }
+    return world_manifold(m, sx_core_point_manifold(&ca, c, b->radius, clean_margin(margin), m),
+                          xa);
 }
 
 /* Same-type pairs: overlap and MTV in the canonical order. `order` > 0 means
@@ -339,15 +394,15 @@ static int collide_gated(sx_core_builder *f, const void *a, sx_xform xa, const v
 /* ---- segment - circle --------------------------------------------------- */
 
 bool sx_overlap_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
-    return pair_overlap(build_segment, a, xa, build_circle, b, xb);
+    return point_overlap(build_segment, a, xa, b, xb);
 }
 bool sx_mtv_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                            sx_vec2 *mtv) {
-    return pair_mtv(build_segment, a, xa, build_circle, b, xb, mtv);
+    return point_mtv(build_segment, a, xa, b, xb, mtv);
 }
 int sx_collide_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
-    return pair_collide(build_segment, a, xa, build_circle, b, xb, margin, out);
+    return point_collide(build_segment, a, xa, b, xb, margin, out);
 }
 
 /* ---- segment - segment -------------------------------------------------- */
@@ -385,15 +440,15 @@ int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, s
 /* ---- capsule - circle / segment / capsule ------------------------------- */
 
 bool sx_overlap_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
-    return pair_overlap(build_capsule, a, xa, build_circle, b, xb);
+    return point_overlap(build_capsule, a, xa, b, xb);
 }
 bool sx_mtv_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                            sx_vec2 *mtv) {
-    return pair_mtv(build_capsule, a, xa, build_circle, b, xb, mtv);
+    return point_mtv(build_capsule, a, xa, b, xb, mtv);
 }
 int sx_collide_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
-    return pair_collide(build_capsule, a, xa, build_circle, b, xb, margin, out);
+    return point_collide(build_capsule, a, xa, b, xb, margin, out);
 }
 
 bool sx_overlap_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b,
@@ -448,15 +503,15 @@ int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, s
 /* ---- polygon - circle / segment / capsule ------------------------------- */
 
 bool sx_overlap_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
-    return pair_overlap(build_polygon, a, xa, build_circle, b, xb);
+    return point_overlap(build_polygon, a, xa, b, xb);
 }
 bool sx_mtv_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                            sx_vec2 *mtv) {
-    return pair_mtv(build_polygon, a, xa, build_circle, b, xb, mtv);
+    return point_mtv(build_polygon, a, xa, b, xb, mtv);
 }
 int sx_collide_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
-    return pair_collide(build_polygon, a, xa, build_circle, b, xb, margin, out);
+    return point_collide(build_polygon, a, xa, b, xb, margin, out);
 }
 
 bool sx_overlap_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b,

@@ -58,16 +58,6 @@ static bool all_finite(const sx_vec2 *v, int n) {
     return acc == SX_R(0.0);
 }
 
-bool sx_core_from_circle(const sx_circle *c, const sx_xform *x, sx_core *out) {
-    if (c == NULL || !core_radius_ok(c->radius) || !sx_vec2_is_finite(c->center)) return false;
-    out->vs[0] = place_point(x, c->center);
-    out->v = out->vs;
-    out->n = out->ns;
-    out->radius = c->radius;
-    out->count = 1;
-    return sx_vec2_is_finite(out->vs[0]);
-}
-
 /* Builds the 2-point core a-b (or a 1-point core when a-b has no direction).
  * The normal is taken in the shape's frame and rotated, like polygon normals,
  * so it does not depend on the translation. */
@@ -544,4 +534,143 @@ int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_mani
         out->normal = a->n[sat.face_a];
     }
     return out->count;
+}
+
+/* ---- a core against a point --------------------------------------------- */
+
+/* The cheap pairs (a segment, capsule or polygon A against a circle B) are
+ * the routines above with b the 1-point core (c, rb), written out for it: the
+ * SAT is A's faces (plus the caps of a 2-point A) against one point, the
+ * vertex sweep needs only the edges around A's face of largest separation
+ * (for a point outside a convex polygon the closest point lies on that face
+ * or at one of its ends, so its two neighbours cover rounding ties), and a
+ * face contact is the point itself seen along the face normal, with no
+ * clipping. */
+
+/* sat_run for b = the point c. */
+static bool point_sat(const sx_core *a, sx_vec2 c, sx_real limit, sx_sat *out) {
+    int i, n = face_count(a);
+    out->sep_a = -SX_REAL_MAX;
+    out->sep_b = -SX_REAL_MAX;
+    out->face_a = -1;
+    out->face_b = -1;
+    for (i = 0; i < n; ++i) {
+        sx_real s = sx_dot(a->n[i], sx_sub(c, a->v[i]));
+        if (s > limit) return false;
+        if (s > out->sep_a) {
+            out->sep_a = s;
+            out->face_a = i;
+        }
+    }
+    out->has_axes = n > 0;
+    out->sep = out->sep_a;
+    out->axis = out->face_a >= 0 ? a->n[out->face_a] : sx_v2_zero();
+    if (a->count == 2) {
+        sx_vec2 t = sx_perp(a->n[0]);
+        sx_real beyond_b = sx_dot(t, sx_sub(c, a->v[1]));
+        sx_real beyond_a = sx_dot(t, sx_sub(a->v[0], c));
+        sx_real s = beyond_b >= beyond_a ? beyond_b : beyond_a;
+        if (s > limit) return false;
+        if (s > out->sep) {
+            out->sep = s;
+            out->axis = beyond_b >= beyond_a ? t : sx_neg(t);
+        }
+    }
+    return true;
+}
+
+/* closest_features for b = the point c (index 0), A's face of largest
+ * separation being sat->face_a. */
+static void point_closest(const sx_core *a, sx_vec2 c, const sx_sat *sat, sx_closest *out) {
+    out->dist_sq = SX_REAL_MAX;
+    out->distance = SX_REAL_MAX;
+    out->kind = SX_CLOSEST_VERTICES;
+    out->ia = 0;
+    out->ib = 0;
+    out->pa = a->v[0];
+    out->pb = c;
+    out->normal = sx_v2_zero();
+    if (a->count == 1) {
+        out->dist_sq = sx_distance_sq(a->v[0], c);
+        out->distance = sx_sqrt(out->dist_sq);
+    } else if (a->count == 2) {
+        offer_edge(a, 0, c, 0, true, out);
+    } else {
+        int f = sat->face_a, prev = f > 0 ? f - 1 : a->count - 1;
+        offer_edge(a, prev, c, 0, true, out);
+        offer_edge(a, f, c, 0, true, out);
+        offer_edge(a, next_index(a, f), c, 0, true, out);
+    }
+    if (out->kind == SX_CLOSEST_VERTICES &&
+        out->distance > SX_DIRECTION_EPSILON * max_abs_coord(out->pa, out->pb)) {
+        out->normal = sx_scale(sx_sub(out->pb, out->pa), SX_R(1.0) / out->distance);
+    }
+}
+
+bool sx_core_point_overlap(const sx_core *a, sx_vec2 c, sx_real rb) {
+    sx_real r = a->radius + rb;
+    sx_sat sat;
+    sx_closest cl;
+    if (!point_sat(a, c, r, &sat)) return false;
+    if (sat.has_axes && sat.sep <= SX_R(0.0)) return true;
+    point_closest(a, c, &sat, &cl);
+    return cl.distance <= r;
+}
+
+bool sx_core_point_mtv(const sx_core *a, sx_vec2 c, sx_real rb, sx_vec2 *mtv) {
+    sx_real r = a->radius + rb;
+    sx_sat sat;
+    sx_closest cl;
+    sx_vec2 n;
+    *mtv = sx_v2_zero();
+    if (!point_sat(a, c, r, &sat)) return false;
+    if (sat.has_axes && sat.sep <= SX_R(0.0)) {
+        *mtv = sx_scale(a->n[sat.face_a], -(r - sat.sep_a));
+        return true;
+    }
+    point_closest(a, c, &sat, &cl);
+    if (!(cl.distance <= r)) return false;
+    n = cl.normal;
+    if (n.x == SX_R(0.0) && n.y == SX_R(0.0)) n = fallback_normal(&sat);
+    *mtv = sx_scale(n, cl.distance - r);
+    return true;
+}
+
+int sx_core_point_manifold(const sx_core *a, sx_vec2 c, sx_real rb, sx_real margin,
+                           sx_manifold *out) {
+    sx_real r = a->radius + rb;
+    sx_sat sat;
+    sx_closest cl;
+    sx_vec2 n;
+    sx_manifold_point *p = &out->points[0];
+    out->count = 0;
+    out->normal = sx_v2_zero();
+    if (!point_sat(a, c, r + margin, &sat)) return 0;
+    if (sat.has_axes && sat.sep <= SX_R(0.0)) {
+        /* The centre is on the core: clip_face's single incident point. */
+        n = a->n[sat.face_a];
+        p->point = sx_mul_add(c, SX_R(0.5) * (a->radius - rb - sat.sep_a), n);
+        p->depth = sx_maxr(r - sat.sep_a, -margin);
+        p->id = SX_FEATURE_ID(sat.face_a, 0, 0);
+        out->normal = n;
+        out->count = 1;
+        return 1;
+    }
+    point_closest(a, c, &sat, &cl);
+    if (!(cl.distance <= r + margin)) return 0;
+    n = cl.normal;
+    if (n.x == SX_R(0.0) && n.y == SX_R(0.0)) n = fallback_normal(&sat);
+    p->point = sx_mul_add(sx_lerp(cl.pa, cl.pb, SX_R(0.5)), SX_R(0.5) * (a->radius - rb), n);
+    p->depth = sx_maxr(r - cl.distance, -margin);
+    if (sat.face_a >= 0 && (cl.kind != SX_CLOSEST_VERTICES ||
+                            cl.distance <= sat.sep_a + SX_FACE_CONTACT_TOLERANCE)) {
+        /* A face contact: the exact point, labelled and oriented by the face. */
+        p->id = SX_FEATURE_ID(sat.face_a, 0, 0);
+        out->normal = a->n[sat.face_a];
+    } else {
+        p->id = SX_FEATURE_ID(cl.ia, cl.ib, 0);
+        out->normal = n;
+    }
+    out->count = 1;
+    return 1;
 }
