@@ -78,12 +78,17 @@ static sx_real clean_margin(sx_real margin) {
 }
 
 /* Runs the core manifold and moves it to world space: the manifold is
- * written once, straight into *out (a local when out is NULL). */
+ * written once, straight into *out (a local when out is NULL). clear_cut as
+ * sx_core_manifold's (may be NULL); a manifold lost to overflow in world
+ * space is never clear-cut. */
 static int finish_collide(const sx_core *ca, const sx_core *cb, sx_xform xa, sx_real margin,
-                          sx_manifold *out) {
+                          sx_manifold *out, bool *clear_cut) {
     sx_manifold scratch;
     sx_manifold *m = out ? out : &scratch;
-    return world_manifold(m, sx_core_manifold(ca, cb, clean_margin(margin), m), xa);
+    int local = sx_core_manifold(ca, cb, clean_margin(margin), m, clear_cut);
+    int count = world_manifold(m, local, xa);
+    if (clear_cut && count != local) *clear_cut = false;
+    return count;
 }
 
 static void clear_manifold(sx_manifold *out) {
@@ -285,14 +290,21 @@ static bool pair_mtv(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_bu
     return finish_mtv(hit, local, xa, mtv);
 }
 
-static int pair_collide(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
-                        const void *b, sx_xform xb, sx_real margin, sx_manifold *out) {
+static int pair_collide_checked(sx_core_builder *fa, const void *a, sx_xform xa,
+                                sx_core_builder *fb, const void *b, sx_xform xb, sx_real margin,
+                                sx_manifold *out, bool *clear_cut) {
     sx_core ca, cb;
+    if (clear_cut) *clear_cut = false;
     if (!build_pair(fa, a, xa, fb, b, xb, &ca, &cb)) {
         clear_manifold(out);
         return 0;
     }
-    return finish_collide(&ca, &cb, xa, margin, out);
+    return finish_collide(&ca, &cb, xa, margin, out, clear_cut);
+}
+
+static int pair_collide(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
+                        const void *b, sx_xform xb, sx_real margin, sx_manifold *out) {
+    return pair_collide_checked(fa, a, xa, fb, b, xb, margin, out, NULL);
 }
 
 /* A core against a circle B (segment, capsule or polygon first): B's centre
@@ -429,9 +441,13 @@ int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, s
                         sx_real margin, sx_manifold *out) {
     bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
     /* In the canonical order the manifold at margin 0 makes exactly the
-     * decisions of the overlap test: no second pass needed. */
-    if (touch_test && order_segments(a, xa, b, xb) <= 0) {
-        return pair_collide(build_segment, a, xa, build_segment, b, xb, SX_R(0.0), out);
+     * decisions of the overlap test, and in the other order too unless the
+     * pair is within rounding of touching: no second pass needed. */
+    if (touch_test) {
+        bool clear_cut;
+        int count = pair_collide_checked(build_segment, a, xa, build_segment, b, xb, SX_R(0.0), out,
+                                         &clear_cut);
+        if (clear_cut || (order_segments(a, xa, b, xb) <= 0)) return count;
     }
     return collide_gated(build_segment, a, xa, b, xb, margin,
                          touch_test && sx_overlap_segments(a, xa, b, xb), out);
@@ -492,9 +508,13 @@ int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, s
                         sx_real margin, sx_manifold *out) {
     bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
     /* In the canonical order the manifold at margin 0 makes exactly the
-     * decisions of the overlap test: no second pass needed. */
-    if (touch_test && order_capsules(a, xa, b, xb) <= 0) {
-        return pair_collide(build_capsule, a, xa, build_capsule, b, xb, SX_R(0.0), out);
+     * decisions of the overlap test, and in the other order too unless the
+     * pair is within rounding of touching: no second pass needed. */
+    if (touch_test) {
+        bool clear_cut;
+        int count = pair_collide_checked(build_capsule, a, xa, build_capsule, b, xb, SX_R(0.0), out,
+                                         &clear_cut);
+        if (clear_cut || (order_capsules(a, xa, b, xb) <= 0)) return count;
     }
     return collide_gated(build_capsule, a, xa, b, xb, margin,
                          touch_test && sx_overlap_capsules(a, xa, b, xb), out);
@@ -670,9 +690,13 @@ int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, s
                         sx_real margin, sx_manifold *out) {
     bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
     /* In the canonical order the manifold at margin 0 makes exactly the
-     * decisions of the overlap test: no second pass needed. */
-    if (touch_test && order_polygons(a, xa, b, xb) <= 0 && !box_pair_aligned(a, xa, b, xb)) {
-        return pair_collide(build_polygon, a, xa, build_polygon, b, xb, SX_R(0.0), out);
+     * decisions of the overlap test, and in the other order too unless the
+     * pair is within rounding of touching: no second pass needed. */
+    if (touch_test) {
+        bool clear_cut;
+        int count = pair_collide_checked(build_polygon, a, xa, build_polygon, b, xb, SX_R(0.0), out,
+                                         &clear_cut);
+        if (clear_cut || (order_polygons(a, xa, b, xb) <= 0 && !box_pair_aligned(a, xa, b, xb))) return count;
     }
     return collide_gated(build_polygon, a, xa, b, xb, margin,
                          touch_test && sx_overlap_polygons(a, xa, b, xb), out);

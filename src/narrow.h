@@ -51,8 +51,11 @@ bool sx_core_mtv(const sx_core *a, const sx_core *b, sx_vec2 *mtv);
 
 /** The contact manifold of a against b in the working frame (normal from a
  *  to b), keeping points with depth >= -margin (margin >= 0). Returns the
- *  point count and fills *out. */
-int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_manifold *out);
+ *  point count and fills *out. *clear_cut (may be NULL) is set true when the
+ *  rounded cores are so clearly apart or overlapping that sx_core_overlap
+ *  gives the same answer with a and b swapped, whatever the rounding. */
+int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_manifold *out,
+                     bool *clear_cut);
 
 /* The same three answers for b the 1-point core (c, rb), b a circle: no
  * core is built for it, and the SAT, vertex sweep and contact are written

@@ -171,7 +171,10 @@ static bool sat_run(const sx_core *a, const sx_core *b, sx_real limit, sx_sat *o
     out->face_b = -1;
     for (i = 0; i < na; ++i) {
         sx_real s = face_separation(a, i, b);
-        if (s > limit) return false;
+        if (s > limit) {
+            out->sep = s;
+            return false;
+        }
         if (s > out->sep_a) {
             out->sep_a = s;
             out->face_a = i;
@@ -179,7 +182,10 @@ static bool sat_run(const sx_core *a, const sx_core *b, sx_real limit, sx_sat *o
     }
     for (i = 0; i < nb; ++i) {
         sx_real s = face_separation(b, i, a);
-        if (s > limit) return false;
+        if (s > limit) {
+            out->sep = s;
+            return false;
+        }
         if (s > out->sep_b) {
             out->sep_b = s;
             out->face_b = i;
@@ -201,7 +207,10 @@ static bool sat_run(const sx_core *a, const sx_core *b, sx_real limit, sx_sat *o
         sx_real s;
         if (a->count == 2) {
             s = cap_separation(a, b, &axis);
-            if (s > limit) return false;
+            if (s > limit) {
+                out->sep = s;
+                return false;
+            }
             if (s > out->sep) {
                 out->sep = s;
                 out->axis = axis;
@@ -209,7 +218,10 @@ static bool sat_run(const sx_core *a, const sx_core *b, sx_real limit, sx_sat *o
         }
         if (b->count == 2) {
             s = cap_separation(b, a, &axis);
-            if (s > limit) return false;
+            if (s > limit) {
+                out->sep = s;
+                return false;
+            }
             if (s > out->sep) {
                 out->sep = s;
                 out->axis = sx_neg(axis);
@@ -489,7 +501,29 @@ static int clip_face(const sx_core *ref, int i, const sx_core *inc, sx_real marg
     return count;
 }
 
-int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_manifold *out) {
+/* Largest coordinate magnitude of a core's points. */
+static sx_real core_scale(const sx_core *c) {
+    sx_real m = SX_R(0.0);
+    int i;
+    for (i = 0; i < c->count; ++i)
+        m = sx_maxr(m, sx_maxr(sx_absr(c->v[i].x), sx_absr(c->v[i].y)));
+    return m;
+}
+
+/* The two argument orders of a same-type pair compute the same separations
+ * up to rounding, a few ulps of the coordinates: a signed gap farther from
+ * zero than this (the touch rescue margin of collide.c plus a wide rounding
+ * allowance) gets the same touch answer in both orders. */
+#define SX_ORDER_RESCUE (SX_R(0.01) * SX_LINEAR_SLOP)
+#define SX_ORDER_ROUNDING (SX_R(1024.0) * SX_REAL_EPSILON)
+
+static bool gap_is_clear(const sx_core *a, const sx_core *b, sx_real gap) {
+    sx_real scale = sx_maxr(sx_maxr(core_scale(a), core_scale(b)), a->radius + b->radius);
+    return sx_absr(gap) > SX_ORDER_RESCUE + SX_ORDER_ROUNDING * scale;
+}
+
+int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_manifold *out,
+                     bool *clear_cut) {
     sx_real r = a->radius + b->radius;
     sx_real limit = r + margin;
     sx_sat sat;
@@ -499,12 +533,17 @@ int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_mani
     const sx_manifold_point *exact = NULL;
     out->count = 0;
     out->normal = sx_v2_zero();
-    if (!sat_run(a, b, limit, &sat)) return 0;
+    if (!sat_run(a, b, limit, &sat)) {
+        if (clear_cut) *clear_cut = gap_is_clear(a, b, sat.sep - r);
+        return 0;
+    }
     if (sat.has_axes && sat.sep <= SX_R(0.0)) {
         face_contact = true;
+        if (clear_cut) *clear_cut = gap_is_clear(a, b, sat.sep - r);
     } else {
         sx_vec2 n;
         closest_features(a, b, &cl);
+        if (clear_cut) *clear_cut = gap_is_clear(a, b, cl.distance - r);
         if (!(cl.distance <= limit)) return 0;
         /* The exact contact of cores apart: on the line between the closest
          * core points, midway between the surfaces. */
