@@ -308,15 +308,16 @@ static int pair_collide(sx_core_builder *fa, const void *a, sx_xform xa, sx_core
 }
 
 /* A core against a circle B (segment, capsule or polygon first): B's centre
- * is placed in A's frame (the relative transform applied to it), and
- * the point routines of narrow_core.c answer without a core for B. */
+ * is placed in A's frame, and the point routines of narrow_core.c answer
+ * without a core for B. */
 static bool circle_in_frame(const sx_circle *b, sx_xform xa, sx_xform xb, sx_vec2 *c) {
-    sx_xform rel;
     if (b == NULL || !(b->radius >= SX_R(0.0)) || !sx_is_finite(b->radius) ||
-        !sx_vec2_is_finite(b->center) || !relative_xform(xa, xb, &rel)) {
+        !sx_vec2_is_finite(b->center) || !xform_finite(xa) || !xform_finite(xb)) {
         return false;
     }
-    *c = sx_xform_point(rel, b->center);
+    /* The world offset of the positions first (exact for nearby bodies far
+     * from the origin), then B's rotated centre, then into A's frame. */
+    *c = sx_inv_rotate(xa.q, sx_add(sx_sub(xb.p, xa.p), sx_rotate(xb.q, b->center)));
     return sx_vec2_is_finite(*c);
 }
 
@@ -444,10 +445,11 @@ int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, s
      * decisions of the overlap test, and in the other order too unless the
      * pair is within rounding of touching: no second pass needed. */
     if (touch_test) {
-        bool clear_cut;
+        bool canonical = order_segments(a, xa, b, xb) <= 0;
+        bool clear_cut = false;
         int count = pair_collide_checked(build_segment, a, xa, build_segment, b, xb, SX_R(0.0), out,
-                                         &clear_cut);
-        if (clear_cut || (order_segments(a, xa, b, xb) <= 0)) return count;
+                                         canonical ? NULL : &clear_cut);
+        if (canonical || clear_cut) return count;
     }
     return collide_gated(build_segment, a, xa, b, xb, margin,
                          touch_test && sx_overlap_segments(a, xa, b, xb), out);
@@ -511,10 +513,11 @@ int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, s
      * decisions of the overlap test, and in the other order too unless the
      * pair is within rounding of touching: no second pass needed. */
     if (touch_test) {
-        bool clear_cut;
+        bool canonical = order_capsules(a, xa, b, xb) <= 0;
+        bool clear_cut = false;
         int count = pair_collide_checked(build_capsule, a, xa, build_capsule, b, xb, SX_R(0.0), out,
-                                         &clear_cut);
-        if (clear_cut || (order_capsules(a, xa, b, xb) <= 0)) return count;
+                                         canonical ? NULL : &clear_cut);
+        if (canonical || clear_cut) return count;
     }
     return collide_gated(build_capsule, a, xa, b, xb, margin,
                          touch_test && sx_overlap_capsules(a, xa, b, xb), out);
@@ -693,10 +696,11 @@ int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, s
      * decisions of the overlap test, and in the other order too unless the
      * pair is within rounding of touching: no second pass needed. */
     if (touch_test) {
-        bool clear_cut;
+        bool canonical = order_polygons(a, xa, b, xb) <= 0 && !box_pair_aligned(a, xa, b, xb);
+        bool clear_cut = false;
         int count = pair_collide_checked(build_polygon, a, xa, build_polygon, b, xb, SX_R(0.0), out,
-                                         &clear_cut);
-        if (clear_cut || (order_polygons(a, xa, b, xb) <= 0 && !box_pair_aligned(a, xa, b, xb))) return count;
+                                         canonical ? NULL : &clear_cut);
+        if (canonical || clear_cut) return count;
     }
     return collide_gated(build_polygon, a, xa, b, xb, margin,
                          touch_test && sx_overlap_polygons(a, xa, b, xb), out);

@@ -94,6 +94,7 @@ bool sx_core_from_capsule(const sx_capsule *c, const sx_xform *x, sx_core *out) 
 }
 
 bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) {
+    sx_real acc = SX_R(0.0);
     int i, n;
     if (p == NULL || !core_radius_ok(p->radius)) return false;
     n = p->count;
@@ -105,12 +106,18 @@ bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) 
         out->v = p->vertices;
         out->n = p->normals;
     } else {
+        /* One pass places each vertex and normal and folds its finiteness
+         * into acc (see all_finite). */
+        sx_xform q = *x;
         for (i = 0; i < n; ++i) {
-            out->vs[i] = sx_xform_point(*x, p->vertices[i]);
-            out->ns[i] = sx_rotate(x->q, p->normals[i]);
+            sx_vec2 v = sx_xform_point(q, p->vertices[i]), m = sx_rotate(q.q, p->normals[i]);
+            out->vs[i] = v;
+            out->ns[i] = m;
+            acc += (v.x - v.x) + (v.y - v.y) + (m.x - m.x) + (m.y - m.y);
         }
         out->v = out->vs;
         out->n = out->ns;
+        return acc == SX_R(0.0);
     }
     return all_finite(out->v, n) && all_finite(out->n, n);
 }
