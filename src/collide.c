@@ -164,10 +164,12 @@ static sx_vec2 circle_offset(const sx_circle *a, sx_xform xa, const sx_circle *b
 }
 
 static bool circles_valid(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
-    return a != NULL && b != NULL && sx_xform_is_finite(xa) && sx_xform_is_finite(xb) &&
-           sx_vec2_is_finite(a->center) && sx_vec2_is_finite(b->center) &&
-           sx_is_finite(a->radius) && sx_is_finite(b->radius) && a->radius >= SX_R(0.0) &&
-           b->radius >= SX_R(0.0);
+    return a != NULL && b != NULL && xform_finite(xa) && xform_finite(xb) &&
+           (a->center.x - a->center.x) + (a->center.y - a->center.y) + (b->center.x - b->center.x) +
+                   (b->center.y - b->center.y) + (a->radius - a->radius) +
+                   (b->radius - b->radius) ==
+               SX_R(0.0) &&
+           a->radius >= SX_R(0.0) && b->radius >= SX_R(0.0);
 }
 
 static int order_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
@@ -228,11 +230,11 @@ bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xfor
 
 int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                        sx_real margin, sx_manifold *out) {
-    sx_manifold m;
+    sx_manifold scratch;
+    sx_manifold *m = out ? out : &scratch;
     sx_vec2 d, n, ca;
     sx_real r, limit, dist;
-    memset(&m, 0, sizeof(m));
-    if (!sx_is_finite(margin) || margin < SX_R(0.0)) margin = SX_R(0.0);
+    margin = clean_margin(margin);
     if (circles_valid(a, xa, b, xb)) {
         d = circle_offset(a, xa, b, xb);
         r = a->radius + b->radius;
@@ -241,18 +243,21 @@ int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_x
             n = circles_direction(a, xa, b, xb, d, &dist);
             ca = sx_xform_point(xa, a->center);
             /* Midway between A's surface (ra along n) and B's (dist - rb). */
-            m.points[0].point = sx_mul_add(ca, SX_R(0.5) * (a->radius + dist - b->radius), n);
-            m.points[0].depth = sx_maxr(r - dist, -margin);
-            m.points[0].id = SX_FEATURE_ID(0, 0, 0);
-            m.normal = n;
-            m.count = 1;
-            if (!sx_vec2_is_finite(m.points[0].point) || !sx_is_finite(m.points[0].depth)) {
-                memset(&m, 0, sizeof(m));
+            m->points[0].point = sx_mul_add(ca, SX_R(0.5) * (a->radius + dist - b->radius), n);
+            m->points[0].depth = sx_maxr(r - dist, -margin);
+            m->points[0].id = SX_FEATURE_ID(0, 0, 0);
+            m->normal = n;
+            if (sx_vec2_is_finite(m->points[0].point) && sx_is_finite(m->points[0].depth)) {
+                m->count = 1;
+                m->points[1].point = sx_v2_zero();
+                m->points[1].depth = SX_R(0.0);
+                m->points[1].id = 0;
+                return 1;
             }
         }
     }
-    if (out) *out = m;
-    return m.count;
+    memset(m, 0, sizeof(*m));
+    return 0;
 }
 
 /* ---- the other pairs: cores in A's frame -------------------------------- */
