@@ -48,14 +48,11 @@ static sx_vec2 place_vector(const sx_xform *x, sx_vec2 v) { return x ? sx_rotate
 
 static bool core_radius_ok(sx_real r) { return sx_is_finite(r) && r >= SX_R(0.0); }
 
-/* Sum of (x - x) over n vectors: exactly 0 when all are finite, NaN
- * otherwise; one branch for the whole array. */
-static bool all_finite(const sx_vec2 *v, int n) {
-    sx_real acc = SX_R(0.0);
-    int i;
-    for (i = 0; i < n; ++i)
-        acc += (v[i].x - v[i].x) + (v[i].y - v[i].y);
-    return acc == SX_R(0.0);
+/* (x - x) summed over the coordinates of a vertex and its normal: exactly 0
+ * when all are finite, NaN otherwise. Summed over a polygon, one branch
+ * checks it whole. */
+static sx_real finite_fold(sx_vec2 v, sx_vec2 m) {
+    return (v.x - v.x) + (v.y - v.y) + (m.x - m.x) + (m.y - m.y);
 }
 
 /* Builds the 2-point core a-b (or a 1-point core when a-b has no direction).
@@ -105,21 +102,21 @@ bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) 
         /* Shape A is read in place: no copy. */
         out->v = p->vertices;
         out->n = p->normals;
+        for (i = 0; i < n; ++i)
+            acc += finite_fold(p->vertices[i], p->normals[i]);
     } else {
-        /* One pass places each vertex and normal and folds its finiteness
-         * into acc (see all_finite). */
+        /* One pass places each vertex and normal and checks the result. */
         sx_xform q = *x;
         for (i = 0; i < n; ++i) {
             sx_vec2 v = sx_xform_point(q, p->vertices[i]), m = sx_rotate(q.q, p->normals[i]);
             out->vs[i] = v;
             out->ns[i] = m;
-            acc += (v.x - v.x) + (v.y - v.y) + (m.x - m.x) + (m.y - m.y);
+            acc += finite_fold(v, m);
         }
         out->v = out->vs;
         out->n = out->ns;
-        return acc == SX_R(0.0);
     }
-    return all_finite(out->v, n) && all_finite(out->n, n);
+    return acc == SX_R(0.0);
 }
 
 /* ---- separating axes ---------------------------------------------------- */
@@ -130,7 +127,7 @@ static int next_index(const sx_core *c, int i) { return i + 1 < c->count ? i + 1
 
 /* Separation of q from face i of p: how far q's nearest point lies in front
  * of the face's line (negative: q reaches behind it). */
-static sx_real face_separation(const sx_core *p, int i, const sx_core *q) {
+static inline sx_real face_separation(const sx_core *p, int i, const sx_core *q) {
     sx_vec2 n = p->n[i], v = p->v[i];
     sx_real best = SX_REAL_MAX;
     int j;
