@@ -279,7 +279,6 @@ static void offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index, bool p_i
             return;
         }
         best->dist_sq = dsq;
-        best->distance = sx_sqrt(dsq);
         best->kind = SX_CLOSEST_VERTICES;
         best->ia = p_is_a ? vertex : q_index;
         best->ib = p_is_a ? q_index : vertex;
@@ -315,6 +314,17 @@ static sx_real max_abs_coord(sx_vec2 a, sx_vec2 b) {
     return sx_maxr(sx_maxr(sx_absr(a.x), sx_absr(a.y)), sx_maxr(sx_absr(b.x), sx_absr(b.y)));
 }
 
+/* Completes a sweep: a vertex-vertex result gets its distance (the sweep
+ * compares squares only, so the root is taken once) and its direction when
+ * the points are apart by more than rounding noise. */
+static void vertex_direction(sx_closest *c) {
+    if (c->kind != SX_CLOSEST_VERTICES) return;
+    c->distance = sx_sqrt(c->dist_sq);
+    if (c->distance > SX_DIRECTION_EPSILON * max_abs_coord(c->pa, c->pb)) {
+        c->normal = sx_scale(sx_sub(c->pb, c->pa), SX_R(1.0) / c->distance);
+    }
+}
+
 /* Distance and closest features of two disjoint cores: every vertex of one
  * against every edge of the other (A's edges first, so ties keep A's face). */
 static void closest_features(const sx_core *a, const sx_core *b, sx_closest *out) {
@@ -337,14 +347,8 @@ static void closest_features(const sx_core *a, const sx_core *b, sx_closest *out
         for (j = 0; j < a->count; ++j)
             offer_edge(b, i, a->v[j], j, false, out);
     }
-    if (ea == 0 && eb == 0) {
-        out->dist_sq = sx_distance_sq(a->v[0], b->v[0]);
-        out->distance = sx_sqrt(out->dist_sq);
-    }
-    if (out->kind == SX_CLOSEST_VERTICES &&
-        out->distance > SX_DIRECTION_EPSILON * max_abs_coord(out->pa, out->pb)) {
-        out->normal = sx_scale(sx_sub(out->pb, out->pa), SX_R(1.0) / out->distance);
-    }
+    if (ea == 0 && eb == 0) out->dist_sq = sx_distance_sq(a->v[0], b->v[0]);
+    vertex_direction(out);
 }
 
 /* The direction of a contact whose closest points coincide: the best SAT
@@ -635,7 +639,6 @@ static void point_closest(const sx_core *a, sx_vec2 c, const sx_sat *sat, sx_clo
     out->normal = sx_v2_zero();
     if (a->count == 1) {
         out->dist_sq = sx_distance_sq(a->v[0], c);
-        out->distance = sx_sqrt(out->dist_sq);
     } else if (a->count == 2) {
         offer_edge(a, 0, c, 0, true, out);
     } else {
@@ -644,10 +647,7 @@ static void point_closest(const sx_core *a, sx_vec2 c, const sx_sat *sat, sx_clo
         offer_edge(a, f, c, 0, true, out);
         offer_edge(a, next_index(a, f), c, 0, true, out);
     }
-    if (out->kind == SX_CLOSEST_VERTICES &&
-        out->distance > SX_DIRECTION_EPSILON * max_abs_coord(out->pa, out->pb)) {
-        out->normal = sx_scale(sx_sub(out->pb, out->pa), SX_R(1.0) / out->distance);
-    }
+    vertex_direction(out);
 }
 
 bool sx_core_point_overlap(const sx_core *a, sx_vec2 c, sx_real rb) {
