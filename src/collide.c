@@ -228,10 +228,10 @@ bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xfor
     return hit;
 }
 
-int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
-                       sx_real margin, sx_manifold *out) {
-    sx_manifold scratch;
-    sx_manifold *m = out ? out : &scratch;
+/* The body of sx_collide_circles, static so that the dispatch table's entry
+ * can inline it (an exported function of a shared library cannot be). */
+static int collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                           sx_real margin, sx_manifold *m) {
     sx_vec2 d, n, ca;
     sx_real r, limit, dist;
     margin = clean_margin(margin);
@@ -258,6 +258,12 @@ int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_x
     }
     memset(m, 0, sizeof(*m));
     return 0;
+}
+
+int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                       sx_real margin, sx_manifold *out) {
+    sx_manifold scratch;
+    return collide_circles(a, xa, b, xb, margin, out ? out : &scratch);
 }
 
 /* ---- the other pairs: cores in A's frame -------------------------------- */
@@ -778,7 +784,7 @@ static bool mtv_circles(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xf
 }
 static int col_circles(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
                        sx_real margin, sx_manifold *out) {
-    return sx_collide_circles(&a->u.circle, xa, &b->u.circle, xb, margin, out);
+    return collide_circles(&a->u.circle, xa, &b->u.circle, xb, margin, out);
 }
 static bool ov_segments(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
     return sx_overlap_segments(&a->u.segment, xa, &b->u.segment, xb);
@@ -862,8 +868,10 @@ bool sx_mtv(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_v
     return e->mtv(a, xa, b, xb, mtv);
 }
 
-int sx_collide_ex(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_real margin,
-                  sx_manifold *out) {
+/* Both manifold entry points dispatch here directly (one call layer less
+ * for the cheap pairs). */
+static inline int collide_dispatch(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                                   sx_real margin, sx_manifold *out) {
     const sx_pair_entry *e = pair_entry(a, b);
     sx_manifold scratch;
     if (e == NULL) {
@@ -873,6 +881,11 @@ int sx_collide_ex(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb
     return e->collide(a, xa, b, xb, margin, out ? out : &scratch);
 }
 
+int sx_collide_ex(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_real margin,
+                  sx_manifold *out) {
+    return collide_dispatch(a, xa, b, xb, margin, out);
+}
+
 int sx_collide(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_manifold *out) {
-    return sx_collide_ex(a, xa, b, xb, SX_R(0.0), out);
+    return collide_dispatch(a, xa, b, xb, SX_R(0.0), out);
 }
