@@ -705,8 +705,8 @@ int sx_core_point_manifold(const sx_core *a, sx_vec2 c, sx_real rb, sx_real marg
     if (n.x == SX_R(0.0) && n.y == SX_R(0.0)) n = fallback_normal(&sat);
     p->point = sx_mul_add(sx_lerp(cl.pa, cl.pb, SX_R(0.5)), SX_R(0.5) * (a->radius - rb), n);
     p->depth = sx_maxr(r - cl.distance, -margin);
-    if (sat.face_a >= 0 && (cl.kind != SX_CLOSEST_VERTICES ||
-                            cl.distance <= sat.sep_a + SX_FACE_CONTACT_TOLERANCE)) {
+    if (sat.face_a >= 0 &&
+        (cl.kind != SX_CLOSEST_VERTICES || cl.distance <= sat.sep_a + SX_FACE_CONTACT_TOLERANCE)) {
         /* A face contact: the exact point, labelled and oriented by the face. */
         p->id = SX_FEATURE_ID(sat.face_a, 0, 0);
         out->normal = a->n[sat.face_a];
