@@ -588,10 +588,11 @@ int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_mani
 /* The cheap pairs (a segment, capsule or polygon A against a circle B) are
  * the routines above with b the 1-point core (c, rb), written out for it: the
  * SAT is A's faces (plus the caps of a 2-point A) against one point, the
- * vertex sweep needs only the edges around A's face of largest separation
- * (for a point outside a convex polygon the closest point lies on that face
- * or at one of its ends, so its two neighbours cover rounding ties), and a
- * face contact is the point itself seen along the face normal, with no
+ * vertex sweep needs only A's face of largest separation (for a point
+ * outside a convex polygon the closest point lies on that face or is one of
+ * its end vertices: a face not adjacent to the closest vertex separates the
+ * point by less than the adjacent ones, as Box2D's polygon-circle uses), and
+ * a face contact is the point itself seen along the face normal, with no
  * clipping. */
 
 /* sat_run for b = the point c. */
@@ -642,10 +643,7 @@ static void point_closest(const sx_core *a, sx_vec2 c, const sx_sat *sat, sx_clo
     } else if (a->count == 2) {
         offer_edge(a, 0, c, 0, true, out);
     } else {
-        int f = sat->face_a, prev = f > 0 ? f - 1 : a->count - 1;
-        offer_edge(a, prev, c, 0, true, out);
-        offer_edge(a, f, c, 0, true, out);
-        offer_edge(a, next_index(a, f), c, 0, true, out);
+        offer_edge(a, sat->face_a, c, 0, true, out);
     }
     vertex_direction(out);
 }
