@@ -24,11 +24,17 @@
 
 /* ---- shared plumbing ---------------------------------------------------- */
 
+/* (x - x) is 0 for finite x and NaN otherwise: one comparison checks a
+ * whole transform. */
+static bool xform_finite(sx_xform x) {
+    return (x.p.x - x.p.x) + (x.p.y - x.p.y) + (x.q.c - x.q.c) + (x.q.s - x.q.s) == SX_R(0.0);
+}
+
 /* B's placement in A's frame; false if either transform is not finite. */
 static bool relative_xform(sx_xform xa, sx_xform xb, sx_xform *rel) {
-    if (!sx_xform_is_finite(xa) || !sx_xform_is_finite(xb)) return false;
+    if (!xform_finite(xa) || !xform_finite(xb)) return false;
     *rel = sx_xform_inv_mul(xa, xb);
-    return sx_xform_is_finite(*rel);
+    return xform_finite(*rel);
 }
 
 /* Rotates a local MTV to world space; a non-finite result (overflow of huge
@@ -43,34 +49,46 @@ static bool finish_mtv(bool hit, sx_vec2 local, sx_xform xa, sx_vec2 *mtv) {
     return true;
 }
 
-/* Runs the core manifold and moves it to world space. */
-static int finish_collide(const sx_core *ca, const sx_core *cb, sx_xform xa, sx_real margin,
-                          sx_manifold *out) {
-    sx_manifold local, world;
+/* Moves a local manifold of `count` points to world space in place; a
+ * non-finite result (overflow of huge inputs) becomes 0 points. */
+static int world_manifold(sx_manifold *m, int count, sx_xform xa) {
     int i;
-    if (!sx_is_finite(margin) || margin < SX_R(0.0)) margin = SX_R(0.0);
-    sx_core_manifold(ca, cb, margin, &local);
-    world.normal = sx_xform_vector(xa, local.normal);
-    world.count = local.count;
-    for (i = 0; i < local.count; ++i) {
-        world.points[i].point = sx_xform_point(xa, local.points[i].point);
-        world.points[i].depth = local.points[i].depth;
-        world.points[i].id = local.points[i].id;
-        if (!sx_vec2_is_finite(world.points[i].point) || !sx_is_finite(world.points[i].depth)) {
-            world.count = 0;
+    m->normal = sx_xform_vector(xa, m->normal);
+    for (i = 0; i < count; ++i) {
+        m->points[i].point = sx_xform_point(xa, m->points[i].point);
+        if (!sx_vec2_is_finite(m->points[i].point) || !sx_is_finite(m->points[i].depth)) {
+            count = 0;
         }
     }
-    if (world.count == 0 || !sx_vec2_is_finite(world.normal)) {
-        world.count = 0;
-        world.normal = sx_v2_zero();
+    if (count == 0 || !sx_vec2_is_finite(m->normal)) {
+        count = 0;
+        m->normal = sx_v2_zero();
     }
-    for (i = world.count; i < 2; ++i) {
-        world.points[i].point = sx_v2_zero();
-        world.points[i].depth = SX_R(0.0);
-        world.points[i].id = 0;
+    m->count = count;
+    for (i = count; i < 2; ++i) {
+        m->points[i].point = sx_v2_zero();
+        m->points[i].depth = SX_R(0.0);
+        m->points[i].id = 0;
     }
-    if (out) *out = world;
-    return world.count;
+    return count;
+}
+
+static sx_real clean_margin(sx_real margin) {
+    return sx_is_finite(margin) && margin > SX_R(0.0) ? margin : SX_R(0.0);
+}
+
+/* Runs the core manifold and moves it to world space: the manifold is
+ * written once, straight into *out (a local when out is NULL). clear_cut as
+ * sx_core_manifold's (may be NULL); a manifold lost to overflow in world
+ * space is never clear-cut. */
+static int finish_collide(const sx_core *ca, const sx_core *cb, sx_xform xa, sx_real margin,
+                          sx_manifold *out, bool *clear_cut) {
+    sx_manifold scratch;
+    sx_manifold *m = out ? out : &scratch;
+    int local = sx_core_manifold(ca, cb, clean_margin(margin), m, clear_cut);
+    int count = world_manifold(m, local, xa);
+    if (clear_cut && count != local) *clear_cut = false;
+    return count;
 }
 
 static void clear_manifold(sx_manifold *out) {
@@ -146,10 +164,12 @@ static sx_vec2 circle_offset(const sx_circle *a, sx_xform xa, const sx_circle *b
 }
 
 static bool circles_valid(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
-    return a != NULL && b != NULL && sx_xform_is_finite(xa) && sx_xform_is_finite(xb) &&
-           sx_vec2_is_finite(a->center) && sx_vec2_is_finite(b->center) &&
-           sx_is_finite(a->radius) && sx_is_finite(b->radius) && a->radius >= SX_R(0.0) &&
-           b->radius >= SX_R(0.0);
+    return a != NULL && b != NULL && xform_finite(xa) && xform_finite(xb) &&
+           (a->center.x - a->center.x) + (a->center.y - a->center.y) + (b->center.x - b->center.x) +
+                   (b->center.y - b->center.y) + (a->radius - a->radius) +
+                   (b->radius - b->radius) ==
+               SX_R(0.0) &&
+           a->radius >= SX_R(0.0) && b->radius >= SX_R(0.0);
 }
 
 static int order_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
@@ -208,13 +228,13 @@ bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xfor
     return hit;
 }
 
-int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
-                       sx_real margin, sx_manifold *out) {
-    sx_manifold m;
+/* The body of sx_collide_circles, static so that the dispatch table's entry
+ * can inline it (an exported function of a shared library cannot be). */
+static int collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                           sx_real margin, sx_manifold *m) {
     sx_vec2 d, n, ca;
     sx_real r, limit, dist;
-    memset(&m, 0, sizeof(m));
-    if (!sx_is_finite(margin) || margin < SX_R(0.0)) margin = SX_R(0.0);
+    margin = clean_margin(margin);
     if (circles_valid(a, xa, b, xb)) {
         d = circle_offset(a, xa, b, xb);
         r = a->radius + b->radius;
@@ -223,27 +243,33 @@ int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_x
             n = circles_direction(a, xa, b, xb, d, &dist);
             ca = sx_xform_point(xa, a->center);
             /* Midway between A's surface (ra along n) and B's (dist - rb). */
-            m.points[0].point = sx_mul_add(ca, SX_R(0.5) * (a->radius + dist - b->radius), n);
-            m.points[0].depth = sx_maxr(r - dist, -margin);
-            m.points[0].id = SX_FEATURE_ID(0, 0, 0);
-            m.normal = n;
-            m.count = 1;
-            if (!sx_vec2_is_finite(m.points[0].point) || !sx_is_finite(m.points[0].depth)) {
-                memset(&m, 0, sizeof(m));
+            m->points[0].point = sx_mul_add(ca, SX_R(0.5) * (a->radius + dist - b->radius), n);
+            m->points[0].depth = sx_maxr(r - dist, -margin);
+            m->points[0].id = SX_FEATURE_ID(0, 0, 0);
+            m->normal = n;
+            if (sx_vec2_is_finite(m->points[0].point) && sx_is_finite(m->points[0].depth)) {
+                m->count = 1;
+                m->points[1].point = sx_v2_zero();
+                m->points[1].depth = SX_R(0.0);
+                m->points[1].id = 0;
+                return 1;
             }
         }
     }
-    if (out) *out = m;
-    return m.count;
+    memset(m, 0, sizeof(*m));
+    return 0;
+}
+
+int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                       sx_real margin, sx_manifold *out) {
+    sx_manifold scratch;
+    return collide_circles(a, xa, b, xb, margin, out ? out : &scratch);
 }
 
 /* ---- the other pairs: cores in A's frame -------------------------------- */
 
 typedef bool sx_core_builder(const void *shape, const sx_xform *x, sx_core *out);
 
-static bool build_circle(const void *s, const sx_xform *x, sx_core *out) {
-    return sx_core_from_circle((const sx_circle *)s, x, out);
-}
 static bool build_segment(const void *s, const sx_xform *x, sx_core *out) {
     return sx_core_from_segment((const sx_segment *)s, x, out);
 }
@@ -275,14 +301,66 @@ static bool pair_mtv(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_bu
     return finish_mtv(hit, local, xa, mtv);
 }
 
-static int pair_collide(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
-                        const void *b, sx_xform xb, sx_real margin, sx_manifold *out) {
+static int pair_collide_checked(sx_core_builder *fa, const void *a, sx_xform xa,
+                                sx_core_builder *fb, const void *b, sx_xform xb, sx_real margin,
+                                sx_manifold *out, bool *clear_cut) {
     sx_core ca, cb;
+    if (clear_cut) *clear_cut = false;
     if (!build_pair(fa, a, xa, fb, b, xb, &ca, &cb)) {
         clear_manifold(out);
         return 0;
     }
-    return finish_collide(&ca, &cb, xa, margin, out);
+    return finish_collide(&ca, &cb, xa, margin, out, clear_cut);
+}
+
+static int pair_collide(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
+                        const void *b, sx_xform xb, sx_real margin, sx_manifold *out) {
+    return pair_collide_checked(fa, a, xa, fb, b, xb, margin, out, NULL);
+}
+
+/* A core against a circle B (segment, capsule or polygon first): B's centre
+ * is placed in A's frame, and the point routines of narrow_core.c answer
+ * without a core for B. */
+static bool circle_in_frame(const sx_circle *b, sx_xform xa, sx_xform xb, sx_vec2 *c) {
+    if (b == NULL || !(b->radius >= SX_R(0.0)) || !sx_is_finite(b->radius) ||
+        !sx_vec2_is_finite(b->center) || !xform_finite(xa) || !xform_finite(xb)) {
+        return false;
+    }
+    /* The world offset of the positions first (exact for nearby bodies far
+     * from the origin), then B's rotated centre, then into A's frame. */
+    *c = sx_inv_rotate(xa.q, sx_add(sx_sub(xb.p, xa.p), sx_rotate(xb.q, b->center)));
+    return sx_vec2_is_finite(*c);
+}
+
+static bool point_overlap(sx_core_builder *fa, const void *a, sx_xform xa, const sx_circle *b,
+                          sx_xform xb) {
+    sx_core ca;
+    sx_vec2 c;
+    return circle_in_frame(b, xa, xb, &c) && fa(a, NULL, &ca) &&
+           sx_core_point_overlap(&ca, c, b->radius);
+}
+
+static bool point_mtv(sx_core_builder *fa, const void *a, sx_xform xa, const sx_circle *b,
+                      sx_xform xb, sx_vec2 *mtv) {
+    sx_core ca;
+    sx_vec2 c, local = sx_v2_zero();
+    bool hit = circle_in_frame(b, xa, xb, &c) && fa(a, NULL, &ca) &&
+               sx_core_point_mtv(&ca, c, b->radius, &local);
+    return finish_mtv(hit, local, xa, mtv);
+}
+
+static int point_collide(sx_core_builder *fa, const void *a, sx_xform xa, const sx_circle *b,
+                         sx_xform xb, sx_real margin, sx_manifold *out) {
+    sx_core ca;
+    sx_vec2 c;
+    sx_manifold scratch;
+    sx_manifold *m = out ? out : &scratch;
+    if (!circle_in_frame(b, xa, xb, &c) || !fa(a, NULL, &ca)) {
+        clear_manifold(out);
+        return 0;
+    }
+    return world_manifold(m, sx_core_point_manifold(&ca, c, b->radius, clean_margin(margin), m),
+                          xa);
 }
 
 /* Same-type pairs: overlap and MTV in the canonical order. `order` > 0 means
@@ -340,15 +418,15 @@ static int collide_gated(sx_core_builder *f, const void *a, sx_xform xa, const v
 /* ---- segment - circle --------------------------------------------------- */
 
 bool sx_overlap_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
-    return pair_overlap(build_segment, a, xa, build_circle, b, xb);
+    return point_overlap(build_segment, a, xa, b, xb);
 }
 bool sx_mtv_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                            sx_vec2 *mtv) {
-    return pair_mtv(build_segment, a, xa, build_circle, b, xb, mtv);
+    return point_mtv(build_segment, a, xa, b, xb, mtv);
 }
 int sx_collide_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
-    return pair_collide(build_segment, a, xa, build_circle, b, xb, margin, out);
+    return point_collide(build_segment, a, xa, b, xb, margin, out);
 }
 
 /* ---- segment - segment -------------------------------------------------- */
@@ -375,9 +453,14 @@ int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, s
                         sx_real margin, sx_manifold *out) {
     bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
     /* In the canonical order the manifold at margin 0 makes exactly the
-     * decisions of the overlap test: no second pass needed. */
-    if (touch_test && order_segments(a, xa, b, xb) <= 0) {
-        return pair_collide(build_segment, a, xa, build_segment, b, xb, SX_R(0.0), out);
+     * decisions of the overlap test, and in the other order too unless the
+     * pair is within rounding of touching: no second pass needed. */
+    if (touch_test) {
+        bool canonical = order_segments(a, xa, b, xb) <= 0;
+        bool clear_cut = false;
+        int count = pair_collide_checked(build_segment, a, xa, build_segment, b, xb, SX_R(0.0), out,
+                                         canonical ? NULL : &clear_cut);
+        if (canonical || clear_cut) return count;
     }
     return collide_gated(build_segment, a, xa, b, xb, margin,
                          touch_test && sx_overlap_segments(a, xa, b, xb), out);
@@ -386,15 +469,15 @@ int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, s
 /* ---- capsule - circle / segment / capsule ------------------------------- */
 
 bool sx_overlap_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
-    return pair_overlap(build_capsule, a, xa, build_circle, b, xb);
+    return point_overlap(build_capsule, a, xa, b, xb);
 }
 bool sx_mtv_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                            sx_vec2 *mtv) {
-    return pair_mtv(build_capsule, a, xa, build_circle, b, xb, mtv);
+    return point_mtv(build_capsule, a, xa, b, xb, mtv);
 }
 int sx_collide_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
-    return pair_collide(build_capsule, a, xa, build_circle, b, xb, margin, out);
+    return point_collide(build_capsule, a, xa, b, xb, margin, out);
 }
 
 bool sx_overlap_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b,
@@ -438,9 +521,14 @@ int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, s
                         sx_real margin, sx_manifold *out) {
     bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
     /* In the canonical order the manifold at margin 0 makes exactly the
-     * decisions of the overlap test: no second pass needed. */
-    if (touch_test && order_capsules(a, xa, b, xb) <= 0) {
-        return pair_collide(build_capsule, a, xa, build_capsule, b, xb, SX_R(0.0), out);
+     * decisions of the overlap test, and in the other order too unless the
+     * pair is within rounding of touching: no second pass needed. */
+    if (touch_test) {
+        bool canonical = order_capsules(a, xa, b, xb) <= 0;
+        bool clear_cut = false;
+        int count = pair_collide_checked(build_capsule, a, xa, build_capsule, b, xb, SX_R(0.0), out,
+                                         canonical ? NULL : &clear_cut);
+        if (canonical || clear_cut) return count;
     }
     return collide_gated(build_capsule, a, xa, b, xb, margin,
                          touch_test && sx_overlap_capsules(a, xa, b, xb), out);
@@ -449,15 +537,15 @@ int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, s
 /* ---- polygon - circle / segment / capsule ------------------------------- */
 
 bool sx_overlap_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
-    return pair_overlap(build_polygon, a, xa, build_circle, b, xb);
+    return point_overlap(build_polygon, a, xa, b, xb);
 }
 bool sx_mtv_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                            sx_vec2 *mtv) {
-    return pair_mtv(build_polygon, a, xa, build_circle, b, xb, mtv);
+    return point_mtv(build_polygon, a, xa, b, xb, mtv);
 }
 int sx_collide_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
-    return pair_collide(build_polygon, a, xa, build_circle, b, xb, margin, out);
+    return point_collide(build_polygon, a, xa, b, xb, margin, out);
 }
 
 bool sx_overlap_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b,
@@ -616,9 +704,14 @@ int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, s
                         sx_real margin, sx_manifold *out) {
     bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
     /* In the canonical order the manifold at margin 0 makes exactly the
-     * decisions of the overlap test: no second pass needed. */
-    if (touch_test && order_polygons(a, xa, b, xb) <= 0 && !box_pair_aligned(a, xa, b, xb)) {
-        return pair_collide(build_polygon, a, xa, build_polygon, b, xb, SX_R(0.0), out);
+     * decisions of the overlap test, and in the other order too unless the
+     * pair is within rounding of touching: no second pass needed. */
+    if (touch_test) {
+        bool canonical = order_polygons(a, xa, b, xb) <= 0 && !box_pair_aligned(a, xa, b, xb);
+        bool clear_cut = false;
+        int count = pair_collide_checked(build_polygon, a, xa, build_polygon, b, xb, SX_R(0.0), out,
+                                         canonical ? NULL : &clear_cut);
+        if (canonical || clear_cut) return count;
     }
     return collide_gated(build_polygon, a, xa, b, xb, margin,
                          touch_test && sx_overlap_polygons(a, xa, b, xb), out);
@@ -666,11 +759,9 @@ typedef struct sx_pair_entry {
     }                                                                                              \
     static int col_##NAME##_rev(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,    \
                                 sx_real margin, sx_manifold *out) {                                \
-        sx_manifold m;                                                                             \
-        sx_collide_##NAME(&b->u.MA, xb, &a->u.MB, xa, margin, &m);                                 \
-        mirror_manifold(&m);                                                                       \
-        *out = m;                                                                                  \
-        return m.count;                                                                            \
+        sx_collide_##NAME(&b->u.MA, xb, &a->u.MB, xa, margin, out);                                \
+        mirror_manifold(out);                                                                      \
+        return out->count;                                                                         \
     }
 
 SX_PAIR_ENTRIES(segment_circle, segment, circle)
@@ -693,7 +784,7 @@ static bool mtv_circles(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xf
 }
 static int col_circles(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
                        sx_real margin, sx_manifold *out) {
-    return sx_collide_circles(&a->u.circle, xa, &b->u.circle, xb, margin, out);
+    return collide_circles(&a->u.circle, xa, &b->u.circle, xb, margin, out);
 }
 static bool ov_segments(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
     return sx_overlap_segments(&a->u.segment, xa, &b->u.segment, xb);
@@ -777,20 +868,24 @@ bool sx_mtv(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_v
     return e->mtv(a, xa, b, xb, mtv);
 }
 
-int sx_collide_ex(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_real margin,
-                  sx_manifold *out) {
+/* Both manifold entry points dispatch here directly (one call layer less
+ * for the cheap pairs). */
+static inline int collide_dispatch(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                                   sx_real margin, sx_manifold *out) {
     const sx_pair_entry *e = pair_entry(a, b);
-    sx_manifold m;
-    int count;
+    sx_manifold scratch;
     if (e == NULL) {
         clear_manifold(out);
         return 0;
     }
-    count = e->collide(a, xa, b, xb, margin, &m);
-    if (out) *out = m;
-    return count;
+    return e->collide(a, xa, b, xb, margin, out ? out : &scratch);
+}
+
+int sx_collide_ex(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_real margin,
+                  sx_manifold *out) {
+    return collide_dispatch(a, xa, b, xb, margin, out);
 }
 
 int sx_collide(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_manifold *out) {
-    return sx_collide_ex(a, xa, b, xb, SX_R(0.0), out);
+    return collide_dispatch(a, xa, b, xb, SX_R(0.0), out);
 }

@@ -35,8 +35,8 @@ typedef struct sx_core {
  * false (and leaves *out unusable) for NULL, a negative or non-finite radius,
  * a polygon count outside 3..SX_MAX_POLYGON_VERTICES or any non-finite value,
  * before or after the transform. A zero-length segment or capsule becomes a
- * 1-point core at its end point a. */
-bool sx_core_from_circle(const sx_circle *c, const sx_xform *x, sx_core *out);
+ * 1-point core at its end point a. Circles never become cores: the point
+ * routines below take their centre. */
 bool sx_core_from_segment(const sx_segment *s, const sx_xform *x, sx_core *out);
 bool sx_core_from_capsule(const sx_capsule *c, const sx_xform *x, sx_core *out);
 bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out);
@@ -51,7 +51,18 @@ bool sx_core_mtv(const sx_core *a, const sx_core *b, sx_vec2 *mtv);
 
 /** The contact manifold of a against b in the working frame (normal from a
  *  to b), keeping points with depth >= -margin (margin >= 0). Returns the
- *  point count and fills *out. */
-int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_manifold *out);
+ *  point count and fills *out. *clear_cut (may be NULL) is set true when the
+ *  rounded cores are so clearly apart or overlapping that sx_core_overlap
+ *  gives the same answer with a and b swapped, whatever the rounding. */
+int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_manifold *out,
+                     bool *clear_cut);
+
+/* The same three answers for b the 1-point core (c, rb), b a circle: no
+ * core is built for it, and the SAT, vertex sweep and contact are written
+ * out for a single point (see narrow_core.c). */
+bool sx_core_point_overlap(const sx_core *a, sx_vec2 c, sx_real rb);
+bool sx_core_point_mtv(const sx_core *a, sx_vec2 c, sx_real rb, sx_vec2 *mtv);
+int sx_core_point_manifold(const sx_core *a, sx_vec2 c, sx_real rb, sx_real margin,
+                           sx_manifold *out);
 
 #endif /* SEPAX_NARROW_H */

@@ -48,24 +48,11 @@ static sx_vec2 place_vector(const sx_xform *x, sx_vec2 v) { return x ? sx_rotate
 
 static bool core_radius_ok(sx_real r) { return sx_is_finite(r) && r >= SX_R(0.0); }
 
-/* Sum of (x - x) over n vectors: exactly 0 when all are finite, NaN
- * otherwise; one branch for the whole array. */
-static bool all_finite(const sx_vec2 *v, int n) {
-    sx_real acc = SX_R(0.0);
-    int i;
-    for (i = 0; i < n; ++i)
-        acc += (v[i].x - v[i].x) + (v[i].y - v[i].y);
-    return acc == SX_R(0.0);
-}
-
-bool sx_core_from_circle(const sx_circle *c, const sx_xform *x, sx_core *out) {
-    if (c == NULL || !core_radius_ok(c->radius) || !sx_vec2_is_finite(c->center)) return false;
-    out->vs[0] = place_point(x, c->center);
-    out->v = out->vs;
-    out->n = out->ns;
-    out->radius = c->radius;
-    out->count = 1;
-    return sx_vec2_is_finite(out->vs[0]);
+/* (x - x) summed over the coordinates of a vertex and its normal: exactly 0
+ * when all are finite, NaN otherwise. Summed over a polygon, one branch
+ * checks it whole. */
+static sx_real finite_fold(sx_vec2 v, sx_vec2 m) {
+    return (v.x - v.x) + (v.y - v.y) + (m.x - m.x) + (m.y - m.y);
 }
 
 /* Builds the 2-point core a-b (or a 1-point core when a-b has no direction).
@@ -104,6 +91,7 @@ bool sx_core_from_capsule(const sx_capsule *c, const sx_xform *x, sx_core *out) 
 }
 
 bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) {
+    sx_real acc = SX_R(0.0);
     int i, n;
     if (p == NULL || !core_radius_ok(p->radius)) return false;
     n = p->count;
@@ -114,15 +102,21 @@ bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) 
         /* Shape A is read in place: no copy. */
         out->v = p->vertices;
         out->n = p->normals;
+        for (i = 0; i < n; ++i)
+            acc += finite_fold(p->vertices[i], p->normals[i]);
     } else {
+        /* One pass places each vertex and normal and checks the result. */
+        sx_xform q = *x;
         for (i = 0; i < n; ++i) {
-            out->vs[i] = sx_xform_point(*x, p->vertices[i]);
-            out->ns[i] = sx_rotate(x->q, p->normals[i]);
+            sx_vec2 v = sx_xform_point(q, p->vertices[i]), m = sx_rotate(q.q, p->normals[i]);
+            out->vs[i] = v;
+            out->ns[i] = m;
+            acc += finite_fold(v, m);
         }
         out->v = out->vs;
         out->n = out->ns;
     }
-    return all_finite(out->v, n) && all_finite(out->n, n);
+    return acc == SX_R(0.0);
 }
 
 /* ---- separating axes ---------------------------------------------------- */
@@ -133,14 +127,12 @@ static int next_index(const sx_core *c, int i) { return i + 1 < c->count ? i + 1
 
 /* Separation of q from face i of p: how far q's nearest point lies in front
  * of the face's line (negative: q reaches behind it). */
-static sx_real face_separation(const sx_core *p, int i, const sx_core *q) {
+static inline sx_real face_separation(const sx_core *p, int i, const sx_core *q) {
     sx_vec2 n = p->n[i], v = p->v[i];
     sx_real best = SX_REAL_MAX;
     int j;
-    for (j = 0; j < q->count; ++j) {
-        sx_real s = sx_dot(n, sx_sub(q->v[j], v));
-        if (s < best) best = s;
-    }
+    for (j = 0; j < q->count; ++j)
+        best = sx_minr(best, sx_dot(n, sx_sub(q->v[j], v)));
     return best;
 }
 
@@ -183,7 +175,10 @@ static bool sat_run(const sx_core *a, const sx_core *b, sx_real limit, sx_sat *o
     out->face_b = -1;
     for (i = 0; i < na; ++i) {
         sx_real s = face_separation(a, i, b);
-        if (s > limit) return false;
+        if (s > limit) {
+            out->sep = s;
+            return false;
+        }
         if (s > out->sep_a) {
             out->sep_a = s;
             out->face_a = i;
@@ -191,7 +186,10 @@ static bool sat_run(const sx_core *a, const sx_core *b, sx_real limit, sx_sat *o
     }
     for (i = 0; i < nb; ++i) {
         sx_real s = face_separation(b, i, a);
-        if (s > limit) return false;
+        if (s > limit) {
+            out->sep = s;
+            return false;
+        }
         if (s > out->sep_b) {
             out->sep_b = s;
             out->face_b = i;
@@ -213,7 +211,10 @@ static bool sat_run(const sx_core *a, const sx_core *b, sx_real limit, sx_sat *o
         sx_real s;
         if (a->count == 2) {
             s = cap_separation(a, b, &axis);
-            if (s > limit) return false;
+            if (s > limit) {
+                out->sep = s;
+                return false;
+            }
             if (s > out->sep) {
                 out->sep = s;
                 out->axis = axis;
@@ -221,7 +222,10 @@ static bool sat_run(const sx_core *a, const sx_core *b, sx_real limit, sx_sat *o
         }
         if (b->count == 2) {
             s = cap_separation(b, a, &axis);
-            if (s > limit) return false;
+            if (s > limit) {
+                out->sep = s;
+                return false;
+            }
             if (s > out->sep) {
                 out->sep = s;
                 out->axis = sx_neg(axis);
@@ -275,7 +279,6 @@ static void offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index, bool p_i
             return;
         }
         best->dist_sq = dsq;
-        best->distance = sx_sqrt(dsq);
         best->kind = SX_CLOSEST_VERTICES;
         best->ia = p_is_a ? vertex : q_index;
         best->ib = p_is_a ? q_index : vertex;
@@ -311,6 +314,17 @@ static sx_real max_abs_coord(sx_vec2 a, sx_vec2 b) {
     return sx_maxr(sx_maxr(sx_absr(a.x), sx_absr(a.y)), sx_maxr(sx_absr(b.x), sx_absr(b.y)));
 }
 
+/* Completes a sweep: a vertex-vertex result gets its distance (the sweep
+ * compares squares only, so the root is taken once) and its direction when
+ * the points are apart by more than rounding noise. */
+static void vertex_direction(sx_closest *c) {
+    if (c->kind != SX_CLOSEST_VERTICES) return;
+    c->distance = sx_sqrt(c->dist_sq);
+    if (c->distance > SX_DIRECTION_EPSILON * max_abs_coord(c->pa, c->pb)) {
+        c->normal = sx_scale(sx_sub(c->pb, c->pa), SX_R(1.0) / c->distance);
+    }
+}
+
 /* Distance and closest features of two disjoint cores: every vertex of one
  * against every edge of the other (A's edges first, so ties keep A's face). */
 static void closest_features(const sx_core *a, const sx_core *b, sx_closest *out) {
@@ -333,14 +347,8 @@ static void closest_features(const sx_core *a, const sx_core *b, sx_closest *out
         for (j = 0; j < a->count; ++j)
             offer_edge(b, i, a->v[j], j, false, out);
     }
-    if (ea == 0 && eb == 0) {
-        out->dist_sq = sx_distance_sq(a->v[0], b->v[0]);
-        out->distance = sx_sqrt(out->dist_sq);
-    }
-    if (out->kind == SX_CLOSEST_VERTICES &&
-        out->distance > SX_DIRECTION_EPSILON * max_abs_coord(out->pa, out->pb)) {
-        out->normal = sx_scale(sx_sub(out->pb, out->pa), SX_R(1.0) / out->distance);
-    }
+    if (ea == 0 && eb == 0) out->dist_sq = sx_distance_sq(a->v[0], b->v[0]);
+    vertex_direction(out);
 }
 
 /* The direction of a contact whose closest points coincide: the best SAT
@@ -501,7 +509,29 @@ static int clip_face(const sx_core *ref, int i, const sx_core *inc, sx_real marg
     return count;
 }
 
-int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_manifold *out) {
+/* Largest coordinate magnitude of a core's points. */
+static sx_real core_scale(const sx_core *c) {
+    sx_real m = SX_R(0.0);
+    int i;
+    for (i = 0; i < c->count; ++i)
+        m = sx_maxr(m, sx_maxr(sx_absr(c->v[i].x), sx_absr(c->v[i].y)));
+    return m;
+}
+
+/* The two argument orders of a same-type pair compute the same separations
+ * up to rounding, a few ulps of the coordinates: a signed gap farther from
+ * zero than this (the touch rescue margin of collide.c plus a wide rounding
+ * allowance) gets the same touch answer in both orders. */
+#define SX_ORDER_RESCUE (SX_R(0.01) * SX_LINEAR_SLOP)
+#define SX_ORDER_ROUNDING (SX_R(1024.0) * SX_REAL_EPSILON)
+
+static bool gap_is_clear(const sx_core *a, const sx_core *b, sx_real gap) {
+    sx_real scale = sx_maxr(sx_maxr(core_scale(a), core_scale(b)), a->radius + b->radius);
+    return sx_absr(gap) > SX_ORDER_RESCUE + SX_ORDER_ROUNDING * scale;
+}
+
+int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_manifold *out,
+                     bool *clear_cut) {
     sx_real r = a->radius + b->radius;
     sx_real limit = r + margin;
     sx_sat sat;
@@ -511,12 +541,17 @@ int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_mani
     const sx_manifold_point *exact = NULL;
     out->count = 0;
     out->normal = sx_v2_zero();
-    if (!sat_run(a, b, limit, &sat)) return 0;
+    if (!sat_run(a, b, limit, &sat)) {
+        if (clear_cut) *clear_cut = gap_is_clear(a, b, sat.sep - r);
+        return 0;
+    }
     if (sat.has_axes && sat.sep <= SX_R(0.0)) {
         face_contact = true;
+        if (clear_cut) *clear_cut = gap_is_clear(a, b, sat.sep - r);
     } else {
         sx_vec2 n;
         closest_features(a, b, &cl);
+        if (clear_cut) *clear_cut = gap_is_clear(a, b, cl.distance - r);
         if (!(cl.distance <= limit)) return 0;
         /* The exact contact of cores apart: on the line between the closest
          * core points, midway between the surfaces. */
@@ -546,4 +581,137 @@ int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_mani
         out->normal = a->n[sat.face_a];
     }
     return out->count;
+}
+
+/* ---- a core against a point --------------------------------------------- */
+
+/* The cheap pairs (a segment, capsule or polygon A against a circle B) are
+ * the routines above with b the 1-point core (c, rb), written out for it: the
+ * SAT is A's faces (plus the caps of a 2-point A) against one point, the
+ * vertex sweep needs only A's face of largest separation (for a point
+ * outside a convex polygon the closest point lies on that face or is one of
+ * its end vertices: a face not adjacent to the closest vertex separates the
+ * point by less than the adjacent ones, as Box2D's polygon-circle uses), and
+ * a face contact is the point itself seen along the face normal, with no
+ * clipping. */
+
+/* sat_run for b = the point c. */
+static bool point_sat(const sx_core *a, sx_vec2 c, sx_real limit, sx_sat *out) {
+    int i, n = face_count(a);
+    out->sep_a = -SX_REAL_MAX;
+    out->sep_b = -SX_REAL_MAX;
+    out->face_a = -1;
+    out->face_b = -1;
+    for (i = 0; i < n; ++i) {
+        sx_real s = sx_dot(a->n[i], sx_sub(c, a->v[i]));
+        if (s > limit) return false;
+        if (s > out->sep_a) {
+            out->sep_a = s;
+            out->face_a = i;
+        }
+    }
+    out->has_axes = n > 0;
+    out->sep = out->sep_a;
+    out->axis = out->face_a >= 0 ? a->n[out->face_a] : sx_v2_zero();
+    if (a->count == 2) {
+        sx_vec2 t = sx_perp(a->n[0]);
+        sx_real beyond_b = sx_dot(t, sx_sub(c, a->v[1]));
+        sx_real beyond_a = sx_dot(t, sx_sub(a->v[0], c));
+        sx_real s = beyond_b >= beyond_a ? beyond_b : beyond_a;
+        if (s > limit) return false;
+        if (s > out->sep) {
+            out->sep = s;
+            out->axis = beyond_b >= beyond_a ? t : sx_neg(t);
+        }
+    }
+    return true;
+}
+
+/* closest_features for b = the point c (index 0), A's face of largest
+ * separation being sat->face_a. */
+static void point_closest(const sx_core *a, sx_vec2 c, const sx_sat *sat, sx_closest *out) {
+    out->dist_sq = SX_REAL_MAX;
+    out->distance = SX_REAL_MAX;
+    out->kind = SX_CLOSEST_VERTICES;
+    out->ia = 0;
+    out->ib = 0;
+    out->pa = a->v[0];
+    out->pb = c;
+    out->normal = sx_v2_zero();
+    if (a->count == 1) {
+        out->dist_sq = sx_distance_sq(a->v[0], c);
+    } else if (a->count == 2) {
+        offer_edge(a, 0, c, 0, true, out);
+    } else {
+        offer_edge(a, sat->face_a, c, 0, true, out);
+    }
+    vertex_direction(out);
+}
+
+bool sx_core_point_overlap(const sx_core *a, sx_vec2 c, sx_real rb) {
+    sx_real r = a->radius + rb;
+    sx_sat sat;
+    sx_closest cl;
+    if (!point_sat(a, c, r, &sat)) return false;
+    if (sat.has_axes && sat.sep <= SX_R(0.0)) return true;
+    point_closest(a, c, &sat, &cl);
+    return cl.distance <= r;
+}
+
+bool sx_core_point_mtv(const sx_core *a, sx_vec2 c, sx_real rb, sx_vec2 *mtv) {
+    sx_real r = a->radius + rb;
+    sx_sat sat;
+    sx_closest cl;
+    sx_vec2 n;
+    *mtv = sx_v2_zero();
+    if (!point_sat(a, c, r, &sat)) return false;
+    if (sat.has_axes && sat.sep <= SX_R(0.0)) {
+        *mtv = sx_scale(a->n[sat.face_a], -(r - sat.sep_a));
+        return true;
+    }
+    point_closest(a, c, &sat, &cl);
+    if (!(cl.distance <= r)) return false;
+    n = cl.normal;
+    if (n.x == SX_R(0.0) && n.y == SX_R(0.0)) n = fallback_normal(&sat);
+    *mtv = sx_scale(n, cl.distance - r);
+    return true;
+}
+
+int sx_core_point_manifold(const sx_core *a, sx_vec2 c, sx_real rb, sx_real margin,
+                           sx_manifold *out) {
+    sx_real r = a->radius + rb;
+    sx_sat sat;
+    sx_closest cl;
+    sx_vec2 n;
+    sx_manifold_point *p = &out->points[0];
+    out->count = 0;
+    out->normal = sx_v2_zero();
+    if (!point_sat(a, c, r + margin, &sat)) return 0;
+    if (sat.has_axes && sat.sep <= SX_R(0.0)) {
+        /* The centre is on the core: clip_face's single incident point. */
+        n = a->n[sat.face_a];
+        p->point = sx_mul_add(c, SX_R(0.5) * (a->radius - rb - sat.sep_a), n);
+        p->depth = sx_maxr(r - sat.sep_a, -margin);
+        p->id = SX_FEATURE_ID(sat.face_a, 0, 0);
+        out->normal = n;
+        out->count = 1;
+        return 1;
+    }
+    point_closest(a, c, &sat, &cl);
+    if (!(cl.distance <= r + margin)) return 0;
+    n = cl.normal;
+    if (n.x == SX_R(0.0) && n.y == SX_R(0.0)) n = fallback_normal(&sat);
+    p->point = sx_mul_add(sx_lerp(cl.pa, cl.pb, SX_R(0.5)), SX_R(0.5) * (a->radius - rb), n);
+    p->depth = sx_maxr(r - cl.distance, -margin);
+    if (sat.face_a >= 0 &&
+        (cl.kind != SX_CLOSEST_VERTICES || cl.distance <= sat.sep_a + SX_FACE_CONTACT_TOLERANCE)) {
+        /* A face contact: the exact point, labelled and oriented by the face. */
+        p->id = SX_FEATURE_ID(sat.face_a, 0, 0);
+        out->normal = a->n[sat.face_a];
+    } else {
+        p->id = SX_FEATURE_ID(cl.ia, cl.ib, 0);
+        out->normal = n;
+    }
+    out->count = 1;
+    return 1;
 }
