@@ -32,7 +32,11 @@
 
 static const double PI = 3.14159265358979323846;
 
+#ifdef SX_DOUBLE
+static const char *const engine_names[SCENE_ENGINE_COUNT] = {"sepax-double", "box2d", "chipmunk"};
+#else
 static const char *const engine_names[SCENE_ENGINE_COUNT] = {"sepax", "box2d", "chipmunk"};
+#endif
 
 /* The printed report goes to stdout and, between code fences, to REPORT.md. */
 static FILE *report_file;
@@ -302,7 +306,7 @@ static int large_pyramid(int steps) {
     out("\n## large_pyramid: base 100 (%d boxes), %d steps of 1/60 s, time of steps 2..%d\n\n",
         d.count - 1, steps, steps);
     md("```\n");
-    out("%-9s %-28s %9s %7s %9s %9s\n", "engine", "configuration", "ms/step", "sx/peer", "top y",
+    out("%-12s %-28s %9s %7s %9s %9s\n", "engine", "configuration", "ms/step", "sx/peer", "top y",
         "top dx");
     double ms[SCENE_ENGINE_COUNT] = {0};
     int failures = 0;
@@ -323,7 +327,7 @@ static int large_pyramid(int steps) {
         engines[e].destroy(w);
         char cfg[96], det[96];
         config_name(e, &c, cfg, sizeof cfg);
-        out("%-9s %-28s %9.2f ", engine_names[e], cfg, ms[e]);
+        out("%-12s %-28s %9.2f ", engine_names[e], cfg, ms[e]);
         if (e == SCENE_SEPAX)
             out("%7s", "1");
         else
@@ -453,7 +457,7 @@ static int rain(const int *sizes, int nsizes, int steps, double cap_ms) {
         "time of steps 2..%d of 1/60 s (the first builds the engines' trees)\n\n",
         steps + 1);
     md("```\n");
-    out("%-9s %8s %10s %12s %8s\n", "engine", "bodies", "ms/step", "step 1 (ms)", "sx/peer");
+    out("%-12s %8s %10s %12s %8s\n", "engine", "bodies", "ms/step", "step 1 (ms)", "sx/peer");
     double ms[SCENE_ENGINE_COUNT][8] = {{0}};
     int failures = 0;
     for (int k = 0; k < nsizes; ++k) {
@@ -485,7 +489,7 @@ static int rain(const int *sizes, int nsizes, int steps, double cap_ms) {
             }
             ms[e][k] = elapsed / (double)done;
             engines[e].destroy(w);
-            out("%-9s %8d %10.3f %12.1f ", engine_names[e], sizes[k], ms[e][k], t_first);
+            out("%-12s %8d %10.3f %12.1f ", engine_names[e], sizes[k], ms[e][k], t_first);
             if (e == SCENE_SEPAX)
                 out("%8s", "1");
             else
@@ -569,8 +573,8 @@ static int run_sweep(const char *scene, const char *err_name, const char *what, 
     int np = 0, failures = 0;
     out("\n## %s: %s\n\n", scene, what);
     md("```\n");
-    out("%-9s %-28s %9s %9s %12s  %s\n", "engine", "configuration", "ms/step", "ms/frame", err_name,
-        "details");
+    out("%-12s %-28s %9s %9s %12s  %s\n", "engine", "configuration", "ms/step", "ms/frame",
+        err_name, "details");
     double best_err[SCENE_ENGINE_COUNT], std_ms[SCENE_ENGINE_COUNT], std_err[SCENE_ENGINE_COUNT];
     for (int e = 0; e < SCENE_ENGINE_COUNT; ++e) {
         scene_config cs[SWEEP_MAX];
@@ -587,7 +591,7 @@ static int run_sweep(const char *scene, const char *err_name, const char *what, 
             }
             char cfg[96];
             config_name(e, &cs[i], cfg, sizeof cfg);
-            out("%-9s %-28s %9.4f %9.4f %12.4g  %s\n", engine_names[e], cfg, r.ms,
+            out("%-12s %-28s %9.4f %9.4f %12.4g  %s\n", engine_names[e], cfg, r.ms,
                 frame_ms(r.ms, &cs[i]), r.error, r.details);
             csv_row(scene, e, &cs[i], 0, 0, r.ms, err_name, r.error, r.details);
             snprintf(labels[np], sizeof labels[np], "%s", cfg);
