@@ -784,6 +784,89 @@ static int pyramid20_run(int e, const scene_config *c, int smoke, acc_result *r)
     return 1;
 }
 
+/* stack20: 20 boxes (half-extent 0.5) in a column, alternate rows shifted
+ * +-0.01 m, 10 s. Error: the largest lateral creep of a box from where it
+ * started; details: top y (starts 19.5) and the largest penetration beyond
+ * the slop (as pyramid20). */
+static int stack20_run(int e, const scene_config *c, int smoke, acc_result *r) {
+    scene_def d;
+    if (!scene_init(&d, 24)) return 0;
+    add_ground(&d, 100.0);
+    for (int i = 0; i < 20; ++i)
+        set_box(scene_add(&d, 1, i % 2 ? 0.01 : -0.01, 0.5 + i, 0.0), 0.5, 0.5);
+    const int count = d.count;
+    double x0[24];
+    for (int i = 0; i < count; ++i)
+        x0[i] = d.bodies[i].x;
+    void *w = engines[e].create(&d, c);
+    scene_free(&d);
+    if (!w) return 0;
+    const int n = smoke ? 3 : (int)lround(10.0 / c->dt), every = (int)lround(0.25 / c->dt);
+    double ms = 0.0, pen = 0.0;
+    for (int i = 1; i <= n; ++i) {
+        double t0 = now_ms();
+        engines[e].step(w, 1);
+        ms += now_ms() - t0;
+        if (i % every == 0 || i == n) {
+            double p = pyramid_penetration(w, e, count);
+            if (p > pen) pen = p;
+        }
+    }
+    double creep = 0.0;
+    scene_state s;
+    for (int i = 1; i < count; ++i) {
+        engines[e].get(w, i, &s);
+        if (fabs(s.x - x0[i]) > creep) creep = fabs(s.x - x0[i]);
+    }
+    engines[e].destroy(w);
+    r->error = creep > 1e-7 ? creep : 1e-7;
+    r->ms = ms / n;
+    snprintf(r->details, sizeof r->details, "top_y=%.4f max_pen_beyond_slop=%.4f", s.y, pen);
+    return 1;
+}
+
+/* cradle: five circles r 0.5 in a row, 1 mm gaps, e = 1, mu = 0, no
+ * gravity; the first moves at 1 m/s. After 1 s the last should leave at
+ * 1 m/s and the others rest. Error: |v_last - 1| + the sum of the others'
+ * |v|; details: momentum and kinetic energy (both start at 0.785 for
+ * 0.785 kg bodies). Both Box2D and sepax ignore restitution below 1 m/s
+ * approach speed by default (their restitution threshold), exactly this
+ * scene's speed. */
+static int cradle_run(int e, const scene_config *c, int smoke, acc_result *r) {
+    scene_def d;
+    if (!scene_init(&d, 8)) return 0;
+    d.gy = 0.0;
+    for (int i = 0; i < 5; ++i) {
+        scene_body *b = scene_add(&d, 1, i * 1.001, 0.0, 0.0);
+        set_circle(b, 0.5);
+        b->friction = 0.0;
+        b->restitution = 1.0;
+        if (i == 0) b->vx = 1.0;
+    }
+    void *w = engines[e].create(&d, c);
+    scene_free(&d);
+    if (!w) return 0;
+    const int n = smoke ? 3 : (int)lround(1.0 / c->dt);
+    double t0 = now_ms();
+    engines[e].step(w, n);
+    r->ms = (now_ms() - t0) / n;
+    double err = 0.0, p = 0.0, ke = 0.0;
+    const double m = PI * 0.25;
+    scene_state s;
+    for (int i = 0; i < 5; ++i) {
+        engines[e].get(w, i, &s);
+        err += i == 4 ? fabs(s.vx - 1.0) : hypot(s.vx, s.vy);
+        p += m * s.vx;
+        ke += 0.5 * m * (s.vx * s.vx + s.vy * s.vy);
+    }
+    engines[e].get(w, 4, &s);
+    engines[e].destroy(w);
+    r->error = err > 1e-7 ? err : 1e-7;
+    snprintf(r->details, sizeof r->details,
+             "v_last=%.4f momentum=%.4f energy=%.4f (0.7854, 0.3927)", s.vx, p, ke);
+    return 1;
+}
+
 /* ---- driver ------------------------------------------------------------------ */
 
 int bench_scenes_run(const char *out_dir, int smoke, int level) {
@@ -850,6 +933,16 @@ int bench_scenes_run(const char *out_dir, int smoke, int level) {
                               "10 s; max penetration beyond 5 mm slop (sepax narrowphase on the "
                               "poses; Box2D's 1 cm skin reads as 0)",
                               pyramid20_run, out_dir, smoke);
+    if (WANT("stack20"))
+        failures += run_sweep("stack20", "lateral creep m",
+                              "20 boxes in a column, alternate rows shifted +-0.01 m, 10 s; "
+                              "largest lateral creep of a box",
+                              stack20_run, out_dir, smoke);
+    if (WANT("cradle"))
+        failures += run_sweep("cradle", "|v_last - 1| + sum |v_others| m/s",
+                              "five circles r 0.5, 1 mm gaps, e = 1, mu = 0, no gravity, the first "
+                              "at 1 m/s; velocities after 1 s",
+                              cradle_run, out_dir, smoke);
 #undef WANT
     fclose(csv_file);
     fclose(report_file);
