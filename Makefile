@@ -156,6 +156,13 @@ bench: $(BENCH_BIN)
 bench-smoke: $(BENCH_BIN)
 	./$(BENCH_BIN) --smoke --out $(OUT)/bench-smoke
 
+# The world scenes alone (bench/scenes.c: sepax, Box2D and Chipmunk worlds;
+# scenes.csv, SVG plots and REPORT.md in $(OUT)/bench); `make bench` runs
+# them after the narrowphase table.
+.PHONY: bench-scenes
+bench-scenes: $(BENCH_BIN)
+	./$(BENCH_BIN) --scenes --out $(OUT)/bench
+
 # ---- flecs module and demo ---------------------------------------------------
 #
 # flecs 4's amalgamated flecs.c/flecs.h come from the pinned crates.io package

@@ -30,6 +30,7 @@
 
 #include "pairs.h"
 #include "reference.h"
+#include "scenes.h"
 #include "sepax/sepax.h"
 
 /* The two references (the project's sx_ref_penetration on the sepax shapes,
@@ -385,11 +386,33 @@ static int parse(int argc, char **argv, options *o) {
 
 int main(int argc, char **argv) {
     options opt;
+    /* The world scenes (bench/scenes.c) run after the narrowphase table:
+     * --scenes runs them alone, --no-scenes skips them, --quick shortens
+     * the large ones, --full runs SCENES.md's lengths. These flags are
+     * taken out before parse() sees argv. */
+    int scenes = 1, scenes_only = 0, scene_level = 0, nargs = 1;
+    for (int i = 1; i < argc; ++i) {
+        if (strcmp(argv[i], "--scenes") == 0)
+            scenes_only = 1;
+        else if (strcmp(argv[i], "--no-scenes") == 0)
+            scenes = 0;
+        else if (strcmp(argv[i], "--quick") == 0)
+            scene_level = 1;
+        else if (strcmp(argv[i], "--full") == 0)
+            scene_level = 2;
+        else
+            argv[nargs++] = argv[i];
+    }
+    argc = nargs;
+    if (argc > 1 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0))
+        printf("world scenes: [--scenes] only the scenes, [--no-scenes] only the narrowphase,\n"
+               "  [--quick] fewer steps in the large scenes, [--full] SCENES.md's full lengths\n");
     if (!parse(argc, argv, &opt)) return 2;
     if (!make_dirs(opt.out_dir)) {
         fprintf(stderr, "sepax_bench: cannot create %s: %s\n", opt.out_dir, strerror(errno));
         return 1;
     }
+    if (scenes_only) return bench_scenes_run(opt.out_dir, opt.smoke, scene_level) ? 1 : 0;
     char csv_path[1100];
     snprintf(csv_path, sizeof csv_path, "%s/narrowphase.csv", opt.out_dir);
     FILE *csv = fopen(csv_path, "w");
@@ -579,5 +602,6 @@ int main(int argc, char **argv) {
     free(pairs);
     free(sp);
     if (failures) fprintf(stderr, "sepax_bench: %d pair types failed\n", failures);
+    if (scenes) failures += bench_scenes_run(opt.out_dir, opt.smoke, scene_level);
     return failures ? 1 : 0;
 }
