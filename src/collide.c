@@ -14,7 +14,10 @@
  * indistinguishable, so both orders are the same call and give the same
  * vector, not its negation. Manifolds of same-type pairs are computed in the
  * caller's order (A's face wins near-ties), so the solver, which always asks
- * in one order, gets feature ids that stay stable while the bodies move. */
+ * in one order, gets feature ids that stay stable while the bodies move; at
+ * margin 0 whether they touch at all is still the canonical order's answer,
+ * so sx_collide has points exactly when sx_overlap is true. Circles and
+ * axis-aligned box pairs take fast paths for overlap and MTV. */
 #include <string.h>
 
 #include "narrow.h"
@@ -131,13 +134,15 @@ static int order_vecs(const sx_vec2 *a, const sx_vec2 *b, int n) {
 
 /* ---- circle - circle ---------------------------------------------------- */
 
-/* Circles skip the core machinery: the centre offset is formed from the
- * world delta of the two positions (exact for nearby bodies far from the
- * origin) plus the rotated local centres, and the test is on squared
- * distance. */
+/* Circles skip the core machinery. The centre offset is the world delta of
+ * the positions (exact for nearby bodies far from the origin) plus the
+ * difference of the rotated local centres, grouped so that swapping the
+ * circles negates it exactly (x - y == -(y - x) in IEEE arithmetic): the
+ * squared-distance test, the MTV and the manifold are then antisymmetric
+ * without any ordering, except when the centres coincide. */
 static sx_vec2 circle_offset(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
-    return sx_sub(sx_add(sx_sub(xb.p, xa.p), sx_rotate(xb.q, b->center)),
-                  sx_rotate(xa.q, a->center));
+    return sx_add(sx_sub(xb.p, xa.p),
+                  sx_sub(sx_rotate(xb.q, b->center), sx_rotate(xa.q, a->center)));
 }
 
 static bool circles_valid(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
@@ -160,51 +165,76 @@ static int order_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx
     return order_reals(ra, rb, 3);
 }
 
-static bool overlap_circles_ordered(const sx_circle *a, sx_xform xa, const sx_circle *b,
-                                    sx_xform xb) {
-    sx_vec2 d = circle_offset(a, xa, b, xb);
+/* Unit direction from A's centre to B's, and the centre distance. Coincident
+ * centres (closer than rounding noise) have no direction: the local +x axis
+ * of the circle that comes first in the canonical order, pointing away from
+ * it (so the swapped call gets exactly the reversed direction). */
+static sx_vec2 circles_direction(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                                 sx_vec2 d, sx_real *dist) {
     sx_real r = a->radius + b->radius;
-    return sx_length_sq(d) <= r * r;
-}
-
-static bool mtv_circles_ordered(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
-                                sx_vec2 *mtv) {
-    sx_vec2 d = circle_offset(a, xa, b, xb);
-    sx_real r = a->radius + b->radius;
-    sx_real dsq = sx_length_sq(d), dist;
-    sx_vec2 n;
-    *mtv = sx_v2_zero();
-    if (!(dsq <= r * r)) return false;
-    dist = sx_sqrt(dsq);
-    /* Coincident centres have no direction: A's local +x, documented. */
-    n = dist > SX_R(64.0) * SX_REAL_EPSILON * sx_maxr(r, sx_maxr(sx_absr(d.x), sx_absr(d.y)))
-            ? sx_scale(d, SX_R(1.0) / dist)
-            : sx_v2(xa.q.c, xa.q.s);
-    *mtv = sx_scale(n, sx_minr(dist - r, SX_R(0.0)));
-    return sx_vec2_is_finite(*mtv);
+    *dist = sx_sqrt(sx_length_sq(d));
+    if (*dist > SX_R(64.0) * SX_REAL_EPSILON * sx_maxr(r, sx_maxr(sx_absr(d.x), sx_absr(d.y)))) {
+        return sx_scale(d, SX_R(1.0) / *dist);
+    }
+    if (order_circles(a, xa, b, xb) > 0) return sx_v2(-xb.q.c, -xb.q.s);
+    return sx_v2(xa.q.c, xa.q.s);
 }
 
 bool sx_overlap_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
+    sx_vec2 d;
+    sx_real r;
     if (!circles_valid(a, xa, b, xb)) return false;
-    if (order_circles(a, xa, b, xb) > 0) return overlap_circles_ordered(b, xb, a, xa);
-    return overlap_circles_ordered(a, xa, b, xb);
+    d = circle_offset(a, xa, b, xb);
+    r = a->radius + b->radius;
+    return sx_length_sq(d) <= r * r;
 }
 
 bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                     sx_vec2 *mtv) {
-    sx_vec2 v = sx_v2_zero();
+    sx_vec2 d, n, v = sx_v2_zero();
+    sx_real r, dist;
     bool hit = false;
     if (circles_valid(a, xa, b, xb)) {
-        if (order_circles(a, xa, b, xb) > 0) {
-            hit = mtv_circles_ordered(b, xb, a, xa, &v);
-            v = hit ? sx_neg(v) : sx_v2_zero();
-        } else {
-            hit = mtv_circles_ordered(a, xa, b, xb, &v);
+        d = circle_offset(a, xa, b, xb);
+        r = a->radius + b->radius;
+        if (sx_length_sq(d) <= r * r) {
+            n = circles_direction(a, xa, b, xb, d, &dist);
+            v = sx_scale(n, sx_minr(dist - r, SX_R(0.0)));
+            hit = sx_vec2_is_finite(v);
+            if (!hit) v = sx_v2_zero();
         }
     }
-    if (!hit) v = sx_v2_zero();
     if (mtv) *mtv = v;
     return hit;
+}
+
+int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                       sx_real margin, sx_manifold *out) {
+    sx_manifold m;
+    sx_vec2 d, n, ca;
+    sx_real r, limit, dist;
+    memset(&m, 0, sizeof(m));
+    if (!sx_is_finite(margin) || margin < SX_R(0.0)) margin = SX_R(0.0);
+    if (circles_valid(a, xa, b, xb)) {
+        d = circle_offset(a, xa, b, xb);
+        r = a->radius + b->radius;
+        limit = r + margin;
+        if (sx_length_sq(d) <= limit * limit) {
+            n = circles_direction(a, xa, b, xb, d, &dist);
+            ca = sx_xform_point(xa, a->center);
+            /* Midway between A's surface (ra along n) and B's (dist - rb). */
+            m.points[0].point = sx_mul_add(ca, SX_R(0.5) * (a->radius + dist - b->radius), n);
+            m.points[0].depth = sx_maxr(r - dist, -margin);
+            m.points[0].id = SX_FEATURE_ID(0, 0, 0);
+            m.normal = n;
+            m.count = 1;
+            if (!sx_vec2_is_finite(m.points[0].point) || !sx_is_finite(m.points[0].depth)) {
+                memset(&m, 0, sizeof(m));
+            }
+        }
+    }
+    if (out) *out = m;
+    return m.count;
 }
 
 /* ---- the other pairs: cores in A's frame -------------------------------- */
@@ -305,13 +335,6 @@ static int collide_gated(sx_core_builder *f, const void *a, sx_xform xa, const v
     }
     if (out) *out = m;
     return count;
-}
-
-int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
-                       sx_real margin, sx_manifold *out) {
-    bool overlap =
-        !(sx_is_finite(margin) && margin > SX_R(0.0)) && sx_overlap_circles(a, xa, b, xb);
-    return collide_gated(build_circle, a, xa, b, xb, margin, overlap, out);
 }
 
 /* ---- segment - circle --------------------------------------------------- */

@@ -14,8 +14,10 @@
  * normals alone an incomplete set (collinear segments, a point beyond the end
  * of a segment). Manifolds clip the incident face against the side planes of
  * the reference face (Sutherland-Hodgman), the reference face chosen by least
- * penetration with hysteresis in favour of A's face; vertex-vertex contacts
- * of disjoint rounded cores give one point on the closest-point line. */
+ * penetration with hysteresis in favour of A's face. For disjoint rounded
+ * cores the closest-feature line gives the exact contact: a vertex-vertex
+ * contact is that one point, and a face contact uses it for its deepest
+ * point whenever clipping would report less than the exact depth. */
 #include "narrow.h"
 
 /* B's face becomes the reference only when its separation beats A's by this
@@ -27,8 +29,10 @@
  * by no more than this are treated as a face contact (clipped, up to two
  * points) rather than a vertex contact. Aligned edges (a box resting exactly
  * on another, end points over end points) have distance == face separation
- * only up to rounding; 1 % of the slop keeps the depth error far below the
- * slop while catching them. */
+ * only up to rounding; 1 % of the slop catches them. The face normal then
+ * differs from the exact direction by at most sqrt(2 x tolerance / distance)
+ * radians, while the deepest point itself is the exact closest-feature
+ * contact (see clip_face). */
 #define SX_FACE_CONTACT_TOLERANCE (SX_R(0.01) * SX_LINEAR_SLOP)
 
 /* A difference of two points computed from coordinates of magnitude `scale`
@@ -231,6 +235,13 @@ static bool sat_run(const sx_core *a, const sx_core *b, sx_real limit, sx_sat *o
 
 enum { SX_CLOSEST_VERTICES, SX_CLOSEST_FACE_A, SX_CLOSEST_FACE_B };
 
+/* When a point projects just inside a face, its squared distances to the
+ * face and to the face's end vertex agree to second order, and rounding of
+ * the squares can make the vertex look closer; its direction would then be
+ * off by up to sqrt(2 epsilon). Faces therefore win ties within a few ulps of
+ * the squared distance: their direction, the face normal, is exact. */
+#define SX_CLOSEST_TIE (SX_R(16.0) * SX_REAL_EPSILON)
+
 typedef struct sx_closest {
     sx_real distance; /* core distance */
     sx_real dist_sq;  /* its square, the sweep's comparison key */
@@ -258,7 +269,11 @@ static void offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index, bool p_i
     if (vertex >= 0) {
         on_p = p->v[vertex];
         dsq = sx_distance_sq(on_p, q);
-        if (!(dsq < best->dist_sq)) return;
+        if (!(dsq < (best->kind == SX_CLOSEST_VERTICES
+                         ? best->dist_sq
+                         : best->dist_sq * (SX_R(1.0) - SX_CLOSEST_TIE)))) {
+            return;
+        }
         best->dist_sq = dsq;
         best->distance = sx_sqrt(dsq);
         best->kind = SX_CLOSEST_VERTICES;
@@ -277,7 +292,10 @@ static void offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index, bool p_i
         face = 1;
     }
     dsq = s * s;
-    if (!(dsq < best->dist_sq)) return;
+    if (!(dsq < (best->kind == SX_CLOSEST_VERTICES ? best->dist_sq * (SX_R(1.0) + SX_CLOSEST_TIE)
+                                                   : best->dist_sq))) {
+        return;
+    }
     on_p = sx_mul_sub(q, s, n);
     best->dist_sq = dsq;
     best->distance = sx_absr(s);
@@ -379,11 +397,11 @@ bool sx_core_mtv(const sx_core *a, const sx_core *b, sx_vec2 *mtv) {
  * (less a rounding allowance) are kept; if none is, the deepest one is, so an
  * overlapping pair always reports a contact. */
 static int clip_face(const sx_core *ref, int i, const sx_core *inc, sx_real margin, bool flip,
-                     sx_manifold_point out[2]) {
+                     const sx_manifold_point *exact, sx_manifold_point out[2]) {
     sx_vec2 nref = ref->n[i];
     sx_vec2 v1 = ref->v[i], v2 = ref->v[next_index(ref, i)];
     sx_vec2 t = sx_perp(nref);
-    sx_vec2 w[2];
+    sx_vec2 w[2], pos[2];
     int k[2], nw, j, m, count = 0, deepest = 0;
     sx_real depth[2], sc[2], scale, slack;
     if (inc->count == 1) {
@@ -449,30 +467,31 @@ static int clip_face(const sx_core *ref, int i, const sx_core *inc, sx_real marg
         if (depth[j] > depth[deepest]) deepest = j;
     }
     slack = SX_DIRECTION_EPSILON * scale;
-    if (nw == 2) {
-        /* The deepest incident vertex can lie outside the reference face's
-         * slab (a corner reaching past the end of a short face, a capsule
-         * end beyond the other's end): clipping then slides it along a steep
-         * incident face and loses depth. Keep that vertex unclipped so the
-         * deepest point still carries the exact penetration. */
-        for (j = 0; j < 2; ++j) {
-            sx_vec2 o = inc->v[k[j]];
-            sx_real so = sx_dot(nref, sx_sub(o, v1));
-            sx_real od = ref->radius + inc->radius - so;
-            if (od > depth[deepest] + slack) {
-                w[j] = o;
-                sc[j] = so;
-                depth[j] = od;
-                deepest = j;
-            }
+    for (j = 0; j < nw; ++j) {
+        pos[j] = sx_mul_add(w[j], SX_R(0.5) * (ref->radius - inc->radius - sc[j]), nref);
+    }
+    if (exact != NULL && (nw == 1 || exact->depth > depth[deepest] + slack)) {
+        /* Cores apart: the exact contact is the closest-feature point. A
+         * single incident point is that contact seen along the face normal,
+         * so take the exact one. With two, clipping can slide the deepest
+         * incident vertex (a corner or capsule end just past the end of the
+         * reference face) along a steep incident face and lose depth: the
+         * point that came from that vertex becomes the exact contact. */
+        int from = 0;
+        if (nw == 2) {
+            sx_real s0 = sx_dot(nref, sx_sub(inc->v[k[0]], v1));
+            sx_real s1 = sx_dot(nref, sx_sub(inc->v[k[1]], v1));
+            from = s1 < s0 ? 1 : 0;
         }
+        pos[from] = exact->point;
+        depth[from] = exact->depth;
+        deepest = from;
     }
     for (m = 0; m < 2; ++m) {
         for (j = 0; j < nw; ++j) {
             bool keep = m == 0 ? depth[j] >= -margin - slack : j == deepest;
             if (!keep) continue;
-            out[count].point =
-                sx_mul_add(w[j], SX_R(0.5) * (ref->radius - inc->radius - sc[j]), nref);
+            out[count].point = pos[j];
             out[count].depth = sx_maxr(depth[j], -margin);
             out[count].id = SX_FEATURE_ID(i, k[j], flip);
             ++count;
@@ -488,36 +507,42 @@ int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_mani
     sx_sat sat;
     sx_closest cl;
     bool face_contact;
+    sx_manifold_point exact_point;
+    const sx_manifold_point *exact = NULL;
     out->count = 0;
     out->normal = sx_v2_zero();
     if (!sat_run(a, b, limit, &sat)) return 0;
     if (sat.has_axes && sat.sep <= SX_R(0.0)) {
         face_contact = true;
     } else {
+        sx_vec2 n;
         closest_features(a, b, &cl);
         if (!(cl.distance <= limit)) return 0;
+        /* The exact contact of cores apart: on the line between the closest
+         * core points, midway between the surfaces. */
+        n = cl.normal;
+        if (n.x == SX_R(0.0) && n.y == SX_R(0.0)) n = fallback_normal(&sat);
+        exact_point.point =
+            sx_mul_add(sx_lerp(cl.pa, cl.pb, SX_R(0.5)), SX_R(0.5) * (a->radius - b->radius), n);
+        exact_point.depth = sx_maxr(r - cl.distance, -margin);
+        exact_point.id = SX_FEATURE_ID(cl.ia, cl.ib, 0);
+        exact = &exact_point;
         face_contact = (sat.face_a >= 0 || sat.face_b >= 0) &&
                        (cl.kind != SX_CLOSEST_VERTICES ||
                         cl.distance <= sx_maxr(sat.sep_a, sat.sep_b) + SX_FACE_CONTACT_TOLERANCE);
         if (!face_contact) {
-            /* Rounded corner against rounded corner: one point on the line
-             * between the closest core points, midway between the surfaces. */
-            sx_vec2 n = cl.normal;
-            if (n.x == SX_R(0.0) && n.y == SX_R(0.0)) n = fallback_normal(&sat);
+            /* Rounded corner against rounded corner: that one point. */
             out->normal = n;
-            out->points[0].point = sx_mul_add(sx_lerp(cl.pa, cl.pb, SX_R(0.5)),
-                                              SX_R(0.5) * (a->radius - b->radius), n);
-            out->points[0].depth = sx_maxr(r - cl.distance, -margin);
-            out->points[0].id = SX_FEATURE_ID(cl.ia, cl.ib, 0);
+            out->points[0] = exact_point;
             out->count = 1;
             return 1;
         }
     }
     if (sat.face_b >= 0 && (sat.face_a < 0 || sat.sep_b > sat.sep_a + SX_REFERENCE_HYSTERESIS)) {
-        out->count = clip_face(b, sat.face_b, a, margin, true, out->points);
+        out->count = clip_face(b, sat.face_b, a, margin, true, exact, out->points);
         out->normal = sx_neg(b->n[sat.face_b]);
     } else {
-        out->count = clip_face(a, sat.face_a, b, margin, false, out->points);
+        out->count = clip_face(a, sat.face_a, b, margin, false, exact, out->points);
         out->normal = a->n[sat.face_a];
     }
     return out->count;

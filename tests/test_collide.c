@@ -152,6 +152,28 @@ static void circles_separated_touching_and_overlapping(void **state) {
     assert_int_equal(sx_collide(&a, I(), &b, X(2, 0, 0), &m), 1);
     assert_near(m.points[0].depth, 0.0, TOL);
     assert_vec2_near(m.points[0].point, V(1, 0), TOL);
+    /* Speculative: 0.01 apart, reported with a margin of 0.02 only. */
+    assert_int_equal(sx_collide_ex(&a, I(), &b, X(2.01, 0, 0), SX_R(0.02), &m), 1);
+    assert_near(m.points[0].depth, -0.01, TOL);
+    assert_vec2_near(m.points[0].point, V(1.005, 0), TOL);
+    assert_int_equal(sx_collide(&a, I(), &b, X(2.01, 0, 0), &m), 0);
+    assert_int_equal(m.count, 0);
+}
+
+static void swapped_circles_give_exactly_mirrored_answers(void **state) {
+    sx_shape a = circle(0.3, -0.2, 0.7), b = circle(-0.1, 0.4, 0.45);
+    sx_xform xa = X(100.25, -3.5, 0.7), xb = X(100.5, -3.0, -2.1);
+    sx_manifold m1, m2;
+    sx_vec2 v1, v2;
+    (void)state;
+    assert_true(sx_mtv(&a, xa, &b, xb, &v1));
+    assert_true(sx_mtv(&b, xb, &a, xa, &v2));
+    assert_true(v1.x == -v2.x && v1.y == -v2.y);
+    assert_int_equal(sx_collide(&a, xa, &b, xb, &m1), 1);
+    assert_int_equal(sx_collide(&b, xb, &a, xa, &m2), 1);
+    assert_true(m1.normal.x == -m2.normal.x && m1.normal.y == -m2.normal.y);
+    assert_true(m1.points[0].depth == m2.points[0].depth);
+    assert_vec2_near(m1.points[0].point, m2.points[0].point, 1e-4);
 }
 
 static void circles_with_offset_centres_use_the_local_centres(void **state) {
@@ -338,6 +360,23 @@ static void box_circle_face_corner_inside_touching(void **state) {
     assert_int_equal(sx_collide(&bx, I(), &c, X(1.3, 0.2, 0), &m), 1);
     assert_vec2_near(m.points[0].point, V(0.9, 0.2), TOL);
     assert_int_equal(m.points[0].id, SX_FEATURE_ID(1, 0, 0));
+}
+
+static void circle_just_inside_a_face_region_uses_the_exact_face_normal(void **state) {
+    sx_shape bx = box(1, 1), c = circle(0, 0, 0.5);
+    sx_vec2 mtv;
+    sx_manifold m;
+    (void)state;
+    /* The centre projects 5e-5 inside the top face, next to the corner: in
+     * float the squared distances to the face and to the corner round to the
+     * same value; the face's exact normal must win (the corner's direction
+     * would be off by 1.7e-4 rad). */
+    assert_true(sx_mtv(&bx, I(), &c, X(1 - 5e-5, 1.3, 0), &mtv));
+    assert_near(mtv.x, 0.0, 1e-7);
+    assert_near(mtv.y, -0.2, TOL);
+    assert_int_equal(sx_collide(&bx, I(), &c, X(1 - 5e-5, 1.3, 0), &m), 1);
+    assert_vec2_near(m.normal, V(0, 1), 1e-7);
+    assert_vec2_near(m.points[0].point, V(1 - 5e-5, 0.9), TOL);
 }
 
 static void rotated_box_and_point(void **state) {
@@ -586,6 +625,78 @@ static void capsule_end_beyond_the_other_end_keeps_its_full_depth(void **state) 
     check_pair(&a, I(), &b, X(1.05, 0.55, 0), true, V(-depth * dx / d, -depth * dy / d), TOL);
     assert_true(sx_collide(&a, I(), &b, X(1.05, 0.55, 0), &m) >= 1);
     assert_near(deepest(&m), depth, TOL);
+    /* ... and that point lies on the line between the end points, midway
+     * between the surfaces (0.5 out of A's end, 0.1 short of B's). */
+    {
+        int i, k = 0;
+        double ux = dx / d, uy = dy / d, along = 0.5 * (0.5 + d - 0.1);
+        for (i = 1; i < m.count; ++i) {
+            if (m.points[i].depth > m.points[k].depth) k = i;
+        }
+        assert_vec2_near(m.points[k].point, V(1 + along * ux, along * uy), TOL);
+    }
+}
+
+static void wide_box_on_narrow_box_is_clipped_at_both_ends(void **state) {
+    sx_shape narrow = box(0.5, 0.5), wide = box(2, 0.5);
+    sx_manifold m;
+    (void)state;
+    /* The wide box's bottom face reaches past both ends of the narrow box's
+     * top face: both incident points are clipped to the slab. */
+    check_pair(&narrow, I(), &wide, X(0.3, 0.95, 0), true, V(0, -0.05), TOL);
+    assert_int_equal(sx_collide(&narrow, I(), &wide, X(0.3, 0.95, 0), &m), 2);
+    expect_points(&m, 2, V(-0.5, 0.475), V(0.5, 0.475), TOL);
+    assert_near(m.points[0].depth, 0.05, TOL);
+    assert_near(m.points[1].depth, 0.05, TOL);
+    /* Swapped, the wide box's face is A's and the narrow box is incident. */
+    assert_int_equal(sx_collide(&wide, X(0.3, 0.95, 0), &narrow, I(), &m), 2);
+    expect_points(&m, 2, V(-0.5, 0.475), V(0.5, 0.475), TOL);
+    assert_vec2_near(m.normal, V(0, -1), TOL);
+}
+
+static void rounded_corners_nearly_aligned_give_the_exact_corner_contact(void **state) {
+    sx_shape a = rounded_box(1, 1, 0.1), b = rounded_box(1, 1, 0.1);
+    sx_manifold m;
+    double x = 1e-3, g = 0.15, d = sqrt(x * x + g * g);
+    (void)state;
+    /* B's lower-left core corner sits 1e-3 right of and 0.15 above A's
+     * upper-right one: the distance exceeds the face separation by only
+     * 3.3e-6, so it is a face contact on A's top face, but B's bottom face
+     * lies wholly outside that face's slab. The one point is the exact
+     * corner-to-corner contact. */
+    check_pair(&a, I(), &b, X(2 + x, 2 + g, 0), true, V(-(0.2 - d) * x / d, -(0.2 - d) * g / d),
+               TOL);
+    assert_int_equal(sx_collide(&a, I(), &b, X(2 + x, 2 + g, 0), &m), 1);
+    assert_near(m.points[0].depth, 0.2 - d, TOL);
+    assert_vec2_near(m.points[0].point, V(1 + 0.5 * x, 1 + 0.5 * g), TOL);
+}
+
+static void coincident_cores_push_along_a_documented_axis(void **state) {
+    sx_shape k = capsule(0, 0, 0, 0, 1), c = circle(0, 0, 1), bx = box(1, 1);
+    sx_vec2 mtv;
+    sx_manifold m;
+#ifdef SX_DOUBLE
+    double tiny = 1e-15;
+#else
+    double tiny = 1e-6;
+#endif
+    (void)state;
+    /* A point-like capsule on a circle's centre: no direction exists; the
+     * capsule (first in the pair function's order) pushes along its -x. */
+    assert_true(sx_mtv(&k, X(3, 4, PI / 2), &c, X(3, 4, 0), &mtv));
+    assert_vec2_near(mtv, V(0, -2), TOL);
+    assert_true(sx_mtv(&c, X(3, 4, 0), &k, X(3, 4, PI / 2), &mtv));
+    assert_vec2_near(mtv, V(0, 2), TOL);
+    assert_int_equal(sx_collide(&k, X(3, 4, PI / 2), &c, X(3, 4, 0), &m), 1);
+    assert_vec2_near(m.normal, V(0, 1), TOL);
+    assert_near(m.points[0].depth, 2.0, TOL);
+    /* A circle centre a rounding error outside a box corner: the direction
+     * comes from the best separating axis instead of the noisy offset. */
+    assert_true(sx_mtv(&bx, I(), &c, X(1 + tiny, 1 + tiny, 0), &mtv));
+    assert_near(sx_length(mtv), 1.0, 1e-5);
+    assert_true(mtv.x == SX_R(0.0) || mtv.y == SX_R(0.0));
+    assert_int_equal(sx_collide(&bx, I(), &c, X(1 + tiny, 1 + tiny, 0), &m), 1);
+    assert_near(sx_length(m.normal), 1.0, TOL);
 }
 
 /* ---- every pair: both orders through the table and the pair functions --- */
@@ -872,6 +983,7 @@ static void reference_face_does_not_flip_between_nearly_equal_faces(void **state
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(circles_separated_touching_and_overlapping),
+        cmocka_unit_test(swapped_circles_give_exactly_mirrored_answers),
         cmocka_unit_test(circles_with_offset_centres_use_the_local_centres),
         cmocka_unit_test(concentric_circles_push_by_the_sum_of_radii),
         cmocka_unit_test(point_inside_circle_is_pushed_out_radially),
@@ -887,6 +999,7 @@ int main(void) {
         cmocka_unit_test(parallel_capsules_give_two_points),
         cmocka_unit_test(capsules_end_to_end_and_crossed),
         cmocka_unit_test(box_circle_face_corner_inside_touching),
+        cmocka_unit_test(circle_just_inside_a_face_region_uses_the_exact_face_normal),
         cmocka_unit_test(rotated_box_and_point),
         cmocka_unit_test(rounded_polygon_and_circle),
         cmocka_unit_test(box_segment_through_and_resting),
@@ -903,6 +1016,9 @@ int main(void) {
         cmocka_unit_test(identical_shapes_of_every_type_overlap_fully),
         cmocka_unit_test(one_shape_inside_another),
         cmocka_unit_test(capsule_end_beyond_the_other_end_keeps_its_full_depth),
+        cmocka_unit_test(wide_box_on_narrow_box_is_clipped_at_both_ends),
+        cmocka_unit_test(rounded_corners_nearly_aligned_give_the_exact_corner_contact),
+        cmocka_unit_test(coincident_cores_push_along_a_documented_axis),
         cmocka_unit_test(pair_functions_agree_with_the_dispatch_table),
         cmocka_unit_test(every_ordered_pair_is_consistent),
         cmocka_unit_test(random_pairs_are_self_consistent),
