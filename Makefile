@@ -154,10 +154,12 @@ bench-smoke: $(BENCH_BIN)
 # with clang's libFuzzer under ASan + UBSan (the library too, so its branches
 # guide the fuzzer) and runs each for FUZZ_SECONDS on a copy of
 # fuzz/corpus/<h>/. A broken invariant aborts and leaves the input in
-# build/fuzz[-double]/crash-<h>-*. make fuzz-merge adds the inputs a run
-# found that bring new coverage to fuzz/corpus/<h>/ (keep that small).
+# build/fuzz[-double]/crash-<h>-* (FUZZ_FLAGS="-fork=1 -ignore_crashes=1"
+# keeps fuzzing past failures). make fuzz-merge adds the inputs a run found
+# that bring new coverage to fuzz/corpus/<h>/ (keep that small).
 .PHONY: fuzz fuzz-build fuzz-merge deps-fuzz
 FUZZ_SECONDS ?= 60
+FUZZ_FLAGS ?=
 FUZZ_CC ?= clang
 FUZZ_HARNESSES := $(sort $(patsubst fuzz/fuzz_%.c,%,$(wildcard fuzz/fuzz_*.c)))
 FUZZ_OUT := build/fuzz$(if $(filter double,$(SX_REAL)),-double)
@@ -185,11 +187,21 @@ fuzz: $(FUZZ_BINS)
 	  if [ -d fuzz/corpus/$$h ]; then cp fuzz/corpus/$$h/* $$work/ 2>/dev/null; fi; \
 	  log=$(FUZZ_OUT)/$$h.log; \
 	  if ./$(FUZZ_OUT)/fuzz_$$h -max_total_time=$(FUZZ_SECONDS) -max_len=1024 -timeout=10 \
-	       -print_final_stats=1 -artifact_prefix=$(FUZZ_OUT)/crash-$$h- $$work > $$log 2>&1; \
-	  then verdict=clean; else verdict="FAILED (see $$log)"; failed=$$((failed + 1)); fi; \
+	       -print_final_stats=1 -artifact_prefix=$(FUZZ_OUT)/crash-$$h- $(FUZZ_FLAGS) $$work \
+	       > $$log 2>&1; \
+	  then verdict=clean; else failed=$$((failed + 1)); \
+	    verdict="FAILED: $$(grep -m1 -E 'invariant broken|ERROR:|runtime error' $$log | cut -c1-160) (see $$log)"; fi; \
 	  execs=$$(sed -n 's/^stat::number_of_executed_units: *//p' $$log | tail -n 1); \
 	  rate=$$(sed -n 's/^stat::average_exec_per_sec: *//p' $$log | tail -n 1); \
-	  echo "sepax fuzz $$h: $${execs:-?} executions ($${rate:-?}/s) in $(FUZZ_SECONDS) s: $$verdict"; \
+	  last=$$(grep -E '^#[0-9]+:.*crash: ' $$log | tail -n 1); \
+	  if [ -z "$$execs" ] && [ -n "$$last" ]; then \
+	    execs=$$(echo "$$last" | sed 's/^#\([0-9]*\).*/\1/'); \
+	    rate=$$(echo "$$last" | sed 's/.*exec\/s \([0-9]*\).*/\1/'); \
+	    crashes=$$(echo "$$last" | sed 's/.*crash: [0-9]*\/[0-9]*\/\([0-9]*\).*/\1/'); \
+	    if [ "$${crashes:-0}" -gt 0 ]; then failed=$$((failed + 1)); \
+	      verdict="FAILED: $$crashes failing inputs in $(FUZZ_OUT)/crash-$$h-*"; fi; \
+	  fi; \
+	  echo "sepax fuzz $$h: $${execs:-?} executions ($${rate:-?}/s, limit $(FUZZ_SECONDS) s): $$verdict"; \
 	done; \
 	test $$failed -eq 0
 

@@ -71,7 +71,7 @@ static void hull_check_valid_shape(const sx_shape *s) {
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     fz_reader r = fz_reader_make(data, size);
-    sx_vec2 pts[FZ_MAX_POINTS];
+    sx_vec2 pts[FZ_MAX_POINTS] = {{SX_R(0.0), SX_R(0.0)}};
     int count = fz_points(&r, pts, FZ_MAX_POINTS);
     sx_real tol = fz_u8(&r) % 2u ? fz_real(&r) : SX_WELD_TOLERANCE;
     sx_real radius = fz_u8(&r) % 2u ? fz_real(&r) : SX_R(0.0);
