@@ -222,6 +222,71 @@ demo: $(DEMO_BIN)
 
 -include $(ECS_OBJ:.o=.d) $(OUT)/obj/samples/demo.d
 
+# ---- fuzzing -----------------------------------------------------------------
+
+# make fuzz [FUZZ_SECONDS=60] [SX_REAL=double]: builds every fuzz/fuzz_<h>.c
+# with clang's libFuzzer under ASan + UBSan (the library too, so its branches
+# guide the fuzzer) and runs each for FUZZ_SECONDS on a copy of
+# fuzz/corpus/<h>/. A broken invariant aborts and leaves the input in
+# build/fuzz[-double]/crash-<h>-* (FUZZ_FLAGS="-fork=1 -ignore_crashes=1"
+# keeps fuzzing past failures). make fuzz-merge adds the inputs a run found
+# that bring new coverage to fuzz/corpus/<h>/ (keep that small).
+.PHONY: fuzz fuzz-build fuzz-merge deps-fuzz
+FUZZ_SECONDS ?= 60
+FUZZ_FLAGS ?=
+FUZZ_CC ?= clang
+FUZZ_HARNESSES := $(sort $(patsubst fuzz/fuzz_%.c,%,$(wildcard fuzz/fuzz_*.c)))
+FUZZ_OUT := build/fuzz$(if $(filter double,$(SX_REAL)),-double)
+FUZZ_CFLAGS := -std=c99 -O1 -g -ffp-contract=off $(WARNINGS) $(DEFS) -Iinclude -MMD -MP \
+               -fno-omit-frame-pointer -fno-sanitize-recover=all
+FUZZ_LIB_OBJS := $(SRCS:src/%.c=$(FUZZ_OUT)/obj/%.o)
+FUZZ_BINS := $(FUZZ_HARNESSES:%=$(FUZZ_OUT)/fuzz_%)
+
+deps-fuzz:
+	@sh scripts/deps.sh fuzz
+
+$(FUZZ_OUT)/obj/%.o: src/%.c | deps-fuzz
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link,address,undefined -c $< -o $@
+
+$(FUZZ_OUT)/fuzz_%: fuzz/fuzz_%.c $(FUZZ_LIB_OBJS) | deps-fuzz
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer,address,undefined -o $@ $< $(FUZZ_LIB_OBJS) -lm
+
+fuzz-build: $(FUZZ_BINS)
+
+fuzz: $(FUZZ_BINS)
+	@failed=0; \
+	for h in $(FUZZ_HARNESSES); do \
+	  work=$(FUZZ_OUT)/corpus/$$h; rm -rf $$work; mkdir -p $$work; \
+	  if [ -d fuzz/corpus/$$h ]; then cp fuzz/corpus/$$h/* $$work/ 2>/dev/null; fi; \
+	  log=$(FUZZ_OUT)/$$h.log; \
+	  if ./$(FUZZ_OUT)/fuzz_$$h -max_total_time=$(FUZZ_SECONDS) -max_len=1024 -timeout=10 \
+	       -print_final_stats=1 -artifact_prefix=$(FUZZ_OUT)/crash-$$h- $(FUZZ_FLAGS) $$work \
+	       > $$log 2>&1; \
+	  then verdict=clean; else failed=$$((failed + 1)); \
+	    verdict="FAILED: $$(grep -m1 -E 'invariant broken|ERROR:|runtime error' $$log | cut -c1-160) (see $$log)"; fi; \
+	  execs=$$(sed -n 's/^stat::number_of_executed_units: *//p' $$log | tail -n 1); \
+	  rate=$$(sed -n 's/^stat::average_exec_per_sec: *//p' $$log | tail -n 1); \
+	  last=$$(grep -E '^#[0-9]+:.*crash: ' $$log | tail -n 1); \
+	  if [ -z "$$execs" ] && [ -n "$$last" ]; then \
+	    execs=$$(echo "$$last" | sed 's/^#\([0-9]*\).*/\1/'); \
+	    rate=$$(echo "$$last" | sed 's/.*exec\/s \([0-9]*\).*/\1/'); \
+	    crashes=$$(echo "$$last" | sed 's/.*crash: [0-9]*\/[0-9]*\/\([0-9]*\).*/\1/'); \
+	    if [ "$${crashes:-0}" -gt 0 ]; then failed=$$((failed + 1)); \
+	      verdict="FAILED: $$crashes failing inputs in $(FUZZ_OUT)/crash-$$h-*"; fi; \
+	  fi; \
+	  echo "sepax fuzz $$h: $${execs:-?} executions ($${rate:-?}/s, limit $(FUZZ_SECONDS) s): $$verdict"; \
+	done; \
+	test $$failed -eq 0
+
+fuzz-merge: $(FUZZ_BINS)
+	@for h in $(FUZZ_HARNESSES); do \
+	  mkdir -p fuzz/corpus/$$h; \
+	  ./$(FUZZ_OUT)/fuzz_$$h -merge=1 -max_len=1024 fuzz/corpus/$$h $(FUZZ_OUT)/corpus/$$h; \
+	done
+
+-include $(FUZZ_LIB_OBJS:.o=.d) $(FUZZ_BINS:=.d)
+
 # ---- install -----------------------------------------------------------------
 
 install: lib

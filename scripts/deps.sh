@@ -1,6 +1,6 @@
 #!/bin/sh
 # Installs what the build needs when it is missing, idempotently and loudly.
-# Usage: scripts/deps.sh cmocka|box2d|chipmunk ...
+# Usage: scripts/deps.sh cmocka|box2d|chipmunk|fuzz ...
 # As root with apt: installs the Debian package (running apt-get update once if
 # the package is unknown). Otherwise: stops with a message naming the package.
 set -u
@@ -36,6 +36,10 @@ for dep in "$@"; do
     cmocka) have_pkgconfig cmocka || apt_install libcmocka-dev ;;
     box2d) have_header box2d/box2d.h || apt_install libbox2d-dev ;;
     chipmunk) have_header chipmunk/chipmunk.h || apt_install libchipmunk-dev ;;
+    fuzz) # clang and its libFuzzer + sanitizer runtimes (make fuzz)
+        command -v clang >/dev/null 2>&1 || apt_install clang
+        ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-*.a >/dev/null 2>&1 ||
+            apt_install libclang-rt-14-dev ;;
     *) echo "sepax: deps.sh: unknown dependency '$dep'" >&2; exit 2 ;;
     esac
 done
