@@ -61,7 +61,7 @@ TEST_BINS := $(TEST_SRCS:tests/%.c=$(OUT)/tests/%)
 CMOCKA_CFLAGS = $(shell pkg-config --cflags cmocka 2>/dev/null)
 CMOCKA_LIBS = $(shell pkg-config --libs cmocka 2>/dev/null || echo -lcmocka)
 
-.PHONY: all lib test test-run check-headers readme-example deps-test deps-bench install clean bench \
+.PHONY: all lib test test-run check-headers readme-example sample-pyramid deps-test deps-bench install clean bench \
         bench-smoke format format-check
 .DEFAULT_GOAL := all
 .SECONDARY:
@@ -113,7 +113,17 @@ readme-example: $(LIB_A)
 	@./$(README_EXAMPLE) > $(README_EXAMPLE).out
 	@echo "sepax: README example ran: $$(head -c 200 $(README_EXAMPLE).out)"
 
-test: lib check-headers readme-example $(TEST_BINS)
+# The plain-C sample (samples/pyramid.c) is built with the strict flags and
+# run on a small pyramid, so it stays working.
+SAMPLE_PYRAMID := $(OUT)/samples/pyramid
+$(SAMPLE_PYRAMID): samples/pyramid.c $(LIB_A)
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_ALL) -o $@ $< $(LIB_A) $(LDLIBS_ALL)
+sample-pyramid: $(SAMPLE_PYRAMID)
+	@./$(SAMPLE_PYRAMID) 5 1 > $(SAMPLE_PYRAMID).out
+	@echo "sepax: samples/pyramid ran: $$(tail -n 1 $(SAMPLE_PYRAMID).out)"
+
+test: lib check-headers readme-example sample-pyramid $(TEST_BINS)
 	@failed=0; total=0; \
 	for t in $(TEST_BINS); do \
 	  total=$$((total + 1)); \
