@@ -307,6 +307,8 @@ install: lib
 	install -m 644 include/sepax/*.h $(DESTDIR)$(PREFIX)/include/sepax/
 	install -m 644 $(LIB_A) $(DESTDIR)$(PREFIX)/lib/
 	install -m 755 $(LIB_SO) $(DESTDIR)$(PREFIX)/lib/
+	install -d $(DESTDIR)$(PREFIX)/share/sepax/ecs
+	install -m 644 ecs/sepax_flecs.h ecs/sepax_flecs.c $(DESTDIR)$(PREFIX)/share/sepax/ecs/
 	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@CFLAGS@|$(DEFS)|g' \
 	    -e 's|@VERSION@|$(shell sed -n 's/^#define SX_VERSION_\(MAJOR\|MINOR\|PATCH\) \([0-9]*\)/\2/p' include/sepax/base.h | paste -sd.)|g' \
 	    scripts/sepax.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/sepax.pc
