@@ -3,6 +3,7 @@
  * plain world's, the fixed tick and its cap, contact events, writes to the
  * components taking effect, deletion in mid-contact, helpers, reflection,
  * and many entities (leaks are ASan's to find in the SAN=1 build). */
+#include <stdlib.h>
 #include <string.h>
 
 #include "sepax_flecs.h"
@@ -445,6 +446,88 @@ static void impulse_helper_and_mass_override(void **state) {
     ecs_fini(world);
 }
 
+/* ecs_set on SxCollider of a live body swaps its shape: a box resting on
+ * the ground grows from half-extent 0.5 to 1.0 and ends resting 0.5 m
+ * higher, with the new shape's mass. */
+static void setting_a_new_shape_on_a_resting_body_takes_effect(void **state) {
+    ecs_world_t *world = make_world();
+    ecs_entity_t box;
+    SxCollider c;
+    (void)state;
+    add_ground(world);
+    box = add_dynamic(world, sx_v2(SX_R(0.0), SX_R(0.5)), sx_box_shape(SX_R(0.5), SX_R(0.5)));
+    progress(world, 30, 1.0 / 60.0);
+    assert_near(position_of(world, box).y, 0.5, 0.01);
+    c = *ecs_get(world, box, SxCollider);
+    c.shape = sx_box_shape(SX_R(1.0), SX_R(1.0));
+    ecs_set_ptr(world, box, SxCollider, &c); /* now overlapping the ground by 0.5 m */
+    progress(world, 120, 1.0 / 60.0);
+    assert_near(position_of(world, box).y, 1.0, 0.01);
+    assert_near(position_of(world, box).x, 0.0, 1e-3);
+    /* SxBody.mass 0 means "from the colliders": density 1 gives 4 kg now,
+     * so an upward impulse of 4 N s (gravity off) leaves at 1 m/s */
+    set_gravity(world, sx_v2(0, 0));
+    sx_ecs_apply_impulse(world, box, sx_v2(SX_R(0.0), SX_R(4.0)));
+    progress(world, 1, 1.0 / 60.0);
+    assert_near(ecs_get(world, box, SxBody)->velocity.y, 1.0, 1e-4);
+    ecs_fini(world);
+}
+
+/* Two flecs worlds each own their own sepax world: different gravity, and
+ * stepping one leaves the other untouched. */
+static void two_flecs_worlds_step_independently(void **state) {
+    ecs_world_t *a = make_world(), *b = make_world();
+    ecs_entity_t ea, eb;
+    sx_vec2 b_before;
+    (void)state;
+    set_gravity(b, sx_v2(SX_R(0.0), SX_R(-2.0)));
+    ea = add_dynamic(a, sx_v2(0, 0), sx_circle_shape(sx_v2(0, 0), SX_R(0.5)));
+    eb = add_dynamic(b, sx_v2(0, 0), sx_circle_shape(sx_v2(0, 0), SX_R(0.5)));
+    assert_true(sx_ecs_world(a) != sx_ecs_world(b));
+    progress(a, 60, 1.0 / 60.0);
+    assert_vec2_near(position_of(b, eb), sx_v2(0, 0), 0.0);
+    progress(b, 60, 1.0 / 60.0);
+    /* symplectic Euler after n sub-steps of h (4 per 1/60 s step):
+     * y = -g h^2 n (n + 1) / 2 = -g 241 / 480 for n = 240 */
+    assert_near(position_of(a, ea).y, -10.0 * (241.0 / 480.0), 1e-4);
+    assert_near(position_of(b, eb).y, -2.0 * (241.0 / 480.0), 1e-4);
+    b_before = position_of(b, eb);
+    ecs_fini(a); /* destroying one world leaves the other working */
+    progress(b, 1, 1.0 / 60.0);
+    assert_true(position_of(b, eb).y < b_before.y);
+    ecs_fini(b);
+}
+
+/* 10,000 entities (a grid of boxes and balls in free fall, then half of
+ * them deleted): every one steps, and ASan's leak check in the SAN=1 build
+ * sees nothing left behind. */
+static void ten_thousand_entities_step_and_are_deleted_cleanly(void **state) {
+    enum { N = 10000 };
+    ecs_world_t *world = make_world();
+    ecs_entity_t *es = malloc(N * sizeof *es);
+    int i;
+    (void)state;
+    assert_non_null(es);
+    for (i = 0; i < N; ++i) {
+        sx_vec2 p = sx_v2((sx_real)(i % 100) * SX_R(1.5), (sx_real)(i / 100) * SX_R(1.5));
+        sx_shape s =
+            i % 2 ? sx_box_shape(SX_R(0.4), SX_R(0.4)) : sx_circle_shape(sx_v2(0, 0), SX_R(0.4));
+        es[i] = add_dynamic(world, p, s);
+    }
+    progress(world, 3, 1.0 / 60.0);
+    assert_int_equal(sx_world_body_count(sx_ecs_world(world)), N);
+    /* free fall, nothing touches: 12 sub-steps of 1/240 s, -10 h^2 (1 + ... + 12) */
+    for (i = 0; i < N; ++i)
+        assert_near(position_of(world, es[i]).y,
+                    (double)(i / 100) * 1.5 - 10.0 * 78.0 / (240.0 * 240.0), 1e-4);
+    for (i = 0; i < N; i += 2)
+        ecs_delete(world, es[i]);
+    progress(world, 1, 1.0 / 60.0);
+    assert_int_equal(sx_world_body_count(sx_ecs_world(world)), N / 2);
+    free(es);
+    ecs_fini(world);
+}
+
 static void components_are_reflected(void **state) {
     ecs_world_t *world = make_world();
     SxTransform t = {{SX_R(1.5), SX_R(-2.0)}, SX_R(0.5)};
@@ -497,6 +580,9 @@ int main(void) {
         cmocka_unit_test(deleting_entities_in_the_middle_of_contacts_is_safe),
         cmocka_unit_test(bodies_without_colliders_and_colliders_without_bodies_work),
         cmocka_unit_test(impulse_helper_and_mass_override),
+        cmocka_unit_test(setting_a_new_shape_on_a_resting_body_takes_effect),
+        cmocka_unit_test(two_flecs_worlds_step_independently),
+        cmocka_unit_test(ten_thousand_entities_step_and_are_deleted_cleanly),
         cmocka_unit_test(components_are_reflected),
         cmocka_unit_test(many_entities_step_and_go_without_leaks),
     };
