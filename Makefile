@@ -233,7 +233,28 @@ demo: $(DEMO_BIN)
 	@mkdir -p build/demo
 	./$(DEMO_BIN) build/demo/final.svg
 
--include $(ECS_OBJ:.o=.d) $(OUT)/obj/samples/demo.d
+# make bench also measures the module's overhead over the plain world
+# (bench/ecs/overhead.c: the same 10,000-body scene stepped both ways);
+# make bench-ecs runs it alone, bench-smoke runs it for a few steps.
+BENCH_ECS_BIN := $(OUT)/bench/sepax_bench_ecs
+.PHONY: bench-ecs bench-ecs-smoke
+$(OUT)/obj/bench/ecs/overhead.o: bench/ecs/overhead.c ecs/sepax_flecs.h $(FLECS_H)
+	@mkdir -p $(dir $@)
+	$(CC) $(filter-out -O2 -g,$(ECS_CFLAGS)) -O2 -DNDEBUG -c $< -o $@
+
+$(BENCH_ECS_BIN): $(OUT)/obj/bench/ecs/overhead.o $(ECS_OBJ) $(FLECS_OBJ) $(LIB_A)
+	@mkdir -p $(dir $@)
+	$(CC) $(SANFLAGS) -o $@ $< $(ECS_OBJ) $(FLECS_OBJ) $(LIB_A) $(ECS_LIBS)
+
+bench-ecs: $(BENCH_ECS_BIN)
+	./$(BENCH_ECS_BIN) --out $(OUT)/bench
+bench-ecs-smoke: $(BENCH_ECS_BIN)
+	@mkdir -p $(OUT)/bench-smoke
+	./$(BENCH_ECS_BIN) --steps 3 --out $(OUT)/bench-smoke
+bench: bench-ecs
+bench-smoke: bench-ecs-smoke
+
+-include $(ECS_OBJ:.o=.d) $(OUT)/obj/samples/demo.d $(OUT)/obj/bench/ecs/overhead.d
 
 # ---- fuzzing -----------------------------------------------------------------
 

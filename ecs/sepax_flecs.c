@@ -55,16 +55,26 @@ ECS_DECLARE(SxSensorEnd);
 /* What the module created in the world for one entity, and the body
  * parameters it was built with (those without a world setter rebuild it). */
 typedef struct sx_ecs_link {
+    ecs_entity_t entity;
     sx_body_id body;
     sx_collider_id collider;
     bool has_collider;
     bool collider_dirty;
     SxBody built;
+    /* What the world holds, as of the last build, push or copy-out: a
+     * component equal to it was not written by the game, and an unchanged
+     * rotation keeps its angle (no atan2 per resting body and step). */
+    sx_vec2 position, velocity;
+    sx_rot rotation;
+    sx_real angle, angular_velocity;
 } sx_ecs_link;
 
 typedef struct sx_ecs_state {
     sx_world *world;
-    ecs_map_t links;           /* entity -> sx_ecs_link* */
+    /* entity -> link, indexed by the entity's index (its low 32 bits, dense
+     * in flecs): one load per entity and step instead of a hash lookup */
+    sx_ecs_link **links;
+    uint32_t link_cap;
     ecs_entity_t *body_entity; /* by body slot index */
     int32_t body_entity_cap;
     double accumulator;
@@ -76,8 +86,20 @@ typedef struct sx_ecs_state {
 
 /* ---- links ------------------------------------------------------------- */
 
-static sx_ecs_link *sx_ecs_find(sx_ecs_state *st, ecs_entity_t e) {
-    return (sx_ecs_link *)ecs_map_get_ptr(&st->links, e);
+static sx_ecs_link *sx_ecs_find(const sx_ecs_state *st, ecs_entity_t e) {
+    uint32_t index = (uint32_t)e;
+    sx_ecs_link *link = index < st->link_cap ? st->links[index] : NULL;
+    return link != NULL && link->entity == e ? link : NULL;
+}
+
+/* Remembers what the world now holds for the link's body. */
+static void sx_ecs_cache(sx_ecs_link *link, sx_vec2 position, sx_real angle, sx_vec2 velocity,
+                         sx_real angular_velocity) {
+    link->position = position;
+    link->angle = angle;
+    link->rotation = sx_rot_make(angle);
+    link->velocity = velocity;
+    link->angular_velocity = angular_velocity;
 }
 
 static bool sx_ecs_remember_entity(sx_ecs_state *st, sx_body_id body, ecs_entity_t e) {
@@ -130,6 +152,8 @@ static void sx_ecs_build(sx_ecs_state *st, ecs_entity_t e, sx_ecs_link *link, co
     sx_body_def def = sx_default_body_def();
     def.position = t->position;
     def.angle = t->angle;
+    sx_ecs_cache(link, t->position, t->angle, b != NULL ? b->velocity : sx_v2_zero(),
+                 b != NULL ? b->angular_velocity : SX_R(0.0));
     if (b != NULL) {
         def.type = b->type;
         def.linear_velocity = b->velocity;
@@ -152,15 +176,35 @@ static void sx_ecs_build(sx_ecs_state *st, ecs_entity_t e, sx_ecs_link *link, co
     if (c != NULL) sx_ecs_attach(st, link, b, c);
 }
 
+static void sx_ecs_unlink(sx_ecs_state *st, ecs_entity_t e);
+
 static sx_ecs_link *sx_ecs_link_new(sx_ecs_state *st, ecs_entity_t e) {
-    sx_ecs_link *link = (sx_ecs_link *)calloc(1, sizeof(*link));
-    if (link != NULL) ecs_map_insert_ptr(&st->links, e, link);
+    uint32_t index = (uint32_t)e;
+    sx_ecs_link *link;
+    if (index >= st->link_cap) {
+        uint32_t cap = st->link_cap ? st->link_cap : 1024;
+        sx_ecs_link **grown;
+        while (cap <= index)
+            cap *= 2;
+        grown = (sx_ecs_link **)realloc(st->links, (size_t)cap * sizeof(*grown));
+        if (grown == NULL) return NULL;
+        memset(grown + st->link_cap, 0, (size_t)(cap - st->link_cap) * sizeof(*grown));
+        st->links = grown;
+        st->link_cap = cap;
+    }
+    /* a recycled index whose previous entity left without its hooks */
+    if (st->links[index] != NULL) sx_ecs_unlink(st, st->links[index]->entity);
+    link = (sx_ecs_link *)calloc(1, sizeof(*link));
+    if (link == NULL) return NULL;
+    link->entity = e;
+    st->links[index] = link;
     return link;
 }
 
 static void sx_ecs_unlink(sx_ecs_state *st, ecs_entity_t e) {
-    sx_ecs_link *link = (sx_ecs_link *)ecs_map_remove_ptr(&st->links, e);
+    sx_ecs_link *link = sx_ecs_find(st, e);
     if (link == NULL) return;
+    st->links[(uint32_t)e] = NULL;
     if (sx_body_is_valid(st->world, link->body)) {
         if ((int32_t)link->body.index < st->body_entity_cap) st->body_entity[link->body.index] = 0;
         sx_destroy_body(st->world, link->body);
@@ -205,10 +249,10 @@ static void sx_ecs_collider_set(ecs_iter_t *it) {
 
 static void sx_ecs_state_free(void *ctx) {
     sx_ecs_state *st = (sx_ecs_state *)ctx;
-    ecs_map_iter_t mit = ecs_map_iter(&st->links);
-    while (ecs_map_next(&mit))
-        free(ecs_map_ptr(&mit));
-    ecs_map_fini(&st->links);
+    uint32_t i;
+    for (i = 0; i < st->link_cap; ++i)
+        free(st->links[i]);
+    free(st->links);
     sx_world_destroy(st->world);
     free(st->body_entity);
     free(st->contacts);
@@ -228,28 +272,30 @@ static bool sx_ecs_params_differ(const SxBody *a, const SxBody *b) {
 static void sx_ecs_push(sx_ecs_state *st, ecs_entity_t e, sx_ecs_link *link, const SxTransform *t,
                         SxBody *b, const SxCollider *c) {
     sx_world *w = st->world;
-    sx_vec2 p;
     if (b != NULL && sx_ecs_params_differ(b, &link->built)) {
         sx_destroy_body(w, link->body);
         sx_ecs_build(st, e, link, t, b, c);
         return;
     }
-    if (b != NULL && b->type != sx_body_get_type(w, link->body)) {
+    if (b != NULL && b->type != link->built.type) {
         sx_body_set_type(w, link->body, b->type);
         link->built.type = b->type;
     }
-    p = sx_body_get_position(w, link->body);
-    if (t->position.x != p.x || t->position.y != p.y ||
-        t->angle != sx_body_get_angle(w, link->body)) {
+    if (t->position.x != link->position.x || t->position.y != link->position.y ||
+        t->angle != link->angle) {
         sx_body_set_transform(w, link->body, t->position, t->angle);
+        link->position = t->position;
+        link->angle = t->angle;
+        link->rotation = sx_rot_make(t->angle);
     }
     if (b != NULL) {
-        sx_vec2 v = sx_body_get_linear_velocity(w, link->body);
-        if (b->velocity.x != v.x || b->velocity.y != v.y) {
+        if (b->velocity.x != link->velocity.x || b->velocity.y != link->velocity.y) {
             sx_body_set_linear_velocity(w, link->body, b->velocity);
+            link->velocity = b->velocity;
         }
-        if (b->angular_velocity != sx_body_get_angular_velocity(w, link->body)) {
+        if (b->angular_velocity != link->angular_velocity) {
             sx_body_set_angular_velocity(w, link->body, b->angular_velocity);
+            link->angular_velocity = b->angular_velocity;
         }
     }
     if (c != NULL && (!link->has_collider || link->collider_dirty)) {
@@ -355,11 +401,20 @@ static void sx_ecs_copy_out(ecs_iter_t *it) {
     int32_t i;
     for (i = 0; i < it->count; ++i) {
         sx_ecs_link *link = sx_ecs_find(st, it->entities[i]);
+        sx_xform xf;
         if (link == NULL || !sx_body_is_valid(w, link->body)) continue;
-        t[i].position = sx_body_get_position(w, link->body);
-        t[i].angle = sx_body_get_angle(w, link->body);
-        b[i].velocity = sx_body_get_linear_velocity(w, link->body);
-        b[i].angular_velocity = sx_body_get_angular_velocity(w, link->body);
+        xf = sx_body_get_transform(w, link->body);
+        if (xf.q.c != link->rotation.c || xf.q.s != link->rotation.s) {
+            link->rotation = xf.q;
+            link->angle = sx_rot_angle(xf.q);
+        }
+        link->position = xf.p;
+        link->velocity = sx_body_get_linear_velocity(w, link->body);
+        link->angular_velocity = sx_body_get_angular_velocity(w, link->body);
+        t[i].position = link->position;
+        t[i].angle = link->angle;
+        b[i].velocity = link->velocity;
+        b[i].angular_velocity = link->angular_velocity;
         b[i].awake = sx_body_is_awake(w, link->body);
     }
 }
@@ -718,7 +773,6 @@ void SepaxPhysicsImport(ecs_world_t *world) {
     ecs_assert(st != NULL, ECS_OUT_OF_MEMORY, NULL);
     st->world = sx_world_create(&def);
     ecs_assert(st->world != NULL, ECS_OUT_OF_MEMORY, NULL);
-    ecs_map_init(&st->links, NULL);
 
     /* SxBody's hooks own the state: its ctx_free runs after every on_remove */
     ecs_set_hooks(world, SxBody,
