@@ -217,6 +217,9 @@ static void sx_ecs_unlink(sx_ecs_state *st, ecs_entity_t e) {
 static void sx_ecs_body_removed(ecs_iter_t *it) {
     sx_ecs_state *st = (sx_ecs_state *)it->ctx;
     int32_t i;
+    /* ecs_fini: the state's ctx_free destroys the whole world at once, so
+     * destroying body by body (each dropping its contacts) is wasted work */
+    if (ecs_is_fini(it->world)) return;
     /* The collider, if it stays, comes back as static geometry next step. */
     for (i = 0; i < it->count; ++i)
         sx_ecs_unlink(st, it->entities[i]);
@@ -225,6 +228,7 @@ static void sx_ecs_body_removed(ecs_iter_t *it) {
 static void sx_ecs_collider_removed(ecs_iter_t *it) {
     sx_ecs_state *st = (sx_ecs_state *)it->ctx;
     int32_t i;
+    if (ecs_is_fini(it->world)) return; /* as in sx_ecs_body_removed */
     for (i = 0; i < it->count; ++i) {
         ecs_entity_t e = it->entities[i];
         sx_ecs_link *link = sx_ecs_find(st, e);
