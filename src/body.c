@@ -264,19 +264,27 @@ sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *ou
     return SX_OK;
 }
 
-void sx_world_remove_contacts_of(sx_world *world, int collider) {
+/* Drops the contacts of a collider from a list, waking their bodies. */
+static int sx_remove_contacts_from(sx_world *world, sx_contact *list, int count, int collider) {
     int i, n = 0;
-    for (i = 0; i < world->contact_count; ++i) {
-        const sx_contact *c = &world->contacts[i];
+    for (i = 0; i < count; ++i) {
+        const sx_contact *c = &list[i];
         if (c->collider_a == collider || c->collider_b == collider) {
             /* whatever rested on the collider must be able to fall */
             sx_wake_body(world, c->body_a);
             sx_wake_body(world, c->body_b);
             continue;
         }
-        world->contacts[n++] = *c;
+        list[n++] = *c;
     }
-    world->contact_count = n;
+    return n;
+}
+
+void sx_world_remove_contacts_of(sx_world *world, int collider) {
+    world->contact_count =
+        sx_remove_contacts_from(world, world->contacts, world->contact_count, collider);
+    world->frozen_count =
+        sx_remove_contacts_from(world, world->frozen, world->frozen_count, collider);
 }
 
 /* Wakes a body and every body it has a contact with (a static body moved
@@ -284,8 +292,9 @@ void sx_world_remove_contacts_of(sx_world *world, int collider) {
 static void sx_wake_touching(sx_world *world, int slot) {
     int i;
     sx_wake_body(world, slot);
-    for (i = 0; i < world->contact_count; ++i) {
-        const sx_contact *c = &world->contacts[i];
+    for (i = 0; i < world->contact_count + world->frozen_count; ++i) {
+        const sx_contact *c = i < world->contact_count ? &world->contacts[i]
+                                                       : &world->frozen[i - world->contact_count];
         if (c->body_a == slot) sx_wake_body(world, c->body_b);
         if (c->body_b == slot) sx_wake_body(world, c->body_a);
     }
@@ -387,6 +396,7 @@ sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collid
     c->filter = def->filter;
     c->sensor = def->sensor;
     c->alive = true;
+    c->aabb_stale = true;
     c->generation = generation;
     c->body = bslot;
     c->next = -1;
@@ -506,7 +516,7 @@ sx_status sx_body_set_awake(sx_world *world, sx_body_id body, bool awake) {
 /* ---- setters ------------------------------------------------------------ */
 
 sx_status sx_body_set_transform(sx_world *world, sx_body_id body, sx_vec2 position, sx_real angle) {
-    int slot;
+    int slot, c;
     sx_body_sim *sim;
     if (world == NULL) return SX_ERR_INVALID_ARG;
     slot = sx_body_slot(world, body);
@@ -516,6 +526,8 @@ sx_status sx_body_set_transform(sx_world *world, sx_body_id body, sx_vec2 positi
     sx_wake_touching(world, slot);
     sim->xf = sx_xform_make(position, angle);
     sim->center = sx_xform_point(sim->xf, sim->local_center);
+    for (c = world->infos[slot].first_collider; c >= 0; c = world->colliders[c].next)
+        world->colliders[c].aabb_stale = true;
     return SX_OK;
 }
 

@@ -31,6 +31,8 @@ static void sx_union(int *parent, int a, int b) {
 
 static void sx_wake_one(sx_world *world, int slot) {
     world->sims[slot].awake = true;
+    /* its contacts may wait in the frozen store */
+    world->thaw_pending = true;
     world->infos[slot].sleep_time = SX_R(0.0);
     world->infos[slot].island = -1;
 }

@@ -10,6 +10,8 @@
  * (both lists are sorted by pair key, so matching is one merge walk) and by
  * feature id, which carries the accumulated impulses over for warm starting.
  * Buffers only grow; a warmed-up world allocates nothing per step. */
+#include <stdlib.h>
+
 #include "world_internal.h"
 
 sx_world_def sx_default_world_def(void) {
@@ -84,6 +86,8 @@ void sx_world_destroy(sx_world *world) {
     sx_free(world->bp_kind, (size_t)world->kind_capacity);
     sx_free(world->contacts, (size_t)world->contact_capacity * sizeof(sx_contact));
     sx_free(world->old_contacts, (size_t)world->old_contact_capacity * sizeof(sx_contact));
+    sx_free(world->frozen, (size_t)world->frozen_capacity * sizeof(sx_contact));
+    sx_free(world->thaw, (size_t)world->thaw_capacity * sizeof(sx_contact));
     sx_broadphase_free(&world->bp);
     sx_free(world->begin_events, (size_t)world->begin_capacity * sizeof(sx_contact_event));
     sx_free(world->end_events, (size_t)world->end_capacity * sizeof(sx_contact_event));
@@ -221,8 +225,10 @@ static sx_status sx_record_events(sx_world *world) {
             ++i;
             ++j;
         } else if (o == NULL || (n != NULL && n->key < o->key)) {
-            if (!sx_push_event(world, n, &world->begin_events, &world->begin_count,
-                               &world->begin_capacity)) {
+            if (world->contacts[i].thawed) {
+                world->contacts[i].thawed = false;
+            } else if (!sx_push_event(world, n, &world->begin_events, &world->begin_count,
+                                      &world->begin_capacity)) {
                 return SX_ERR_NO_MEMORY;
             }
             ++i;
@@ -267,15 +273,101 @@ static bool sx_reserve_contact(sx_world *world) {
     return ok;
 }
 
-/* Copies the frozen old contacts with keys below `key` into the new list
- * (both lists stay sorted by key). */
-static sx_status sx_carry_frozen(sx_world *world, int *old_index, uint64_t key) {
-    while (*old_index < world->old_contact_count && world->old_contacts[*old_index].key < key) {
-        const sx_contact *o = &world->old_contacts[(*old_index)++];
-        if (!o->frozen) continue;
-        if (!sx_reserve_contact(world)) return SX_ERR_NO_MEMORY;
-        world->contacts[world->contact_count++] = *o;
+/* True when a contact waits for a sleeping dynamic body: the solver skips it
+ * and the broadphase does not find its pair again. */
+static bool sx_contact_sleeps(const sx_world *world, const sx_contact *c) {
+    const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
+    return !sx_contact_is_active(world, c) &&
+           ((a->dynamic && !a->awake) || (b->dynamic && !b->awake));
+}
+
+/* Moves the sleeping contacts of the current list into the frozen store. */
+static sx_status sx_freeze_contacts(sx_world *world) {
+    int i, n = 0;
+    for (i = 0; i < world->contact_count; ++i) {
+        const sx_contact *c = &world->contacts[i];
+        if (sx_contact_sleeps(world, c)) {
+            if (world->frozen_count == world->frozen_capacity) {
+                void *p = world->frozen;
+                bool ok = sx_grow_array(&p, &world->frozen_capacity, world->frozen_count + 1,
+                                        sizeof(sx_contact));
+                world->frozen = (sx_contact *)p;
+                if (!ok) return SX_ERR_NO_MEMORY;
+            }
+            world->frozen[world->frozen_count++] = *c;
+        } else {
+            world->contacts[n++] = *c;
+        }
     }
+    world->contact_count = n;
+    return SX_OK;
+}
+
+static int sx_contact_key_cmp(const void *a, const void *b) {
+    uint64_t ka = ((const sx_contact *)a)->key, kb = ((const sx_contact *)b)->key;
+    return ka < kb ? -1 : (ka > kb ? 1 : 0);
+}
+
+/* True when the sorted list holds a contact with this key. */
+static bool sx_has_key(const sx_contact *list, int count, uint64_t key) {
+    int lo = 0, hi = count;
+    while (lo < hi) {
+        int mid = lo + (hi - lo) / 2;
+        if (list[mid].key < key)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo < count && list[lo].key == key;
+}
+
+/* Moves the frozen contacts that have an awake dynamic body again into the
+ * current list (kept sorted by key), marked `thawed` when asked. A pair the
+ * list already holds keeps the list's contact. */
+static sx_status sx_thaw_contacts(sx_world *world, bool mark) {
+    int i, j, out, n = 0, k = 0;
+    void *p;
+    bool ok;
+    world->thaw_pending = false;
+    world->thaw_count = 0;
+    for (i = 0; i < world->frozen_count; ++i) {
+        const sx_contact *c = &world->frozen[i];
+        if (!sx_contact_is_active(world, c)) {
+            world->frozen[n++] = *c;
+            continue;
+        }
+        if (sx_has_key(world->contacts, world->contact_count, c->key)) continue;
+        if (world->thaw_count == world->thaw_capacity) {
+            p = world->thaw;
+            ok = sx_grow_array(&p, &world->thaw_capacity, world->thaw_count + 1,
+                               sizeof(sx_contact));
+            world->thaw = (sx_contact *)p;
+            if (!ok) return SX_ERR_NO_MEMORY;
+        }
+        world->thaw[world->thaw_count] = *c;
+        world->thaw[world->thaw_count++].thawed = mark;
+    }
+    world->frozen_count = n;
+    k = world->thaw_count;
+    if (k == 0) return SX_OK;
+    /* keys are unique: the order is total and the same on every run */
+    qsort(world->thaw, (size_t)k, sizeof(sx_contact), sx_contact_key_cmp);
+    p = world->contacts;
+    ok = sx_grow_array(&p, &world->contact_capacity, world->contact_count + k, sizeof(sx_contact));
+    world->contacts = (sx_contact *)p;
+    if (!ok) return SX_ERR_NO_MEMORY;
+    /* merge from the back */
+    i = world->contact_count - 1;
+    j = k - 1;
+    out = world->contact_count + k - 1;
+    while (j >= 0) {
+        if (i >= 0 && world->contacts[i].key > world->thaw[j].key) {
+            world->contacts[out--] = world->contacts[i--];
+        } else {
+            world->contacts[out--] = world->thaw[j--];
+        }
+    }
+    world->contact_count += k;
     return SX_OK;
 }
 
@@ -286,23 +378,42 @@ sx_status sx_world_collide(sx_world *world) {
     if (world == NULL) return SX_ERR_INVALID_ARG;
 
     for (i = 0; i < world->collider_slots; ++i) {
-        const sx_collider *c = &world->colliders[i];
+        sx_collider *c = &world->colliders[i];
         const sx_body_sim *b;
+        unsigned char prev = world->bp_kind[i], kind;
         world->bp_kind[i] = 0;
         if (!c->alive || c->sensor || !world->infos[c->body].enabled) continue;
         b = &world->sims[c->body];
         if (b->dynamic) {
-            world->bp_kind[i] = b->awake ? SX_BP_AWAKE : SX_BP_ASLEEP;
+            kind = b->awake ? SX_BP_AWAKE : SX_BP_ASLEEP;
         } else if (b->moving && (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0))) {
-            world->bp_kind[i] = SX_BP_MOVING_KINEMATIC;
+            kind = SX_BP_MOVING_KINEMATIC;
         } else {
-            world->bp_kind[i] = SX_BP_FIXED;
+            kind = SX_BP_FIXED;
         }
-        /* half the margin on each side: bounds meet when the gap < margin */
-        world->aabbs[i] =
-            sx_aabb_fatten(sx_shape_aabb(&c->shape, b->xf), SX_R(0.5) * world->margin);
+        world->bp_kind[i] = kind;
+        /* Bodies the step does not move keep their bounds: they are
+         * recomputed when the body stops (its last move came after the last
+         * bounds), or is teleported (aabb_stale). */
+        if (kind == SX_BP_AWAKE || kind == SX_BP_MOVING_KINEMATIC || kind != prev ||
+            c->aabb_stale) {
+            /* half the margin on each side: bounds meet when the gap < margin */
+            world->aabbs[i] =
+                sx_aabb_fatten(sx_shape_aabb(&c->shape, b->xf), SX_R(0.5) * world->margin);
+            c->aabb_stale = false;
+        }
     }
     s = sx_broadphase_update(&world->bp, world->aabbs, world->bp_kind, world->collider_slots);
+    if (s != SX_OK) return s;
+
+    /* Contacts of sleeping bodies leave the list for the frozen store (the
+     * pile keeps its contacts, reports no end events, and warm-starts when it
+     * wakes); those of bodies woken since the last collide come back. */
+    if (world->thaw_pending) {
+        s = sx_thaw_contacts(world, false);
+        if (s != SX_OK) return s;
+    }
+    s = sx_freeze_contacts(world);
     if (s != SX_OK) return s;
 
     swap = world->old_contacts;
@@ -313,18 +424,6 @@ sx_status sx_world_collide(sx_world *world) {
     world->contact_capacity = cap;
     world->old_contact_count = world->contact_count;
     world->contact_count = 0;
-    /* Contacts of sleeping bodies are not found again (the broadphase skips
-     * their pairs) but carried over as they are, frozen: the pile keeps its
-     * contacts, reports no end events, and warm-starts when it wakes. The
-     * flag is taken before any wake below, so a woken island keeps its
-     * contacts for this collide too. */
-    for (i = 0; i < world->old_contact_count; ++i) {
-        sx_contact *c = &world->old_contacts[i];
-        const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
-        c->frozen = !sx_contact_is_active(world, c) &&
-                    ((a->dynamic && !a->awake) || (b->dynamic && !b->awake));
-    }
-
     for (i = 0; i < world->bp.pair_count; ++i) {
         uint64_t key = world->bp.pairs[i];
         int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), k;
@@ -334,8 +433,8 @@ sx_status sx_world_collide(sx_world *world) {
         sx_contact *c;
         sx_manifold m;
         int n;
-        s = sx_carry_frozen(world, &old_index, key);
-        if (s != SX_OK) return s;
+        while (old_index < world->old_contact_count && world->old_contacts[old_index].key < key)
+            ++old_index;
         if (old_index < world->old_contact_count && world->old_contacts[old_index].key == key) {
             old = &world->old_contacts[old_index++];
         }
@@ -350,6 +449,7 @@ sx_status sx_world_collide(sx_world *world) {
         if (!sx_reserve_contact(world)) return SX_ERR_NO_MEMORY;
         c = &world->contacts[world->contact_count++];
         c->key = key;
+        c->thawed = false;
         c->collider_a = ia;
         c->collider_b = ib;
         c->body_a = ca->body;
@@ -376,24 +476,31 @@ sx_status sx_world_collide(sx_world *world) {
             sx_match_point(p, old);
         }
     }
-    s = sx_carry_frozen(world, &old_index, UINT64_MAX);
-    if (s != SX_OK) return s;
+    /* an awake body touching a sleeping island woke it: its contacts join
+     * this step as they are */
+    if (world->thaw_pending) {
+        s = sx_thaw_contacts(world, true);
+        if (s != SX_OK) return s;
+    }
     s = sx_record_events(world);
     if (s != SX_OK) return s;
     return sx_sensors_update(world);
 }
 
 int sx_world_contact_count(const sx_world *world) {
-    return world == NULL ? 0 : world->contact_count;
+    return world == NULL ? 0 : world->contact_count + world->frozen_count;
 }
 
 sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data *out) {
     const sx_contact *c;
     int k;
-    if (world == NULL || out == NULL || index < 0 || index >= world->contact_count) {
+    if (world == NULL || out == NULL || index < 0 ||
+        index >= world->contact_count + world->frozen_count) {
         return SX_ERR_INVALID_ARG;
     }
-    c = &world->contacts[index];
+    /* the step's contacts first, then those of sleeping bodies */
+    c = index < world->contact_count ? &world->contacts[index]
+                                     : &world->frozen[index - world->contact_count];
     memset(out, 0, sizeof(*out));
     out->collider_a.index = (uint32_t)c->collider_a;
     out->collider_a.generation = world->colliders[c->collider_a].generation;

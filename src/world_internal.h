@@ -62,6 +62,9 @@ typedef struct sx_collider {
     bool alive;
     uint32_t generation;
     int body;      /* slot of the owning body */
+    /* the cached bounds in world->aabbs no longer fit (teleport of a body
+     * the step does not move) */
+    bool aabb_stale;
     int next;      /* next collider of the same body, -1 at the end */
     int next_free; /* free-list link while dead */
     void *user_data;
@@ -96,8 +99,9 @@ typedef struct sx_contact {
      * inverse, when K is well conditioned (block_solve) */
     sx_real k11, k12, k22, inv11, inv12, inv22;
     bool block_solve;
-    /* carried unchanged through collide while its bodies sleep */
-    bool frozen;
+    /* just moved back from the frozen store by a wake during collide: it
+     * existed before, so it reports no begin event */
+    bool thawed;
 } sx_contact;
 
 /* What the broadphase needs to know of a collider. Pairs are reported when
@@ -151,6 +155,12 @@ struct sx_world {
 
     sx_contact *contacts, *old_contacts;
     int contact_count, old_contact_count, contact_capacity, old_contact_capacity;
+    /* Contacts of sleeping bodies, out of the step's list so a sleeping
+     * island costs nothing per step; unordered. A wake sets thaw_pending and
+     * the next collide moves the contacts that have an awake body back. */
+    sx_contact *frozen, *thaw;
+    int frozen_count, frozen_capacity, thaw_count, thaw_capacity;
+    bool thaw_pending;
 
     sx_broadphase bp;
 

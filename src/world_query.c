@@ -138,8 +138,10 @@ sx_status sx_world_draw(const sx_world *world, const sx_debug_draw *draw) {
         if (draw->draw_aabb != NULL) draw->draw_aabb(sx_shape_aabb(&c->shape, xf), draw->context);
     }
     if (draw->draw_contact != NULL) {
-        for (i = 0; i < world->contact_count; ++i) {
-            const sx_contact *c = &world->contacts[i];
+        for (i = 0; i < world->contact_count + world->frozen_count; ++i) {
+            const sx_contact *c = i < world->contact_count
+                                      ? &world->contacts[i]
+                                      : &world->frozen[i - world->contact_count];
             for (k = 0; k < c->count; ++k) {
                 draw->draw_contact(c->points[k].point, c->normal, -c->points[k].separation,
                                    draw->context);
