@@ -114,6 +114,7 @@ void sx_body_sync_origin(sx_body_sim *sim) {
 static void sx_body_refresh_sim(sx_world *world, int slot) {
     sx_body_sim *sim = &world->sims[slot];
     const sx_body_info *info = &world->infos[slot];
+    world->sets_dirty = true;
     sim->dynamic = info->enabled && info->type == SX_BODY_DYNAMIC;
     sim->moving = info->enabled && info->type != SX_BODY_STATIC;
     if (sim->dynamic) {
@@ -309,7 +310,9 @@ static void sx_free_collider_slot(sx_world *world, int slot) {
     c->generation = c->generation == 0xFFFFFFFFu ? 1u : c->generation + 1u;
     c->next_free = world->collider_free;
     world->collider_free = slot;
-    world->bp_kind[slot] = 0;
+    /* bp_kind keeps the old kind: the next refresh of the sets sees the
+     * change and takes the collider out of the broadphase */
+    world->sets_dirty = true;
 }
 
 sx_status sx_destroy_body(sx_world *world, sx_body_id body) {
@@ -327,6 +330,7 @@ sx_status sx_destroy_body(sx_world *world, sx_body_id body) {
     }
     info->first_collider = -1;
     info->alive = false;
+    world->sets_dirty = true;
     info->generation = info->generation == 0xFFFFFFFFu ? 1u : info->generation + 1u;
     info->next_free = world->body_free;
     world->body_free = slot;
@@ -386,6 +390,7 @@ sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collid
         if (!sx_reserve_colliders(world, world->collider_slots + 1)) return SX_ERR_NO_MEMORY;
         slot = world->collider_slots++;
         generation = 1;
+        world->bp_kind[slot] = SX_BP_OUT;
     }
     c = &world->colliders[slot];
     memset(c, 0, sizeof(*c));
@@ -397,12 +402,12 @@ sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collid
     c->sensor = def->sensor;
     c->alive = true;
     c->aabb_stale = true;
+    world->sets_dirty = true;
     c->generation = generation;
     c->body = bslot;
     c->next = -1;
     c->next_free = -1;
     c->user_data = def->user_data;
-    world->bp_kind[slot] = 0;
     /* append, so mass sums run in creation order (deterministic) */
     link = &world->infos[bslot].first_collider;
     while (*link >= 0)
@@ -509,6 +514,7 @@ sx_status sx_body_set_awake(sx_world *world, sx_body_id body, bool awake) {
         sim->v = sx_v2_zero();
         sim->w = SX_R(0.0);
         world->infos[slot].island = -1;
+        world->sets_dirty = true;
     }
     return SX_OK;
 }
@@ -528,6 +534,7 @@ sx_status sx_body_set_transform(sx_world *world, sx_body_id body, sx_vec2 positi
     sim->center = sx_xform_point(sim->xf, sim->local_center);
     for (c = world->infos[slot].first_collider; c >= 0; c = world->colliders[c].next)
         world->colliders[c].aabb_stale = true;
+    world->sets_dirty = true;
     return SX_OK;
 }
 
@@ -540,6 +547,7 @@ sx_status sx_body_set_linear_velocity(sx_world *world, sx_body_id body, sx_vec2 
     if (world->infos[slot].type != SX_BODY_STATIC) {
         sx_wake_body(world, slot);
         world->sims[slot].v = v;
+        world->sets_dirty = true; /* a kinematic body may start or stop */
     }
     return SX_OK;
 }
@@ -556,6 +564,7 @@ sx_status sx_body_set_angular_velocity(sx_world *world, sx_body_id body, sx_real
         (info->type == SX_BODY_DYNAMIC && world->sims[slot].inv_inertia > SX_R(0.0))) {
         sx_wake_body(world, slot);
         world->sims[slot].w = w;
+        world->sets_dirty = true;
     }
     return SX_OK;
 }

@@ -88,6 +88,8 @@ void sx_world_destroy(sx_world *world) {
     sx_free(world->old_contacts, (size_t)world->old_contact_capacity * sizeof(sx_contact));
     sx_free(world->frozen, (size_t)world->frozen_capacity * sizeof(sx_contact));
     sx_free(world->thaw, (size_t)world->thaw_capacity * sizeof(sx_contact));
+    sx_free(world->active_bodies, (size_t)world->active_body_capacity * sizeof(int));
+    sx_free(world->active_colliders, (size_t)world->active_collider_capacity * sizeof(int));
     sx_broadphase_free(&world->bp);
     sx_free(world->begin_events, (size_t)world->begin_capacity * sizeof(sx_contact_event));
     sx_free(world->end_events, (size_t)world->end_capacity * sizeof(sx_contact_event));
@@ -127,18 +129,90 @@ static sx_status sx_check_step(const sx_world *world, sx_real h) {
     return SX_OK;
 }
 
+/* ---- active sets ------------------------------------------------------------ */
+
+static bool sx_push_slot(int **array, int *count, int *capacity, int slot) {
+    if (*count == *capacity) {
+        void *p = *array;
+        bool ok = sx_grow_array(&p, capacity, *count + 1, sizeof(int));
+        *array = (int *)p;
+        if (!ok) return false;
+    }
+    (*array)[(*count)++] = slot;
+    return true;
+}
+
+sx_status sx_world_refresh_sets(sx_world *world) {
+    int i;
+    sx_status s;
+    if (!world->sets_dirty) return SX_OK;
+    world->active_body_count = 0;
+    world->active_collider_count = 0;
+    for (i = 0; i < world->body_slots; ++i) {
+        const sx_body_sim *b = &world->sims[i];
+        if (world->infos[i].alive && b->moving && b->awake &&
+            !sx_push_slot(&world->active_bodies, &world->active_body_count,
+                          &world->active_body_capacity, i)) {
+            return SX_ERR_NO_MEMORY;
+        }
+    }
+    for (i = 0; i < world->collider_slots; ++i) {
+        sx_collider *c = &world->colliders[i];
+        const sx_body_sim *b = &world->sims[c->body];
+        unsigned char prev = world->bp_kind[i], kind = SX_BP_OUT;
+        if (!c->alive || c->sensor || !world->infos[c->body].enabled) {
+            kind = SX_BP_OUT;
+        } else if (b->dynamic) {
+            kind = b->awake ? SX_BP_AWAKE : SX_BP_ASLEEP;
+        } else if (b->moving && (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0))) {
+            kind = SX_BP_MOVING_KINEMATIC;
+        } else {
+            kind = SX_BP_FIXED;
+        }
+        world->bp_kind[i] = kind;
+        if (kind == SX_BP_OUT) {
+            if (prev != SX_BP_OUT) {
+                s = sx_broadphase_touch(&world->bp, i, world->collider_slots);
+                if (s != SX_OK) return s;
+            }
+            continue;
+        }
+        if ((kind == SX_BP_AWAKE || kind == SX_BP_MOVING_KINEMATIC) &&
+            !sx_push_slot(&world->active_colliders, &world->active_collider_count,
+                          &world->active_collider_capacity, i)) {
+            return SX_ERR_NO_MEMORY;
+        }
+        /* Bodies the step does not move keep their bounds: they are
+         * recomputed when the body stops (its last move came after the last
+         * bounds) or is teleported (aabb_stale); collide recomputes the
+         * others. */
+        if (kind != prev || c->aabb_stale) {
+            /* half the margin on each side: bounds meet when the gap < margin */
+            world->aabbs[i] =
+                sx_aabb_fatten(sx_shape_aabb(&c->shape, b->xf), SX_R(0.5) * world->margin);
+            c->aabb_stale = false;
+            s = sx_broadphase_touch(&world->bp, i, world->collider_slots);
+            if (s != SX_OK) return s;
+        }
+    }
+    world->sets_dirty = false;
+    return SX_OK;
+}
+
 /* ---- stage 1: forces ---------------------------------------------------- */
 
 sx_status sx_world_apply_forces(sx_world *world, sx_real h) {
     sx_status s = sx_check_step(world, h);
     sx_vec2 g;
-    int i;
+    int k;
     if (s != SX_OK) return s;
     g = world->def.gravity;
-    for (i = 0; i < world->body_slots; ++i) {
-        sx_body_sim *b = &world->sims[i];
+    s = sx_world_refresh_sets(world);
+    if (s != SX_OK) return s;
+    for (k = 0; k < world->active_body_count; ++k) {
+        sx_body_sim *b = &world->sims[world->active_bodies[k]];
         sx_vec2 accel;
-        if (!world->infos[i].alive || !b->dynamic || !b->awake) continue;
+        if (!b->dynamic || !b->awake) continue;
         accel = sx_add(sx_scale(g, b->gravity_scale), sx_scale(b->force, b->inv_mass));
         b->v = sx_add(sx_mul_add(b->v, h, accel), sx_scale(b->impulse, b->inv_mass));
         b->w = b->w + h * (b->torque * b->inv_inertia) + b->angular_impulse * b->inv_inertia;
@@ -157,10 +231,14 @@ sx_status sx_world_apply_forces(sx_world *world, sx_real h) {
 
 sx_status sx_world_clear_forces(sx_world *world) {
     int i;
+    sx_status s;
     if (world == NULL) return SX_ERR_INVALID_ARG;
-    for (i = 0; i < world->body_slots; ++i) {
-        world->sims[i].force = sx_v2_zero();
-        world->sims[i].torque = SX_R(0.0);
+    /* forces wake their body, so only the active ones hold any */
+    s = sx_world_refresh_sets(world);
+    if (s != SX_OK) return s;
+    for (i = 0; i < world->active_body_count; ++i) {
+        world->sims[world->active_bodies[i]].force = sx_v2_zero();
+        world->sims[world->active_bodies[i]].torque = SX_R(0.0);
     }
     return SX_OK;
 }
@@ -377,33 +455,18 @@ sx_status sx_world_collide(sx_world *world) {
     sx_status s;
     if (world == NULL) return SX_ERR_INVALID_ARG;
 
-    for (i = 0; i < world->collider_slots; ++i) {
-        sx_collider *c = &world->colliders[i];
-        const sx_body_sim *b;
-        unsigned char prev = world->bp_kind[i], kind;
-        world->bp_kind[i] = 0;
-        if (!c->alive || c->sensor || !world->infos[c->body].enabled) continue;
-        b = &world->sims[c->body];
-        if (b->dynamic) {
-            kind = b->awake ? SX_BP_AWAKE : SX_BP_ASLEEP;
-        } else if (b->moving && (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0))) {
-            kind = SX_BP_MOVING_KINEMATIC;
-        } else {
-            kind = SX_BP_FIXED;
-        }
-        world->bp_kind[i] = kind;
-        /* Bodies the step does not move keep their bounds: they are
-         * recomputed when the body stops (its last move came after the last
-         * bounds), or is teleported (aabb_stale). */
-        if (kind == SX_BP_AWAKE || kind == SX_BP_MOVING_KINEMATIC || kind != prev ||
-            c->aabb_stale) {
-            /* half the margin on each side: bounds meet when the gap < margin */
-            world->aabbs[i] =
-                sx_aabb_fatten(sx_shape_aabb(&c->shape, b->xf), SX_R(0.5) * world->margin);
-            c->aabb_stale = false;
-        }
+    s = sx_world_refresh_sets(world);
+    if (s != SX_OK) return s;
+    /* the bounds of the colliders the step moves */
+    for (i = 0; i < world->active_collider_count; ++i) {
+        int slot = world->active_colliders[i];
+        const sx_collider *c = &world->colliders[slot];
+        /* half the margin on each side: bounds meet when the gap < margin */
+        world->aabbs[slot] = sx_aabb_fatten(sx_shape_aabb(&c->shape, world->sims[c->body].xf),
+                                            SX_R(0.5) * world->margin);
     }
-    s = sx_broadphase_update(&world->bp, world->aabbs, world->bp_kind, world->collider_slots);
+    s = sx_broadphase_update(&world->bp, world->aabbs, world->bp_kind, world->collider_slots,
+                             world->active_colliders, world->active_collider_count);
     if (s != SX_OK) return s;
 
     /* Contacts of sleeping bodies leave the list for the frozen store (the
@@ -540,9 +603,11 @@ sx_status sx_world_integrate(sx_world *world, sx_real h) {
     sx_status s = sx_check_step(world, h);
     int i;
     if (s != SX_OK) return s;
-    for (i = 0; i < world->body_slots; ++i) {
-        sx_body_sim *b = &world->sims[i];
-        if (!world->infos[i].alive || !b->moving || !b->awake) continue;
+    s = sx_world_refresh_sets(world);
+    if (s != SX_OK) return s;
+    for (i = 0; i < world->active_body_count; ++i) {
+        sx_body_sim *b = &world->sims[world->active_bodies[i]];
+        if (!b->moving || !b->awake) continue;
         b->center = sx_mul_add(b->center, h, b->v);
         if (b->w != SX_R(0.0)) b->xf.q = sx_rot_integrate(b->xf.q, h * b->w);
         sx_body_sync_origin(b);

@@ -115,9 +115,15 @@ enum {
     SX_BP_ASLEEP            /* dynamic and asleep */
 };
 
-/* Sort-and-sweep broadphase: keeps the colliders ordered by the lower x of
- * their bounds across calls, so the insertion sort is near linear when
- * bodies move a little per step. */
+/* The broadphase (broadphase.c) keeps two sets. The colliders the step
+ * moves (AWAKE, MOVING_KINEMATIC) are swept against each other on x every
+ * call, in an order kept across calls so the insertion sort costs about one
+ * pass. The others (FIXED, ASLEEP) sit in an array sorted by lower x that
+ * changes only when a collider joins or leaves that set or moves while in
+ * it: each moving collider finds its candidates there by binary search,
+ * and the few boxes much wider than the rest are kept on a short list of
+ * their own so they do not make every search long. A sleeping or static
+ * collider costs nothing per call. */
 typedef struct sx_sorted_box {
     sx_aabb box;
     int slot;
@@ -125,7 +131,7 @@ typedef struct sx_sorted_box {
 } sx_sorted_box;
 
 typedef struct sx_broadphase {
-    int *order;
+    int *order; /* moving colliders, by lower x as of the last call */
     int order_count, order_capacity;
     unsigned char *mark; /* scratch, one per collider slot */
     int mark_capacity;
@@ -133,8 +139,21 @@ typedef struct sx_broadphase {
     int pair_count, pair_capacity;
     uint64_t *scratch; /* radix-sort buffer, as large as pairs */
     int scratch_capacity;
-    sx_sorted_box *sorted; /* bounds in sweep order */
+    sx_sorted_box *sorted; /* moving bounds in sweep order */
     int sorted_capacity;
+    sx_sorted_box *fixed, *fixed_next; /* the other set, sorted by lower x */
+    int fixed_count, fixed_capacity, fixed_next_capacity;
+    sx_sorted_box *added; /* scratch: boxes joining the fixed set */
+    int added_count, added_capacity;
+    int *wide; /* indices into fixed of the boxes wider than wide_limit */
+    int wide_count, wide_capacity;
+    sx_real wide_limit;
+    /* collider slots whose fixed-set entry may be out of date: they changed
+     * kind or bounds since the last call (mark[] keeps them unique) */
+    int *touched;
+    int touched_count, touched_capacity;
+    unsigned char *tmark; /* one per collider slot: 1 while in touched */
+    int tmark_capacity;
 } sx_broadphase;
 
 struct sx_world {
@@ -161,6 +180,17 @@ struct sx_world {
     sx_contact *frozen, *thaw;
     int frozen_count, frozen_capacity, thaw_count, thaw_capacity;
     bool thaw_pending;
+
+    /* The bodies the step moves (alive, enabled, and dynamic and awake, or
+     * kinematic) and the colliding colliders of the bodies that are not
+     * fixed (awake dynamic or moving kinematic), both in slot order, so a
+     * sleeping or static body costs nothing per step. Rebuilt by
+     * sx_world_refresh_sets after anything sets sets_dirty: a body woke,
+     * slept, appeared, left, changed type or velocity, or a collider came or
+     * went. */
+    int *active_bodies, *active_colliders;
+    int active_body_count, active_collider_count, active_body_capacity, active_collider_capacity;
+    bool sets_dirty;
 
     sx_broadphase bp;
 
@@ -191,14 +221,23 @@ static inline bool sx_contact_is_active(const sx_world *world, const sx_contact 
  * array is then unchanged). */
 bool sx_grow_array(void **array, int *capacity, int need, size_t size);
 
+/* world.c */
+/* Rebuilds the active sets if sets_dirty, and every collider's broadphase
+ * kind and stale bounds with them. */
+sx_status sx_world_refresh_sets(sx_world *world);
+
 /* broadphase.c */
 void sx_broadphase_init(sx_broadphase *bp);
 void sx_broadphase_free(sx_broadphase *bp);
+/* Notes that a collider changed kind or bounds while not moving (its
+ * fixed-set entry must be redone). */
+sx_status sx_broadphase_touch(sx_broadphase *bp, int slot, int slot_count);
 /* Finds the pairs of colliders whose bounds overlap and whose kinds (SX_BP_*)
- * call for a pair. Fills bp->pairs sorted ascending by key (lower slot in the
+ * call for a pair; `moving` lists the AWAKE and MOVING_KINEMATIC colliders
+ * in slot order. Fills bp->pairs sorted ascending by key (lower slot in the
  * high half). */
 sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const unsigned char *kind,
-                               int slot_count);
+                               int slot_count, const int *moving, int moving_count);
 
 /* contact_solver.c */
 void sx_contacts_prepare(sx_world *world);
