@@ -148,6 +148,7 @@ sx_status sx_world_refresh_sets(sx_world *world) {
     if (!world->sets_dirty) return SX_OK;
     world->active_body_count = 0;
     world->active_collider_count = 0;
+    world->sensor_collider_count = 0;
     for (i = 0; i < world->body_slots; ++i) {
         const sx_body_sim *b = &world->sims[i];
         if (world->infos[i].alive && b->moving && b->awake &&
@@ -170,6 +171,11 @@ sx_status sx_world_refresh_sets(sx_world *world) {
             kind = SX_BP_FIXED;
         }
         world->bp_kind[i] = kind;
+        if (c->alive && c->sensor && world->infos[c->body].enabled &&
+            !sx_push_slot(&world->sensor_colliders, &world->sensor_collider_count,
+                          &world->sensor_collider_capacity, i)) {
+            return SX_ERR_NO_MEMORY;
+        }
         if (kind == SX_BP_OUT) {
             if (prev != SX_BP_OUT) {
                 s = sx_broadphase_touch(&world->bp, i, world->collider_slots);

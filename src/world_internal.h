@@ -190,6 +190,11 @@ struct sx_world {
      * went. */
     int *active_bodies, *active_colliders;
     int active_body_count, active_collider_count, active_body_capacity, active_collider_capacity;
+    /* the sensors of enabled bodies, in slot order (same refresh) */
+    int *sensor_colliders;
+    int sensor_collider_count, sensor_collider_capacity;
+    int *visitors; /* sensor scratch */
+    int visitor_count, visitor_capacity;
     bool sets_dirty;
 
     sx_broadphase bp;
@@ -238,6 +243,11 @@ sx_status sx_broadphase_touch(sx_broadphase *bp, int slot, int slot_count);
  * high half). */
 sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const unsigned char *kind,
                                int slot_count, const int *moving, int moving_count);
+
+/* Appends to *out the slots of the colliders in the broadphase (not OUT)
+ * whose bounds overlap box, in no particular order. */
+sx_status sx_broadphase_query(const sx_broadphase *bp, sx_aabb box, int **out, int *count,
+                              int *capacity);
 
 /* contact_solver.c */
 void sx_contacts_prepare(sx_world *world);

@@ -79,6 +79,33 @@ static int check_pairs(const sx_world *w, const unsigned char *kind) {
     return count;
 }
 
+/* Compares the sensor overlaps with brute force (every sensor against every
+ * collider, the same rules: not itself, not a sensor, not on the same body,
+ * not static against static, default filters). */
+static void check_sensors(const sx_world *w) {
+    int i, j, count = 0;
+    for (i = 0; i < w->collider_slots; ++i) {
+        const sx_collider *s = &w->colliders[i];
+        if (!s->alive || !s->sensor || !w->infos[s->body].enabled) continue;
+        for (j = 0; j < w->collider_slots; ++j) {
+            const sx_collider *c = &w->colliders[j];
+            if (!c->alive || c->sensor || c->body == s->body || !w->infos[c->body].enabled) continue;
+            if (w->infos[c->body].type == SX_BODY_STATIC &&
+                w->infos[s->body].type == SX_BODY_STATIC) {
+                continue;
+            }
+            if (!sx_overlap(&s->shape, w->sims[s->body].xf, &c->shape, w->sims[c->body].xf)) {
+                continue;
+            }
+            assert_true(count < w->sensor_count);
+            assert_true(w->sensor_pairs[count] ==
+                        (((uint64_t)(uint32_t)i << 32) | (uint64_t)(uint32_t)j));
+            ++count;
+        }
+    }
+    assert_int_equal(count, w->sensor_count);
+}
+
 static sx_shape random_shape(sx_test_rng *rng) {
     switch (sx_test_rng_next(rng) % 4u) {
     case 0: return sx_circle_shape(sx_v2_zero(), sx_test_rng_range(rng, 0.2, 0.6));
@@ -109,7 +136,7 @@ static void broadphase_pairs_equal_brute_force_through_sleep_teleport_create_des
     sx_world_def def = sx_default_world_def();
     sx_test_rng rng = sx_test_rng_make(20261123u);
     sx_body_id ids[MAX_IDS];
-    int count = 0, step, sub, i, total_pairs = 0, max_pairs = 0, asleep_seen = 0;
+    int count = 0, step, sub, i, total_pairs = 0, max_pairs = 0, asleep_seen = 0, max_sensed = 0;
     sx_world *w;
     sx_shape ground = sx_box_shape(SX_R(40.0), SX_R(0.5));
     static unsigned char kinds[4 * MAX_IDS];
@@ -125,6 +152,20 @@ static void broadphase_pairs_equal_brute_force_through_sleep_teleport_create_des
     for (i = 0; i < 3; ++i) {
         sx_shape s = sx_box_shape(SX_R(1.0), SX_R(0.2));
         ids[count++] = add(w, SX_BODY_KINEMATIC, sx_v2((sx_real)(-10 + 10 * i), SX_R(3.0)), &s);
+    }
+    {
+        /* sensors: a static zone, one on a kinematic body, one on a dynamic */
+        sx_collider_def cd = sx_default_collider_def();
+        sx_body_id z = add(w, SX_BODY_STATIC, sx_v2(SX_R(5.0), SX_R(2.0)), &ground);
+        cd.sensor = true;
+        cd.shape = sx_box_shape(SX_R(3.0), SX_R(2.0));
+        assert_int_equal(sx_body_add_collider(w, z, &cd, NULL), SX_OK);
+        cd.shape = sx_circle_shape(sx_v2_zero(), SX_R(1.5));
+        assert_int_equal(sx_body_add_collider(w, ids[0], &cd, NULL), SX_OK);
+        assert_int_equal(sx_body_set_linear_velocity(w, ids[0], sx_v2(SX_R(1.0), SX_R(0.0))),
+                         SX_OK);
+        ids[count] = add(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(6.0)), &ground);
+        assert_int_equal(sx_body_add_collider(w, ids[count++], &cd, NULL), SX_OK);
     }
     for (i = 0; i < 150; ++i) {
         sx_shape s = random_shape(&rng);
@@ -194,6 +235,8 @@ static void broadphase_pairs_equal_brute_force_through_sleep_teleport_create_des
                 kinds[k] = expected_kind(w, k);
             assert_int_equal(sx_world_collide(w), SX_OK);
             pairs = check_pairs(w, kinds);
+            check_sensors(w);
+            if (w->sensor_count > max_sensed) max_sensed = w->sensor_count;
             total_pairs += pairs;
             if (pairs > max_pairs) max_pairs = pairs;
             assert_int_equal(sx_world_solve(w, h), SX_OK);
@@ -209,11 +252,13 @@ static void broadphase_pairs_equal_brute_force_through_sleep_teleport_create_des
             }
         }
     }
-    printf("  1500 steps: %d pairs checked (at most %d at once), sleeping bodies in %d steps\n",
-           total_pairs, max_pairs, asleep_seen);
+    printf("  1500 steps: %d pairs checked (at most %d at once), sleeping bodies in %d steps, "
+           "up to %d sensor overlaps\n",
+           total_pairs, max_pairs, asleep_seen, max_sensed);
     /* the scene must exercise what it claims to */
     assert_true(max_pairs > 50);
     assert_true(asleep_seen > 100);
+    assert_true(max_sensed > 3);
     sx_world_destroy(w);
 }
 
