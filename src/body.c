@@ -84,6 +84,7 @@ sx_body_def sx_default_body_def(void) {
     d.angular_damping = SX_R(0.0);
     d.gravity_scale = SX_R(1.0);
     d.fixed_rotation = false;
+    d.enable_sleep = true;
     d.enabled = true;
     d.user_data = NULL;
     return d;
@@ -241,6 +242,7 @@ sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *ou
     info->alive = true;
     info->enabled = def->enabled;
     info->fixed_rotation = def->fixed_rotation;
+    info->enable_sleep = def->enable_sleep;
     info->type = def->type;
     info->user_data = def->user_data;
     info->first_collider = -1;
@@ -517,6 +519,21 @@ sx_status sx_body_set_awake(sx_world *world, sx_body_id body, bool awake) {
         world->sets_dirty = true;
     }
     return SX_OK;
+}
+
+sx_status sx_body_set_sleep_enabled(sx_world *world, sx_body_id body, bool enable) {
+    int slot;
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+    slot = sx_body_slot(world, body);
+    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    world->infos[slot].enable_sleep = enable;
+    if (!enable) sx_wake_body(world, slot);
+    return SX_OK;
+}
+
+bool sx_body_is_sleep_enabled(const sx_world *world, sx_body_id body) {
+    int slot = sx_body_slot(world, body);
+    return slot >= 0 && world->infos[slot].enable_sleep;
 }
 
 /* ---- setters ------------------------------------------------------------ */

@@ -95,7 +95,7 @@ sx_status sx_world_update_sleep(sx_world *world, sx_real dt) {
         parent[i] = i;
         rest[i] = SX_REAL_MAX;
         if (!b->dynamic || !b->awake) continue;
-        if (sx_length_sq(b->v) > lin * lin || sx_absr(b->w) > ang) {
+        if (!info->enable_sleep || sx_length_sq(b->v) > lin * lin || sx_absr(b->w) > ang) {
             info->sleep_time = SX_R(0.0);
         } else {
             info->sleep_time += dt;

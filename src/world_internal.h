@@ -45,6 +45,7 @@ typedef struct sx_body_info {
     bool alive;
     bool enabled;
     bool fixed_rotation;
+    bool enable_sleep;
     sx_body_type type;
     sx_real mass, inertia;
     void *user_data;

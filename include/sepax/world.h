@@ -330,6 +330,10 @@ typedef struct sx_body_def {
     sx_real gravity_scale;    /**< multiplies the world gravity; default 1 */
     bool fixed_rotation;      /**< infinite inertia; default false */
     bool enabled;             /**< false: neither moves nor collides; default true */
+    /** false: the body never sleeps, nor does any island it belongs to (a
+     *  player character); default true. The world's enable_sleep still
+     *  switches sleeping off for every body. */
+    bool enable_sleep;
     void *user_data;          /**< returned by sx_body_get_user_data; default NULL */
 } sx_body_def;
 
@@ -386,6 +390,12 @@ bool sx_body_is_awake(const sx_world *world, sx_body_id body);
  *  one wakes again at the next collide). SX_ERR_INVALID_ARG (NULL),
  *  SX_ERR_STALE_HANDLE. Static and kinematic bodies ignore it (SX_OK). */
 sx_status sx_body_set_awake(sx_world *world, sx_body_id body, bool awake);
+
+/** Allows or forbids sleeping for this body (sx_body_def.enable_sleep);
+ *  forbidding wakes it. SX_ERR_INVALID_ARG (NULL), SX_ERR_STALE_HANDLE. */
+sx_status sx_body_set_sleep_enabled(sx_world *world, sx_body_id body, bool enable);
+/** The body's enable_sleep; false for a stale handle. */
+bool sx_body_is_sleep_enabled(const sx_world *world, sx_body_id body);
 
 /** Teleports the body: its origin to `position`, its angle to `angle`.
  *  Velocities are kept; the body and the bodies it touches wake. SX_ERR_INVALID_ARG (NULL),
