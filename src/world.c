@@ -30,6 +30,7 @@ sx_world_def sx_default_world_def(void) {
     d.sleep_linear_speed = SX_R(0.05) * SX_LENGTH_UNITS_PER_METER;
     d.sleep_angular_speed = SX_R(2.0) / SX_R(180.0) * SX_PI;
     d.time_to_sleep = SX_R(0.5);
+    d.enable_contact_events = true;
     return d;
 }
 
@@ -551,8 +552,13 @@ sx_status sx_world_collide(sx_world *world) {
         s = sx_thaw_contacts(world, true);
         if (s != SX_OK) return s;
     }
-    s = sx_record_events(world);
-    if (s != SX_OK) return s;
+    if (world->def.enable_contact_events) {
+        s = sx_record_events(world);
+        if (s != SX_OK) return s;
+    } else if (world->thaw_count > 0) {
+        for (i = 0; i < world->contact_count; ++i)
+            world->contacts[i].thawed = false;
+    }
     return sx_sensors_update(world);
 }
 

@@ -231,12 +231,41 @@ static void sensors_report_but_never_push(void **state) {
     sx_world_destroy(w);
 }
 
+/* ---- what the world does not use costs nothing -------------------------- */
+
+static void contact_events_are_built_only_when_asked(void **state) {
+    sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(0.5)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    int pass;
+    (void)state;
+    for (pass = 0; pass < 2; ++pass) {
+        sx_world_def def = sx_default_world_def();
+        sx_world *w;
+        int s, begins = 0, contacts = 0;
+        assert_true(def.enable_contact_events);
+        def.enable_contact_events = pass == 0;
+        w = sx_world_create(&def);
+        assert_non_null(w);
+        add_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-0.5)), &ground, true);
+        add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(1.0)), &box, true);
+        for (s = 0; s < 60; ++s) {
+            assert_int_equal(sx_world_step(w, DT), SX_OK);
+            begins += sx_world_get_contact_events(w).begin_count;
+            contacts = sx_world_contact_count(w);
+        }
+        /* the box lands either way; only the events differ */
+        assert_int_equal(contacts, 1);
+        assert_int_equal(begins, pass == 0 ? 1 : 0);
+        sx_world_destroy(w);
+    }
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(sleeping_pyramid_wakes_when_a_ball_hits_it_and_sleeps_again),
         cmocka_unit_test(a_body_with_sleep_off_keeps_its_island_awake),
         cmocka_unit_test(filter_truth_table_decides_every_pair),
         cmocka_unit_test(sensors_report_but_never_push),
+        cmocka_unit_test(contact_events_are_built_only_when_asked),
     };
     return cmocka_run_group_tests_name("islands", tests, sx_test_group_setup,
                                        sx_test_group_teardown);

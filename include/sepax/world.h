@@ -119,6 +119,11 @@ typedef struct sx_world_def {
     /** Seconds a whole island must stay at rest before it sleeps (> 0).
      *  Default 0.5. */
     sx_real time_to_sleep;
+    /** Builds the contact begin/end events each collide (one merge pass over
+     *  the old and new contact lists). false: none are built and
+     *  sx_world_get_contact_events stays empty. Default true. Sensor events
+     *  cost nothing in a world without sensors. */
+    bool enable_contact_events;
 } sx_world_def;
 
 /** The default world settings documented field by field in sx_world_def. */
