@@ -162,7 +162,8 @@ static sx_status sx_update_fixed(sx_broadphase *bp, const sx_aabb *aabbs,
         bp->added[bp->added_count].slot = slot;
         bp->added[bp->added_count++].kind = kind[slot];
     }
-    qsort(bp->added, (size_t)bp->added_count, sizeof(sx_sorted_box), sx_box_cmp);
+    if (bp->added_count > 1)
+        qsort(bp->added, (size_t)bp->added_count, sizeof(sx_sorted_box), sx_box_cmp);
     p = bp->fixed_next;
     ok = sx_grow_array(&p, &bp->fixed_next_capacity, bp->fixed_count + bp->added_count,
                        sizeof(sx_sorted_box));
