@@ -145,11 +145,13 @@ typedef struct sx_impact_body {
     int start, count;
 } sx_impact_body;
 
-/* Per contact, for the impact pass: the time of impact within the sub-step
- * and the position in the heap (-1: not queued, -2: already resolved). */
+/* Per contact, for the impact pass: the time of impact within the sub-step,
+ * the position in the heap (-1: not queued) and how many times the pass
+ * resolved it in this sub-step. */
 typedef struct sx_impact_contact {
     sx_real time;
     int where;
+    int count;
 } sx_impact_contact;
 
 struct sx_world {
@@ -184,9 +186,9 @@ struct sx_world {
     int sensor_begin_count, sensor_begin_capacity, sensor_end_count, sensor_end_capacity;
 
     /* scratch of the impact pass (contact_solver.c), grown on demand */
-    sx_impact_body *impact_bodies; /* per body slot */
-    int *impact_adjacency;         /* contact indices grouped by body */
-    int *impact_heap;              /* contact indices ordered by (time, index) */
+    sx_impact_body *impact_bodies;      /* per body slot */
+    int *impact_adjacency;              /* contact indices grouped by body */
+    int *impact_heap;                   /* contact indices ordered by (time, index) */
     sx_impact_contact *impact_contacts; /* per contact */
     int impact_body_capacity, impact_adjacency_capacity, impact_heap_capacity;
     int impact_contact_capacity;

@@ -95,8 +95,9 @@ typedef struct sx_world_def {
      *  instead of in one jump. Default 3 m/s (> 0). */
     sx_real max_correction_speed;
     /** Approach speed (m/s) below which contacts do not bounce: restitution
-     *  only applies to impacts faster than this, so resting bodies do not
-     *  jitter. Default 1 m/s (>= 0). */
+     *  only applies to impacts at this speed or faster (to round-off: an
+     *  approach within 1e-4 of it, relative, counts as equal), so resting
+     *  bodies do not jitter. Default 1 m/s (>= 0). */
     sx_real restitution_threshold;
     /** Speculative contact margin in units of the linear slop (>= 0): shapes
      *  closer than this get contact points before they touch, and the solver
