@@ -421,6 +421,70 @@ static void cradle_is_bit_identical_when_run_twice(void **state) {
     assert_memory_equal(&ke1, &ke2, sizeof(ke1));
 }
 
+/* The impulse of an impact is reported apart from the iterations' impulses:
+ * two equal balls touching, the first at 1 m/s, e = 1: the impact pass
+ * gives (1 + e) m_eff v = m, and the iterations nothing (the balls part). */
+static void impact_impulse_is_reported_apart_from_the_iterations(void **state) {
+    sx_world_def def = cradle_def();
+    sx_world *w = sx_world_create(&def);
+    sx_shape ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    sx_body_id a, b;
+    sx_contact_data c;
+    double m;
+    (void)state;
+    assert_non_null(w);
+    a = add_body(w, SX_BODY_DYNAMIC, sx_v2_zero(), SX_R(0.0), &ball, SX_R(1.0), SX_R(0.0),
+                 SX_R(1.0));
+    b = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(1.0), SX_R(0.0)), SX_R(0.0), &ball, SX_R(1.0),
+                 SX_R(0.0), SX_R(1.0));
+    assert_int_equal(sx_body_set_linear_velocity(w, a, sx_v2(SX_R(1.0), SX_R(0.0))), SX_OK);
+    assert_int_equal(sx_world_collide(w), SX_OK);
+    assert_int_equal(sx_world_solve(w, DT), SX_OK);
+    assert_int_equal(sx_world_contact_count(w), 1);
+    assert_int_equal(sx_world_get_contact(w, 0, &c), SX_OK);
+    m = (double)sx_body_get_mass(w, a);
+    assert_near(c.impact_impulses[0], m, 1e-5 * m);
+    assert_near(c.normal_impulses[0], 0.0, 1e-9);
+    assert_near(sx_body_get_linear_velocity(w, b).x, 1.0, 1e-6);
+    assert_near(sx_body_get_linear_velocity(w, a).x, 0.0, 1e-6);
+    sx_world_destroy(w);
+}
+
+/* A ball jammed between two walls, touching both, at 5 m/s, e = 1: every
+ * impact sends it straight into the other wall at time 0. The pass resolves
+ * each contact at most SX_IMPACTS_PER_CONTACT times per sub-step, so the
+ * step ends; the rest is left to the iterations, which stop the ball (no
+ * energy is ever gained, nothing escapes). */
+static void ball_jammed_between_two_walls_ends_the_step_and_gains_no_energy(void **state) {
+    sx_world_def def = cradle_def();
+    sx_world *w = sx_world_create(&def);
+    sx_shape ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    sx_shape wall = sx_box_shape(SX_R(0.5), SX_R(2.0));
+    sx_body_id b;
+    double v0 = 5.0, vmax = 0.0;
+    int s;
+    (void)state;
+    assert_non_null(w);
+    add_body(w, SX_BODY_STATIC, sx_v2(SX_R(-1.0), SX_R(0.0)), SX_R(0.0), &wall, SX_R(0.0),
+             SX_R(0.0), SX_R(1.0));
+    add_body(w, SX_BODY_STATIC, sx_v2(SX_R(1.0), SX_R(0.0)), SX_R(0.0), &wall, SX_R(0.0), SX_R(0.0),
+             SX_R(1.0));
+    b = add_body(w, SX_BODY_DYNAMIC, sx_v2_zero(), SX_R(0.0), &ball, SX_R(1.0), SX_R(0.0),
+                 SX_R(1.0));
+    assert_int_equal(sx_body_set_linear_velocity(w, b, sx_v2((sx_real)v0, SX_R(0.0))), SX_OK);
+    for (s = 0; s < 60; ++s) {
+        double v;
+        step_n(w, 1);
+        v = (double)sx_length(sx_body_get_linear_velocity(w, b));
+        if (v > vmax) vmax = v;
+    }
+    printf("  ball jammed between walls at 5 m/s: largest speed after a step %.4f m/s, x %.5f\n",
+           vmax, (double)sx_body_get_position(w, b).x);
+    assert_true(vmax <= v0 * (1.0 + 1e-5));
+    assert_near(sx_body_get_position(w, b).x, 0.0, 0.01);
+    sx_world_destroy(w);
+}
+
 /* ---- zero-gravity pile-up ------------------------------------------------- */
 
 static void pileup_conserves_momentum_and_never_gains_energy(void **state) {
@@ -838,6 +902,8 @@ int main(void) {
         cmocka_unit_test(cradle_of_touching_balls_passes_the_speed_to_the_last_ball),
         cmocka_unit_test(cradle_with_two_moving_balls_sends_two_away),
         cmocka_unit_test(cradle_is_bit_identical_when_run_twice),
+        cmocka_unit_test(impact_impulse_is_reported_apart_from_the_iterations),
+        cmocka_unit_test(ball_jammed_between_two_walls_ends_the_step_and_gains_no_energy),
         cmocka_unit_test(pileup_conserves_momentum_and_never_gains_energy),
         cmocka_unit_test(pyramid_of_base_20_stands_for_10_seconds),
         cmocka_unit_test(heavy_box_on_light_box_penetrates_less_than_five_slops),

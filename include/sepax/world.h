@@ -152,8 +152,9 @@ sx_real sx_world_linear_slop(const sx_world *world);
  *  separate with h = dt / sub_steps, then clear_forces and update_sleep(dt).
  *  Errors, with the world left
  *  untouched: SX_ERR_INVALID_ARG (NULL world, dt <= 0), SX_ERR_NONFINITE (dt
- *  NaN or infinite). SX_ERR_NO_MEMORY: the contact list could not grow; the
- *  step stops after the stages already run. */
+ *  NaN or infinite). SX_ERR_NO_MEMORY: the contact list or the impact
+ *  pass's scratch could not grow; the step stops after the stages already
+ *  run. */
 sx_status sx_world_step(sx_world *world, sx_real dt);
 
 /** Stage 1: for every enabled, awake dynamic body, v += h (gravity x gravity_scale +
