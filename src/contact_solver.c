@@ -55,7 +55,6 @@ void sx_contacts_prepare(sx_world *world) {
             p->tangent_mass = kt > SX_R(0.0) ? SX_R(1.0) / kt : SX_R(0.0);
             p->gap = p->separation;
             p->impact_impulse = SX_R(0.0);
-            p->impact_tangent_impulse = SX_R(0.0);
             /* warm start with last sub-step's accumulated impulses */
             impulse = sx_add(sx_scale(n, p->normal_impulse), sx_scale(t, p->tangent_impulse));
             a->v = sx_mul_sub(a->v, ma, impulse);
@@ -331,7 +330,7 @@ static void sx_resolve_impact(sx_world *world, sx_contact *c, sx_real h, sx_real
     sx_vec2 n = c->normal, tangent = sx_cross_vs(n, SX_R(1.0));
     sx_vec2 va = a->v, vb = b->v, va0 = a->v, vb0 = b->v;
     sx_real wa = a->w, wb = b->w, wa0 = a->w, wb0 = b->w;
-    sx_real bias[2] = {SX_R(0.0), SX_R(0.0)};
+    sx_real bias[2] = {SX_R(0.0), SX_R(0.0)}, x[2] = {SX_R(0.0), SX_R(0.0)};
     bool closing[2] = {false, false}, solved = false;
     int k;
     for (k = 0; k < c->count; ++k) {
@@ -344,12 +343,9 @@ static void sx_resolve_impact(sx_world *world, sx_contact *c, sx_real h, sx_real
         bias[k] = vn - (approach >= threshold ? e : SX_R(0.0)) * approach;
     }
     if (c->count == 2 && closing[0] && closing[1] && c->block_solve) {
-        sx_real x1, x2;
-        if (sx_solve_lcp2(c, bias[0], bias[1], &x1, &x2)) {
-            sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, &c->points[0], sx_scale(n, x1));
-            sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, &c->points[1], sx_scale(n, x2));
-            c->points[0].impact_impulse = x1;
-            c->points[1].impact_impulse = x2;
+        if (sx_solve_lcp2(c, bias[0], bias[1], &x[0], &x[1])) {
+            sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, &c->points[0], sx_scale(n, x[0]));
+            sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, &c->points[1], sx_scale(n, x[1]));
             solved = true;
         }
     }
@@ -358,26 +354,23 @@ static void sx_resolve_impact(sx_world *world, sx_contact *c, sx_real h, sx_real
          * each a single Newton impact on the current velocities */
         for (k = 0; k < c->count; ++k) {
             sx_contact_point *p = &c->points[k];
-            sx_real approach, x;
+            sx_real approach;
             if (!closing[k]) continue;
             approach = -sx_point_speed(va, wa, vb, wb, p, n);
             if (!(approach > SX_R(0.0))) continue;
-            x = p->normal_mass * (SX_R(1.0) + (approach >= threshold ? e : SX_R(0.0))) * approach;
-            sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p, sx_scale(n, x));
-            p->impact_impulse = x;
+            x[k] =
+                p->normal_mass * (SX_R(1.0) + (approach >= threshold ? e : SX_R(0.0))) * approach;
+            sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p, sx_scale(n, x[k]));
         }
     }
-    if (c->friction > SX_R(0.0)) {
-        for (k = 0; k < c->count; ++k) {
-            sx_contact_point *p = &c->points[k];
-            sx_real limit = c->friction * p->impact_impulse;
-            sx_real lambda;
-            if (!(limit > SX_R(0.0))) continue;
-            lambda = -p->tangent_mass * sx_point_speed(va, wa, vb, wb, p, tangent);
-            lambda = sx_clampr(lambda, -limit, limit);
-            sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p, sx_scale(tangent, lambda));
-            p->impact_tangent_impulse = lambda;
-        }
+    for (k = 0; k < c->count; ++k) {
+        sx_contact_point *p = &c->points[k];
+        sx_real limit = c->friction * x[k], lambda;
+        p->impact_impulse += x[k];
+        if (!(limit > SX_R(0.0))) continue;
+        lambda = -p->tangent_mass * sx_point_speed(va, wa, vb, wb, p, tangent);
+        lambda = sx_clampr(lambda, -limit, limit);
+        sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p, sx_scale(tangent, lambda));
     }
     /* until t the bodies moved with their old velocities */
     sa->shift = sx_mul_sub(sa->shift, t, sx_sub(va, va0));

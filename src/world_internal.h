@@ -78,9 +78,9 @@ typedef struct sx_contact_point {
     sx_real gap;
     /* accumulated impulses of the velocity iterations (warm started) */
     sx_real normal_impulse, tangent_impulse;
-    /* impulses of this sub-step's impact pass: kept apart, so the clamping of
-     * the iterations cannot take the rebound back */
-    sx_real impact_impulse, impact_tangent_impulse;
+    /* normal impulse of this sub-step's impact pass: kept apart, so the
+     * clamping of the iterations cannot take the rebound back */
+    sx_real impact_impulse;
     sx_real normal_mass, tangent_mass;
     uint32_t id;
 } sx_contact_point;

@@ -169,6 +169,37 @@ static void box_landing_flat_bounces_straight_without_spin(void **state) {
     assert_true(spin < 1e-3);
 }
 
+/* Friction acts during an impact, on the impact's own normal impulse: a disc
+ * (r 0.5) hitting the ground at vx = 5, vy = -5 m/s with e = 0.5, mu = 0.6,
+ * no gravity. The normal impulse is J = (1 + e) m 5 = 7.5 m; stopping the
+ * slip takes m 5 / 3 (a disc: 1/m + r^2/I = 3/m), within mu J, so the disc
+ * leaves rolling: vx = 5 - 5/3 = 3.333 m/s, w r = -vx, vy = 2.5 m/s, and
+ * has lost energy. */
+static void oblique_impact_with_friction_leaves_rolling(void **state) {
+    sx_world *w = make_world(sx_v2_zero());
+    sx_shape ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    sx_body_id b;
+    sx_vec2 v;
+    double om, ke0 = 0.5 * 50.0, ke;
+    (void)state;
+    add_ground(w, SX_R(10.0), SX_R(0.6));
+    b = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-3.0), SX_R(1.0)), SX_R(0.0), &ball, SX_R(1.0),
+                 SX_R(0.6), SX_R(0.5));
+    assert_int_equal(sx_body_set_linear_velocity(w, b, sx_v2(SX_R(5.0), SX_R(-5.0))), SX_OK);
+    step_n(w, 30);
+    v = sx_body_get_linear_velocity(w, b);
+    om = (double)sx_body_get_angular_velocity(w, b);
+    ke = 0.5 * ((double)sx_dot(v, v) + 0.125 * om * om); /* per kg: I / m = r^2 / 2 */
+    printf("  oblique impact: v (%.4f, %.4f) m/s, w r %.4f m/s (rolling: -vx), energy %.3f of %.3f "
+           "J/kg\n",
+           (double)v.x, (double)v.y, 0.5 * om, ke, ke0);
+    assert_near(v.x, 5.0 - 5.0 / 3.0, 0.01 * 5.0);
+    assert_near(v.y, 2.5, 0.02 * 2.5);
+    assert_near(0.5 * om, -(double)v.x, 0.01 * 5.0);
+    assert_true(ke < ke0);
+    sx_world_destroy(w);
+}
+
 /* ---- incline ------------------------------------------------------------- */
 
 #define INCLINE_ANGLE 0.25
@@ -892,6 +923,7 @@ int main(void) {
         cmocka_unit_test(bounce_with_zero_restitution_stays_on_the_ground),
         cmocka_unit_test(bounce_height_does_not_depend_on_the_sub_step_count),
         cmocka_unit_test(box_landing_flat_bounces_straight_without_spin),
+        cmocka_unit_test(oblique_impact_with_friction_leaves_rolling),
         cmocka_unit_test(incline_box_sticks_when_friction_exceeds_tangent),
         cmocka_unit_test(incline_box_slides_with_coulomb_acceleration),
         cmocka_unit_test(incline_friction_mixes_as_geometric_mean),
