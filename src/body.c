@@ -238,6 +238,10 @@ sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *ou
     info = &world->infos[slot];
     memset(sim, 0, sizeof(*sim));
     memset(info, 0, sizeof(*info));
+    /* a reused slot must not inherit an impact correction still pending */
+    if (slot < world->impact_body_capacity) {
+        memset(&world->impact_bodies[slot], 0, sizeof(world->impact_bodies[slot]));
+    }
     info->generation = generation;
     info->alive = true;
     info->enabled = def->enabled;

@@ -92,6 +92,7 @@ void sx_world_destroy(sx_world *world) {
     sx_free(world->active_bodies, (size_t)world->active_body_capacity * sizeof(int));
     sx_free(world->active_colliders, (size_t)world->active_collider_capacity * sizeof(int));
     sx_broadphase_free(&world->bp);
+    sx_contacts_free(world);
     sx_free(world->begin_events, (size_t)world->begin_capacity * sizeof(sx_contact_event));
     sx_free(world->end_events, (size_t)world->end_capacity * sizeof(sx_contact_event));
     sx_sensors_free(world);
@@ -257,21 +258,17 @@ static bool sx_filters_collide(const sx_filter *a, const sx_filter *b) {
     return (a->category & b->mask) != 0 && (b->category & a->mask) != 0;
 }
 
-/* Copies the warm-starting impulses (and a deferred impact) of the old
- * contact's point with the same feature id, if any. */
+/* Copies the warm-starting impulses of the old contact's point with the
+ * same feature id, if any. */
 static void sx_match_point(sx_contact_point *p, const sx_contact *old) {
     int k;
     p->normal_impulse = SX_R(0.0);
     p->tangent_impulse = SX_R(0.0);
-    p->pending_approach = SX_R(0.0);
-    p->pending_impulse = SX_R(0.0);
     if (old == NULL) return;
     for (k = 0; k < old->count; ++k) {
         if (old->points[k].id == p->id) {
             p->normal_impulse = old->points[k].normal_impulse;
             p->tangent_impulse = old->points[k].tangent_impulse;
-            p->pending_approach = old->points[k].pending_approach;
-            p->pending_impulse = old->points[k].pending_impulse;
             return;
         }
     }
@@ -592,6 +589,7 @@ sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data
         out->depths[k] = -c->points[k].separation;
         out->normal_impulses[k] = c->points[k].normal_impulse;
         out->tangent_impulses[k] = c->points[k].tangent_impulse;
+        out->impact_impulses[k] = c->points[k].impact_impulse;
     }
     return SX_OK;
 }
@@ -600,13 +598,16 @@ sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data
 
 sx_status sx_world_solve(sx_world *world, sx_real h) {
     sx_status s = sx_check_step(world, h);
+    bool impacts;
     int it;
     if (s != SX_OK) return s;
     sx_contacts_prepare(world);
+    /* restitution first, impact by impact in time order (contact_solver.c
+     * says why); the iterations then solve what rests and slides */
+    impacts = sx_contacts_impacts(world, h);
     for (it = 0; it < world->def.velocity_iterations; ++it)
         sx_contacts_solve(world, h);
-    sx_contacts_restitution(world);
-    return SX_OK;
+    return impacts ? SX_OK : SX_ERR_NO_MEMORY;
 }
 
 /* ---- stage 4: integrate -------------------------------------------------- */
@@ -624,6 +625,8 @@ sx_status sx_world_integrate(sx_world *world, sx_real h) {
         if (b->w != SX_R(0.0)) b->xf.q = sx_rot_integrate(b->xf.q, h * b->w);
         sx_body_sync_origin(b);
     }
+    /* the time-of-impact corrections of this sub-step's impacts */
+    sx_contacts_apply_impact_shifts(world);
     return SX_OK;
 }
 
@@ -649,7 +652,8 @@ sx_status sx_world_step(sx_world *world, sx_real dt) {
         sx_world_apply_forces(world, h);
         s = sx_world_collide(world);
         if (s != SX_OK) return s;
-        sx_world_solve(world, h);
+        s = sx_world_solve(world, h);
+        if (s != SX_OK) return s;
         sx_world_integrate(world, h);
         sx_world_separate(world, h);
     }

@@ -76,14 +76,16 @@ typedef struct sx_contact_point {
     sx_vec2 local_a, local_b;   /* each surface point in its body frame */
     sx_vec2 point;              /* midway point at collide time, world */
     sx_real separation;         /* at collide time: < 0 overlap, > 0 gap */
-    sx_real normal_impulse, tangent_impulse, max_normal_impulse;
+    /* the separation the velocity iterations aim at: `separation` at the
+     * start positions shifted by the impacts of this sub-step (see
+     * sx_contacts_impacts) */
+    sx_real gap;
+    /* accumulated impulses of the velocity iterations (warm started) */
+    sx_real normal_impulse, tangent_impulse;
+    /* normal impulse of this sub-step's impact pass: kept apart, so the
+     * clamping of the iterations cannot take the rebound back */
+    sx_real impact_impulse;
     sx_real normal_mass, tangent_mass;
-    sx_real relative_velocity; /* normal velocity before the solve */
-    /* approach velocity (< 0) of an impact deferred by a speculative point to
-     * the sub-step in which it touches; 0 when none */
-    sx_real pending_approach;
-    /* the normal impulse that stopped that deferred impact */
-    sx_real pending_impulse;
     uint32_t id;
 } sx_contact_point;
 
@@ -157,6 +159,25 @@ typedef struct sx_broadphase {
     int tmark_capacity;
 } sx_broadphase;
 
+/* Per body, for the impact pass: the position and angle correction that
+ * puts the body where its piecewise-linear motion through this sub-step's
+ * impacts ends (applied by sx_world_integrate), and its slice of the
+ * contact adjacency. */
+typedef struct sx_impact_body {
+    sx_vec2 shift;
+    sx_real turn;
+    int start, count;
+} sx_impact_body;
+
+/* Per contact, for the impact pass: the time of impact within the sub-step,
+ * the position in the heap (-1: not queued) and how many times the pass
+ * resolved it in this sub-step. */
+typedef struct sx_impact_contact {
+    sx_real time;
+    int where;
+    int count;
+} sx_impact_contact;
+
 struct sx_world {
     sx_world_def def;
     sx_real linear_slop;
@@ -210,6 +231,17 @@ struct sx_world {
     sx_sensor_event *sensor_begin, *sensor_end;
     int sensor_begin_count, sensor_begin_capacity, sensor_end_count, sensor_end_capacity;
 
+    /* scratch of the impact pass (contact_solver.c), grown on demand */
+    sx_impact_body *impact_bodies;      /* per body slot */
+    int *impact_adjacency;              /* contact indices grouped by body */
+    int *impact_heap;                   /* contact indices ordered by (time, index) */
+    sx_impact_contact *impact_contacts; /* per contact */
+    int impact_body_capacity, impact_adjacency_capacity, impact_heap_capacity;
+    int impact_contact_capacity;
+    /* true between an impact pass that moved bodies and the integrate that
+     * applies the moves */
+    bool impact_shifts_pending;
+
     int *island_parent; /* union-find scratch, per body slot */
     sx_real *island_time;
     int parent_capacity, time_capacity;
@@ -252,8 +284,14 @@ sx_status sx_broadphase_query(const sx_broadphase *bp, sx_aabb box, int **out, i
 
 /* contact_solver.c */
 void sx_contacts_prepare(sx_world *world);
+/* The impact pass (restitution): false when its scratch could not grow (the
+ * pass is then skipped). */
+bool sx_contacts_impacts(sx_world *world, sx_real h);
 void sx_contacts_solve(sx_world *world, sx_real h);
-void sx_contacts_restitution(sx_world *world);
+/* Moves the bodies by the corrections of the last impact pass and clears
+ * them (called by sx_world_integrate). */
+void sx_contacts_apply_impact_shifts(sx_world *world);
+void sx_contacts_free(sx_world *world);
 void sx_contacts_separate(sx_world *world, sx_real h);
 
 /* sensor.c */

@@ -95,8 +95,9 @@ typedef struct sx_world_def {
      *  instead of in one jump. Default 3 m/s (> 0). */
     sx_real max_correction_speed;
     /** Approach speed (m/s) below which contacts do not bounce: restitution
-     *  only applies to impacts faster than this, so resting bodies do not
-     *  jitter. Default 1 m/s (>= 0). */
+     *  only applies to impacts at this speed or faster (to round-off: an
+     *  approach within 1e-4 of it, relative, counts as equal), so resting
+     *  bodies do not jitter. Default 1 m/s (>= 0). */
     sx_real restitution_threshold;
     /** Speculative contact margin in units of the linear slop (>= 0): shapes
      *  closer than this get contact points before they touch, and the solver
@@ -156,8 +157,9 @@ sx_real sx_world_linear_slop(const sx_world *world);
  *  separate with h = dt / sub_steps, then clear_forces and update_sleep(dt).
  *  Errors, with the world left
  *  untouched: SX_ERR_INVALID_ARG (NULL world, dt <= 0), SX_ERR_NONFINITE (dt
- *  NaN or infinite). SX_ERR_NO_MEMORY: the contact list could not grow; the
- *  step stops after the stages already run. */
+ *  NaN or infinite). SX_ERR_NO_MEMORY: the contact list or the impact
+ *  pass's scratch could not grow; the step stops after the stages already
+ *  run. */
 sx_status sx_world_step(sx_world *world, sx_real dt);
 
 /** Stage 1: for every enabled, awake dynamic body, v += h (gravity x gravity_scale +
@@ -182,24 +184,34 @@ sx_status sx_world_apply_forces(sx_world *world, sx_real h);
  * SX_ERR_NO_MEMORY. */
 sx_status sx_world_collide(sx_world *world);
 
-/** Stage 3: sequential impulses on the contacts of the last collide:
- *  warm start, then `velocity_iterations` passes of Coulomb friction
- *  (|tangent impulse| <= mu x normal impulse, mu = sqrt(mu_a mu_b)) and
- *  non-penetration (accumulated normal impulse >= 0; a speculative point may
- *  close its gap in this sub-step but not more), then one restitution pass:
- *  a point that pushed and was approaching faster than the restitution
- *  threshold leaves at e times its approach speed, e = max(e_a, e_b) (an
- *  impact caught while the surfaces are still apart is deferred to the
- *  sub-step in which they touch, and the rebound impulse is at most e times
- *  the impulse that stopped the approach). The two normal constraints of a
- *  two-point contact are solved together, exactly (a 2x2 complementarity
- *  problem). Penetration is not turned into velocity here (see sx_world_separate), so
- *  this stage never adds kinetic energy to a resting overlap.
- *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE. */
+/** Stage 3: the contacts of the last collide, on velocities. Warm start,
+ *  then the impact pass (restitution): the contacts approaching at the
+ *  restitution threshold or faster that close their gap within this
+ *  sub-step are resolved one at a time in order of their time of impact,
+ *  each at most once per sub-step, each approaching point leaving at e times
+ *  its approach speed (e = max(e_a, e_b); both points of a two-point contact
+ *  at once), with Coulomb friction on that impulse; after each impact the
+ *  other contacts of its two bodies are looked at again with the new
+ *  velocities, so an impulse travels down a row of touching bodies (Newton's
+ *  cradle). Each impact also records the time-of-impact correction of its
+ *  bodies' positions, applied by sx_world_integrate. Then
+ *  `velocity_iterations` passes of Coulomb friction (|tangent impulse| <= mu
+ *  x normal impulse, mu = sqrt(mu_a mu_b)) and non-penetration (accumulated
+ *  normal impulse >= 0; a speculative point may close its gap in this
+ *  sub-step but not more); the two normal constraints of a two-point contact
+ *  are solved together, exactly (a 2x2 complementarity problem). With every
+ *  restitution <= 1 no impulse of this stage adds kinetic energy, and
+ *  penetration is not turned into velocity here (see sx_world_separate).
+ *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE,
+ *  SX_ERR_NO_MEMORY (the impact pass's scratch could not grow: the pass is
+ *  skipped, the iterations still run). */
 sx_status sx_world_solve(sx_world *world, sx_real h);
 
 /** Stage 4: symplectic Euler positions: centre of mass += h v, rotation
- *  advanced by h w (renormalised), for awake dynamic and kinematic bodies.
+ *  advanced by h w (renormalised), for awake dynamic and kinematic bodies;
+ *  then the time-of-impact corrections of the last solve's impacts (a body
+ *  whose velocity changed by dv at time t of the sub-step moves by -dv t,
+ *  since it kept its old velocity until t).
  *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE. */
 sx_status sx_world_integrate(sx_world *world, sx_real h);
 
@@ -248,9 +260,13 @@ typedef struct sx_contact_data {
     sx_vec2 points[2];
     /** Overlap at collide time (> 0 overlapping, < 0 speculative gap). */
     sx_real depths[2];
-    /** Accumulated normal and tangent impulses of the last solve (N s). */
+    /** Accumulated normal and tangent impulses of the last solve's velocity
+     *  iterations (N s). */
     sx_real normal_impulses[2];
     sx_real tangent_impulses[2];
+    /** Normal impulses of the last solve's impact pass (N s): non-zero for
+     *  an impact resolved with restitution in that sub-step. */
+    sx_real impact_impulses[2];
 } sx_contact_data;
 
 /** Number of contacts from the last sx_world_collide, the carried contacts
