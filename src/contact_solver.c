@@ -449,13 +449,20 @@ static bool sx_impact_candidate(const sx_world *world, const sx_contact *c) {
 }
 
 static bool sx_impact_reserve(sx_world *world) {
-    int contacts = world->contact_count, bodies = world->body_slots;
+    int contacts = world->contact_count, bodies = world->body_slots,
+        old = world->impact_body_capacity;
     void *p;
     bool ok;
     p = world->impact_bodies;
     ok = sx_grow_array(&p, &world->impact_body_capacity, bodies, sizeof(sx_impact_body));
     world->impact_bodies = (sx_impact_body *)p;
     if (!ok) return false;
+    /* only the active bodies' entries are reset per pass: the others (static
+     * bodies, read as zero shifts) must start at zero */
+    if (world->impact_body_capacity > old) {
+        memset(world->impact_bodies + old, 0,
+               (size_t)(world->impact_body_capacity - old) * sizeof(sx_impact_body));
+    }
     p = world->impact_adjacency;
     ok = sx_grow_array(&p, &world->impact_adjacency_capacity, 2 * contacts, sizeof(int));
     world->impact_adjacency = (int *)p;
@@ -490,17 +497,20 @@ bool sx_contacts_impacts(sx_world *world, sx_real h) {
 
     /* contact lists per movable body (contacts with restitution only: the
      * others never take part in the pass) */
-    memset(world->impact_bodies, 0, (size_t)world->impact_body_capacity * sizeof(sx_impact_body));
+    /* movable bodies are active ones: a sleeping world costs nothing here */
+    for (i = 0; i < world->active_body_count; ++i)
+        memset(&world->impact_bodies[world->active_bodies[i]], 0, sizeof(sx_impact_body));
     for (i = 0; i < world->contact_count; ++i) {
         const sx_contact *c = &world->contacts[i];
         if (!sx_impact_candidate(world, c)) continue;
         if (sx_movable(&world->sims[c->body_a])) world->impact_bodies[c->body_a].count++;
         if (sx_movable(&world->sims[c->body_b])) world->impact_bodies[c->body_b].count++;
     }
-    for (i = 0, k = 0; i < world->body_slots; ++i) {
-        world->impact_bodies[i].start = k;
-        k += world->impact_bodies[i].count;
-        world->impact_bodies[i].count = 0;
+    for (i = 0, k = 0; i < world->active_body_count; ++i) {
+        sx_impact_body *body = &world->impact_bodies[world->active_bodies[i]];
+        body->start = k;
+        k += body->count;
+        body->count = 0;
     }
     for (i = 0; i < world->contact_count; ++i) {
         const sx_contact *c = &world->contacts[i];
@@ -562,11 +572,14 @@ bool sx_contacts_impacts(sx_world *world, sx_real h) {
 }
 
 void sx_contacts_apply_impact_shifts(sx_world *world) {
-    int i;
+    int k;
     if (!world->impact_shifts_pending) return;
-    for (i = 0; i < world->body_slots && i < world->impact_body_capacity; ++i) {
-        sx_impact_body *s = &world->impact_bodies[i];
+    for (k = 0; k < world->active_body_count; ++k) {
+        int i = world->active_bodies[k];
+        sx_impact_body *s;
         sx_body_sim *b = &world->sims[i];
+        if (i >= world->impact_body_capacity) continue;
+        s = &world->impact_bodies[i];
         if (world->infos[i].alive && b->moving && b->awake) {
             if (s->shift.x != SX_R(0.0) || s->shift.y != SX_R(0.0) || s->turn != SX_R(0.0)) {
                 b->center = sx_add(b->center, s->shift);

@@ -601,6 +601,9 @@ sx_status sx_world_solve(sx_world *world, sx_real h) {
     bool impacts;
     int it;
     if (s != SX_OK) return s;
+    /* the impact pass works on the active bodies */
+    s = sx_world_refresh_sets(world);
+    if (s != SX_OK) return s;
     sx_contacts_prepare(world);
     /* restitution first, impact by impact in time order (contact_solver.c
      * says why); the iterations then solve what rests and slides */
