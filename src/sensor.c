@@ -73,7 +73,7 @@ sx_status sx_sensors_update(sx_world *world) {
         sx_aabb box;
         if (!s->alive || !s->sensor || !world->infos[s->body].enabled) continue;
         xs = world->sims[s->body].xf;
-        box = sx_shape_aabb(&s->shape, xs);
+        box = sx_collider_aabb(s, xs);
         for (j = 0; j < world->collider_slots; ++j) {
             const sx_collider *c = &world->colliders[j];
             sx_xform xc;
@@ -81,7 +81,7 @@ sx_status sx_sensors_update(sx_world *world) {
             xc = world->sims[c->body].xf;
             /* collide has just computed every non-sensor's (fattened) bounds */
             if (!sx_aabb_overlaps(box, world->aabbs[j])) continue;
-            if (!sx_overlap(&s->shape, xs, &c->shape, xc)) continue;
+            if (!sx_colliders_overlap(s, xs, c, xc)) continue;
             if (world->sensor_count == world->sensor_capacity) {
                 void *p = world->sensor_pairs;
                 bool ok = sx_grow_array(&p, &world->sensor_capacity, world->sensor_count + 1,

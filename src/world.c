@@ -76,7 +76,15 @@ sx_world *sx_world_create(const sx_world_def *def) {
 }
 
 void sx_world_destroy(sx_world *world) {
+    int i;
     if (world == NULL) return;
+    for (i = 0; i < world->collider_slots; ++i) {
+        sx_collider *c = &world->colliders[i];
+        if (c->alive && c->parts != NULL) {
+            sx_free(c->parts, (size_t)c->part_count * sizeof(sx_compound_part));
+        }
+    }
+    sx_free(world->part_boxes, (size_t)world->part_box_capacity * sizeof(sx_aabb));
     sx_free(world->sims, (size_t)world->sim_capacity * sizeof(sx_body_sim));
     sx_free(world->infos, (size_t)world->info_capacity * sizeof(sx_body_info));
     sx_free(world->colliders, (size_t)world->collider_capacity * sizeof(sx_collider));
@@ -210,28 +218,38 @@ static bool sx_push_event(const sx_world *world, const sx_contact *c, sx_contact
     return true;
 }
 
+/* The index past the run of contacts with the key of contacts[i] (a
+ * compound pair has one contact per touching part pair, all with one key). */
+static int sx_skip_run(const sx_contact *contacts, int count, int i) {
+    uint64_t key = contacts[i].key;
+    while (i < count && contacts[i].key == key)
+        ++i;
+    return i;
+}
+
 /* Compares the new contact list with the old one (both sorted by key):
- * pairs only in the new one began, pairs only in the old one ended. */
+ * collider pairs only in the new one began, pairs only in the old one ended
+ * (one event per collider pair, however many part pairs touch). */
 static sx_status sx_record_events(sx_world *world) {
     int i = 0, j = 0;
     while (i < world->contact_count || j < world->old_contact_count) {
         const sx_contact *n = i < world->contact_count ? &world->contacts[i] : NULL;
         const sx_contact *o = j < world->old_contact_count ? &world->old_contacts[j] : NULL;
         if (n != NULL && o != NULL && n->key == o->key) {
-            ++i;
-            ++j;
+            i = sx_skip_run(world->contacts, world->contact_count, i);
+            j = sx_skip_run(world->old_contacts, world->old_contact_count, j);
         } else if (o == NULL || (n != NULL && n->key < o->key)) {
             if (!sx_push_event(world, n, &world->begin_events, &world->begin_count,
                                &world->begin_capacity)) {
                 return SX_ERR_NO_MEMORY;
             }
-            ++i;
+            i = sx_skip_run(world->contacts, world->contact_count, i);
         } else {
             if (!sx_push_event(world, o, &world->end_events, &world->end_count,
                                &world->end_capacity)) {
                 return SX_ERR_NO_MEMORY;
             }
-            ++j;
+            j = sx_skip_run(world->old_contacts, world->old_contact_count, j);
         }
     }
     return SX_OK;
@@ -279,6 +297,100 @@ static sx_status sx_carry_frozen(sx_world *world, int *old_index, uint64_t key) 
     return SX_OK;
 }
 
+/* Appends the contact of manifold m (m->count >= 1) between part pa of
+ * collider key >> 32 and part pb of collider key & 0xFFFFFFFF, matching the
+ * warm-starting impulses against the pair's old contacts
+ * old_contacts[old_begin, old_end) with the same parts. */
+static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, const sx_manifold *m,
+                                int old_begin, int old_end) {
+    int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), k;
+    const sx_collider *ca = &world->colliders[ia], *cb = &world->colliders[ib];
+    const sx_body_sim *ba = &world->sims[ca->body], *bb = &world->sims[cb->body];
+    const sx_contact *old = NULL;
+    sx_contact *c;
+    for (k = old_begin; k < old_end; ++k) {
+        if (world->old_contacts[k].part_a == pa && world->old_contacts[k].part_b == pb) {
+            old = &world->old_contacts[k];
+            break;
+        }
+    }
+    /* an awake body touching a sleeping one wakes its island */
+    if (!ba->awake) sx_wake_body(world, ca->body);
+    if (!bb->awake) sx_wake_body(world, cb->body);
+    if (!sx_reserve_contact(world)) return SX_ERR_NO_MEMORY;
+    c = &world->contacts[world->contact_count++];
+    c->key = key;
+    c->collider_a = ia;
+    c->collider_b = ib;
+    c->part_a = pa;
+    c->part_b = pb;
+    c->body_a = ca->body;
+    c->body_b = cb->body;
+    c->normal = m->normal;
+    c->local_normal = sx_inv_rotate(ba->xf.q, m->normal);
+    c->friction = sx_sqrt(ca->friction * cb->friction);
+    c->restitution = sx_maxr(ca->restitution, cb->restitution);
+    c->count = m->count;
+    for (k = 0; k < m->count; ++k) {
+        const sx_manifold_point *mp = &m->points[k];
+        sx_contact_point *p = &c->points[k];
+        /* the surface points of A and B, depth apart along the normal */
+        sx_vec2 pa_w = sx_mul_add(mp->point, SX_R(0.5) * mp->depth, m->normal);
+        sx_vec2 pb_w = sx_mul_sub(mp->point, SX_R(0.5) * mp->depth, m->normal);
+        memset(p, 0, sizeof(*p));
+        p->point = mp->point;
+        p->local_a = sx_xform_inv_point(ba->xf, pa_w);
+        p->local_b = sx_xform_inv_point(bb->xf, pb_w);
+        p->anchor_a = sx_sub(mp->point, ba->center);
+        p->anchor_b = sx_sub(mp->point, bb->center);
+        p->separation = -mp->depth;
+        p->id = mp->id;
+        sx_match_point(p, old);
+    }
+    return SX_OK;
+}
+
+/* The narrowphase of a pair in which at least one collider is a compound:
+ * one manifold per part pair within the margin, in (part_a, part_b) order,
+ * so each touching part pair is its own contact for the solver, with its
+ * own feature ids and warm-starting impulses. Parts are culled by their
+ * bounds (fattened by half the margin, as the broadphase's) first. */
+static sx_status sx_collide_parts(sx_world *world, uint64_t key, int old_begin, int old_end) {
+    int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), i, j;
+    const sx_collider *ca = &world->colliders[ia], *cb = &world->colliders[ib];
+    sx_xform xa = world->sims[ca->body].xf, xb = world->sims[cb->body].xf;
+    sx_compound_part ta, tb;
+    sx_compound va = sx_collider_compound(ca, &ta), vb = sx_collider_compound(cb, &tb);
+    sx_real half = SX_R(0.5) * world->margin;
+    if (vb.count > world->part_box_capacity) {
+        void *p = world->part_boxes;
+        bool ok = sx_grow_array(&p, &world->part_box_capacity, vb.count, sizeof(sx_aabb));
+        world->part_boxes = (sx_aabb *)p;
+        if (!ok) return SX_ERR_NO_MEMORY;
+    }
+    for (j = 0; j < vb.count; ++j) {
+        sx_xform xj = sx_xform_mul(xb, vb.parts[j].offset);
+        world->part_boxes[j] = sx_aabb_fatten(sx_shape_aabb(&vb.parts[j].shape, xj), half);
+    }
+    for (i = 0; i < va.count; ++i) {
+        sx_xform xi = sx_xform_mul(xa, va.parts[i].offset);
+        sx_aabb box = sx_aabb_fatten(sx_shape_aabb(&va.parts[i].shape, xi), half);
+        if (!sx_aabb_overlaps(box, world->aabbs[ib])) continue;
+        for (j = 0; j < vb.count; ++j) {
+            sx_manifold m;
+            sx_status s;
+            if (!sx_aabb_overlaps(box, world->part_boxes[j])) continue;
+            if (sx_collide_ex(&va.parts[i].shape, xi, &vb.parts[j].shape,
+                              sx_xform_mul(xb, vb.parts[j].offset), world->margin, &m) <= 0) {
+                continue;
+            }
+            s = sx_add_contact(world, key, i, j, &m, old_begin, old_end);
+            if (s != SX_OK) return s;
+        }
+    }
+    return SX_OK;
+}
+
 sx_status sx_world_collide(sx_world *world) {
     sx_contact *swap;
     int i, old_index = 0, cap;
@@ -300,7 +412,7 @@ sx_status sx_world_collide(sx_world *world) {
         }
         /* half the margin on each side: bounds meet when the gap < margin */
         world->aabbs[i] =
-            sx_aabb_fatten(sx_shape_aabb(&c->shape, b->xf), SX_R(0.5) * world->margin);
+            sx_aabb_fatten(sx_collider_aabb(c, b->xf), SX_R(0.5) * world->margin);
     }
     s = sx_broadphase_update(&world->bp, world->aabbs, world->bp_kind, world->collider_slots);
     if (s != SX_OK) return s;
@@ -327,54 +439,27 @@ sx_status sx_world_collide(sx_world *world) {
 
     for (i = 0; i < world->bp.pair_count; ++i) {
         uint64_t key = world->bp.pairs[i];
-        int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), k;
+        int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), old_begin;
         const sx_collider *ca = &world->colliders[ia], *cb = &world->colliders[ib];
-        const sx_body_sim *ba, *bb;
-        const sx_contact *old = NULL;
-        sx_contact *c;
         sx_manifold m;
         int n;
         s = sx_carry_frozen(world, &old_index, key);
         if (s != SX_OK) return s;
-        if (old_index < world->old_contact_count && world->old_contacts[old_index].key == key) {
-            old = &world->old_contacts[old_index++];
-        }
+        /* the old contacts of this pair: one, or one per part pair */
+        old_begin = old_index;
+        while (old_index < world->old_contact_count && world->old_contacts[old_index].key == key)
+            ++old_index;
         if (ca->body == cb->body || !sx_filters_collide(&ca->filter, &cb->filter)) continue;
-        ba = &world->sims[ca->body];
-        bb = &world->sims[cb->body];
-        n = sx_collide_ex(&ca->shape, ba->xf, &cb->shape, bb->xf, world->margin, &m);
-        if (n <= 0) continue;
-        /* an awake body touching a sleeping one wakes its island */
-        if (!ba->awake) sx_wake_body(world, ca->body);
-        if (!bb->awake) sx_wake_body(world, cb->body);
-        if (!sx_reserve_contact(world)) return SX_ERR_NO_MEMORY;
-        c = &world->contacts[world->contact_count++];
-        c->key = key;
-        c->collider_a = ia;
-        c->collider_b = ib;
-        c->body_a = ca->body;
-        c->body_b = cb->body;
-        c->normal = m.normal;
-        c->local_normal = sx_inv_rotate(ba->xf.q, m.normal);
-        c->friction = sx_sqrt(ca->friction * cb->friction);
-        c->restitution = sx_maxr(ca->restitution, cb->restitution);
-        c->count = n;
-        for (k = 0; k < n; ++k) {
-            const sx_manifold_point *mp = &m.points[k];
-            sx_contact_point *p = &c->points[k];
-            /* the surface points of A and B, depth apart along the normal */
-            sx_vec2 pa = sx_mul_add(mp->point, SX_R(0.5) * mp->depth, m.normal);
-            sx_vec2 pb = sx_mul_sub(mp->point, SX_R(0.5) * mp->depth, m.normal);
-            memset(p, 0, sizeof(*p));
-            p->point = mp->point;
-            p->local_a = sx_xform_inv_point(ba->xf, pa);
-            p->local_b = sx_xform_inv_point(bb->xf, pb);
-            p->anchor_a = sx_sub(mp->point, ba->center);
-            p->anchor_b = sx_sub(mp->point, bb->center);
-            p->separation = -mp->depth;
-            p->id = mp->id;
-            sx_match_point(p, old);
+        if (ca->part_count > 0 || cb->part_count > 0) {
+            s = sx_collide_parts(world, key, old_begin, old_index);
+            if (s != SX_OK) return s;
+            continue;
         }
+        n = sx_collide_ex(&ca->shape, world->sims[ca->body].xf, &cb->shape,
+                          world->sims[cb->body].xf, world->margin, &m);
+        if (n <= 0) continue;
+        s = sx_add_contact(world, key, 0, 0, &m, old_begin, old_index);
+        if (s != SX_OK) return s;
     }
     s = sx_carry_frozen(world, &old_index, UINT64_MAX);
     if (s != SX_OK) return s;
@@ -403,6 +488,8 @@ sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data
     out->body_a.generation = world->infos[c->body_a].generation;
     out->body_b.index = (uint32_t)c->body_b;
     out->body_b.generation = world->infos[c->body_b].generation;
+    out->part_a = c->part_a;
+    out->part_b = c->part_b;
     out->normal = c->normal;
     out->count = c->count;
     for (k = 0; k < c->count; ++k) {
