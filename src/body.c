@@ -375,8 +375,7 @@ static bool sx_reserve_colliders(sx_world *world, int need) {
  * for a plain collider) is an sx_alloc'ed array of part_count parts that the
  * collider takes over; on error it is freed here. */
 static sx_status sx_attach_collider(sx_world *world, int bslot, const sx_collider_def *def,
-                                    sx_compound_part *parts, int part_count,
-                                    sx_collider_id *out) {
+                                    sx_compound_part *parts, int part_count, sx_collider_id *out) {
     int slot, *link;
     sx_collider *c;
     uint32_t generation;

@@ -411,8 +411,7 @@ sx_status sx_world_collide(sx_world *world) {
             world->bp_kind[i] = SX_BP_FIXED;
         }
         /* half the margin on each side: bounds meet when the gap < margin */
-        world->aabbs[i] =
-            sx_aabb_fatten(sx_collider_aabb(c, b->xf), SX_R(0.5) * world->margin);
+        world->aabbs[i] = sx_aabb_fatten(sx_collider_aabb(c, b->xf), SX_R(0.5) * world->margin);
     }
     s = sx_broadphase_update(&world->bp, world->aabbs, world->bp_kind, world->collider_slots);
     if (s != SX_OK) return s;

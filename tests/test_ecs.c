@@ -571,7 +571,8 @@ static void many_entities_step_and_go_without_leaks(void **state) {
 
 /* U outline: floor [-1.5, 1.5] x [0, 0.5], walls up to y = 2, notch
  * [-1, 1] x [0.5, 2]. */
-static const double u_outline_xy[] = {-1.5, 0, 1.5, 0, 1.5, 2, 1, 2, 1, 0.5, -1, 0.5, -1, 2, -1.5, 2};
+static const double u_outline_xy[] = {-1.5, 0,   1.5, 0,   1.5, 2, 1,    2,
+                                      1,    0.5, -1,  0.5, -1,  2, -1.5, 2};
 
 typedef struct part_probe {
     const sx_world *world;
@@ -609,7 +610,8 @@ static void a_concave_outline_entity_collides_as_one_collider(void **state) {
     assert_true(c->part_count >= 3);
     assert_non_null(c->parts);
     /* a ball dropped into the notch (the U sits at x = 2) rests on its floor */
-    ball = add_dynamic(world, sx_v2(SX_R(2.2), SX_R(3.0)), sx_circle_shape(sx_v2_zero(), SX_R(0.4)));
+    ball =
+        add_dynamic(world, sx_v2(SX_R(2.2), SX_R(3.0)), sx_circle_shape(sx_v2_zero(), SX_R(0.4)));
     log.watch = ball;
     progress(world, 180, 1.0 / 60.0);
     assert_near(position_of(world, ball).y, 0.5 + 0.4, 0.01);
@@ -627,14 +629,13 @@ static void a_concave_outline_entity_collides_as_one_collider(void **state) {
     assert_true(found >= 1);
     /* the module's world holds the U as one compound collider: the notch is
      * empty, a wall is solid, and a ray down the notch hits the floor */
-    assert_int_equal(sx_world_query_point(sx_ecs_world(world), sx_v2(SX_R(2.0), SX_R(1.8)), NULL,
-                                          NULL),
-                     0);
+    assert_int_equal(
+        sx_world_query_point(sx_ecs_world(world), sx_v2(SX_R(2.0), SX_R(1.8)), NULL, NULL), 0);
     probe.world = sx_ecs_world(world);
     probe.parts = 0;
-    assert_int_equal(sx_world_query_point(sx_ecs_world(world), sx_v2(SX_R(0.7), SX_R(1.8)),
-                                          probe_parts, &probe),
-                     1);
+    assert_int_equal(
+        sx_world_query_point(sx_ecs_world(world), sx_v2(SX_R(0.7), SX_R(1.8)), probe_parts, &probe),
+        1);
     assert_int_equal(probe.parts, c->part_count);
     memset(&ray, 0, sizeof(ray));
     ray.origin = sx_v2(SX_R(1.5), SX_R(5.0));

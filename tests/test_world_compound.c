@@ -323,8 +323,8 @@ static void l_compound_has_the_analytic_mass_properties(void **state) {
     c.count = 2;
     assert_int_equal(sx_body_add_compound(w, a, &c, &cd, &ca), SX_OK);
     assert_near(sx_body_get_mass(w, a), 3.0 * density, 1e-5);
-    assert_vec2_near(sx_body_get_local_center(w, a), sx_v2((sx_real)(5.0 / 6.0), (sx_real)(5.0 / 6.0)),
-                     1e-5);
+    assert_vec2_near(sx_body_get_local_center(w, a),
+                     sx_v2((sx_real)(5.0 / 6.0), (sx_real)(5.0 / 6.0)), 1e-5);
     assert_vec2_near(sx_body_get_world_center(w, a),
                      sx_v2((sx_real)(4.0 + 5.0 / 6.0), (sx_real)(-1.0 + 5.0 / 6.0)), 1e-5);
     assert_near(sx_body_get_inertia(w, a), 11.0 / 6.0 * density, 1e-4);
@@ -333,8 +333,8 @@ static void l_compound_has_the_analytic_mass_properties(void **state) {
         l[5 - i] = sx_v2((sx_real)xy[2 * i], (sx_real)xy[2 * i + 1]);
     assert_int_equal(sx_body_add_outline(w, b, l, 6, &cd, &cb), SX_OK);
     assert_near(sx_body_get_mass(w, b), 3.0 * density, 1e-5);
-    assert_vec2_near(sx_body_get_local_center(w, b), sx_v2((sx_real)(5.0 / 6.0), (sx_real)(5.0 / 6.0)),
-                     1e-5);
+    assert_vec2_near(sx_body_get_local_center(w, b),
+                     sx_v2((sx_real)(5.0 / 6.0), (sx_real)(5.0 / 6.0)), 1e-5);
     assert_near(sx_body_get_inertia(w, b), 11.0 / 6.0 * density, 1e-4);
     /* a second collider adds by the parallel-axis theorem: a unit disc at
      * (5/6 + 3, 5/6) of density 2.5 */
@@ -345,7 +345,8 @@ static void l_compound_has_the_analytic_mass_properties(void **state) {
         double i_l = 11.0 / 6.0 * density + 3.0 * density * (cx - 5.0 / 6.0) * (cx - 5.0 / 6.0);
         double i_d = 0.5 * md + md * (5.0 / 6.0 + 3.0 - cx) * (5.0 / 6.0 + 3.0 - cx);
         disc.density = (sx_real)density;
-        disc.shape = sx_circle_shape(sx_v2((sx_real)(5.0 / 6.0 + 3.0), (sx_real)(5.0 / 6.0)), SX_R(1.0));
+        disc.shape =
+            sx_circle_shape(sx_v2((sx_real)(5.0 / 6.0 + 3.0), (sx_real)(5.0 / 6.0)), SX_R(1.0));
         assert_int_equal(sx_body_add_collider(w, b, &disc, NULL), SX_OK);
         assert_near(sx_body_get_mass(w, b), total, 1e-4);
         assert_near(sx_body_get_local_center(w, b).x, cx, 1e-5);
@@ -403,14 +404,14 @@ static void queries_hit_the_right_part(void **state) {
     assert_int_equal(f.found, 1);
     /* a box in the notch misses (although inside the U's bounds); one
      * reaching into the right wall hits */
-    assert_int_equal(sx_world_query_aabb(w, sx_aabb_make(sx_v2(SX_R(1.5), SX_R(1.7)),
-                                                         sx_v2(SX_R(2.5), SX_R(2.8))),
-                                         NULL, NULL),
-                     0);
-    assert_int_equal(sx_world_query_aabb(w, sx_aabb_make(sx_v2(SX_R(2.5), SX_R(1.7)),
-                                                         sx_v2(SX_R(3.1), SX_R(2.8))),
-                                         NULL, NULL),
-                     1);
+    assert_int_equal(
+        sx_world_query_aabb(
+            w, sx_aabb_make(sx_v2(SX_R(1.5), SX_R(1.7)), sx_v2(SX_R(2.5), SX_R(2.8))), NULL, NULL),
+        0);
+    assert_int_equal(
+        sx_world_query_aabb(
+            w, sx_aabb_make(sx_v2(SX_R(2.5), SX_R(1.7)), sx_v2(SX_R(3.1), SX_R(2.8))), NULL, NULL),
+        1);
     /* shapes likewise */
     {
         sx_shape ball = sx_circle_shape(sx_v2_zero(), SX_R(0.4));
@@ -597,7 +598,8 @@ static void bad_outlines_and_compounds_return_statuses(void **state) {
     assert_int_equal(sx_body_add_compound(w, b, &c, NULL, &out), SX_ERR_INVALID_ARG);
     parts[1].offset.p.y = (sx_real)INFINITY;
     assert_int_equal(sx_body_add_compound(w, b, &c, &cd, &out), SX_ERR_NONFINITE);
-    parts[1] = sx_compound_part_make(sx_circle_shape(sx_v2_zero(), SX_R(-1.0)), sx_xform_identity());
+    parts[1] =
+        sx_compound_part_make(sx_circle_shape(sx_v2_zero(), SX_R(-1.0)), sx_xform_identity());
     assert_int_equal(sx_body_add_compound(w, b, &c, &cd, &out), SX_ERR_INVALID_ARG);
     assert_int_equal(sx_collider_id_to_u64(out), 0u);
     parts[1] = sx_compound_part_make(sx_box_shape(SX_R(0.5), SX_R(0.5)), at(1.0, 0.0, 0.0));

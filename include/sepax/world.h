@@ -267,7 +267,8 @@ sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data
  *  a resting contact that rocks by a fraction of a millimetre does not
  *  flicker. A compound collider counts as one collider: it begins touching
  *  when its first part pair gets a manifold and ends when its last one
- *  loses it (one event each, whichever parts touch). Handles are those of the colliders and bodies at the time. */
+ *  loses it (one event each, whichever parts touch). Handles are those of the colliders and bodies
+ * at the time. */
 typedef struct sx_contact_event {
     sx_collider_id collider_a, collider_b;
     sx_body_id body_a, body_b;
