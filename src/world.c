@@ -353,33 +353,28 @@ static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, c
 /* The narrowphase of a pair in which at least one collider is a compound:
  * one manifold per part pair within the margin, in (part_a, part_b) order,
  * so each touching part pair is its own contact for the solver, with its
- * own feature ids and warm-starting impulses. Parts are culled by their
- * bounds (fattened by half the margin, as the broadphase's) first. */
+ * own feature ids and warm-starting impulses. Parts are culled first by
+ * their bounds (fattened by half the margin, as the broadphase's; found once
+ * per collide in world->part_boxes). */
 static sx_status sx_collide_parts(sx_world *world, uint64_t key, int old_begin, int old_end) {
     int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), i, j;
     const sx_collider *ca = &world->colliders[ia], *cb = &world->colliders[ib];
     sx_xform xa = world->sims[ca->body].xf, xb = world->sims[cb->body].xf;
     sx_compound_part ta, tb;
     sx_compound va = sx_collider_compound(ca, &ta), vb = sx_collider_compound(cb, &tb);
-    sx_real half = SX_R(0.5) * world->margin;
-    if (vb.count > world->part_box_capacity) {
-        void *p = world->part_boxes;
-        bool ok = sx_grow_array(&p, &world->part_box_capacity, vb.count, sizeof(sx_aabb));
-        world->part_boxes = (sx_aabb *)p;
-        if (!ok) return SX_ERR_NO_MEMORY;
-    }
-    for (j = 0; j < vb.count; ++j) {
-        sx_xform xj = sx_xform_mul(xb, vb.parts[j].offset);
-        world->part_boxes[j] = sx_aabb_fatten(sx_shape_aabb(&vb.parts[j].shape, xj), half);
-    }
+    /* a plain collider's one part box is its own bounds */
+    const sx_aabb *boxes_a =
+        ca->part_count > 0 ? &world->part_boxes[ca->part_box] : &world->aabbs[ia];
+    const sx_aabb *boxes_b =
+        cb->part_count > 0 ? &world->part_boxes[cb->part_box] : &world->aabbs[ib];
     for (i = 0; i < va.count; ++i) {
-        sx_xform xi = sx_xform_mul(xa, va.parts[i].offset);
-        sx_aabb box = sx_aabb_fatten(sx_shape_aabb(&va.parts[i].shape, xi), half);
-        if (!sx_aabb_overlaps(box, world->aabbs[ib])) continue;
+        sx_xform xi;
+        if (!sx_aabb_overlaps(boxes_a[i], world->aabbs[ib])) continue;
+        xi = sx_xform_mul(xa, va.parts[i].offset);
         for (j = 0; j < vb.count; ++j) {
             sx_manifold m;
             sx_status s;
-            if (!sx_aabb_overlaps(box, world->part_boxes[j])) continue;
+            if (!sx_aabb_overlaps(boxes_a[i], boxes_b[j])) continue;
             if (sx_collide_ex(&va.parts[i].shape, xi, &vb.parts[j].shape,
                               sx_xform_mul(xb, vb.parts[j].offset), world->margin, &m) <= 0) {
                 continue;
@@ -393,12 +388,12 @@ static sx_status sx_collide_parts(sx_world *world, uint64_t key, int old_begin, 
 
 sx_status sx_world_collide(sx_world *world) {
     sx_contact *swap;
-    int i, old_index = 0, cap;
+    int i, old_index = 0, cap, part_total = 0;
     sx_status s;
     if (world == NULL) return SX_ERR_INVALID_ARG;
 
     for (i = 0; i < world->collider_slots; ++i) {
-        const sx_collider *c = &world->colliders[i];
+        sx_collider *c = &world->colliders[i];
         const sx_body_sim *b;
         world->bp_kind[i] = 0;
         if (!c->alive || c->sensor || !world->infos[c->body].enabled) continue;
@@ -411,7 +406,32 @@ sx_status sx_world_collide(sx_world *world) {
             world->bp_kind[i] = SX_BP_FIXED;
         }
         /* half the margin on each side: bounds meet when the gap < margin */
-        world->aabbs[i] = sx_aabb_fatten(sx_collider_aabb(c, b->xf), SX_R(0.5) * world->margin);
+        if (c->part_count > 0) {
+            /* a compound: the union of its parts' bounds, each kept for the
+             * part-pair culling of the narrowphase */
+            int k;
+            sx_aabb u = world->aabbs[i];
+            if (part_total + c->part_count > world->part_box_capacity) {
+                void *p = world->part_boxes;
+                bool ok = sx_grow_array(&p, &world->part_box_capacity, part_total + c->part_count,
+                                        sizeof(sx_aabb));
+                world->part_boxes = (sx_aabb *)p;
+                if (!ok) return SX_ERR_NO_MEMORY;
+            }
+            c->part_box = part_total;
+            for (k = 0; k < c->part_count; ++k) {
+                sx_aabb pb = sx_aabb_fatten(
+                    sx_shape_aabb(&c->parts[k].shape, sx_xform_mul(b->xf, c->parts[k].offset)),
+                    SX_R(0.5) * world->margin);
+                world->part_boxes[part_total + k] = pb;
+                u = k == 0 ? pb : sx_aabb_union(u, pb);
+            }
+            part_total += c->part_count;
+            world->aabbs[i] = u;
+        } else {
+            world->aabbs[i] =
+                sx_aabb_fatten(sx_shape_aabb(&c->shape, b->xf), SX_R(0.5) * world->margin);
+        }
     }
     s = sx_broadphase_update(&world->bp, world->aabbs, world->bp_kind, world->collider_slots);
     if (s != SX_OK) return s;

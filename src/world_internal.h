@@ -61,6 +61,9 @@ typedef struct sx_collider {
      * for a plain collider, which then has exactly one implicit part) */
     sx_compound_part *parts;
     int part_count;
+    /* during collide: where its parts' fattened bounds start in
+     * world->part_boxes (compounds only) */
+    int part_box;
     sx_real density, friction, restitution;
     sx_filter filter;
     bool sensor;
@@ -173,7 +176,9 @@ struct sx_world {
     sx_sensor_event *sensor_begin, *sensor_end;
     int sensor_begin_count, sensor_begin_capacity, sensor_end_count, sensor_end_capacity;
 
-    sx_aabb *part_boxes; /* collide scratch: the part bounds of a compound */
+    /* per collide: the fattened bounds of every compound's parts, found
+     * once per call (not once per pair) */
+    sx_aabb *part_boxes;
     int part_box_capacity;
 
     int *island_parent; /* union-find scratch, per body slot */
