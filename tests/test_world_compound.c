@@ -625,6 +625,56 @@ static void bad_outlines_and_compounds_return_statuses(void **state) {
     sx_world_destroy(w);
 }
 
+/* Two dynamic compounds on each other: a U (opening up) on the ground and
+ * an L dropped into its notch. Compound against compound makes one contact
+ * per touching part pair; both come to rest with the L inside the notch. */
+static void a_compound_rests_inside_another_compound(void **state) {
+    sx_world *w = make_world();
+    sx_body_id ground = make_body(w, SX_BODY_STATIC, 0.0, -0.5), u, l;
+    sx_collider_id uc, lc;
+    sx_compound_part parts[2];
+    sx_compound c;
+    sx_collider_def cd = sx_default_collider_def();
+    sx_aabb lb;
+    int i, pair_contacts = 0;
+    double slop;
+    (void)state;
+    add_shape(w, ground, sx_box_shape(SX_R(10.0), SX_R(0.5)));
+    u = make_body(w, SX_BODY_DYNAMIC, 0.0, 0.0);
+    uc = add_u(w, u);
+    /* a small L: [0, 1] x [0, 0.4] and [0, 0.4] x [0.4, 1], dropped with its
+     * corner at (-0.5, 1.5): it falls into the notch [-1, 1] x [0.5, 2] */
+    parts[0] = sx_compound_part_make(sx_box_shape(SX_R(0.5), SX_R(0.2)), at(0.5, 0.2, 0.0));
+    parts[1] = sx_compound_part_make(sx_box_shape(SX_R(0.2), SX_R(0.3)), at(0.2, 0.7, 0.0));
+    c.parts = parts;
+    c.count = 2;
+    l = make_body(w, SX_BODY_DYNAMIC, -0.5, 1.5);
+    assert_int_equal(sx_body_add_compound(w, l, &c, &cd, &lc), SX_OK);
+    slop = (double)sx_world_linear_slop(w);
+    run(w, 4.0);
+    /* the U stands on the ground, the L lies on the U's floor (y = 0.5) */
+    assert_near(sx_body_get_position(w, u).y, 0.0, 2.0 * slop);
+    assert_near(sx_body_get_angle(w, u), 0.0, 1e-2);
+    lb = sx_compound_aabb(&c, sx_body_get_transform(w, l));
+    assert_near(lb.lower.y, 0.5, 3.0 * slop);
+    assert_true(lb.lower.x >= SX_R(-1.0) - SX_R(0.01) && lb.upper.x <= SX_R(1.0) + SX_R(0.01));
+    assert_true(sx_length(sx_body_get_linear_velocity(w, l)) < SX_R(0.05));
+    /* L on the U's floor: contacts between U part 0 and L parts */
+    for (i = 0; i < sx_world_contact_count(w); ++i) {
+        sx_contact_data d;
+        assert_int_equal(sx_world_get_contact(w, i, &d), SX_OK);
+        if (sx_collider_id_to_u64(d.collider_a) != sx_collider_id_to_u64(uc) ||
+            sx_collider_id_to_u64(d.collider_b) != sx_collider_id_to_u64(lc)) {
+            continue;
+        }
+        ++pair_contacts;
+        assert_true(d.part_a >= 0 && d.part_a < 3 && d.part_b >= 0 && d.part_b < 2);
+        if (d.part_a == 0) assert_near(d.normal.y, 1.0, 1e-2);
+    }
+    assert_true(pair_contacts >= 1);
+    sx_world_destroy(w);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(ball_rests_in_the_notch_of_a_static_u),
@@ -635,6 +685,7 @@ int main(void) {
         cmocka_unit_test(queries_hit_the_right_part),
         cmocka_unit_test(a_compound_sensor_sees_what_enters_its_parts),
         cmocka_unit_test(a_dynamic_l_falls_and_rests_on_the_ground),
+        cmocka_unit_test(a_compound_rests_inside_another_compound),
         cmocka_unit_test(bad_outlines_and_compounds_return_statuses),
     };
     return cmocka_run_group_tests_name("world_compound", tests, sx_test_group_setup,
