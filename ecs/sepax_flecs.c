@@ -566,6 +566,7 @@ static void sx_ecs_publish_contacts(ecs_iter_t *it) {
     SxContacts *out = ecs_field(it, SxContacts, 0);
     sx_world *w = st->world;
     int32_t n = sx_world_contact_count(w), i, kept = 0;
+    sx_collider_id prev_a = {0, 0}, prev_b = {0, 0};
     sx_contact_events events;
     sx_sensor_events sensors;
     SxContact *swap_items = st->previous;
@@ -584,6 +585,17 @@ static void sx_ecs_publish_contacts(ecs_iter_t *it) {
         SxContact *c = &st->contacts[kept];
         ecs_entity_t ea, eb;
         if (sx_world_get_contact(w, i, &d) != SX_OK) continue;
+        /* a compound's part pairs follow one another: one SxContact per
+         * collider pair, with the first part pair's normal and point and
+         * every part pair's points counted */
+        if (kept > 0 && d.collider_a.index == prev_a.index &&
+            d.collider_a.generation == prev_a.generation && d.collider_b.index == prev_b.index &&
+            d.collider_b.generation == prev_b.generation) {
+            st->contacts[kept - 1].point_count += d.count;
+            continue;
+        }
+        prev_a = d.collider_a;
+        prev_b = d.collider_b;
         ea = sx_ecs_entity_of(st, d.body_a);
         eb = sx_ecs_entity_of(st, d.body_b);
         c->point_count = d.count;

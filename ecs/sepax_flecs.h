@@ -124,7 +124,10 @@ typedef struct SxPhysicsSettings {
     bool enable_sleep;
 } SxPhysicsSettings;
 
-/** One contact of the last fixed step (collider pairs with a manifold). */
+/** One contact of the last fixed step (collider pairs with a manifold; a
+ *  compound collider touching on several parts is still one SxContact: the
+ *  normal and point of its first touching part pair, point_count summed over
+ *  all of them). */
 typedef struct SxContact {
     ecs_entity_t entity_a, entity_b; /**< entity_a < entity_b */
     sx_vec2 normal;                  /**< unit, from entity_a to entity_b */
