@@ -143,7 +143,15 @@ void sx_body_update_mass(sx_world *world, int slot) {
             const sx_collider *col = &world->colliders[c];
             sx_mass_data md;
             if (col->density == SX_R(0.0)) continue;
-            md = sx_shape_mass(&col->shape, col->density);
+            if (col->part_count > 0) {
+                sx_compound view;
+                view.parts = col->parts;
+                view.count = col->part_count;
+                /* area-weighted centroid, parallel-axis inertia of the parts */
+                md = sx_compound_mass(&view, col->density);
+            } else {
+                md = sx_shape_mass(&col->shape, col->density);
+            }
             mass += md.mass;
             weighted = sx_mul_add(weighted, md.mass, md.center);
             /* parallel-axis theorem: inertia about the body origin first */
@@ -312,6 +320,13 @@ static void sx_free_collider_slot(sx_world *world, int slot) {
     sx_collider *c = &world->colliders[slot];
     sx_world_remove_contacts_of(world, slot);
     sx_sensors_remove_collider(world, slot);
+    if (c->parts != NULL) {
+        sx_free(c->parts, (size_t)c->part_count * sizeof(sx_compound_part));
+        sx_free(c->part_boxes, (size_t)c->part_count * sizeof(sx_aabb));
+        c->parts = NULL;
+        c->part_boxes = NULL;
+        c->part_count = 0;
+    }
     c->alive = false;
     c->generation = c->generation == 0xFFFFFFFFu ? 1u : c->generation + 1u;
     c->next_free = world->collider_free;
@@ -344,10 +359,8 @@ sx_status sx_destroy_body(sx_world *world, sx_body_id body) {
     return SX_OK;
 }
 
-/* Validates a collider def: the status sx_body_add_collider returns. */
-static sx_status sx_check_collider_def(const sx_collider_def *def) {
-    sx_status s = sx_shape_validate(&def->shape);
-    if (s != SX_OK) return s;
+/* Validates the material fields of a collider def (all but the shape). */
+static sx_status sx_check_material(const sx_collider_def *def) {
     if (!sx_is_finite(def->density) || !sx_is_finite(def->friction) ||
         !sx_is_finite(def->restitution)) {
         return SX_ERR_NONFINITE;
@@ -356,6 +369,13 @@ static sx_status sx_check_collider_def(const sx_collider_def *def) {
         return SX_ERR_INVALID_ARG;
     }
     return SX_OK;
+}
+
+/* Validates a collider def: the status sx_body_add_collider returns. */
+static sx_status sx_check_collider_def(const sx_collider_def *def) {
+    sx_status s = sx_shape_validate(&def->shape);
+    if (s != SX_OK) return s;
+    return sx_check_material(def);
 }
 
 /* Grows the three per-collider arrays, each with its own capacity. */
@@ -372,35 +392,54 @@ static bool sx_reserve_colliders(sx_world *world, int need) {
     return ok;
 }
 
-sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collider_def *def,
-                               sx_collider_id *out) {
-    int bslot, slot, *link;
+/* Takes a collider slot for a checked def on body slot bslot. `parts` (NULL
+ * for a plain collider) is an sx_alloc'ed array of part_count parts that the
+ * collider takes over; on error it is freed here. */
+static sx_status sx_attach_collider(sx_world *world, int bslot, const sx_collider_def *def,
+                                    sx_compound_part *parts, int part_count, sx_collider_id *out) {
+    int slot, *link;
     sx_collider *c;
-    sx_status s;
     uint32_t generation;
-    if (out != NULL) {
-        out->index = 0;
-        out->generation = 0;
+    sx_aabb *boxes = NULL;
+    if (parts != NULL) {
+        boxes = (sx_aabb *)sx_alloc((size_t)part_count * sizeof(sx_aabb));
+        if (boxes == NULL) {
+            sx_free(parts, (size_t)part_count * sizeof(sx_compound_part));
+            return SX_ERR_NO_MEMORY;
+        }
     }
-    if (world == NULL || def == NULL) return SX_ERR_INVALID_ARG;
-    bslot = sx_body_slot(world, body);
-    if (bslot < 0) return SX_ERR_STALE_HANDLE;
-    s = sx_check_collider_def(def);
-    if (s != SX_OK) return s;
     if (world->collider_free >= 0) {
         slot = world->collider_free;
         world->collider_free = world->colliders[slot].next_free;
         generation = world->colliders[slot].generation;
     } else {
-        if (world->collider_slots == 0x7FFFFFFF) return SX_ERR_CAPACITY;
-        if (!sx_reserve_colliders(world, world->collider_slots + 1)) return SX_ERR_NO_MEMORY;
+        sx_status fail = SX_OK;
+        if (world->collider_slots == 0x7FFFFFFF) {
+            fail = SX_ERR_CAPACITY;
+        } else if (!sx_reserve_colliders(world, world->collider_slots + 1)) {
+            fail = SX_ERR_NO_MEMORY;
+        }
+        if (fail != SX_OK) {
+            sx_free(parts, (size_t)part_count * sizeof(sx_compound_part));
+            sx_free(boxes, (size_t)part_count * sizeof(sx_aabb));
+            return fail;
+        }
         slot = world->collider_slots++;
         generation = 1;
         world->bp_kind[slot] = SX_BP_OUT;
     }
     c = &world->colliders[slot];
     memset(c, 0, sizeof(*c));
-    c->shape = def->shape;
+    if (parts != NULL) {
+        /* a compound: its first part's shape stands in the plain field so
+         * no reader ever sees an uninitialised shape */
+        c->shape = parts[0].shape;
+        c->parts = parts;
+        c->part_boxes = boxes;
+        c->part_count = part_count;
+    } else {
+        c->shape = def->shape;
+    }
     c->density = def->density;
     c->friction = def->friction;
     c->restitution = def->restitution;
@@ -423,6 +462,113 @@ sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collid
     if (out != NULL) {
         out->index = (uint32_t)slot;
         out->generation = generation;
+    }
+    return SX_OK;
+}
+
+/* The checks every collider attach starts with. */
+static sx_status sx_attach_prologue(sx_world *world, sx_body_id body, const sx_collider_def *def,
+                                    sx_collider_id *out, int *bslot) {
+    if (out != NULL) {
+        out->index = 0;
+        out->generation = 0;
+    }
+    if (world == NULL || def == NULL) return SX_ERR_INVALID_ARG;
+    *bslot = sx_body_slot(world, body);
+    if (*bslot < 0) return SX_ERR_STALE_HANDLE;
+    return SX_OK;
+}
+
+sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collider_def *def,
+                               sx_collider_id *out) {
+    int bslot = -1;
+    sx_status s = sx_attach_prologue(world, body, def, out, &bslot);
+    if (s != SX_OK) return s;
+    s = sx_check_collider_def(def);
+    if (s != SX_OK) return s;
+    return sx_attach_collider(world, bslot, def, NULL, 0, out);
+}
+
+sx_status sx_body_add_compound(sx_world *world, sx_body_id body, const sx_compound *compound,
+                               const sx_collider_def *def, sx_collider_id *out) {
+    int bslot = -1;
+    sx_compound_part *parts;
+    sx_status s = sx_attach_prologue(world, body, def, out, &bslot);
+    if (s != SX_OK) return s;
+    if (compound == NULL) return SX_ERR_INVALID_ARG;
+    s = sx_compound_validate(compound);
+    if (s != SX_OK) return s;
+    s = sx_check_material(def);
+    if (s != SX_OK) return s;
+    if ((size_t)compound->count > SIZE_MAX / sizeof(sx_compound_part)) return SX_ERR_CAPACITY;
+    parts = (sx_compound_part *)sx_alloc((size_t)compound->count * sizeof(sx_compound_part));
+    if (parts == NULL) return SX_ERR_NO_MEMORY;
+    memcpy(parts, compound->parts, (size_t)compound->count * sizeof(sx_compound_part));
+    return sx_attach_collider(world, bslot, def, parts, compound->count, out);
+}
+
+sx_status sx_body_add_outline(sx_world *world, sx_body_id body, const sx_vec2 *points, int count,
+                              const sx_collider_def *def, sx_collider_id *out) {
+    int bslot = -1, part_count = 0, i;
+    size_t scratch_bytes, shape_bytes;
+    void *scratch;
+    sx_shape *shapes;
+    sx_compound_part *parts;
+    sx_status s = sx_attach_prologue(world, body, def, out, &bslot);
+    if (s != SX_OK) return s;
+    if (points == NULL || count < 3) return SX_ERR_INVALID_ARG;
+    s = sx_check_material(def);
+    if (s != SX_OK) return s;
+    scratch_bytes = sx_decompose_scratch_bytes(count);
+    if (scratch_bytes == 0 || (size_t)(count - 2) > SIZE_MAX / sizeof(sx_compound_part)) {
+        return SX_ERR_CAPACITY;
+    }
+    shape_bytes = (size_t)(count - 2) * sizeof(sx_shape);
+    scratch = sx_alloc(scratch_bytes);
+    shapes = (sx_shape *)sx_alloc(shape_bytes);
+    if (scratch == NULL || shapes == NULL) {
+        sx_free(scratch, scratch_bytes);
+        sx_free(shapes, shape_bytes);
+        return SX_ERR_NO_MEMORY;
+    }
+    s = sx_decompose_polygon(points, count, scratch, scratch_bytes, shapes, count - 2, &part_count,
+                             NULL);
+    sx_free(scratch, scratch_bytes);
+    if (s == SX_OK && part_count < 1) s = SX_ERR_DEGENERATE;
+    if (s != SX_OK) {
+        sx_free(shapes, shape_bytes);
+        return s;
+    }
+    parts = (sx_compound_part *)sx_alloc((size_t)part_count * sizeof(sx_compound_part));
+    if (parts == NULL) {
+        sx_free(shapes, shape_bytes);
+        return SX_ERR_NO_MEMORY;
+    }
+    for (i = 0; i < part_count; ++i)
+        parts[i] = sx_compound_part_make(shapes[i], sx_xform_identity());
+    sx_free(shapes, shape_bytes);
+    return sx_attach_collider(world, bslot, def, parts, part_count, out);
+}
+
+int sx_collider_get_part_count(const sx_world *world, sx_collider_id collider) {
+    int slot = sx_collider_slot(world, collider);
+    if (slot < 0) return 0;
+    return world->colliders[slot].part_count > 0 ? world->colliders[slot].part_count : 1;
+}
+
+sx_status sx_collider_get_part(const sx_world *world, sx_collider_id collider, int index,
+                               sx_compound_part *out) {
+    int slot;
+    const sx_collider *c;
+    if (world == NULL || out == NULL) return SX_ERR_INVALID_ARG;
+    slot = sx_collider_slot(world, collider);
+    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    c = &world->colliders[slot];
+    if (index < 0 || index >= (c->part_count > 0 ? c->part_count : 1)) return SX_ERR_INVALID_ARG;
+    if (c->part_count > 0) {
+        *out = c->parts[index];
+    } else {
+        *out = sx_compound_part_make(c->shape, sx_xform_identity());
     }
     return SX_OK;
 }

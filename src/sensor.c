@@ -89,7 +89,7 @@ sx_status sx_sensors_update(sx_world *world) {
         i = world->sensor_colliders[k];
         s = &world->colliders[i];
         xs = world->sims[s->body].xf;
-        box = sx_shape_aabb(&s->shape, xs);
+        box = sx_collider_aabb(s, xs);
         /* the broadphase's sets hold every colliding collider's (fattened)
          * bounds as of this collide */
         world->visitor_count = 0;
@@ -105,7 +105,7 @@ sx_status sx_sensors_update(sx_world *world) {
             c = &world->colliders[j];
             if (!sx_sensor_sees(world, s, c)) continue;
             xc = world->sims[c->body].xf;
-            if (!sx_overlap(&s->shape, xs, &c->shape, xc)) continue;
+            if (!sx_colliders_overlap(s, xs, c, xc)) continue;
             if (world->sensor_count == world->sensor_capacity) {
                 void *p = world->sensor_pairs;
                 bool ok = sx_grow_array(&p, &world->sensor_capacity, world->sensor_count + 1,

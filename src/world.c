@@ -79,7 +79,15 @@ sx_world *sx_world_create(const sx_world_def *def) {
 }
 
 void sx_world_destroy(sx_world *world) {
+    int i;
     if (world == NULL) return;
+    for (i = 0; i < world->collider_slots; ++i) {
+        sx_collider *c = &world->colliders[i];
+        if (c->alive && c->parts != NULL) {
+            sx_free(c->parts, (size_t)c->part_count * sizeof(sx_compound_part));
+            sx_free(c->part_boxes, (size_t)c->part_count * sizeof(sx_aabb));
+        }
+    }
     sx_free(world->sims, (size_t)world->sim_capacity * sizeof(sx_body_sim));
     sx_free(world->infos, (size_t)world->info_capacity * sizeof(sx_body_info));
     sx_free(world->colliders, (size_t)world->collider_capacity * sizeof(sx_collider));
@@ -144,6 +152,29 @@ static bool sx_push_slot(int **array, int *count, int *capacity, int slot) {
     return true;
 }
 
+/* The fattened bounds of a collider (half the margin on each side: bounds
+ * meet when the gap < margin) into world->aabbs; a compound's are the union
+ * of its parts', each kept in part_boxes for the part-pair culling of the
+ * narrowphase. */
+static void sx_collider_bounds(sx_world *world, int slot) {
+    sx_collider *c = &world->colliders[slot];
+    sx_xform xf = world->sims[c->body].xf;
+    const sx_real half = SX_R(0.5) * world->margin;
+    if (c->part_count > 0) {
+        sx_aabb u;
+        int k;
+        for (k = 0; k < c->part_count; ++k) {
+            sx_aabb pb = sx_aabb_fatten(
+                sx_shape_aabb(&c->parts[k].shape, sx_xform_mul(xf, c->parts[k].offset)), half);
+            c->part_boxes[k] = pb;
+            u = k == 0 ? pb : sx_aabb_union(u, pb);
+        }
+        world->aabbs[slot] = u;
+    } else {
+        world->aabbs[slot] = sx_aabb_fatten(sx_shape_aabb(&c->shape, xf), half);
+    }
+}
+
 sx_status sx_world_refresh_sets(sx_world *world) {
     int i;
     sx_status s;
@@ -195,9 +226,7 @@ sx_status sx_world_refresh_sets(sx_world *world) {
          * bounds) or is teleported (aabb_stale); collide recomputes the
          * others. */
         if (kind != prev || c->aabb_stale) {
-            /* half the margin on each side: bounds meet when the gap < margin */
-            world->aabbs[i] =
-                sx_aabb_fatten(sx_shape_aabb(&c->shape, b->xf), SX_R(0.5) * world->margin);
+            sx_collider_bounds(world, i);
             c->aabb_stale = false;
             s = sx_broadphase_touch(&world->bp, i, world->collider_slots);
             if (s != SX_OK) return s;
@@ -296,16 +325,26 @@ static bool sx_push_event(const sx_world *world, const sx_contact *c, sx_contact
     return true;
 }
 
+/* The index past the run of contacts with the key of contacts[i] (a
+ * compound pair has one contact per touching part pair, all with one key). */
+static int sx_skip_run(const sx_contact *contacts, int count, int i) {
+    uint64_t key = contacts[i].key;
+    while (i < count && contacts[i].key == key)
+        ++i;
+    return i;
+}
+
 /* Compares the new contact list with the old one (both sorted by key):
- * pairs only in the new one began, pairs only in the old one ended. */
+ * collider pairs only in the new one began, pairs only in the old one ended
+ * (one event per collider pair, however many part pairs touch). */
 static sx_status sx_record_events(sx_world *world) {
     int i = 0, j = 0;
     while (i < world->contact_count || j < world->old_contact_count) {
         const sx_contact *n = i < world->contact_count ? &world->contacts[i] : NULL;
         const sx_contact *o = j < world->old_contact_count ? &world->old_contacts[j] : NULL;
         if (n != NULL && o != NULL && n->key == o->key) {
-            ++i;
-            ++j;
+            i = sx_skip_run(world->contacts, world->contact_count, i);
+            j = sx_skip_run(world->old_contacts, world->old_contact_count, j);
         } else if (o == NULL || (n != NULL && n->key < o->key)) {
             if (world->contacts[i].thawed) {
                 world->contacts[i].thawed = false;
@@ -313,13 +352,13 @@ static sx_status sx_record_events(sx_world *world) {
                                       &world->begin_capacity)) {
                 return SX_ERR_NO_MEMORY;
             }
-            ++i;
+            i = sx_skip_run(world->contacts, world->contact_count, i);
         } else {
             if (!sx_push_event(world, o, &world->end_events, &world->end_count,
                                &world->end_capacity)) {
                 return SX_ERR_NO_MEMORY;
             }
-            ++j;
+            j = sx_skip_run(world->old_contacts, world->old_contact_count, j);
         }
     }
     return SX_OK;
@@ -385,9 +424,14 @@ static sx_status sx_freeze_contacts(sx_world *world) {
     return SX_OK;
 }
 
-static int sx_contact_key_cmp(const void *a, const void *b) {
-    uint64_t ka = ((const sx_contact *)a)->key, kb = ((const sx_contact *)b)->key;
-    return ka < kb ? -1 : (ka > kb ? 1 : 0);
+/* The contact list's order: key, then (part_a, part_b) for a compound's
+ * several contacts with one key. */
+static int sx_contact_key_cmp(const void *pa, const void *pb) {
+    const sx_contact *a = (const sx_contact *)pa, *b = (const sx_contact *)pb;
+    if (a->key != b->key) return a->key < b->key ? -1 : 1;
+    if (a->part_a != b->part_a) return a->part_a < b->part_a ? -1 : 1;
+    if (a->part_b != b->part_b) return a->part_b < b->part_b ? -1 : 1;
+    return 0;
 }
 
 /* True when the sorted list holds a contact with this key. */
@@ -453,6 +497,96 @@ static sx_status sx_thaw_contacts(sx_world *world, bool mark) {
     return SX_OK;
 }
 
+/* Appends the contact of manifold m (m->count >= 1) between part pa of
+ * collider key >> 32 and part pb of collider key & 0xFFFFFFFF, matching the
+ * warm-starting impulses against the pair's old contacts
+ * old_contacts[old_begin, old_end) with the same parts. */
+static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, const sx_manifold *m,
+                                int old_begin, int old_end) {
+    int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), k;
+    const sx_collider *ca = &world->colliders[ia], *cb = &world->colliders[ib];
+    const sx_body_sim *ba = &world->sims[ca->body], *bb = &world->sims[cb->body];
+    const sx_contact *old = NULL;
+    sx_contact *c;
+    for (k = old_begin; k < old_end; ++k) {
+        if (world->old_contacts[k].part_a == pa && world->old_contacts[k].part_b == pb) {
+            old = &world->old_contacts[k];
+            break;
+        }
+    }
+    /* an awake body touching a sleeping one wakes its island */
+    if (!ba->awake) sx_wake_body(world, ca->body);
+    if (!bb->awake) sx_wake_body(world, cb->body);
+    if (!sx_reserve_contact(world)) return SX_ERR_NO_MEMORY;
+    c = &world->contacts[world->contact_count++];
+    c->key = key;
+    c->thawed = false;
+    c->collider_a = ia;
+    c->collider_b = ib;
+    c->part_a = pa;
+    c->part_b = pb;
+    c->body_a = ca->body;
+    c->body_b = cb->body;
+    c->normal = m->normal;
+    c->local_normal = sx_inv_rotate(ba->xf.q, m->normal);
+    c->friction = sx_sqrt(ca->friction * cb->friction);
+    c->restitution = sx_maxr(ca->restitution, cb->restitution);
+    c->count = m->count;
+    for (k = 0; k < m->count; ++k) {
+        const sx_manifold_point *mp = &m->points[k];
+        sx_contact_point *p = &c->points[k];
+        /* the surface points of A and B, depth apart along the normal */
+        sx_vec2 pa_w = sx_mul_add(mp->point, SX_R(0.5) * mp->depth, m->normal);
+        sx_vec2 pb_w = sx_mul_sub(mp->point, SX_R(0.5) * mp->depth, m->normal);
+        memset(p, 0, sizeof(*p));
+        p->point = mp->point;
+        p->local_a = sx_xform_inv_point(ba->xf, pa_w);
+        p->local_b = sx_xform_inv_point(bb->xf, pb_w);
+        p->anchor_a = sx_sub(mp->point, ba->center);
+        p->anchor_b = sx_sub(mp->point, bb->center);
+        p->separation = -mp->depth;
+        p->id = mp->id;
+        sx_match_point(p, old);
+    }
+    return SX_OK;
+}
+
+/* The narrowphase of a pair in which at least one collider is a compound:
+ * one manifold per part pair within the margin, in (part_a, part_b) order,
+ * so each touching part pair is its own contact for the solver, with its
+ * own feature ids and warm-starting impulses. Parts are culled first by
+ * their bounds (fattened by half the margin, as the broadphase's; found once
+ * with the collider's bounds, in its part_boxes). */
+static sx_status sx_collide_parts(sx_world *world, uint64_t key, int old_begin, int old_end) {
+    int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), i, j;
+    const sx_collider *ca = &world->colliders[ia], *cb = &world->colliders[ib];
+    sx_xform xa = world->sims[ca->body].xf, xb = world->sims[cb->body].xf;
+    sx_compound_part ta, tb;
+    sx_compound va = sx_collider_compound(ca, &ta), vb = sx_collider_compound(cb, &tb);
+    /* a plain collider's one part box is its own bounds */
+    const sx_aabb *boxes_a =
+        ca->part_count > 0 ? ca->part_boxes : &world->aabbs[ia];
+    const sx_aabb *boxes_b =
+        cb->part_count > 0 ? cb->part_boxes : &world->aabbs[ib];
+    for (i = 0; i < va.count; ++i) {
+        sx_xform xi;
+        if (!sx_aabb_overlaps(boxes_a[i], world->aabbs[ib])) continue;
+        xi = sx_xform_mul(xa, va.parts[i].offset);
+        for (j = 0; j < vb.count; ++j) {
+            sx_manifold m;
+            sx_status s;
+            if (!sx_aabb_overlaps(boxes_a[i], boxes_b[j])) continue;
+            if (sx_collide_ex(&va.parts[i].shape, xi, &vb.parts[j].shape,
+                              sx_xform_mul(xb, vb.parts[j].offset), world->margin, &m) <= 0) {
+                continue;
+            }
+            s = sx_add_contact(world, key, i, j, &m, old_begin, old_end);
+            if (s != SX_OK) return s;
+        }
+    }
+    return SX_OK;
+}
+
 sx_status sx_world_collide(sx_world *world) {
     sx_contact *swap;
     int i, old_index = 0, cap;
@@ -462,13 +596,8 @@ sx_status sx_world_collide(sx_world *world) {
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
     /* the bounds of the colliders the step moves */
-    for (i = 0; i < world->active_collider_count; ++i) {
-        int slot = world->active_colliders[i];
-        const sx_collider *c = &world->colliders[slot];
-        /* half the margin on each side: bounds meet when the gap < margin */
-        world->aabbs[slot] = sx_aabb_fatten(sx_shape_aabb(&c->shape, world->sims[c->body].xf),
-                                            SX_R(0.5) * world->margin);
-    }
+    for (i = 0; i < world->active_collider_count; ++i)
+        sx_collider_bounds(world, world->active_colliders[i]);
     s = sx_broadphase_update(&world->bp, world->aabbs, world->bp_kind, world->collider_slots,
                              world->active_colliders, world->active_collider_count);
     if (s != SX_OK) return s;
@@ -493,55 +622,27 @@ sx_status sx_world_collide(sx_world *world) {
     world->contact_count = 0;
     for (i = 0; i < world->bp.pair_count; ++i) {
         uint64_t key = world->bp.pairs[i];
-        int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), k;
+        int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), old_begin;
         const sx_collider *ca = &world->colliders[ia], *cb = &world->colliders[ib];
-        const sx_body_sim *ba, *bb;
-        const sx_contact *old = NULL;
-        sx_contact *c;
         sx_manifold m;
         int n;
+        /* the old contacts of this pair: one, or one per part pair */
         while (old_index < world->old_contact_count && world->old_contacts[old_index].key < key)
             ++old_index;
-        if (old_index < world->old_contact_count && world->old_contacts[old_index].key == key) {
-            old = &world->old_contacts[old_index++];
-        }
+        old_begin = old_index;
+        while (old_index < world->old_contact_count && world->old_contacts[old_index].key == key)
+            ++old_index;
         if (ca->body == cb->body || !sx_filters_collide(&ca->filter, &cb->filter)) continue;
-        ba = &world->sims[ca->body];
-        bb = &world->sims[cb->body];
-        n = sx_collide_ex(&ca->shape, ba->xf, &cb->shape, bb->xf, world->margin, &m);
-        if (n <= 0) continue;
-        /* an awake body touching a sleeping one wakes its island */
-        if (!ba->awake) sx_wake_body(world, ca->body);
-        if (!bb->awake) sx_wake_body(world, cb->body);
-        if (!sx_reserve_contact(world)) return SX_ERR_NO_MEMORY;
-        c = &world->contacts[world->contact_count++];
-        c->key = key;
-        c->thawed = false;
-        c->collider_a = ia;
-        c->collider_b = ib;
-        c->body_a = ca->body;
-        c->body_b = cb->body;
-        c->normal = m.normal;
-        c->local_normal = sx_inv_rotate(ba->xf.q, m.normal);
-        c->friction = sx_sqrt(ca->friction * cb->friction);
-        c->restitution = sx_maxr(ca->restitution, cb->restitution);
-        c->count = n;
-        for (k = 0; k < n; ++k) {
-            const sx_manifold_point *mp = &m.points[k];
-            sx_contact_point *p = &c->points[k];
-            /* the surface points of A and B, depth apart along the normal */
-            sx_vec2 pa = sx_mul_add(mp->point, SX_R(0.5) * mp->depth, m.normal);
-            sx_vec2 pb = sx_mul_sub(mp->point, SX_R(0.5) * mp->depth, m.normal);
-            memset(p, 0, sizeof(*p));
-            p->point = mp->point;
-            p->local_a = sx_xform_inv_point(ba->xf, pa);
-            p->local_b = sx_xform_inv_point(bb->xf, pb);
-            p->anchor_a = sx_sub(mp->point, ba->center);
-            p->anchor_b = sx_sub(mp->point, bb->center);
-            p->separation = -mp->depth;
-            p->id = mp->id;
-            sx_match_point(p, old);
+        if (ca->part_count > 0 || cb->part_count > 0) {
+            s = sx_collide_parts(world, key, old_begin, old_index);
+            if (s != SX_OK) return s;
+            continue;
         }
+        n = sx_collide_ex(&ca->shape, world->sims[ca->body].xf, &cb->shape,
+                          world->sims[cb->body].xf, world->margin, &m);
+        if (n <= 0) continue;
+        s = sx_add_contact(world, key, 0, 0, &m, old_begin, old_index);
+        if (s != SX_OK) return s;
     }
     /* an awake body touching a sleeping island woke it: its contacts join
      * this step as they are */
@@ -582,6 +683,8 @@ sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data
     out->body_a.generation = world->infos[c->body_a].generation;
     out->body_b.index = (uint32_t)c->body_b;
     out->body_b.generation = world->infos[c->body_b].generation;
+    out->part_a = c->part_a;
+    out->part_b = c->part_b;
     out->normal = c->normal;
     out->count = c->count;
     for (k = 0; k < c->count; ++k) {

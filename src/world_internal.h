@@ -14,6 +14,7 @@
 
 #include "core.h"
 #include "sepax/collide.h"
+#include "sepax/compound.h"
 #include "sepax/world.h"
 
 /* Hot per-body state. Static and disabled bodies keep inv_mass and
@@ -56,7 +57,14 @@ typedef struct sx_body_info {
 } sx_body_info;
 
 typedef struct sx_collider {
-    sx_shape shape;
+    sx_shape shape; /* unused by a compound */
+    /* a compound collider: the world's own copy of its parts (NULL and 0
+     * for a plain collider, which then has exactly one implicit part) */
+    sx_compound_part *parts;
+    int part_count;
+    /* a compound's parts' fattened bounds, part_count of them, found with
+     * the collider's bounds (NULL for a plain collider) */
+    sx_aabb *part_boxes;
     sx_real density, friction, restitution;
     sx_filter filter;
     bool sensor;
@@ -92,6 +100,10 @@ typedef struct sx_contact_point {
 typedef struct sx_contact {
     uint64_t key; /* collider_a << 32 | collider_b, collider_a < collider_b */
     int collider_a, collider_b;
+    /* the part of each collider (0 for a plain one): a compound has one
+     * contact per touching part pair; the list is sorted by (key, part_a,
+     * part_b) */
+    int part_a, part_b;
     int body_a, body_b;
     sx_vec2 normal;       /* world, from A to B, at collide time */
     sx_vec2 local_normal; /* the normal in A's body frame */
@@ -252,6 +264,44 @@ struct sx_world {
 static inline bool sx_contact_is_active(const sx_world *world, const sx_contact *c) {
     const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
     return (a->dynamic && a->awake) || (b->dynamic && b->awake);
+}
+
+/* The collider as a compound: its own parts, or for a plain collider a
+ * one-part view of its shape built in *tmp. */
+static inline sx_compound sx_collider_compound(const sx_collider *c, sx_compound_part *tmp) {
+    sx_compound view;
+    if (c->part_count > 0) {
+        view.parts = c->parts;
+        view.count = c->part_count;
+    } else {
+        tmp->shape = c->shape;
+        tmp->offset = sx_xform_identity();
+        view.parts = tmp;
+        view.count = 1;
+    }
+    return view;
+}
+
+/* Tight world bounds of a collider on a body placed by xf. */
+static inline sx_aabb sx_collider_aabb(const sx_collider *c, sx_xform xf) {
+    if (c->part_count > 0) {
+        sx_compound view;
+        view.parts = c->parts;
+        view.count = c->part_count;
+        return sx_compound_aabb(&view, xf);
+    }
+    return sx_shape_aabb(&c->shape, xf);
+}
+
+/* True if two colliders placed by xa and xb overlap (touching counts). */
+static inline bool sx_colliders_overlap(const sx_collider *a, sx_xform xa, const sx_collider *b,
+                                        sx_xform xb) {
+    sx_compound_part ta, tb;
+    sx_compound va, vb;
+    if (a->part_count == 0 && b->part_count == 0) return sx_overlap(&a->shape, xa, &b->shape, xb);
+    va = sx_collider_compound(a, &ta);
+    vb = sx_collider_compound(b, &tb);
+    return sx_compound_overlap_compound(&va, xa, &vb, xb);
 }
 
 /* Grows *array (elements of `size` bytes, *capacity of them) to hold at least

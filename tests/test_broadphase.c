@@ -3,7 +3,8 @@
  * A white-box test: it reads the world's private layout to compare the
  * broadphase's pairs, after every collide, with the pairs found by testing
  * every collider against every other on freshly computed bounds. The scene
- * has static, kinematic and dynamic bodies of every shape; bodies fall
+ * has static, kinematic and dynamic bodies of every shape and concave
+ * compounds; bodies fall
  * asleep and wake, are teleported, created and destroyed, kinematic bodies
  * start and stop, colliders come and go. Fixed seeds: the same run every
  * time. */
@@ -55,8 +56,7 @@ static int check_pairs(const sx_world *w, const unsigned char *kind) {
         const sx_collider *c = &w->colliders[i];
         assert_int_equal(kind[i], w->bp_kind[i]);
         if (kind[i] == SX_BP_OUT) continue;
-        box[i] = sx_aabb_fatten(sx_shape_aabb(&c->shape, w->sims[c->body].xf),
-                                SX_R(0.5) * w->margin);
+        box[i] = sx_aabb_fatten(sx_collider_aabb(c, w->sims[c->body].xf), SX_R(0.5) * w->margin);
         /* cached bounds of bodies that do not move must still be exact */
         assert_true(memcmp(&box[i], &w->aabbs[i], sizeof(sx_aabb)) == 0);
     }
@@ -94,9 +94,7 @@ static void check_sensors(const sx_world *w) {
                 w->infos[s->body].type == SX_BODY_STATIC) {
                 continue;
             }
-            if (!sx_overlap(&s->shape, w->sims[s->body].xf, &c->shape, w->sims[c->body].xf)) {
-                continue;
-            }
+            if (!sx_colliders_overlap(s, w->sims[s->body].xf, c, w->sims[c->body].xf)) continue;
             assert_true(count < w->sensor_count);
             assert_true(w->sensor_pairs[count] ==
                         (((uint64_t)(uint32_t)i << 32) | (uint64_t)(uint32_t)j));
@@ -166,6 +164,25 @@ static void broadphase_pairs_equal_brute_force_through_sleep_teleport_create_des
                          SX_OK);
         ids[count] = add(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(6.0)), &ground);
         assert_int_equal(sx_body_add_collider(w, ids[count++], &cd, NULL), SX_OK);
+    }
+    {
+        /* concave compounds: a static U and two dynamic L outlines */
+        static const sx_vec2 u[8] = {{-2, 0}, {2, 0}, {2, 2}, {SX_R(1.5), 2}, {SX_R(1.5), SX_R(0.5)}, {-SX_R(1.5), SX_R(0.5)},
+                                     {-SX_R(1.5), 2}, {-2, 2}};
+        static const sx_vec2 l[6] = {{0, 0}, {2, 0}, {2, SX_R(0.5)}, {SX_R(0.5), SX_R(0.5)}, {SX_R(0.5), 2}, {0, 2}};
+        sx_collider_def cd = sx_default_collider_def();
+        sx_body_def bd = sx_default_body_def();
+        sx_body_id b;
+        bd.position = sx_v2(SX_R(-6.0), SX_R(0.0));
+        assert_int_equal(sx_create_body(w, &bd, &b), SX_OK);
+        assert_int_equal(sx_body_add_outline(w, b, u, 8, &cd, NULL), SX_OK);
+        bd.type = SX_BODY_DYNAMIC;
+        for (i = 0; i < 2; ++i) {
+            bd.position = sx_v2(SX_R(-7.0) + SX_R(2.5) * (sx_real)i, SX_R(4.0));
+            assert_int_equal(sx_create_body(w, &bd, &b), SX_OK);
+            assert_int_equal(sx_body_add_outline(w, b, l, 6, &cd, NULL), SX_OK);
+            ids[count++] = b;
+        }
     }
     for (i = 0; i < 150; ++i) {
         sx_shape s = random_shape(&rng);

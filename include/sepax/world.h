@@ -34,6 +34,7 @@
 #include "math.h"
 #include "shape.h"
 #include "collide.h"
+#include "compound.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -267,6 +268,10 @@ typedef struct sx_contact_data {
     /** Normal impulses of the last solve's impact pass (N s): non-zero for
      *  an impact resolved with restitution in that sub-step. */
     sx_real impact_impulses[2];
+    /** The parts of a compound collider this contact is between (0 for a
+     *  plain collider): a compound has one contact per touching part pair,
+     *  listed after one another in (part_a, part_b) order. */
+    int part_a, part_b;
 } sx_contact_data;
 
 /** Number of contacts from the last sx_world_collide, the carried contacts
@@ -281,7 +286,10 @@ sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data
 /** Two colliders that started or stopped touching. "Touching" is having a
  *  contact manifold: shapes within the speculative margin of each other, so
  *  a resting contact that rocks by a fraction of a millimetre does not
- *  flicker. Handles are those of the colliders and bodies at the time. */
+ *  flicker. A compound collider counts as one collider: it begins touching
+ *  when its first part pair gets a manifold and ends when its last one
+ *  loses it (one event each, whichever parts touch). Handles are those of the colliders and bodies
+ * at the time. */
 typedef struct sx_contact_event {
     sx_collider_id collider_a, collider_b;
     sx_body_id body_a, body_b;
@@ -493,6 +501,45 @@ sx_collider_def sx_default_collider_def(void);
 sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collider_def *def,
                                sx_collider_id *out);
 
+/** Attaches a compound collider: the convex parts of `compound` (each with
+ *  its offset in the body frame) act as ONE collider with one handle, one
+ *  set of material fields and one filter. The world copies the parts (the
+ *  caller's array need not outlive the call). def->shape is ignored; the
+ *  other fields of def apply to every part. Mass from def->density: the
+ *  area-weighted centroid of the parts and their inertia moved by the
+ *  parallel-axis theorem (sx_compound_mass; overlapping parts count twice).
+ *  The broadphase sees the union of the parts' bounds; the narrowphase
+ *  makes one contact (up to 2 points) per touching part pair, with the
+ *  part indices in sx_contact_data and warm starting per part pair; queries
+ *  and ray casts test the parts (a point or box in a notch of a U misses);
+ *  sx_world_draw calls draw_shape once per part. Errors as
+ *  sx_body_add_collider, plus SX_ERR_INVALID_ARG for a NULL compound and
+ *  the status of sx_compound_validate (count < 1 or a NULL parts array:
+ *  SX_ERR_INVALID_ARG; a bad part: its shape's status). */
+sx_status sx_body_add_compound(sx_world *world, sx_body_id body, const sx_compound *compound,
+                               const sx_collider_def *def, sx_collider_id *out);
+
+/** Decomposes a simple, possibly concave outline (points in the body frame,
+ *  any winding) with sx_decompose_polygon and attaches the parts as one
+ *  compound collider (sx_body_add_compound). Errors: as
+ *  sx_body_add_collider for world, body and def (def->shape is ignored);
+ *  SX_ERR_INVALID_ARG for NULL points or count < 3; otherwise the status of
+ *  sx_decompose_polygon (SX_ERR_NONFINITE for NaN/Inf, SX_ERR_INVALID_ARG
+ *  for a self-intersecting outline such as a bow-tie, SX_ERR_DEGENERATE for
+ *  all-collinear or zero-area outlines); SX_ERR_NO_MEMORY. */
+sx_status sx_body_add_outline(sx_world *world, sx_body_id body, const sx_vec2 *points, int count,
+                              const sx_collider_def *def, sx_collider_id *out);
+
+/** Number of parts of a collider: a compound's part count, 1 for a plain
+ *  collider, 0 for a stale handle or NULL world. */
+int sx_collider_get_part_count(const sx_world *world, sx_collider_id collider);
+
+/** Copies part `index` of a collider (a plain collider has one part: its
+ *  shape with the identity offset) into *out. SX_ERR_INVALID_ARG (NULL,
+ *  index out of range), SX_ERR_STALE_HANDLE. */
+sx_status sx_collider_get_part(const sx_world *world, sx_collider_id collider, int index,
+                               sx_compound_part *out);
+
 /** Removes a collider (and its contacts) and updates its body's mass.
  *  SX_ERR_INVALID_ARG (NULL), SX_ERR_STALE_HANDLE. */
 sx_status sx_destroy_collider(sx_world *world, sx_collider_id collider);
@@ -513,7 +560,8 @@ sx_body_id sx_collider_get_body(const sx_world *world, sx_collider_id collider);
 /** Called for each collider a query finds; return false to stop the query. */
 typedef bool sx_query_fn(sx_collider_id collider, sx_body_id body, void *context);
 
-/** Reports every collider whose tight bounds overlap `box`. fn may be NULL
+/** Reports every collider whose tight bounds overlap `box` (for a compound:
+ *  the bounds of one of its parts). fn may be NULL
  *  (just count). Returns the number of colliders reported (0 for a NULL
  *  world or an invalid or non-finite box). */
 int sx_world_query_aabb(const sx_world *world, sx_aabb box, sx_query_fn *fn, void *context);
@@ -535,6 +583,7 @@ typedef struct sx_world_ray_hit {
     sx_vec2 point;    /**< world hit point */
     sx_vec2 normal;   /**< unit surface normal at the hit, facing the ray */
     sx_real fraction; /**< hit = origin + fraction x translation */
+    int part;         /**< the compound part hit (0 for a plain collider) */
 } sx_world_ray_hit;
 
 /** Casts a ray (see sx_ray_input) against every collider and returns true
