@@ -274,8 +274,7 @@ sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const un
     bp->order = (int *)p;
     if (!ok) return SX_ERR_NO_MEMORY;
 
-    /* keep last call's order for the moving colliders still moving, then
-     * append the newcomers in slot order */
+    /* keep last call's order for the colliders still moving */
     for (i = 0; i < moving_count; ++i)
         bp->mark[moving[i]] = 1;
     for (i = 0; i < bp->order_count; ++i) {
@@ -285,13 +284,8 @@ sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const un
             bp->mark[c] = 2;
         }
     }
-    for (i = 0; i < moving_count; ++i) {
-        if (bp->mark[moving[i]] == 1) bp->order[n++] = moving[i];
-        bp->mark[moving[i]] = 0;
-    }
-    bp->order_count = n;
-
-    /* insertion sort by lower x; ties broken by slot so the order is total */
+    /* insertion sort of those by lower x (ties broken by slot so the order
+     * is total): about one pass, as they moved a little since */
     for (i = 1; i < n; ++i) {
         int c = bp->order[i], j = i - 1;
         sx_real x = aabbs[c].lower.x;
@@ -304,17 +298,54 @@ sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const un
         }
         bp->order[j + 1] = c;
     }
+    /* the newcomers (woken, created, started) sorted on their own and
+     * merged in: a thousand bodies created in a grid would make the
+     * insertion sort quadratic */
+    bp->added_count = 0;
+    for (i = 0; i < moving_count; ++i) {
+        int c = moving[i];
+        if (bp->mark[c] == 1) {
+            p = bp->added;
+            ok = sx_grow_array(&p, &bp->added_capacity, bp->added_count + 1,
+                               sizeof(sx_sorted_box));
+            bp->added = (sx_sorted_box *)p;
+            if (!ok) return SX_ERR_NO_MEMORY;
+            bp->added[bp->added_count].box = aabbs[c];
+            bp->added[bp->added_count].slot = c;
+            bp->added[bp->added_count++].kind = kind[c];
+        }
+        bp->mark[c] = 0;
+    }
+    if (bp->added_count > 1)
+        qsort(bp->added, (size_t)bp->added_count, sizeof(sx_sorted_box), sx_box_cmp);
 
     p = bp->sorted;
-    ok = sx_grow_array(&p, &bp->sorted_capacity, n, sizeof(sx_sorted_box));
+    ok = sx_grow_array(&p, &bp->sorted_capacity, n + bp->added_count, sizeof(sx_sorted_box));
     bp->sorted = (sx_sorted_box *)p;
     if (!ok) return SX_ERR_NO_MEMORY;
-    for (i = 0; i < n; ++i) {
-        int c = bp->order[i];
-        bp->sorted[i].box = aabbs[c];
-        bp->sorted[i].slot = c;
-        bp->sorted[i].kind = kind[c];
+    {
+        int j = 0, out = 0;
+        for (i = 0; i < n; ++i) {
+            sx_sorted_box e;
+            e.box = aabbs[bp->order[i]];
+            e.slot = bp->order[i];
+            e.kind = kind[e.slot];
+            while (j < bp->added_count && sx_box_before(&bp->added[j], &e))
+                bp->sorted[out++] = bp->added[j++];
+            bp->sorted[out++] = e;
+        }
+        while (j < bp->added_count)
+            bp->sorted[out++] = bp->added[j++];
+        n = out;
     }
+    p = bp->order;
+    ok = sx_grow_array(&p, &bp->order_capacity, n, sizeof(int));
+    bp->order = (int *)p;
+    if (!ok) return SX_ERR_NO_MEMORY;
+    for (i = 0; i < n; ++i)
+        bp->order[i] = bp->sorted[i].slot;
+    bp->order_count = n;
+
     for (i = 0; i < n; ++i) {
         const sx_sorted_box *a = &bp->sorted[i];
         int j;
