@@ -6,10 +6,14 @@
  * frictions are the same numbers for all three, and the code that measures a
  * scene's figure reads body states through one interface. Throughput scenes
  * (large_pyramid, mostly_asleep, rain) report ms per step; accuracy scenes
- * with a known answer (bounce, incline, pyramid20) sweep the time step and
- * the sub-step or iteration counts and report error against ms per step,
- * drawn as one SVG plot per scene (bench/svg_plot.c). Everything printed is
- * also written to REPORT.md, and every row to scenes.csv.
+ * with a known answer or a conserved quantity (bounce, incline, pyramid20,
+ * stack20, cradle, projectile, pileup, mass_ratio, overlap_recovery,
+ * consistency) sweep the time step and the sub-step or iteration counts and
+ * report error against ms per step, drawn as one SVG plot per scene
+ * (bench/svg_plot.c). Everything printed is also written to REPORT.md, and
+ * every row to scenes.csv; the headline table (does a sepax configuration
+ * beat both peers on each scene, or by how much does it miss) ends
+ * REPORT.md and is also written alone to headline.md.
  *
  * Timing: wall clock (CLOCK_MONOTONIC) around the stepping only, world
  * creation excluded; the first step of large_pyramid is left out of its
