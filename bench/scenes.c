@@ -591,6 +591,17 @@ typedef struct acc_result {
 
 typedef int (*acc_scene_fn)(int e, const scene_config *c, int smoke, acc_result *r);
 
+/* Appends to a result's details, never past the buffer (a blown-up run can
+ * print very long numbers). */
+static void det_add(acc_result *r, const char *fmt, ...) {
+    size_t len = strlen(r->details);
+    if (len + 1 >= sizeof r->details) return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(r->details + len, sizeof r->details - len, fmt, ap);
+    va_end(ap);
+}
+
 static int plot_index;
 
 /* ---- headline table: does sepax beat both peers on a scene? ----------------- */
@@ -696,7 +707,6 @@ static int bounce_run(int e, const scene_config *c, int smoke, acc_result *r) {
     static const double es[3] = {0.2, 0.5, 0.8};
     double err = 0.0, ms = 0.0;
     int total_steps = 0;
-    char *p = r->details;
     for (int k = 0; k < 3; ++k) {
         scene_def d;
         if (!scene_init(&d, 4)) return 0;
@@ -726,7 +736,7 @@ static int bounce_run(int e, const scene_config *c, int smoke, acc_result *r) {
         engines[e].destroy(w);
         double ratio = apex > 0.0 ? (apex - 0.5) / 2.0 : 0.0;
         err += fabs(ratio - es[k] * es[k]) / 3.0;
-        p += sprintf(p, "e=%.1f:%.4f(%.4f) ", es[k], ratio, es[k] * es[k]);
+        det_add(r, "e=%.1f:%.4f(%.4f) ", es[k], ratio, es[k] * es[k]);
     }
     r->error = err;
     r->ms = ms / (double)(total_steps > 0 ? total_steps : 1);
@@ -742,7 +752,6 @@ static int incline_run(int e, const scene_config *c, int smoke, acc_result *r) {
     const double th = 0.25, sn = sin(th), cs = cos(th);
     double err = 0.0, ms = 0.0;
     int total_steps = 0;
-    char *p = r->details;
     for (int k = 0; k < 3; ++k) {
         scene_def d;
         if (!scene_init(&d, 4)) return 0;
@@ -773,7 +782,7 @@ static int incline_run(int e, const scene_config *c, int smoke, acc_result *r) {
         double a = (v1 - v0) / ((n1 - n0) * c->dt);
         double exact = mus[k] >= tan(th) ? 0.0 : 10.0 * (sn - mus[k] * cs);
         err += fabs(a - exact) / 3.0;
-        p += sprintf(p, "mu=%.1f:%.4f(%.4f) ", mus[k], a, exact);
+        det_add(r, "mu=%.1f:%.4f(%.4f) ", mus[k], a, exact);
     }
     r->error = err;
     r->ms = ms / (double)(total_steps > 0 ? total_steps : 1);
@@ -1135,7 +1144,6 @@ static int pileup_run(int e, const scene_config *c, int smoke, acc_result *r) {
 static int mass_ratio_run(int e, const scene_config *c, int smoke, acc_result *r) {
     double worst = 0.0, ms = 0.0;
     int total_steps = 0;
-    char *p = r->details;
     for (int k = 0; k < 2; ++k) {
         scene_def d;
         if (!scene_init(&d, 4)) return 0;
@@ -1171,7 +1179,7 @@ static int mass_ratio_run(int e, const scene_config *c, int smoke, acc_result *r
         engines[e].destroy(w);
         scene_free(&d);
         if (depth - 0.005 > worst) worst = depth - 0.005;
-        p += sprintf(p, "%s:max_depth=%.4f top_y=%.4f ", k == 0 ? "100:1" : "plank", depth, s.y);
+        det_add(r, "%s:max_depth=%.4f top_y=%.4f ", k == 0 ? "100:1" : "plank", depth, s.y);
     }
     r->error = worst > 1e-6 ? worst : 1e-6;
     r->ms = ms / (double)(total_steps > 0 ? total_steps : 1);
@@ -1195,7 +1203,6 @@ static int overlap_run(int e, const scene_config *c, int smoke, acc_result *r) {
     static const double fs[2] = {0.25, 0.5};
     double vmax = 0.0, ms = 0.0;
     int total_steps = 0;
-    char *p = r->details;
     for (int k = 0; k < 2; ++k) {
         const double f = fs[k], sp = 1.0 - f;
         const int base = 4;
@@ -1239,8 +1246,8 @@ static int overlap_run(int e, const scene_config *c, int smoke, acc_result *r) {
         engines[e].destroy(w);
         scene_free(&d);
         if (v > vmax) vmax = v;
-        p += sprintf(p, "f=%.2f:vmax=%.3f t_sep=%.3f excess_J=%.3f top_y=%.3f ", f, v, t_sep,
-                     fmax(0.0, emax - fmax(en, e_rest)), s.y);
+        det_add(r, "f=%.2f:vmax=%.3f t_sep=%.3f excess_J=%.3f top_y=%.3f ", f, v, t_sep,
+                fmax(0.0, emax - fmax(en, e_rest)), s.y);
     }
     r->error = vmax > 1e-7 ? vmax : 1e-7;
     r->ms = ms / (double)(total_steps > 0 ? total_steps : 1);
@@ -1314,7 +1321,6 @@ static int consistency_run(int e, const scene_config *c, int smoke, acc_result *
     static const double marks[4] = {0.25, 0.5, 1.0, 2.0};
     double ms = 0.0, at[4] = {0}, worst = 0.0;
     int done = 0;
-    char *p = r->details;
     for (int k = 0; k < 4; ++k) {
         const int upto = smoke ? k + 1 : (int)lround(marks[k] / c->dt);
         double t0 = now_ms();
@@ -1323,13 +1329,13 @@ static int consistency_run(int e, const scene_config *c, int smoke, acc_result *
         engines[e].step(w2, 2 * (upto - done));
         done = upto;
         at[k] = rms_distance(e, w, w2, first, count, &worst);
-        p += sprintf(p, "t=%.2f:%.3g ", done * c->dt, at[k]);
+        det_add(r, "t=%.2f:%.3g ", done * c->dt, at[k]);
     }
     engines[e].destroy(w);
     engines[e].destroy(w2);
     r->ms = ms / done;
     r->error = at[2] > 1e-9 ? at[2] : 1e-9;
-    sprintf(p, "max=%.3g", worst);
+    det_add(r, "max=%.3g", worst);
     return 1;
 }
 
