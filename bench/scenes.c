@@ -1384,6 +1384,15 @@ static const sweep_point *best_within(const sweep_summary *s, int e, double ms) 
     return best;
 }
 
+/* snprintf that truncates quietly: the table cells nest strings whose
+ * bounds the compiler cannot see (and warns about under the sanitizers). */
+static void fmt_to(char *buf, size_t size, const char *fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(buf, size, fmt, ap);
+    va_end(ap);
+}
+
 /* Where sepax stands against peer k on one scene, in words, when none of its
  * configurations beats that peer: how much slower it is at the peer's best
  * error, or, when it never reaches that error, how much worse its error is
@@ -1391,30 +1400,30 @@ static const sweep_point *best_within(const sweep_summary *s, int e, double ms) 
 static void gap_words(const sweep_summary *s, int k, char *buf, size_t size) {
     const sweep_point *pb = most_accurate(s, k);
     if (!pb) {
-        snprintf(buf, size, "%s did not run", engine_names[k]);
+        fmt_to(buf, size, "%s did not run", engine_names[k]);
         return;
     }
     const sweep_point *sx = cheapest_at(s, SCENE_SEPAX, pb->err);
     if (sx) {
-        snprintf(buf, size, "%.2fx slower than %s at its best error %.3g (%s, %.3g ms)",
-                 sx->ms / pb->ms, engine_names[k], pb->err, pb->cfg, pb->ms);
+        fmt_to(buf, size, "%.2fx slower than %s at its best error %.3g (%s, %.3g ms)",
+               sx->ms / pb->ms, engine_names[k], pb->err, pb->cfg, pb->ms);
         return;
     }
     const sweep_point *eq = best_within(s, SCENE_SEPAX, pb->ms);
     if (eq) {
-        snprintf(buf, size,
-                 "never reaches %s's best error %.3g (%s, %.3g ms); at that cost sepax's "
-                 "error is %.3g (%.3gx)",
-                 engine_names[k], pb->err, pb->cfg, pb->ms, eq->err, eq->err / pb->err);
+        fmt_to(buf, size,
+               "never reaches %s's best error %.3g (%s, %.3g ms); at that cost sepax's "
+               "error is %.3g (%.3gx)",
+               engine_names[k], pb->err, pb->cfg, pb->ms, eq->err, eq->err / pb->err);
         return;
     }
     const sweep_point *sb = most_accurate(s, SCENE_SEPAX);
-    snprintf(buf, size,
-             "never reaches %s's best error %.3g (%s, %.3g ms); sepax's best is %.3g (%.3gx) "
-             "at %.3g ms (%.2fx that cost)",
-             engine_names[k], pb->err, pb->cfg, pb->ms, sb ? sb->err : 0.0,
-             sb && pb->err > 0 ? sb->err / pb->err : 0.0, sb ? sb->ms : 0.0,
-             sb ? sb->ms / pb->ms : 0.0);
+    fmt_to(buf, size,
+           "never reaches %s's best error %.3g (%s, %.3g ms); sepax's best is %.3g (%.3gx) "
+           "at %.3g ms (%.2fx that cost)",
+           engine_names[k], pb->err, pb->cfg, pb->ms, sb ? sb->err : 0.0,
+           sb && pb->err > 0 ? sb->err / pb->err : 0.0, sb ? sb->ms : 0.0,
+           sb ? sb->ms / pb->ms : 0.0);
 }
 
 /* The headline table: for each scene, the sepax configuration that beats
@@ -1425,7 +1434,7 @@ static void gap_words(const sweep_summary *s, int k, char *buf, size_t size) {
 static int write_summary(const char *out_dir, int smoke) {
     if (summary_count == 0 && speed_note_count == 0) return 0;
     char path[1200];
-    snprintf(path, sizeof path, "%s/headline.md", out_dir);
+    fmt_to(path, sizeof path, "%s/headline.md", out_dir);
     FILE *hf = fopen(path, "w");
     if (!hf) {
         fprintf(stderr, "sepax_bench: cannot write %s: %s\n", path, strerror(errno));
@@ -1487,18 +1496,18 @@ static int write_summary(const char *out_dir, int smoke) {
             const sweep_point *pk = ref ? cheapest_at(s, k, ref->err) : NULL;
             if (win) {
                 if (pk)
-                    snprintf(cell[k], sizeof cell[k],
-                             "matches the error at %.3g ms (%s): sepax "
-                             "%.2fx its cost",
-                             pk->ms, pk->cfg, win->ms / pk->ms);
+                    fmt_to(cell[k], sizeof cell[k],
+                           "matches the error at %.3g ms (%s): sepax "
+                           "%.2fx its cost",
+                           pk->ms, pk->cfg, win->ms / pk->ms);
                 else
-                    snprintf(cell[k], sizeof cell[k],
-                             "never reaches %.3g (its best: %.3g at %.3g ms)", win->err,
-                             most_accurate(s, k) ? most_accurate(s, k)->err : 0.0,
-                             most_accurate(s, k) ? most_accurate(s, k)->ms : 0.0);
+                    fmt_to(cell[k], sizeof cell[k],
+                           "never reaches %.3g (its best: %.3g at %.3g ms)", win->err,
+                           most_accurate(s, k) ? most_accurate(s, k)->err : 0.0,
+                           most_accurate(s, k) ? most_accurate(s, k)->ms : 0.0);
             } else if (beats[k]) {
-                snprintf(cell[k], sizeof cell[k], "beaten by sepax at %s (%.3g ms, %.3g)",
-                         beats[k]->cfg, beats[k]->ms, beats[k]->err);
+                fmt_to(cell[k], sizeof cell[k], "beaten by sepax at %s (%.3g ms, %.3g)",
+                       beats[k]->cfg, beats[k]->ms, beats[k]->err);
             } else {
                 gap_words(s, k, cell[k], sizeof cell[k]);
             }
@@ -1512,15 +1521,15 @@ static int write_summary(const char *out_dir, int smoke) {
             const sweep_point *pb = most_accurate(s, k);
             if (!win || !pb || !sx_best || pb->err * SUMMARY_ERR_TOL >= sx_best->err) continue;
             size_t len = strlen(cell[k]);
-            snprintf(cell[k] + len, sizeof cell[k] - len,
-                     "; its best, %.3g (%s, %.3g ms), is beyond every sepax configuration (best "
-                     "%.3g)",
-                     pb->err, pb->cfg, pb->ms, sx_best->err);
+            fmt_to(cell[k] + len, sizeof cell[k] - len,
+                   "; its best, %.3g (%s, %.3g ms), is beyond every sepax configuration (best "
+                   "%.3g)",
+                   pb->err, pb->cfg, pb->ms, sx_best->err);
             if (reach_count < SUMMARY_MAX * 2) {
-                snprintf(reach[reach_count++], sizeof reach[0],
-                         "%s: %s reaches %.3g (%s, %.3g ms); sepax's best is %.3g (%s, %.3g ms)",
-                         s->scene, engine_names[k], pb->err, pb->cfg, pb->ms, sx_best->err,
-                         sx_best->cfg, sx_best->ms);
+                fmt_to(reach[reach_count++], sizeof reach[0],
+                       "%s: %s reaches %.3g (%s, %.3g ms); sepax's best is %.3g (%s, %.3g ms)",
+                       s->scene, engine_names[k], pb->err, pb->cfg, pb->ms, sx_best->err,
+                       sx_best->cfg, sx_best->ms);
             }
         }
         const sweep_point *shown = win ? win : most_accurate(s, SCENE_SEPAX);
@@ -1535,10 +1544,9 @@ static int write_summary(const char *out_dir, int smoke) {
         metric[mlen] = '\0';
         char verdict[64];
         if (win)
-            snprintf(verdict, sizeof verdict, "**sepax wins** (%d of %d configurations)", nwin,
-                     nsx);
+            fmt_to(verdict, sizeof verdict, "**sepax wins** (%d of %d configurations)", nwin, nsx);
         else
-            snprintf(verdict, sizeof verdict, "sepax does not win");
+            fmt_to(verdict, sizeof verdict, "sepax does not win");
         /* The cheapest winner, with the least a peer pays to match it. */
         char cheap_cell[256] = "-";
         if (cheap) {
@@ -1548,23 +1556,23 @@ static int write_summary(const char *out_dir, int smoke) {
                 if (pk && pk->ms < need) need = pk->ms;
             }
             if (isfinite(need))
-                snprintf(cheap_cell, sizeof cheap_cell,
-                         "%s (%.3g ms, %.3g): %.2fx the cheapest peer match", cheap->cfg, cheap->ms,
-                         cheap->err, cheap->ms / need);
+                fmt_to(cheap_cell, sizeof cheap_cell,
+                       "%s (%.3g ms, %.3g): %.2fx the cheapest peer match", cheap->cfg, cheap->ms,
+                       cheap->err, cheap->ms / need);
             else
-                snprintf(cheap_cell, sizeof cheap_cell, "%s (%.3g ms, %.3g): no peer matches",
-                         cheap->cfg, cheap->ms, cheap->err);
+                fmt_to(cheap_cell, sizeof cheap_cell, "%s (%.3g ms, %.3g): no peer matches",
+                       cheap->cfg, cheap->ms, cheap->err);
         }
         char row[2400];
-        snprintf(row, sizeof row, "| %s | %s | %s | %s | %.3g ms, %.3g | %s | %s | %s |\n",
-                 s->scene, metric, verdict, shown ? shown->cfg : "-", shown ? shown->ms : 0.0,
-                 shown ? shown->err : 0.0, cell[1], cell[2], cheap_cell);
+        fmt_to(row, sizeof row, "| %s | %s | %s | %s | %.3g ms, %.3g | %s | %s | %s |\n", s->scene,
+               metric, verdict, shown ? shown->cfg : "-", shown ? shown->ms : 0.0,
+               shown ? shown->err : 0.0, cell[1], cell[2], cheap_cell);
         out("%s", row);
         fputs(row, hf);
         if (!win) {
-            snprintf(lost[losses], sizeof lost[losses], "%s (%s; %s)", s->scene,
-                     beats[1] ? "beats box2d alone" : cell[1],
-                     beats[2] ? "beats chipmunk alone" : cell[2]);
+            fmt_to(lost[losses], sizeof lost[losses], "%s (%s; %s)", s->scene,
+                   beats[1] ? "beats box2d alone" : cell[1],
+                   beats[2] ? "beats chipmunk alone" : cell[2]);
             ++losses;
         }
     }
