@@ -136,6 +136,20 @@ static void sx_ecs_attach(sx_ecs_state *st, sx_ecs_link *link, const SxBody *b,
     def.restitution = c->restitution;
     def.filter = c->filter;
     def.sensor = c->sensor;
+    if (c->part_count > 0) {
+        /* a compound: its parts act as one collider */
+        sx_compound view;
+        view.parts = c->parts;
+        view.count = c->part_count;
+        if (b != NULL && b->mass > SX_R(0.0)) {
+            sx_mass_data unit = sx_compound_mass(&view, SX_R(1.0));
+            if (unit.mass > SX_R(0.0)) def.density = b->mass / unit.mass;
+        }
+        link->has_collider =
+            sx_body_add_compound(st->world, link->body, &view, &def, &link->collider) == SX_OK;
+        link->collider_dirty = false;
+        return;
+    }
     if (b != NULL && b->mass > SX_R(0.0)) {
         sx_mass_data unit = sx_shape_mass(&c->shape, SX_R(1.0));
         if (unit.mass > SX_R(0.0)) def.density = b->mass / unit.mass;
@@ -248,6 +262,66 @@ static void sx_ecs_collider_set(ecs_iter_t *it) {
     for (i = 0; i < it->count; ++i) {
         sx_ecs_link *link = sx_ecs_find(st, it->entities[i]);
         if (link != NULL) link->collider_dirty = true;
+    }
+}
+
+/* SxCollider owns its compound parts: lifecycle hooks copy, move and free
+ * the array so a component value never shares it with another. A plain
+ * collider (part_count 0) costs a branch per element on structural moves. */
+static sx_compound_part *sx_ecs_copy_parts(const sx_compound_part *parts, int32_t count) {
+    sx_compound_part *copy;
+    if (parts == NULL || count <= 0) return NULL;
+    copy = (sx_compound_part *)malloc((size_t)count * sizeof(*copy));
+    if (copy != NULL) memcpy(copy, parts, (size_t)count * sizeof(*copy));
+    return copy;
+}
+
+static void sx_ecs_collider_ctor(void *ptr, int32_t count, const ecs_type_info_t *ti) {
+    (void)ti;
+    memset(ptr, 0, (size_t)count * sizeof(SxCollider));
+}
+
+static void sx_ecs_collider_dtor(void *ptr, int32_t count, const ecs_type_info_t *ti) {
+    SxCollider *c = (SxCollider *)ptr;
+    int32_t i;
+    (void)ti;
+    for (i = 0; i < count; ++i) {
+        free((void *)(uintptr_t)c[i].parts);
+        c[i].parts = NULL;
+        c[i].part_count = 0;
+    }
+}
+
+static void sx_ecs_collider_copy(void *dst_ptr, const void *src_ptr, int32_t count,
+                                 const ecs_type_info_t *ti) {
+    SxCollider *dst = (SxCollider *)dst_ptr;
+    const SxCollider *src = (const SxCollider *)src_ptr;
+    int32_t i;
+    (void)ti;
+    for (i = 0; i < count; ++i) {
+        sx_compound_part *parts;
+        if (&dst[i] == &src[i]) continue;
+        parts = sx_ecs_copy_parts(src[i].parts, src[i].part_count);
+        free((void *)(uintptr_t)dst[i].parts);
+        dst[i] = src[i];
+        dst[i].parts = parts;
+        /* out of memory: a plain collider of the fallback shape */
+        if (parts == NULL) dst[i].part_count = 0;
+    }
+}
+
+static void sx_ecs_collider_move(void *dst_ptr, void *src_ptr, int32_t count,
+                                 const ecs_type_info_t *ti) {
+    SxCollider *dst = (SxCollider *)dst_ptr;
+    SxCollider *src = (SxCollider *)src_ptr;
+    int32_t i;
+    (void)ti;
+    for (i = 0; i < count; ++i) {
+        if (&dst[i] == &src[i]) continue;
+        free((void *)(uintptr_t)dst[i].parts);
+        dst[i] = src[i];
+        src[i].parts = NULL;
+        src[i].part_count = 0;
     }
 }
 
@@ -492,6 +566,7 @@ static void sx_ecs_publish_contacts(ecs_iter_t *it) {
     SxContacts *out = ecs_field(it, SxContacts, 0);
     sx_world *w = st->world;
     int32_t n = sx_world_contact_count(w), i, kept = 0;
+    sx_collider_id prev_a = {0, 0}, prev_b = {0, 0};
     sx_contact_events events;
     sx_sensor_events sensors;
     SxContact *swap_items = st->previous;
@@ -510,6 +585,17 @@ static void sx_ecs_publish_contacts(ecs_iter_t *it) {
         SxContact *c = &st->contacts[kept];
         ecs_entity_t ea, eb;
         if (sx_world_get_contact(w, i, &d) != SX_OK) continue;
+        /* a compound's part pairs follow one another: one SxContact per
+         * collider pair, with the first part pair's normal and point and
+         * every part pair's points counted */
+        if (kept > 0 && d.collider_a.index == prev_a.index &&
+            d.collider_a.generation == prev_a.generation && d.collider_b.index == prev_b.index &&
+            d.collider_b.generation == prev_b.generation) {
+            st->contacts[kept - 1].point_count += d.count;
+            continue;
+        }
+        prev_a = d.collider_a;
+        prev_b = d.collider_b;
         ea = sx_ecs_entity_of(st, d.body_a);
         eb = sx_ecs_entity_of(st, d.body_b);
         c->point_count = d.count;
@@ -636,6 +722,48 @@ SxCollider sx_ecs_collider(sx_shape shape) {
     c.filter = def.filter;
     c.sensor = def.sensor;
     return c;
+}
+
+sx_status sx_ecs_set_outline(ecs_world_t *world, ecs_entity_t e, const sx_vec2 *points,
+                             int32_t count, const SxCollider *base) {
+    size_t scratch_bytes;
+    void *scratch;
+    sx_shape *shapes;
+    sx_compound_part *parts;
+    SxCollider c;
+    int n = 0, i;
+    sx_status s;
+    if (world == NULL || points == NULL || count < 3 || !ecs_is_alive(world, e)) {
+        return SX_ERR_INVALID_ARG;
+    }
+    scratch_bytes = sx_decompose_scratch_bytes(count);
+    if (scratch_bytes == 0) return SX_ERR_CAPACITY;
+    scratch = malloc(scratch_bytes);
+    shapes = (sx_shape *)malloc((size_t)(count - 2) * sizeof(sx_shape));
+    if (scratch == NULL || shapes == NULL) {
+        free(scratch);
+        free(shapes);
+        return SX_ERR_NO_MEMORY;
+    }
+    s = sx_decompose_polygon(points, count, scratch, scratch_bytes, shapes, count - 2, &n, NULL);
+    free(scratch);
+    parts = s == SX_OK && n > 0 ? (sx_compound_part *)malloc((size_t)n * sizeof(*parts)) : NULL;
+    if (s == SX_OK && parts == NULL) s = n > 0 ? SX_ERR_NO_MEMORY : SX_ERR_DEGENERATE;
+    if (s != SX_OK) {
+        free(shapes);
+        return s;
+    }
+    for (i = 0; i < n; ++i)
+        parts[i] = sx_compound_part_make(shapes[i], sx_xform_identity());
+    free(shapes);
+    c = base != NULL ? *base : sx_ecs_collider(sx_circle_shape(sx_v2_zero(), SX_R(0.5)));
+    c.shape = parts[0].shape;
+    c.parts = parts;
+    c.part_count = n;
+    /* the copy hook copies the parts into the component */
+    ecs_set_ptr(world, e, SxCollider, &c);
+    free(parts);
+    return SX_OK;
 }
 
 void sx_ecs_apply_force(ecs_world_t *world, ecs_entity_t e, sx_vec2 force) {
@@ -782,7 +910,13 @@ void SepaxPhysicsImport(ecs_world_t *world) {
     ecs_set_hooks(world, SxBody,
                   {.on_remove = sx_ecs_body_removed, .ctx = st, .ctx_free = sx_ecs_state_free});
     ecs_set_hooks(world, SxCollider,
-                  {.on_set = sx_ecs_collider_set, .on_remove = sx_ecs_collider_removed, .ctx = st});
+                  {.ctor = sx_ecs_collider_ctor,
+                   .dtor = sx_ecs_collider_dtor,
+                   .copy = sx_ecs_collider_copy,
+                   .move = sx_ecs_collider_move,
+                   .on_set = sx_ecs_collider_set,
+                   .on_remove = sx_ecs_collider_removed,
+                   .ctx = st});
 
     memset(&settings, 0, sizeof(settings));
     settings.gravity = def.gravity;

@@ -5,6 +5,8 @@
  *   ecs_set(world, box, SxTransform, {.position = {0, 4}});
  *   ecs_set(world, box, SxBody, {.type = SX_BODY_DYNAMIC, .gravity_scale = 1});
  *   ecs_set(world, box, SxCollider, sx_ecs_collider(sx_box_shape(0.5f, 0.5f)));
+ *   ecs_entity_t ledge = ecs_new(world);       // static concave geometry
+ *   sx_ecs_set_outline(world, ledge, outline_points, outline_count, NULL);
  *   ecs_progress(world, 1.0f / 60.0f);
  *
  * The components are the truth: once per fixed step the module copies what
@@ -94,6 +96,17 @@ typedef struct SxCollider {
     sx_real restitution;
     sx_filter filter;
     bool sensor;
+    /** A compound (concave) collider: part_count > 0 convex parts, each
+     *  with its offset in the body frame, attached as ONE collider
+     *  (sx_body_add_compound); `shape` is then ignored. The component owns
+     *  its parts: the module's copy hook copies the array, so
+     *  ecs_set(world, e, SxCollider, {..., .parts = p, .part_count = n})
+     *  leaves p to the caller, and deleting the entity or removing the
+     *  component frees the copy. Change the parts by setting a whole new
+     *  value (never write through the pointer). sx_ecs_set_outline builds
+     *  one from a concave outline. NULL and 0: a plain collider. */
+    const sx_compound_part *parts;
+    int32_t part_count;
 } SxCollider;
 
 /** Singleton: the physics settings, read at every frame. */
@@ -111,7 +124,10 @@ typedef struct SxPhysicsSettings {
     bool enable_sleep;
 } SxPhysicsSettings;
 
-/** One contact of the last fixed step (collider pairs with a manifold). */
+/** One contact of the last fixed step (collider pairs with a manifold; a
+ *  compound collider touching on several parts is still one SxContact: the
+ *  normal and point of its first touching part pair, point_count summed over
+ *  all of them). */
 typedef struct SxContact {
     ecs_entity_t entity_a, entity_b; /**< entity_a < entity_b */
     sx_vec2 normal;                  /**< unit, from entity_a to entity_b */
@@ -180,6 +196,17 @@ void SepaxPhysicsImport(ecs_world_t *world);
 SxBody sx_ecs_body(sx_body_type type);
 /** sx_default_collider_def's values with this shape. */
 SxCollider sx_ecs_collider(sx_shape shape);
+
+/** Decomposes a simple, possibly concave outline (points in the entity's
+ *  body frame, any winding) with sx_decompose_polygon and sets the entity's
+ *  SxCollider to the resulting compound, with the material, filter and
+ *  sensor fields of `base` (sx_ecs_collider's defaults when NULL). Returns
+ *  SX_OK, or without touching the entity: SX_ERR_INVALID_ARG (NULL world or
+ *  points, count < 3, a dead entity), SX_ERR_NO_MEMORY, or the status of
+ *  sx_decompose_polygon (SX_ERR_NONFINITE for NaN/Inf, SX_ERR_INVALID_ARG for
+ *  a self-intersecting outline, SX_ERR_DEGENERATE for a collinear one). */
+sx_status sx_ecs_set_outline(ecs_world_t *world, ecs_entity_t e, const sx_vec2 *points,
+                             int32_t count, const SxCollider *base);
 
 /** Adds a force (N, at the centre of mass) to the entity's SxBody force
  *  accumulator: it acts over the next fixed step. Ignored without SxBody. */

@@ -1,7 +1,7 @@
 /* sepax demo — the main sample: a flecs scene stepped by the SepaxPhysics
  * module. A ground between two walls, a pyramid of boxes, a concave static
- * cup (an outline split into convex parts by sx_decompose_polygon, one static
- * entity per part) and a stream of mixed shapes (circles, boxes, capsules,
+ * cup (an outline attached as one compound collider with
+ * sx_ecs_set_outline) and a stream of mixed shapes (circles, boxes, capsules,
  * triangles) spawned by an ordinary flecs system, so the spawning is a
  * structural change made in deferred mode. Prints a line per simulated
  * second and writes the final frame as an SVG drawn through the world's
@@ -40,8 +40,10 @@ static ecs_entity_t spawn(ecs_world_t *world, sx_body_type type, sx_vec2 p, sx_r
     return e;
 }
 
-/* A cup: a concave outline, decomposed into convex static parts that share
- * the cup's transform (children of one entity). */
+/* A cup: a concave outline attached as ONE static compound collider
+ * (sx_ecs_set_outline splits it into convex parts with sx_decompose_polygon;
+ * the world treats the parts as a single collider). Returns the number of
+ * parts, 0 on failure. */
 static int add_cup(ecs_world_t *world, sx_vec2 at) {
     static const sx_vec2 outline[] = {
         {SX_R(-3.0), SX_R(2.0)}, {SX_R(-2.6), SX_R(2.0)}, {SX_R(-1.6), SX_R(0.4)},
@@ -49,22 +51,15 @@ static int add_cup(ecs_world_t *world, sx_vec2 at) {
         {SX_R(1.8), SX_R(0.0)},  {SX_R(-1.8), SX_R(0.0)},
     };
     enum { N = sizeof(outline) / sizeof(outline[0]) };
-    sx_shape parts[N];
-    int count = 0, i;
-    size_t bytes = sx_decompose_scratch_bytes(N);
-    void *scratch = malloc(bytes);
     ecs_entity_t cup = ecs_entity(world, {.name = "cup"});
-    if (scratch == NULL ||
-        sx_decompose_polygon(outline, N, scratch, bytes, parts, N, &count, NULL) != SX_OK) {
-        free(scratch);
-        return 0;
-    }
-    free(scratch);
-    for (i = 0; i < count; ++i) {
-        ecs_entity_t part = spawn(world, SX_BODY_STATIC, at, SX_R(0.0), parts[i]);
-        ecs_add_pair(world, part, EcsChildOf, cup);
-    }
-    return count;
+    SxTransform t;
+    const SxCollider *c;
+    t.position = at;
+    t.angle = SX_R(0.0);
+    ecs_set_ptr(world, cup, SxTransform, &t);
+    if (sx_ecs_set_outline(world, cup, outline, N, NULL) != SX_OK) return 0;
+    c = ecs_get(world, cup, SxCollider);
+    return c != NULL ? (int)c->part_count : 0;
 }
 
 /* ---- the stream: a game system that spawns shapes -------------------------- */
@@ -244,7 +239,8 @@ int main(int argc, char **argv) {
     }
     /* the concave cup, fixed in mid-air on the right */
     parts = add_cup(world, sx_v2(SX_R(6.0), SX_R(4.0)));
-    printf("sepax demo: ground, walls, a pyramid of 36 boxes, a cup of %d convex parts, "
+    printf("sepax demo: ground, walls, a pyramid of 36 boxes, a cup (one compound collider of %d "
+           "convex parts), "
            "%d falling shapes; fixed step 1/60 s, %d s\n",
            parts, DEMO_SPAWN_COUNT, seconds);
 

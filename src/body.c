@@ -84,6 +84,7 @@ sx_body_def sx_default_body_def(void) {
     d.angular_damping = SX_R(0.0);
     d.gravity_scale = SX_R(1.0);
     d.fixed_rotation = false;
+    d.enable_sleep = true;
     d.enabled = true;
     d.user_data = NULL;
     return d;
@@ -114,6 +115,7 @@ void sx_body_sync_origin(sx_body_sim *sim) {
 static void sx_body_refresh_sim(sx_world *world, int slot) {
     sx_body_sim *sim = &world->sims[slot];
     const sx_body_info *info = &world->infos[slot];
+    world->sets_dirty = true;
     sim->dynamic = info->enabled && info->type == SX_BODY_DYNAMIC;
     sim->moving = info->enabled && info->type != SX_BODY_STATIC;
     if (sim->dynamic) {
@@ -141,7 +143,15 @@ void sx_body_update_mass(sx_world *world, int slot) {
             const sx_collider *col = &world->colliders[c];
             sx_mass_data md;
             if (col->density == SX_R(0.0)) continue;
-            md = sx_shape_mass(&col->shape, col->density);
+            if (col->part_count > 0) {
+                sx_compound view;
+                view.parts = col->parts;
+                view.count = col->part_count;
+                /* area-weighted centroid, parallel-axis inertia of the parts */
+                md = sx_compound_mass(&view, col->density);
+            } else {
+                md = sx_shape_mass(&col->shape, col->density);
+            }
             mass += md.mass;
             weighted = sx_mul_add(weighted, md.mass, md.center);
             /* parallel-axis theorem: inertia about the body origin first */
@@ -236,10 +246,15 @@ sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *ou
     info = &world->infos[slot];
     memset(sim, 0, sizeof(*sim));
     memset(info, 0, sizeof(*info));
+    /* a reused slot must not inherit an impact correction still pending */
+    if (slot < world->impact_body_capacity) {
+        memset(&world->impact_bodies[slot], 0, sizeof(world->impact_bodies[slot]));
+    }
     info->generation = generation;
     info->alive = true;
     info->enabled = def->enabled;
     info->fixed_rotation = def->fixed_rotation;
+    info->enable_sleep = def->enable_sleep;
     info->type = def->type;
     info->user_data = def->user_data;
     info->first_collider = -1;
@@ -264,19 +279,27 @@ sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *ou
     return SX_OK;
 }
 
-void sx_world_remove_contacts_of(sx_world *world, int collider) {
+/* Drops the contacts of a collider from a list, waking their bodies. */
+static int sx_remove_contacts_from(sx_world *world, sx_contact *list, int count, int collider) {
     int i, n = 0;
-    for (i = 0; i < world->contact_count; ++i) {
-        const sx_contact *c = &world->contacts[i];
+    for (i = 0; i < count; ++i) {
+        const sx_contact *c = &list[i];
         if (c->collider_a == collider || c->collider_b == collider) {
             /* whatever rested on the collider must be able to fall */
             sx_wake_body(world, c->body_a);
             sx_wake_body(world, c->body_b);
             continue;
         }
-        world->contacts[n++] = *c;
+        list[n++] = *c;
     }
-    world->contact_count = n;
+    return n;
+}
+
+void sx_world_remove_contacts_of(sx_world *world, int collider) {
+    world->contact_count =
+        sx_remove_contacts_from(world, world->contacts, world->contact_count, collider);
+    world->frozen_count =
+        sx_remove_contacts_from(world, world->frozen, world->frozen_count, collider);
 }
 
 /* Wakes a body and every body it has a contact with (a static body moved
@@ -284,8 +307,9 @@ void sx_world_remove_contacts_of(sx_world *world, int collider) {
 static void sx_wake_touching(sx_world *world, int slot) {
     int i;
     sx_wake_body(world, slot);
-    for (i = 0; i < world->contact_count; ++i) {
-        const sx_contact *c = &world->contacts[i];
+    for (i = 0; i < world->contact_count + world->frozen_count; ++i) {
+        const sx_contact *c = i < world->contact_count ? &world->contacts[i]
+                                                       : &world->frozen[i - world->contact_count];
         if (c->body_a == slot) sx_wake_body(world, c->body_b);
         if (c->body_b == slot) sx_wake_body(world, c->body_a);
     }
@@ -296,11 +320,20 @@ static void sx_free_collider_slot(sx_world *world, int slot) {
     sx_collider *c = &world->colliders[slot];
     sx_world_remove_contacts_of(world, slot);
     sx_sensors_remove_collider(world, slot);
+    if (c->parts != NULL) {
+        sx_free(c->parts, (size_t)c->part_count * sizeof(sx_compound_part));
+        sx_free(c->part_boxes, (size_t)c->part_count * sizeof(sx_aabb));
+        c->parts = NULL;
+        c->part_boxes = NULL;
+        c->part_count = 0;
+    }
     c->alive = false;
     c->generation = c->generation == 0xFFFFFFFFu ? 1u : c->generation + 1u;
     c->next_free = world->collider_free;
     world->collider_free = slot;
-    world->bp_kind[slot] = 0;
+    /* bp_kind keeps the old kind: the next refresh of the sets sees the
+     * change and takes the collider out of the broadphase */
+    world->sets_dirty = true;
 }
 
 sx_status sx_destroy_body(sx_world *world, sx_body_id body) {
@@ -318,6 +351,7 @@ sx_status sx_destroy_body(sx_world *world, sx_body_id body) {
     }
     info->first_collider = -1;
     info->alive = false;
+    world->sets_dirty = true;
     info->generation = info->generation == 0xFFFFFFFFu ? 1u : info->generation + 1u;
     info->next_free = world->body_free;
     world->body_free = slot;
@@ -325,10 +359,8 @@ sx_status sx_destroy_body(sx_world *world, sx_body_id body) {
     return SX_OK;
 }
 
-/* Validates a collider def: the status sx_body_add_collider returns. */
-static sx_status sx_check_collider_def(const sx_collider_def *def) {
-    sx_status s = sx_shape_validate(&def->shape);
-    if (s != SX_OK) return s;
+/* Validates the material fields of a collider def (all but the shape). */
+static sx_status sx_check_material(const sx_collider_def *def) {
     if (!sx_is_finite(def->density) || !sx_is_finite(def->friction) ||
         !sx_is_finite(def->restitution)) {
         return SX_ERR_NONFINITE;
@@ -337,6 +369,13 @@ static sx_status sx_check_collider_def(const sx_collider_def *def) {
         return SX_ERR_INVALID_ARG;
     }
     return SX_OK;
+}
+
+/* Validates a collider def: the status sx_body_add_collider returns. */
+static sx_status sx_check_collider_def(const sx_collider_def *def) {
+    sx_status s = sx_shape_validate(&def->shape);
+    if (s != SX_OK) return s;
+    return sx_check_material(def);
 }
 
 /* Grows the three per-collider arrays, each with its own capacity. */
@@ -353,46 +392,67 @@ static bool sx_reserve_colliders(sx_world *world, int need) {
     return ok;
 }
 
-sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collider_def *def,
-                               sx_collider_id *out) {
-    int bslot, slot, *link;
+/* Takes a collider slot for a checked def on body slot bslot. `parts` (NULL
+ * for a plain collider) is an sx_alloc'ed array of part_count parts that the
+ * collider takes over; on error it is freed here. */
+static sx_status sx_attach_collider(sx_world *world, int bslot, const sx_collider_def *def,
+                                    sx_compound_part *parts, int part_count, sx_collider_id *out) {
+    int slot, *link;
     sx_collider *c;
-    sx_status s;
     uint32_t generation;
-    if (out != NULL) {
-        out->index = 0;
-        out->generation = 0;
+    sx_aabb *boxes = NULL;
+    if (parts != NULL) {
+        boxes = (sx_aabb *)sx_alloc((size_t)part_count * sizeof(sx_aabb));
+        if (boxes == NULL) {
+            sx_free(parts, (size_t)part_count * sizeof(sx_compound_part));
+            return SX_ERR_NO_MEMORY;
+        }
     }
-    if (world == NULL || def == NULL) return SX_ERR_INVALID_ARG;
-    bslot = sx_body_slot(world, body);
-    if (bslot < 0) return SX_ERR_STALE_HANDLE;
-    s = sx_check_collider_def(def);
-    if (s != SX_OK) return s;
     if (world->collider_free >= 0) {
         slot = world->collider_free;
         world->collider_free = world->colliders[slot].next_free;
         generation = world->colliders[slot].generation;
     } else {
-        if (world->collider_slots == 0x7FFFFFFF) return SX_ERR_CAPACITY;
-        if (!sx_reserve_colliders(world, world->collider_slots + 1)) return SX_ERR_NO_MEMORY;
+        sx_status fail = SX_OK;
+        if (world->collider_slots == 0x7FFFFFFF) {
+            fail = SX_ERR_CAPACITY;
+        } else if (!sx_reserve_colliders(world, world->collider_slots + 1)) {
+            fail = SX_ERR_NO_MEMORY;
+        }
+        if (fail != SX_OK) {
+            sx_free(parts, (size_t)part_count * sizeof(sx_compound_part));
+            sx_free(boxes, (size_t)part_count * sizeof(sx_aabb));
+            return fail;
+        }
         slot = world->collider_slots++;
         generation = 1;
+        world->bp_kind[slot] = SX_BP_OUT;
     }
     c = &world->colliders[slot];
     memset(c, 0, sizeof(*c));
-    c->shape = def->shape;
+    if (parts != NULL) {
+        /* a compound: its first part's shape stands in the plain field so
+         * no reader ever sees an uninitialised shape */
+        c->shape = parts[0].shape;
+        c->parts = parts;
+        c->part_boxes = boxes;
+        c->part_count = part_count;
+    } else {
+        c->shape = def->shape;
+    }
     c->density = def->density;
     c->friction = def->friction;
     c->restitution = def->restitution;
     c->filter = def->filter;
     c->sensor = def->sensor;
     c->alive = true;
+    c->aabb_stale = true;
+    world->sets_dirty = true;
     c->generation = generation;
     c->body = bslot;
     c->next = -1;
     c->next_free = -1;
     c->user_data = def->user_data;
-    world->bp_kind[slot] = 0;
     /* append, so mass sums run in creation order (deterministic) */
     link = &world->infos[bslot].first_collider;
     while (*link >= 0)
@@ -402,6 +462,113 @@ sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collid
     if (out != NULL) {
         out->index = (uint32_t)slot;
         out->generation = generation;
+    }
+    return SX_OK;
+}
+
+/* The checks every collider attach starts with. */
+static sx_status sx_attach_prologue(sx_world *world, sx_body_id body, const sx_collider_def *def,
+                                    sx_collider_id *out, int *bslot) {
+    if (out != NULL) {
+        out->index = 0;
+        out->generation = 0;
+    }
+    if (world == NULL || def == NULL) return SX_ERR_INVALID_ARG;
+    *bslot = sx_body_slot(world, body);
+    if (*bslot < 0) return SX_ERR_STALE_HANDLE;
+    return SX_OK;
+}
+
+sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collider_def *def,
+                               sx_collider_id *out) {
+    int bslot = -1;
+    sx_status s = sx_attach_prologue(world, body, def, out, &bslot);
+    if (s != SX_OK) return s;
+    s = sx_check_collider_def(def);
+    if (s != SX_OK) return s;
+    return sx_attach_collider(world, bslot, def, NULL, 0, out);
+}
+
+sx_status sx_body_add_compound(sx_world *world, sx_body_id body, const sx_compound *compound,
+                               const sx_collider_def *def, sx_collider_id *out) {
+    int bslot = -1;
+    sx_compound_part *parts;
+    sx_status s = sx_attach_prologue(world, body, def, out, &bslot);
+    if (s != SX_OK) return s;
+    if (compound == NULL) return SX_ERR_INVALID_ARG;
+    s = sx_compound_validate(compound);
+    if (s != SX_OK) return s;
+    s = sx_check_material(def);
+    if (s != SX_OK) return s;
+    if ((size_t)compound->count > SIZE_MAX / sizeof(sx_compound_part)) return SX_ERR_CAPACITY;
+    parts = (sx_compound_part *)sx_alloc((size_t)compound->count * sizeof(sx_compound_part));
+    if (parts == NULL) return SX_ERR_NO_MEMORY;
+    memcpy(parts, compound->parts, (size_t)compound->count * sizeof(sx_compound_part));
+    return sx_attach_collider(world, bslot, def, parts, compound->count, out);
+}
+
+sx_status sx_body_add_outline(sx_world *world, sx_body_id body, const sx_vec2 *points, int count,
+                              const sx_collider_def *def, sx_collider_id *out) {
+    int bslot = -1, part_count = 0, i;
+    size_t scratch_bytes, shape_bytes;
+    void *scratch;
+    sx_shape *shapes;
+    sx_compound_part *parts;
+    sx_status s = sx_attach_prologue(world, body, def, out, &bslot);
+    if (s != SX_OK) return s;
+    if (points == NULL || count < 3) return SX_ERR_INVALID_ARG;
+    s = sx_check_material(def);
+    if (s != SX_OK) return s;
+    scratch_bytes = sx_decompose_scratch_bytes(count);
+    if (scratch_bytes == 0 || (size_t)(count - 2) > SIZE_MAX / sizeof(sx_compound_part)) {
+        return SX_ERR_CAPACITY;
+    }
+    shape_bytes = (size_t)(count - 2) * sizeof(sx_shape);
+    scratch = sx_alloc(scratch_bytes);
+    shapes = (sx_shape *)sx_alloc(shape_bytes);
+    if (scratch == NULL || shapes == NULL) {
+        sx_free(scratch, scratch_bytes);
+        sx_free(shapes, shape_bytes);
+        return SX_ERR_NO_MEMORY;
+    }
+    s = sx_decompose_polygon(points, count, scratch, scratch_bytes, shapes, count - 2, &part_count,
+                             NULL);
+    sx_free(scratch, scratch_bytes);
+    if (s == SX_OK && part_count < 1) s = SX_ERR_DEGENERATE;
+    if (s != SX_OK) {
+        sx_free(shapes, shape_bytes);
+        return s;
+    }
+    parts = (sx_compound_part *)sx_alloc((size_t)part_count * sizeof(sx_compound_part));
+    if (parts == NULL) {
+        sx_free(shapes, shape_bytes);
+        return SX_ERR_NO_MEMORY;
+    }
+    for (i = 0; i < part_count; ++i)
+        parts[i] = sx_compound_part_make(shapes[i], sx_xform_identity());
+    sx_free(shapes, shape_bytes);
+    return sx_attach_collider(world, bslot, def, parts, part_count, out);
+}
+
+int sx_collider_get_part_count(const sx_world *world, sx_collider_id collider) {
+    int slot = sx_collider_slot(world, collider);
+    if (slot < 0) return 0;
+    return world->colliders[slot].part_count > 0 ? world->colliders[slot].part_count : 1;
+}
+
+sx_status sx_collider_get_part(const sx_world *world, sx_collider_id collider, int index,
+                               sx_compound_part *out) {
+    int slot;
+    const sx_collider *c;
+    if (world == NULL || out == NULL) return SX_ERR_INVALID_ARG;
+    slot = sx_collider_slot(world, collider);
+    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    c = &world->colliders[slot];
+    if (index < 0 || index >= (c->part_count > 0 ? c->part_count : 1)) return SX_ERR_INVALID_ARG;
+    if (c->part_count > 0) {
+        *out = c->parts[index];
+    } else {
+        *out = sx_compound_part_make(c->shape, sx_xform_identity());
     }
     return SX_OK;
 }
@@ -499,14 +666,30 @@ sx_status sx_body_set_awake(sx_world *world, sx_body_id body, bool awake) {
         sim->v = sx_v2_zero();
         sim->w = SX_R(0.0);
         world->infos[slot].island = -1;
+        world->sets_dirty = true;
     }
     return SX_OK;
+}
+
+sx_status sx_body_set_sleep_enabled(sx_world *world, sx_body_id body, bool enable) {
+    int slot;
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+    slot = sx_body_slot(world, body);
+    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    world->infos[slot].enable_sleep = enable;
+    if (!enable) sx_wake_body(world, slot);
+    return SX_OK;
+}
+
+bool sx_body_is_sleep_enabled(const sx_world *world, sx_body_id body) {
+    int slot = sx_body_slot(world, body);
+    return slot >= 0 && world->infos[slot].enable_sleep;
 }
 
 /* ---- setters ------------------------------------------------------------ */
 
 sx_status sx_body_set_transform(sx_world *world, sx_body_id body, sx_vec2 position, sx_real angle) {
-    int slot;
+    int slot, c;
     sx_body_sim *sim;
     if (world == NULL) return SX_ERR_INVALID_ARG;
     slot = sx_body_slot(world, body);
@@ -516,6 +699,9 @@ sx_status sx_body_set_transform(sx_world *world, sx_body_id body, sx_vec2 positi
     sx_wake_touching(world, slot);
     sim->xf = sx_xform_make(position, angle);
     sim->center = sx_xform_point(sim->xf, sim->local_center);
+    for (c = world->infos[slot].first_collider; c >= 0; c = world->colliders[c].next)
+        world->colliders[c].aabb_stale = true;
+    world->sets_dirty = true;
     return SX_OK;
 }
 
@@ -528,6 +714,7 @@ sx_status sx_body_set_linear_velocity(sx_world *world, sx_body_id body, sx_vec2 
     if (world->infos[slot].type != SX_BODY_STATIC) {
         sx_wake_body(world, slot);
         world->sims[slot].v = v;
+        world->sets_dirty = true; /* a kinematic body may start or stop */
     }
     return SX_OK;
 }
@@ -544,6 +731,7 @@ sx_status sx_body_set_angular_velocity(sx_world *world, sx_body_id body, sx_real
         (info->type == SX_BODY_DYNAMIC && world->sims[slot].inv_inertia > SX_R(0.0))) {
         sx_wake_body(world, slot);
         world->sims[slot].w = w;
+        world->sets_dirty = true;
     }
     return SX_OK;
 }

@@ -31,6 +31,9 @@ static void sx_union(int *parent, int a, int b) {
 
 static void sx_wake_one(sx_world *world, int slot) {
     world->sims[slot].awake = true;
+    /* its contacts may wait in the frozen store */
+    world->thaw_pending = true;
+    world->sets_dirty = true;
     world->infos[slot].sleep_time = SX_R(0.0);
     world->infos[slot].island = -1;
 }
@@ -60,7 +63,8 @@ int sx_world_awake_body_count(const sx_world *world) {
 
 sx_status sx_world_update_sleep(sx_world *world, sx_real dt) {
     sx_real lin, ang;
-    int i, *parent;
+    int i, ak, *parent;
+    sx_status s;
     sx_real *rest;
     void *p;
     bool ok;
@@ -81,12 +85,17 @@ sx_status sx_world_update_sleep(sx_world *world, sx_real dt) {
     lin = world->def.sleep_linear_speed;
     ang = world->def.sleep_angular_speed;
 
-    for (i = 0; i < world->body_slots; ++i) {
+    s = sx_world_refresh_sets(world);
+    if (s != SX_OK) return s;
+    /* only awake bodies take part: a sleeping one costs nothing */
+    for (ak = 0; ak < world->active_body_count; ++ak) {
+        i = world->active_bodies[ak];
         sx_body_sim *b = &world->sims[i];
         sx_body_info *info = &world->infos[i];
         parent[i] = i;
-        if (!info->alive || !b->dynamic || !b->awake) continue;
-        if (sx_length_sq(b->v) > lin * lin || sx_absr(b->w) > ang) {
+        rest[i] = SX_REAL_MAX;
+        if (!b->dynamic || !b->awake) continue;
+        if (!info->enable_sleep || sx_length_sq(b->v) > lin * lin || sx_absr(b->w) > ang) {
             info->sleep_time = SX_R(0.0);
         } else {
             info->sleep_time += dt;
@@ -118,24 +127,25 @@ sx_status sx_world_update_sleep(sx_world *world, sx_real dt) {
         }
     }
     /* the island's rest time is its least rested body's */
-    for (i = 0; i < world->body_slots; ++i)
-        rest[i] = SX_REAL_MAX;
-    for (i = 0; i < world->body_slots; ++i) {
+    for (ak = 0; ak < world->active_body_count; ++ak) {
         int r;
-        if (!world->infos[i].alive || !world->sims[i].dynamic || !world->sims[i].awake) continue;
+        i = world->active_bodies[ak];
+        if (!world->sims[i].dynamic || !world->sims[i].awake) continue;
         r = sx_find(parent, i);
         rest[r] = sx_minr(rest[r], world->infos[i].sleep_time);
     }
-    for (i = 0; i < world->body_slots; ++i) {
-        sx_body_sim *b = &world->sims[i];
+    for (ak = 0; ak < world->active_body_count; ++ak) {
         int r;
-        if (!world->infos[i].alive || !b->dynamic || !b->awake) continue;
+        i = world->active_bodies[ak];
+        sx_body_sim *b = &world->sims[i];
+        if (!b->dynamic || !b->awake) continue;
         r = sx_find(parent, i);
         if (rest[r] < world->def.time_to_sleep) continue;
         b->awake = false;
         b->v = sx_v2_zero();
         b->w = SX_R(0.0);
         world->infos[i].island = r;
+        world->sets_dirty = true;
     }
     return SX_OK;
 }

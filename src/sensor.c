@@ -1,15 +1,16 @@
 /* sepax — sensors: colliders with no response that report what overlaps
  * them.
  *
- * Each collide tests every sensor against every other collider: bounds
- * first, then the boolean overlap (the narrowphase's fast path, no
- * manifold). Sensors are few in a game and the test is cheap, so a linear
- * pass per sensor is the simple, exact choice here. The overlaps are kept as
+ * Each collide asks the broadphase's sets which colliders' bounds overlap
+ * each sensor's, then runs the boolean overlap (the narrowphase's fast path,
+ * no manifold) on those. A world with no sensor spends nothing here. The overlaps are kept as
  * a sorted list of pair keys; comparing it with the previous list (one merge
  * walk) gives the begin and end events, in a deterministic order. */
 #include "world_internal.h"
 
 void sx_sensors_free(sx_world *world) {
+    sx_free(world->visitors, (size_t)world->visitor_capacity * sizeof(int));
+    sx_free(world->sensor_colliders, (size_t)world->sensor_collider_capacity * sizeof(int));
     sx_free(world->sensor_pairs, (size_t)world->sensor_capacity * sizeof(uint64_t));
     sx_free(world->old_sensor_pairs, (size_t)world->old_sensor_capacity * sizeof(uint64_t));
     sx_free(world->sensor_begin, (size_t)world->sensor_begin_capacity * sizeof(sx_sensor_event));
@@ -53,9 +54,22 @@ static bool sx_push_sensor_event(sx_world *world, uint64_t key, bool begin) {
     return true;
 }
 
+/* Sorts a few ints ascending (insertion sort: a sensor sees few colliders). */
+static void sx_sort_ints(int *a, int n) {
+    int i;
+    for (i = 1; i < n; ++i) {
+        int x = a[i], j = i - 1;
+        while (j >= 0 && a[j] > x) {
+            a[j + 1] = a[j];
+            --j;
+        }
+        a[j + 1] = x;
+    }
+}
+
 sx_status sx_sensors_update(sx_world *world) {
     uint64_t *swap;
-    int i, j, cap;
+    int i, j, k, v, cap;
     swap = world->old_sensor_pairs;
     world->old_sensor_pairs = world->sensor_pairs;
     world->sensor_pairs = swap;
@@ -67,21 +81,31 @@ sx_status sx_sensors_update(sx_world *world) {
 
     /* sensors in slot order, visitors in slot order: the keys come out
      * sorted without a sort */
-    for (i = 0; i < world->collider_slots; ++i) {
-        const sx_collider *s = &world->colliders[i];
+    for (k = 0; k < world->sensor_collider_count; ++k) {
+        const sx_collider *s;
         sx_xform xs;
         sx_aabb box;
-        if (!s->alive || !s->sensor || !world->infos[s->body].enabled) continue;
+        sx_status st;
+        i = world->sensor_colliders[k];
+        s = &world->colliders[i];
         xs = world->sims[s->body].xf;
-        box = sx_shape_aabb(&s->shape, xs);
-        for (j = 0; j < world->collider_slots; ++j) {
-            const sx_collider *c = &world->colliders[j];
+        box = sx_collider_aabb(s, xs);
+        /* the broadphase's sets hold every colliding collider's (fattened)
+         * bounds as of this collide */
+        world->visitor_count = 0;
+        st = sx_broadphase_query(&world->bp, box, &world->visitors, &world->visitor_count,
+                                 &world->visitor_capacity);
+        if (st != SX_OK) return st;
+        /* visitors in slot order: the keys come out sorted */
+        sx_sort_ints(world->visitors, world->visitor_count);
+        for (v = 0; v < world->visitor_count; ++v) {
+            const sx_collider *c;
             sx_xform xc;
+            j = world->visitors[v];
+            c = &world->colliders[j];
             if (!sx_sensor_sees(world, s, c)) continue;
             xc = world->sims[c->body].xf;
-            /* collide has just computed every non-sensor's (fattened) bounds */
-            if (!sx_aabb_overlaps(box, world->aabbs[j])) continue;
-            if (!sx_overlap(&s->shape, xs, &c->shape, xc)) continue;
+            if (!sx_colliders_overlap(s, xs, c, xc)) continue;
             if (world->sensor_count == world->sensor_capacity) {
                 void *p = world->sensor_pairs;
                 bool ok = sx_grow_array(&p, &world->sensor_capacity, world->sensor_count + 1,

@@ -10,6 +10,8 @@
  * (both lists are sorted by pair key, so matching is one merge walk) and by
  * feature id, which carries the accumulated impulses over for warm starting.
  * Buffers only grow; a warmed-up world allocates nothing per step. */
+#include <stdlib.h>
+
 #include "world_internal.h"
 
 sx_world_def sx_default_world_def(void) {
@@ -28,6 +30,7 @@ sx_world_def sx_default_world_def(void) {
     d.sleep_linear_speed = SX_R(0.05) * SX_LENGTH_UNITS_PER_METER;
     d.sleep_angular_speed = SX_R(2.0) / SX_R(180.0) * SX_PI;
     d.time_to_sleep = SX_R(0.5);
+    d.enable_contact_events = true;
     return d;
 }
 
@@ -76,7 +79,15 @@ sx_world *sx_world_create(const sx_world_def *def) {
 }
 
 void sx_world_destroy(sx_world *world) {
+    int i;
     if (world == NULL) return;
+    for (i = 0; i < world->collider_slots; ++i) {
+        sx_collider *c = &world->colliders[i];
+        if (c->alive && c->parts != NULL) {
+            sx_free(c->parts, (size_t)c->part_count * sizeof(sx_compound_part));
+            sx_free(c->part_boxes, (size_t)c->part_count * sizeof(sx_aabb));
+        }
+    }
     sx_free(world->sims, (size_t)world->sim_capacity * sizeof(sx_body_sim));
     sx_free(world->infos, (size_t)world->info_capacity * sizeof(sx_body_info));
     sx_free(world->colliders, (size_t)world->collider_capacity * sizeof(sx_collider));
@@ -84,7 +95,12 @@ void sx_world_destroy(sx_world *world) {
     sx_free(world->bp_kind, (size_t)world->kind_capacity);
     sx_free(world->contacts, (size_t)world->contact_capacity * sizeof(sx_contact));
     sx_free(world->old_contacts, (size_t)world->old_contact_capacity * sizeof(sx_contact));
+    sx_free(world->frozen, (size_t)world->frozen_capacity * sizeof(sx_contact));
+    sx_free(world->thaw, (size_t)world->thaw_capacity * sizeof(sx_contact));
+    sx_free(world->active_bodies, (size_t)world->active_body_capacity * sizeof(int));
+    sx_free(world->active_colliders, (size_t)world->active_collider_capacity * sizeof(int));
     sx_broadphase_free(&world->bp);
+    sx_contacts_free(world);
     sx_free(world->begin_events, (size_t)world->begin_capacity * sizeof(sx_contact_event));
     sx_free(world->end_events, (size_t)world->end_capacity * sizeof(sx_contact_event));
     sx_sensors_free(world);
@@ -123,18 +139,117 @@ static sx_status sx_check_step(const sx_world *world, sx_real h) {
     return SX_OK;
 }
 
+/* ---- active sets ------------------------------------------------------------ */
+
+static bool sx_push_slot(int **array, int *count, int *capacity, int slot) {
+    if (*count == *capacity) {
+        void *p = *array;
+        bool ok = sx_grow_array(&p, capacity, *count + 1, sizeof(int));
+        *array = (int *)p;
+        if (!ok) return false;
+    }
+    (*array)[(*count)++] = slot;
+    return true;
+}
+
+/* The fattened bounds of a collider (half the margin on each side: bounds
+ * meet when the gap < margin) into world->aabbs; a compound's are the union
+ * of its parts', each kept in part_boxes for the part-pair culling of the
+ * narrowphase. */
+static void sx_collider_bounds(sx_world *world, int slot) {
+    sx_collider *c = &world->colliders[slot];
+    sx_xform xf = world->sims[c->body].xf;
+    const sx_real half = SX_R(0.5) * world->margin;
+    if (c->part_count > 0) {
+        sx_aabb u;
+        int k;
+        for (k = 0; k < c->part_count; ++k) {
+            sx_aabb pb = sx_aabb_fatten(
+                sx_shape_aabb(&c->parts[k].shape, sx_xform_mul(xf, c->parts[k].offset)), half);
+            c->part_boxes[k] = pb;
+            u = k == 0 ? pb : sx_aabb_union(u, pb);
+        }
+        world->aabbs[slot] = u;
+    } else {
+        world->aabbs[slot] = sx_aabb_fatten(sx_shape_aabb(&c->shape, xf), half);
+    }
+}
+
+sx_status sx_world_refresh_sets(sx_world *world) {
+    int i;
+    sx_status s;
+    if (!world->sets_dirty) return SX_OK;
+    world->active_body_count = 0;
+    world->active_collider_count = 0;
+    world->sensor_collider_count = 0;
+    for (i = 0; i < world->body_slots; ++i) {
+        const sx_body_sim *b = &world->sims[i];
+        if (world->infos[i].alive && b->moving && b->awake &&
+            !sx_push_slot(&world->active_bodies, &world->active_body_count,
+                          &world->active_body_capacity, i)) {
+            return SX_ERR_NO_MEMORY;
+        }
+    }
+    for (i = 0; i < world->collider_slots; ++i) {
+        sx_collider *c = &world->colliders[i];
+        const sx_body_sim *b = &world->sims[c->body];
+        unsigned char prev = world->bp_kind[i], kind = SX_BP_OUT;
+        if (!c->alive || c->sensor || !world->infos[c->body].enabled) {
+            kind = SX_BP_OUT;
+        } else if (b->dynamic) {
+            kind = b->awake ? SX_BP_AWAKE : SX_BP_ASLEEP;
+        } else if (b->moving && (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0))) {
+            kind = SX_BP_MOVING_KINEMATIC;
+        } else {
+            kind = SX_BP_FIXED;
+        }
+        world->bp_kind[i] = kind;
+        if (c->alive && c->sensor && world->infos[c->body].enabled &&
+            !sx_push_slot(&world->sensor_colliders, &world->sensor_collider_count,
+                          &world->sensor_collider_capacity, i)) {
+            return SX_ERR_NO_MEMORY;
+        }
+        if (kind == SX_BP_OUT) {
+            if (prev != SX_BP_OUT) {
+                s = sx_broadphase_touch(&world->bp, i, world->collider_slots);
+                if (s != SX_OK) return s;
+            }
+            continue;
+        }
+        if ((kind == SX_BP_AWAKE || kind == SX_BP_MOVING_KINEMATIC) &&
+            !sx_push_slot(&world->active_colliders, &world->active_collider_count,
+                          &world->active_collider_capacity, i)) {
+            return SX_ERR_NO_MEMORY;
+        }
+        /* Bodies the step does not move keep their bounds: they are
+         * recomputed when the body stops (its last move came after the last
+         * bounds) or is teleported (aabb_stale); collide recomputes the
+         * others. */
+        if (kind != prev || c->aabb_stale) {
+            sx_collider_bounds(world, i);
+            c->aabb_stale = false;
+            s = sx_broadphase_touch(&world->bp, i, world->collider_slots);
+            if (s != SX_OK) return s;
+        }
+    }
+    world->sets_dirty = false;
+    return SX_OK;
+}
+
 /* ---- stage 1: forces ---------------------------------------------------- */
 
 sx_status sx_world_apply_forces(sx_world *world, sx_real h) {
     sx_status s = sx_check_step(world, h);
     sx_vec2 g;
-    int i;
+    int k;
     if (s != SX_OK) return s;
     g = world->def.gravity;
-    for (i = 0; i < world->body_slots; ++i) {
-        sx_body_sim *b = &world->sims[i];
+    s = sx_world_refresh_sets(world);
+    if (s != SX_OK) return s;
+    for (k = 0; k < world->active_body_count; ++k) {
+        sx_body_sim *b = &world->sims[world->active_bodies[k]];
         sx_vec2 accel;
-        if (!world->infos[i].alive || !b->dynamic || !b->awake) continue;
+        if (!b->dynamic || !b->awake) continue;
         accel = sx_add(sx_scale(g, b->gravity_scale), sx_scale(b->force, b->inv_mass));
         b->v = sx_add(sx_mul_add(b->v, h, accel), sx_scale(b->impulse, b->inv_mass));
         b->w = b->w + h * (b->torque * b->inv_inertia) + b->angular_impulse * b->inv_inertia;
@@ -153,10 +268,14 @@ sx_status sx_world_apply_forces(sx_world *world, sx_real h) {
 
 sx_status sx_world_clear_forces(sx_world *world) {
     int i;
+    sx_status s;
     if (world == NULL) return SX_ERR_INVALID_ARG;
-    for (i = 0; i < world->body_slots; ++i) {
-        world->sims[i].force = sx_v2_zero();
-        world->sims[i].torque = SX_R(0.0);
+    /* forces wake their body, so only the active ones hold any */
+    s = sx_world_refresh_sets(world);
+    if (s != SX_OK) return s;
+    for (i = 0; i < world->active_body_count; ++i) {
+        world->sims[world->active_bodies[i]].force = sx_v2_zero();
+        world->sims[world->active_bodies[i]].torque = SX_R(0.0);
     }
     return SX_OK;
 }
@@ -168,21 +287,17 @@ static bool sx_filters_collide(const sx_filter *a, const sx_filter *b) {
     return (a->category & b->mask) != 0 && (b->category & a->mask) != 0;
 }
 
-/* Copies the warm-starting impulses (and a deferred impact) of the old
- * contact's point with the same feature id, if any. */
+/* Copies the warm-starting impulses of the old contact's point with the
+ * same feature id, if any. */
 static void sx_match_point(sx_contact_point *p, const sx_contact *old) {
     int k;
     p->normal_impulse = SX_R(0.0);
     p->tangent_impulse = SX_R(0.0);
-    p->pending_approach = SX_R(0.0);
-    p->pending_impulse = SX_R(0.0);
     if (old == NULL) return;
     for (k = 0; k < old->count; ++k) {
         if (old->points[k].id == p->id) {
             p->normal_impulse = old->points[k].normal_impulse;
             p->tangent_impulse = old->points[k].tangent_impulse;
-            p->pending_approach = old->points[k].pending_approach;
-            p->pending_impulse = old->points[k].pending_impulse;
             return;
         }
     }
@@ -210,28 +325,40 @@ static bool sx_push_event(const sx_world *world, const sx_contact *c, sx_contact
     return true;
 }
 
+/* The index past the run of contacts with the key of contacts[i] (a
+ * compound pair has one contact per touching part pair, all with one key). */
+static int sx_skip_run(const sx_contact *contacts, int count, int i) {
+    uint64_t key = contacts[i].key;
+    while (i < count && contacts[i].key == key)
+        ++i;
+    return i;
+}
+
 /* Compares the new contact list with the old one (both sorted by key):
- * pairs only in the new one began, pairs only in the old one ended. */
+ * collider pairs only in the new one began, pairs only in the old one ended
+ * (one event per collider pair, however many part pairs touch). */
 static sx_status sx_record_events(sx_world *world) {
     int i = 0, j = 0;
     while (i < world->contact_count || j < world->old_contact_count) {
         const sx_contact *n = i < world->contact_count ? &world->contacts[i] : NULL;
         const sx_contact *o = j < world->old_contact_count ? &world->old_contacts[j] : NULL;
         if (n != NULL && o != NULL && n->key == o->key) {
-            ++i;
-            ++j;
+            i = sx_skip_run(world->contacts, world->contact_count, i);
+            j = sx_skip_run(world->old_contacts, world->old_contact_count, j);
         } else if (o == NULL || (n != NULL && n->key < o->key)) {
-            if (!sx_push_event(world, n, &world->begin_events, &world->begin_count,
-                               &world->begin_capacity)) {
+            if (world->contacts[i].thawed) {
+                world->contacts[i].thawed = false;
+            } else if (!sx_push_event(world, n, &world->begin_events, &world->begin_count,
+                                      &world->begin_capacity)) {
                 return SX_ERR_NO_MEMORY;
             }
-            ++i;
+            i = sx_skip_run(world->contacts, world->contact_count, i);
         } else {
             if (!sx_push_event(world, o, &world->end_events, &world->end_count,
                                &world->end_capacity)) {
                 return SX_ERR_NO_MEMORY;
             }
-            ++j;
+            j = sx_skip_run(world->old_contacts, world->old_contact_count, j);
         }
     }
     return SX_OK;
@@ -267,14 +394,195 @@ static bool sx_reserve_contact(sx_world *world) {
     return ok;
 }
 
-/* Copies the frozen old contacts with keys below `key` into the new list
- * (both lists stay sorted by key). */
-static sx_status sx_carry_frozen(sx_world *world, int *old_index, uint64_t key) {
-    while (*old_index < world->old_contact_count && world->old_contacts[*old_index].key < key) {
-        const sx_contact *o = &world->old_contacts[(*old_index)++];
-        if (!o->frozen) continue;
-        if (!sx_reserve_contact(world)) return SX_ERR_NO_MEMORY;
-        world->contacts[world->contact_count++] = *o;
+/* True when a contact waits for a sleeping dynamic body: the solver skips it
+ * and the broadphase does not find its pair again. */
+static bool sx_contact_sleeps(const sx_world *world, const sx_contact *c) {
+    const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
+    return !sx_contact_is_active(world, c) &&
+           ((a->dynamic && !a->awake) || (b->dynamic && !b->awake));
+}
+
+/* Moves the sleeping contacts of the current list into the frozen store. */
+static sx_status sx_freeze_contacts(sx_world *world) {
+    int i, n = 0;
+    for (i = 0; i < world->contact_count; ++i) {
+        const sx_contact *c = &world->contacts[i];
+        if (sx_contact_sleeps(world, c)) {
+            if (world->frozen_count == world->frozen_capacity) {
+                void *p = world->frozen;
+                bool ok = sx_grow_array(&p, &world->frozen_capacity, world->frozen_count + 1,
+                                        sizeof(sx_contact));
+                world->frozen = (sx_contact *)p;
+                if (!ok) return SX_ERR_NO_MEMORY;
+            }
+            world->frozen[world->frozen_count++] = *c;
+        } else {
+            world->contacts[n++] = *c;
+        }
+    }
+    world->contact_count = n;
+    return SX_OK;
+}
+
+/* The contact list's order: key, then (part_a, part_b) for a compound's
+ * several contacts with one key. */
+static int sx_contact_key_cmp(const void *pa, const void *pb) {
+    const sx_contact *a = (const sx_contact *)pa, *b = (const sx_contact *)pb;
+    if (a->key != b->key) return a->key < b->key ? -1 : 1;
+    if (a->part_a != b->part_a) return a->part_a < b->part_a ? -1 : 1;
+    if (a->part_b != b->part_b) return a->part_b < b->part_b ? -1 : 1;
+    return 0;
+}
+
+/* True when the sorted list holds a contact with this key. */
+static bool sx_has_key(const sx_contact *list, int count, uint64_t key) {
+    int lo = 0, hi = count;
+    while (lo < hi) {
+        int mid = lo + (hi - lo) / 2;
+        if (list[mid].key < key)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo < count && list[lo].key == key;
+}
+
+/* Moves the frozen contacts that have an awake dynamic body again into the
+ * current list (kept sorted by key), marked `thawed` when asked. A pair the
+ * list already holds keeps the list's contact. */
+static sx_status sx_thaw_contacts(sx_world *world, bool mark) {
+    int i, j, out, n = 0, k = 0;
+    void *p;
+    bool ok;
+    world->thaw_pending = false;
+    world->thaw_count = 0;
+    for (i = 0; i < world->frozen_count; ++i) {
+        const sx_contact *c = &world->frozen[i];
+        if (!sx_contact_is_active(world, c)) {
+            world->frozen[n++] = *c;
+            continue;
+        }
+        if (sx_has_key(world->contacts, world->contact_count, c->key)) continue;
+        if (world->thaw_count == world->thaw_capacity) {
+            p = world->thaw;
+            ok = sx_grow_array(&p, &world->thaw_capacity, world->thaw_count + 1,
+                               sizeof(sx_contact));
+            world->thaw = (sx_contact *)p;
+            if (!ok) return SX_ERR_NO_MEMORY;
+        }
+        world->thaw[world->thaw_count] = *c;
+        world->thaw[world->thaw_count++].thawed = mark;
+    }
+    world->frozen_count = n;
+    k = world->thaw_count;
+    if (k == 0) return SX_OK;
+    /* keys are unique: the order is total and the same on every run */
+    qsort(world->thaw, (size_t)k, sizeof(sx_contact), sx_contact_key_cmp);
+    p = world->contacts;
+    ok = sx_grow_array(&p, &world->contact_capacity, world->contact_count + k, sizeof(sx_contact));
+    world->contacts = (sx_contact *)p;
+    if (!ok) return SX_ERR_NO_MEMORY;
+    /* merge from the back */
+    i = world->contact_count - 1;
+    j = k - 1;
+    out = world->contact_count + k - 1;
+    while (j >= 0) {
+        if (i >= 0 && world->contacts[i].key > world->thaw[j].key) {
+            world->contacts[out--] = world->contacts[i--];
+        } else {
+            world->contacts[out--] = world->thaw[j--];
+        }
+    }
+    world->contact_count += k;
+    return SX_OK;
+}
+
+/* Appends the contact of manifold m (m->count >= 1) between part pa of
+ * collider key >> 32 and part pb of collider key & 0xFFFFFFFF, matching the
+ * warm-starting impulses against the pair's old contacts
+ * old_contacts[old_begin, old_end) with the same parts. */
+static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, const sx_manifold *m,
+                                int old_begin, int old_end) {
+    int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), k;
+    const sx_collider *ca = &world->colliders[ia], *cb = &world->colliders[ib];
+    const sx_body_sim *ba = &world->sims[ca->body], *bb = &world->sims[cb->body];
+    const sx_contact *old = NULL;
+    sx_contact *c;
+    for (k = old_begin; k < old_end; ++k) {
+        if (world->old_contacts[k].part_a == pa && world->old_contacts[k].part_b == pb) {
+            old = &world->old_contacts[k];
+            break;
+        }
+    }
+    /* an awake body touching a sleeping one wakes its island */
+    if (!ba->awake) sx_wake_body(world, ca->body);
+    if (!bb->awake) sx_wake_body(world, cb->body);
+    if (!sx_reserve_contact(world)) return SX_ERR_NO_MEMORY;
+    c = &world->contacts[world->contact_count++];
+    c->key = key;
+    c->thawed = false;
+    c->collider_a = ia;
+    c->collider_b = ib;
+    c->part_a = pa;
+    c->part_b = pb;
+    c->body_a = ca->body;
+    c->body_b = cb->body;
+    c->normal = m->normal;
+    c->local_normal = sx_inv_rotate(ba->xf.q, m->normal);
+    c->friction = sx_sqrt(ca->friction * cb->friction);
+    c->restitution = sx_maxr(ca->restitution, cb->restitution);
+    c->count = m->count;
+    for (k = 0; k < m->count; ++k) {
+        const sx_manifold_point *mp = &m->points[k];
+        sx_contact_point *p = &c->points[k];
+        /* the surface points of A and B, depth apart along the normal */
+        sx_vec2 pa_w = sx_mul_add(mp->point, SX_R(0.5) * mp->depth, m->normal);
+        sx_vec2 pb_w = sx_mul_sub(mp->point, SX_R(0.5) * mp->depth, m->normal);
+        memset(p, 0, sizeof(*p));
+        p->point = mp->point;
+        p->local_a = sx_xform_inv_point(ba->xf, pa_w);
+        p->local_b = sx_xform_inv_point(bb->xf, pb_w);
+        p->anchor_a = sx_sub(mp->point, ba->center);
+        p->anchor_b = sx_sub(mp->point, bb->center);
+        p->separation = -mp->depth;
+        p->id = mp->id;
+        sx_match_point(p, old);
+    }
+    return SX_OK;
+}
+
+/* The narrowphase of a pair in which at least one collider is a compound:
+ * one manifold per part pair within the margin, in (part_a, part_b) order,
+ * so each touching part pair is its own contact for the solver, with its
+ * own feature ids and warm-starting impulses. Parts are culled first by
+ * their bounds (fattened by half the margin, as the broadphase's; found once
+ * with the collider's bounds, in its part_boxes). */
+static sx_status sx_collide_parts(sx_world *world, uint64_t key, int old_begin, int old_end) {
+    int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), i, j;
+    const sx_collider *ca = &world->colliders[ia], *cb = &world->colliders[ib];
+    sx_xform xa = world->sims[ca->body].xf, xb = world->sims[cb->body].xf;
+    sx_compound_part ta, tb;
+    sx_compound va = sx_collider_compound(ca, &ta), vb = sx_collider_compound(cb, &tb);
+    /* a plain collider's one part box is its own bounds */
+    const sx_aabb *boxes_a =
+        ca->part_count > 0 ? ca->part_boxes : &world->aabbs[ia];
+    const sx_aabb *boxes_b =
+        cb->part_count > 0 ? cb->part_boxes : &world->aabbs[ib];
+    for (i = 0; i < va.count; ++i) {
+        sx_xform xi;
+        if (!sx_aabb_overlaps(boxes_a[i], world->aabbs[ib])) continue;
+        xi = sx_xform_mul(xa, va.parts[i].offset);
+        for (j = 0; j < vb.count; ++j) {
+            sx_manifold m;
+            sx_status s;
+            if (!sx_aabb_overlaps(boxes_a[i], boxes_b[j])) continue;
+            if (sx_collide_ex(&va.parts[i].shape, xi, &vb.parts[j].shape,
+                              sx_xform_mul(xb, vb.parts[j].offset), world->margin, &m) <= 0) {
+                continue;
+            }
+            s = sx_add_contact(world, key, i, j, &m, old_begin, old_end);
+            if (s != SX_OK) return s;
+        }
     }
     return SX_OK;
 }
@@ -285,24 +593,23 @@ sx_status sx_world_collide(sx_world *world) {
     sx_status s;
     if (world == NULL) return SX_ERR_INVALID_ARG;
 
-    for (i = 0; i < world->collider_slots; ++i) {
-        const sx_collider *c = &world->colliders[i];
-        const sx_body_sim *b;
-        world->bp_kind[i] = 0;
-        if (!c->alive || c->sensor || !world->infos[c->body].enabled) continue;
-        b = &world->sims[c->body];
-        if (b->dynamic) {
-            world->bp_kind[i] = b->awake ? SX_BP_AWAKE : SX_BP_ASLEEP;
-        } else if (b->moving && (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0))) {
-            world->bp_kind[i] = SX_BP_MOVING_KINEMATIC;
-        } else {
-            world->bp_kind[i] = SX_BP_FIXED;
-        }
-        /* half the margin on each side: bounds meet when the gap < margin */
-        world->aabbs[i] =
-            sx_aabb_fatten(sx_shape_aabb(&c->shape, b->xf), SX_R(0.5) * world->margin);
+    s = sx_world_refresh_sets(world);
+    if (s != SX_OK) return s;
+    /* the bounds of the colliders the step moves */
+    for (i = 0; i < world->active_collider_count; ++i)
+        sx_collider_bounds(world, world->active_colliders[i]);
+    s = sx_broadphase_update(&world->bp, world->aabbs, world->bp_kind, world->collider_slots,
+                             world->active_colliders, world->active_collider_count);
+    if (s != SX_OK) return s;
+
+    /* Contacts of sleeping bodies leave the list for the frozen store (the
+     * pile keeps its contacts, reports no end events, and warm-starts when it
+     * wakes); those of bodies woken since the last collide come back. */
+    if (world->thaw_pending) {
+        s = sx_thaw_contacts(world, false);
+        if (s != SX_OK) return s;
     }
-    s = sx_broadphase_update(&world->bp, world->aabbs, world->bp_kind, world->collider_slots);
+    s = sx_freeze_contacts(world);
     if (s != SX_OK) return s;
 
     swap = world->old_contacts;
@@ -313,87 +620,60 @@ sx_status sx_world_collide(sx_world *world) {
     world->contact_capacity = cap;
     world->old_contact_count = world->contact_count;
     world->contact_count = 0;
-    /* Contacts of sleeping bodies are not found again (the broadphase skips
-     * their pairs) but carried over as they are, frozen: the pile keeps its
-     * contacts, reports no end events, and warm-starts when it wakes. The
-     * flag is taken before any wake below, so a woken island keeps its
-     * contacts for this collide too. */
-    for (i = 0; i < world->old_contact_count; ++i) {
-        sx_contact *c = &world->old_contacts[i];
-        const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
-        c->frozen = !sx_contact_is_active(world, c) &&
-                    ((a->dynamic && !a->awake) || (b->dynamic && !b->awake));
-    }
-
     for (i = 0; i < world->bp.pair_count; ++i) {
         uint64_t key = world->bp.pairs[i];
-        int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), k;
+        int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), old_begin;
         const sx_collider *ca = &world->colliders[ia], *cb = &world->colliders[ib];
-        const sx_body_sim *ba, *bb;
-        const sx_contact *old = NULL;
-        sx_contact *c;
         sx_manifold m;
         int n;
-        s = sx_carry_frozen(world, &old_index, key);
-        if (s != SX_OK) return s;
-        if (old_index < world->old_contact_count && world->old_contacts[old_index].key == key) {
-            old = &world->old_contacts[old_index++];
-        }
+        /* the old contacts of this pair: one, or one per part pair */
+        while (old_index < world->old_contact_count && world->old_contacts[old_index].key < key)
+            ++old_index;
+        old_begin = old_index;
+        while (old_index < world->old_contact_count && world->old_contacts[old_index].key == key)
+            ++old_index;
         if (ca->body == cb->body || !sx_filters_collide(&ca->filter, &cb->filter)) continue;
-        ba = &world->sims[ca->body];
-        bb = &world->sims[cb->body];
-        n = sx_collide_ex(&ca->shape, ba->xf, &cb->shape, bb->xf, world->margin, &m);
-        if (n <= 0) continue;
-        /* an awake body touching a sleeping one wakes its island */
-        if (!ba->awake) sx_wake_body(world, ca->body);
-        if (!bb->awake) sx_wake_body(world, cb->body);
-        if (!sx_reserve_contact(world)) return SX_ERR_NO_MEMORY;
-        c = &world->contacts[world->contact_count++];
-        c->key = key;
-        c->collider_a = ia;
-        c->collider_b = ib;
-        c->body_a = ca->body;
-        c->body_b = cb->body;
-        c->normal = m.normal;
-        c->local_normal = sx_inv_rotate(ba->xf.q, m.normal);
-        c->friction = sx_sqrt(ca->friction * cb->friction);
-        c->restitution = sx_maxr(ca->restitution, cb->restitution);
-        c->count = n;
-        for (k = 0; k < n; ++k) {
-            const sx_manifold_point *mp = &m.points[k];
-            sx_contact_point *p = &c->points[k];
-            /* the surface points of A and B, depth apart along the normal */
-            sx_vec2 pa = sx_mul_add(mp->point, SX_R(0.5) * mp->depth, m.normal);
-            sx_vec2 pb = sx_mul_sub(mp->point, SX_R(0.5) * mp->depth, m.normal);
-            memset(p, 0, sizeof(*p));
-            p->point = mp->point;
-            p->local_a = sx_xform_inv_point(ba->xf, pa);
-            p->local_b = sx_xform_inv_point(bb->xf, pb);
-            p->anchor_a = sx_sub(mp->point, ba->center);
-            p->anchor_b = sx_sub(mp->point, bb->center);
-            p->separation = -mp->depth;
-            p->id = mp->id;
-            sx_match_point(p, old);
+        if (ca->part_count > 0 || cb->part_count > 0) {
+            s = sx_collide_parts(world, key, old_begin, old_index);
+            if (s != SX_OK) return s;
+            continue;
         }
+        n = sx_collide_ex(&ca->shape, world->sims[ca->body].xf, &cb->shape,
+                          world->sims[cb->body].xf, world->margin, &m);
+        if (n <= 0) continue;
+        s = sx_add_contact(world, key, 0, 0, &m, old_begin, old_index);
+        if (s != SX_OK) return s;
     }
-    s = sx_carry_frozen(world, &old_index, UINT64_MAX);
-    if (s != SX_OK) return s;
-    s = sx_record_events(world);
-    if (s != SX_OK) return s;
+    /* an awake body touching a sleeping island woke it: its contacts join
+     * this step as they are */
+    if (world->thaw_pending) {
+        s = sx_thaw_contacts(world, true);
+        if (s != SX_OK) return s;
+    }
+    if (world->def.enable_contact_events) {
+        s = sx_record_events(world);
+        if (s != SX_OK) return s;
+    } else if (world->thaw_count > 0) {
+        for (i = 0; i < world->contact_count; ++i)
+            world->contacts[i].thawed = false;
+    }
     return sx_sensors_update(world);
 }
 
 int sx_world_contact_count(const sx_world *world) {
-    return world == NULL ? 0 : world->contact_count;
+    return world == NULL ? 0 : world->contact_count + world->frozen_count;
 }
 
 sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data *out) {
     const sx_contact *c;
     int k;
-    if (world == NULL || out == NULL || index < 0 || index >= world->contact_count) {
+    if (world == NULL || out == NULL || index < 0 ||
+        index >= world->contact_count + world->frozen_count) {
         return SX_ERR_INVALID_ARG;
     }
-    c = &world->contacts[index];
+    /* the step's contacts first, then those of sleeping bodies */
+    c = index < world->contact_count ? &world->contacts[index]
+                                     : &world->frozen[index - world->contact_count];
     memset(out, 0, sizeof(*out));
     out->collider_a.index = (uint32_t)c->collider_a;
     out->collider_a.generation = world->colliders[c->collider_a].generation;
@@ -403,6 +683,8 @@ sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data
     out->body_a.generation = world->infos[c->body_a].generation;
     out->body_b.index = (uint32_t)c->body_b;
     out->body_b.generation = world->infos[c->body_b].generation;
+    out->part_a = c->part_a;
+    out->part_b = c->part_b;
     out->normal = c->normal;
     out->count = c->count;
     for (k = 0; k < c->count; ++k) {
@@ -410,6 +692,7 @@ sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data
         out->depths[k] = -c->points[k].separation;
         out->normal_impulses[k] = c->points[k].normal_impulse;
         out->tangent_impulses[k] = c->points[k].tangent_impulse;
+        out->impact_impulses[k] = c->points[k].impact_impulse;
     }
     return SX_OK;
 }
@@ -418,13 +701,19 @@ sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data
 
 sx_status sx_world_solve(sx_world *world, sx_real h) {
     sx_status s = sx_check_step(world, h);
+    bool impacts;
     int it;
     if (s != SX_OK) return s;
+    /* the impact pass works on the active bodies */
+    s = sx_world_refresh_sets(world);
+    if (s != SX_OK) return s;
     sx_contacts_prepare(world);
+    /* restitution first, impact by impact in time order (contact_solver.c
+     * says why); the iterations then solve what rests and slides */
+    impacts = sx_contacts_impacts(world, h);
     for (it = 0; it < world->def.velocity_iterations; ++it)
         sx_contacts_solve(world, h);
-    sx_contacts_restitution(world);
-    return SX_OK;
+    return impacts ? SX_OK : SX_ERR_NO_MEMORY;
 }
 
 /* ---- stage 4: integrate -------------------------------------------------- */
@@ -433,13 +722,17 @@ sx_status sx_world_integrate(sx_world *world, sx_real h) {
     sx_status s = sx_check_step(world, h);
     int i;
     if (s != SX_OK) return s;
-    for (i = 0; i < world->body_slots; ++i) {
-        sx_body_sim *b = &world->sims[i];
-        if (!world->infos[i].alive || !b->moving || !b->awake) continue;
+    s = sx_world_refresh_sets(world);
+    if (s != SX_OK) return s;
+    for (i = 0; i < world->active_body_count; ++i) {
+        sx_body_sim *b = &world->sims[world->active_bodies[i]];
+        if (!b->moving || !b->awake) continue;
         b->center = sx_mul_add(b->center, h, b->v);
         if (b->w != SX_R(0.0)) b->xf.q = sx_rot_integrate(b->xf.q, h * b->w);
         sx_body_sync_origin(b);
     }
+    /* the time-of-impact corrections of this sub-step's impacts */
+    sx_contacts_apply_impact_shifts(world);
     return SX_OK;
 }
 
@@ -465,7 +758,8 @@ sx_status sx_world_step(sx_world *world, sx_real dt) {
         sx_world_apply_forces(world, h);
         s = sx_world_collide(world);
         if (s != SX_OK) return s;
-        sx_world_solve(world, h);
+        s = sx_world_solve(world, h);
+        if (s != SX_OK) return s;
         sx_world_integrate(world, h);
         sx_world_separate(world, h);
     }

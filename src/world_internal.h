@@ -14,6 +14,7 @@
 
 #include "core.h"
 #include "sepax/collide.h"
+#include "sepax/compound.h"
 #include "sepax/world.h"
 
 /* Hot per-body state. Static and disabled bodies keep inv_mass and
@@ -45,6 +46,7 @@ typedef struct sx_body_info {
     bool alive;
     bool enabled;
     bool fixed_rotation;
+    bool enable_sleep;
     sx_body_type type;
     sx_real mass, inertia;
     void *user_data;
@@ -55,13 +57,23 @@ typedef struct sx_body_info {
 } sx_body_info;
 
 typedef struct sx_collider {
-    sx_shape shape;
+    sx_shape shape; /* unused by a compound */
+    /* a compound collider: the world's own copy of its parts (NULL and 0
+     * for a plain collider, which then has exactly one implicit part) */
+    sx_compound_part *parts;
+    int part_count;
+    /* a compound's parts' fattened bounds, part_count of them, found with
+     * the collider's bounds (NULL for a plain collider) */
+    sx_aabb *part_boxes;
     sx_real density, friction, restitution;
     sx_filter filter;
     bool sensor;
     bool alive;
     uint32_t generation;
     int body;      /* slot of the owning body */
+    /* the cached bounds in world->aabbs no longer fit (teleport of a body
+     * the step does not move) */
+    bool aabb_stale;
     int next;      /* next collider of the same body, -1 at the end */
     int next_free; /* free-list link while dead */
     void *user_data;
@@ -72,20 +84,26 @@ typedef struct sx_contact_point {
     sx_vec2 local_a, local_b;   /* each surface point in its body frame */
     sx_vec2 point;              /* midway point at collide time, world */
     sx_real separation;         /* at collide time: < 0 overlap, > 0 gap */
-    sx_real normal_impulse, tangent_impulse, max_normal_impulse;
+    /* the separation the velocity iterations aim at: `separation` at the
+     * start positions shifted by the impacts of this sub-step (see
+     * sx_contacts_impacts) */
+    sx_real gap;
+    /* accumulated impulses of the velocity iterations (warm started) */
+    sx_real normal_impulse, tangent_impulse;
+    /* normal impulse of this sub-step's impact pass: kept apart, so the
+     * clamping of the iterations cannot take the rebound back */
+    sx_real impact_impulse;
     sx_real normal_mass, tangent_mass;
-    sx_real relative_velocity; /* normal velocity before the solve */
-    /* approach velocity (< 0) of an impact deferred by a speculative point to
-     * the sub-step in which it touches; 0 when none */
-    sx_real pending_approach;
-    /* the normal impulse that stopped that deferred impact */
-    sx_real pending_impulse;
     uint32_t id;
 } sx_contact_point;
 
 typedef struct sx_contact {
     uint64_t key; /* collider_a << 32 | collider_b, collider_a < collider_b */
     int collider_a, collider_b;
+    /* the part of each collider (0 for a plain one): a compound has one
+     * contact per touching part pair; the list is sorted by (key, part_a,
+     * part_b) */
+    int part_a, part_b;
     int body_a, body_b;
     sx_vec2 normal;       /* world, from A to B, at collide time */
     sx_vec2 local_normal; /* the normal in A's body frame */
@@ -96,8 +114,9 @@ typedef struct sx_contact {
      * inverse, when K is well conditioned (block_solve) */
     sx_real k11, k12, k22, inv11, inv12, inv22;
     bool block_solve;
-    /* carried unchanged through collide while its bodies sleep */
-    bool frozen;
+    /* just moved back from the frozen store by a wake during collide: it
+     * existed before, so it reports no begin event */
+    bool thawed;
 } sx_contact;
 
 /* What the broadphase needs to know of a collider. Pairs are reported when
@@ -111,9 +130,15 @@ enum {
     SX_BP_ASLEEP            /* dynamic and asleep */
 };
 
-/* Sort-and-sweep broadphase: keeps the colliders ordered by the lower x of
- * their bounds across calls, so the insertion sort is near linear when
- * bodies move a little per step. */
+/* The broadphase (broadphase.c) keeps two sets. The colliders the step
+ * moves (AWAKE, MOVING_KINEMATIC) are swept against each other on x every
+ * call, in an order kept across calls so the insertion sort costs about one
+ * pass. The others (FIXED, ASLEEP) sit in an array sorted by lower x that
+ * changes only when a collider joins or leaves that set or moves while in
+ * it: each moving collider finds its candidates there by binary search,
+ * and the few boxes much wider than the rest are kept on a short list of
+ * their own so they do not make every search long. A sleeping or static
+ * collider costs nothing per call. */
 typedef struct sx_sorted_box {
     sx_aabb box;
     int slot;
@@ -121,7 +146,7 @@ typedef struct sx_sorted_box {
 } sx_sorted_box;
 
 typedef struct sx_broadphase {
-    int *order;
+    int *order; /* moving colliders, by lower x as of the last call */
     int order_count, order_capacity;
     unsigned char *mark; /* scratch, one per collider slot */
     int mark_capacity;
@@ -129,9 +154,41 @@ typedef struct sx_broadphase {
     int pair_count, pair_capacity;
     uint64_t *scratch; /* radix-sort buffer, as large as pairs */
     int scratch_capacity;
-    sx_sorted_box *sorted; /* bounds in sweep order */
+    sx_sorted_box *sorted; /* moving bounds in sweep order */
     int sorted_capacity;
+    sx_sorted_box *fixed, *fixed_next; /* the other set, sorted by lower x */
+    int fixed_count, fixed_capacity, fixed_next_capacity;
+    sx_sorted_box *added; /* scratch: boxes joining the fixed set */
+    int added_count, added_capacity;
+    int *wide; /* indices into fixed of the boxes wider than wide_limit */
+    int wide_count, wide_capacity;
+    sx_real wide_limit;
+    /* collider slots whose fixed-set entry may be out of date: they changed
+     * kind or bounds since the last call (mark[] keeps them unique) */
+    int *touched;
+    int touched_count, touched_capacity;
+    unsigned char *tmark; /* one per collider slot: 1 while in touched */
+    int tmark_capacity;
 } sx_broadphase;
+
+/* Per body, for the impact pass: the position and angle correction that
+ * puts the body where its piecewise-linear motion through this sub-step's
+ * impacts ends (applied by sx_world_integrate), and its slice of the
+ * contact adjacency. */
+typedef struct sx_impact_body {
+    sx_vec2 shift;
+    sx_real turn;
+    int start, count;
+} sx_impact_body;
+
+/* Per contact, for the impact pass: the time of impact within the sub-step,
+ * the position in the heap (-1: not queued) and how many times the pass
+ * resolved it in this sub-step. */
+typedef struct sx_impact_contact {
+    sx_real time;
+    int where;
+    int count;
+} sx_impact_contact;
 
 struct sx_world {
     sx_world_def def;
@@ -151,6 +208,28 @@ struct sx_world {
 
     sx_contact *contacts, *old_contacts;
     int contact_count, old_contact_count, contact_capacity, old_contact_capacity;
+    /* Contacts of sleeping bodies, out of the step's list so a sleeping
+     * island costs nothing per step; unordered. A wake sets thaw_pending and
+     * the next collide moves the contacts that have an awake body back. */
+    sx_contact *frozen, *thaw;
+    int frozen_count, frozen_capacity, thaw_count, thaw_capacity;
+    bool thaw_pending;
+
+    /* The bodies the step moves (alive, enabled, and dynamic and awake, or
+     * kinematic) and the colliding colliders of the bodies that are not
+     * fixed (awake dynamic or moving kinematic), both in slot order, so a
+     * sleeping or static body costs nothing per step. Rebuilt by
+     * sx_world_refresh_sets after anything sets sets_dirty: a body woke,
+     * slept, appeared, left, changed type or velocity, or a collider came or
+     * went. */
+    int *active_bodies, *active_colliders;
+    int active_body_count, active_collider_count, active_body_capacity, active_collider_capacity;
+    /* the sensors of enabled bodies, in slot order (same refresh) */
+    int *sensor_colliders;
+    int sensor_collider_count, sensor_collider_capacity;
+    int *visitors; /* sensor scratch */
+    int visitor_count, visitor_capacity;
+    bool sets_dirty;
 
     sx_broadphase bp;
 
@@ -164,6 +243,17 @@ struct sx_world {
     sx_sensor_event *sensor_begin, *sensor_end;
     int sensor_begin_count, sensor_begin_capacity, sensor_end_count, sensor_end_capacity;
 
+    /* scratch of the impact pass (contact_solver.c), grown on demand */
+    sx_impact_body *impact_bodies;      /* per body slot */
+    int *impact_adjacency;              /* contact indices grouped by body */
+    int *impact_heap;                   /* contact indices ordered by (time, index) */
+    sx_impact_contact *impact_contacts; /* per contact */
+    int impact_body_capacity, impact_adjacency_capacity, impact_heap_capacity;
+    int impact_contact_capacity;
+    /* true between an impact pass that moved bodies and the integrate that
+     * applies the moves */
+    bool impact_shifts_pending;
+
     int *island_parent; /* union-find scratch, per body slot */
     sx_real *island_time;
     int parent_capacity, time_capacity;
@@ -176,24 +266,82 @@ static inline bool sx_contact_is_active(const sx_world *world, const sx_contact 
     return (a->dynamic && a->awake) || (b->dynamic && b->awake);
 }
 
+/* The collider as a compound: its own parts, or for a plain collider a
+ * one-part view of its shape built in *tmp. */
+static inline sx_compound sx_collider_compound(const sx_collider *c, sx_compound_part *tmp) {
+    sx_compound view;
+    if (c->part_count > 0) {
+        view.parts = c->parts;
+        view.count = c->part_count;
+    } else {
+        tmp->shape = c->shape;
+        tmp->offset = sx_xform_identity();
+        view.parts = tmp;
+        view.count = 1;
+    }
+    return view;
+}
+
+/* Tight world bounds of a collider on a body placed by xf. */
+static inline sx_aabb sx_collider_aabb(const sx_collider *c, sx_xform xf) {
+    if (c->part_count > 0) {
+        sx_compound view;
+        view.parts = c->parts;
+        view.count = c->part_count;
+        return sx_compound_aabb(&view, xf);
+    }
+    return sx_shape_aabb(&c->shape, xf);
+}
+
+/* True if two colliders placed by xa and xb overlap (touching counts). */
+static inline bool sx_colliders_overlap(const sx_collider *a, sx_xform xa, const sx_collider *b,
+                                        sx_xform xb) {
+    sx_compound_part ta, tb;
+    sx_compound va, vb;
+    if (a->part_count == 0 && b->part_count == 0) return sx_overlap(&a->shape, xa, &b->shape, xb);
+    va = sx_collider_compound(a, &ta);
+    vb = sx_collider_compound(b, &tb);
+    return sx_compound_overlap_compound(&va, xa, &vb, xb);
+}
+
 /* Grows *array (elements of `size` bytes, *capacity of them) to hold at least
  * `need`, doubling; copies the old contents. false when out of memory (the
  * array is then unchanged). */
 bool sx_grow_array(void **array, int *capacity, int need, size_t size);
 
+/* world.c */
+/* Rebuilds the active sets if sets_dirty, and every collider's broadphase
+ * kind and stale bounds with them. */
+sx_status sx_world_refresh_sets(sx_world *world);
+
 /* broadphase.c */
 void sx_broadphase_init(sx_broadphase *bp);
 void sx_broadphase_free(sx_broadphase *bp);
+/* Notes that a collider changed kind or bounds while not moving (its
+ * fixed-set entry must be redone). */
+sx_status sx_broadphase_touch(sx_broadphase *bp, int slot, int slot_count);
 /* Finds the pairs of colliders whose bounds overlap and whose kinds (SX_BP_*)
- * call for a pair. Fills bp->pairs sorted ascending by key (lower slot in the
+ * call for a pair; `moving` lists the AWAKE and MOVING_KINEMATIC colliders
+ * in slot order. Fills bp->pairs sorted ascending by key (lower slot in the
  * high half). */
 sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const unsigned char *kind,
-                               int slot_count);
+                               int slot_count, const int *moving, int moving_count);
+
+/* Appends to *out the slots of the colliders in the broadphase (not OUT)
+ * whose bounds overlap box, in no particular order. */
+sx_status sx_broadphase_query(const sx_broadphase *bp, sx_aabb box, int **out, int *count,
+                              int *capacity);
 
 /* contact_solver.c */
 void sx_contacts_prepare(sx_world *world);
+/* The impact pass (restitution): false when its scratch could not grow (the
+ * pass is then skipped). */
+bool sx_contacts_impacts(sx_world *world, sx_real h);
 void sx_contacts_solve(sx_world *world, sx_real h);
-void sx_contacts_restitution(sx_world *world);
+/* Moves the bodies by the corrections of the last impact pass and clears
+ * them (called by sx_world_integrate). */
+void sx_contacts_apply_impact_shifts(sx_world *world);
+void sx_contacts_free(sx_world *world);
 void sx_contacts_separate(sx_world *world, sx_real h);
 
 /* sensor.c */

@@ -34,6 +34,18 @@ typedef struct sx_query {
     sx_xform xf;
 } sx_query;
 
+/* True if part `index` of the view (placed by xf) answers the query. */
+static bool sx_query_part(const sx_query *q, const sx_compound_part *part, sx_xform xf) {
+    sx_xform px = sx_xform_mul(xf, part->offset);
+    if (!sx_aabb_overlaps(sx_shape_aabb(&part->shape, px), q->box)) return false;
+    switch (q->kind) {
+    case SX_QUERY_POINT: return sx_contains_point(&part->shape, px, q->point);
+    case SX_QUERY_SHAPE: return sx_overlap(&part->shape, px, q->shape, q->xf);
+    case SX_QUERY_AABB:
+    default: return true;
+    }
+}
+
 static int sx_run_query(const sx_world *world, const sx_query *q, sx_query_fn *fn, void *context) {
     int i, found = 0;
     for (i = 0; i < world->collider_slots; ++i) {
@@ -41,16 +53,25 @@ static int sx_run_query(const sx_world *world, const sx_query *q, sx_query_fn *f
         sx_xform xf;
         sx_collider_id cid;
         sx_body_id bid;
-        bool hit;
+        bool hit = false;
         if (!sx_queryable(world, i)) continue;
         c = &world->colliders[i];
         xf = world->sims[c->body].xf;
-        if (!sx_aabb_overlaps(sx_shape_aabb(&c->shape, xf), q->box)) continue;
-        switch (q->kind) {
-        case SX_QUERY_POINT: hit = sx_contains_point(&c->shape, xf, q->point); break;
-        case SX_QUERY_SHAPE: hit = sx_overlap(&c->shape, xf, q->shape, q->xf); break;
-        case SX_QUERY_AABB:
-        default: hit = true; break;
+        if (c->part_count > 0) {
+            int k;
+            /* a compound answers through its parts: a point or box in a
+             * notch of its outline misses */
+            if (!sx_aabb_overlaps(sx_collider_aabb(c, xf), q->box)) continue;
+            for (k = 0; k < c->part_count && !hit; ++k)
+                hit = sx_query_part(q, &c->parts[k], xf);
+        } else {
+            if (!sx_aabb_overlaps(sx_shape_aabb(&c->shape, xf), q->box)) continue;
+            switch (q->kind) {
+            case SX_QUERY_POINT: hit = sx_contains_point(&c->shape, xf, q->point); break;
+            case SX_QUERY_SHAPE: hit = sx_overlap(&c->shape, xf, q->shape, q->xf); break;
+            case SX_QUERY_AABB:
+            default: hit = true; break;
+            }
         }
         if (!hit) continue;
         ++found;
@@ -107,9 +128,20 @@ bool sx_world_cast_ray(const sx_world *world, const sx_ray_input *ray, sx_world_
     for (i = 0; i < world->collider_slots; ++i) {
         const sx_collider *c;
         sx_ray_hit hit;
+        int part = 0;
         if (!sx_queryable(world, i)) continue;
         c = &world->colliders[i];
-        if (!sx_ray_cast(&c->shape, world->sims[c->body].xf, &r, &hit) || !hit.hit) continue;
+        if (c->part_count > 0) {
+            sx_compound view;
+            view.parts = c->parts;
+            view.count = c->part_count;
+            if (!sx_compound_ray_cast(&view, world->sims[c->body].xf, &r, &hit, &part) ||
+                !hit.hit) {
+                continue;
+            }
+        } else if (!sx_ray_cast(&c->shape, world->sims[c->body].xf, &r, &hit) || !hit.hit) {
+            continue;
+        }
         /* strictly closer only: equal fractions keep the lower slot */
         if (any && !(hit.fraction < out->fraction)) continue;
         any = true;
@@ -117,6 +149,7 @@ bool sx_world_cast_ray(const sx_world *world, const sx_ray_input *ray, sx_world_
         out->point = hit.point;
         out->normal = hit.normal;
         out->fraction = hit.fraction;
+        out->part = part;
         /* later colliders only matter if they are hit sooner */
         r.max_fraction = hit.fraction;
     }
@@ -133,13 +166,21 @@ sx_status sx_world_draw(const sx_world *world, const sx_debug_draw *draw) {
         c = &world->colliders[i];
         xf = world->sims[c->body].xf;
         if (draw->draw_shape != NULL) {
-            draw->draw_shape(&c->shape, xf, world->infos[c->body].type, c->sensor, draw->context);
+            sx_compound_part tmp;
+            sx_compound view = sx_collider_compound(c, &tmp);
+            /* a compound draws part by part, each placed by its offset */
+            for (k = 0; k < view.count; ++k) {
+                draw->draw_shape(&view.parts[k].shape, sx_xform_mul(xf, view.parts[k].offset),
+                                 world->infos[c->body].type, c->sensor, draw->context);
+            }
         }
-        if (draw->draw_aabb != NULL) draw->draw_aabb(sx_shape_aabb(&c->shape, xf), draw->context);
+        if (draw->draw_aabb != NULL) draw->draw_aabb(sx_collider_aabb(c, xf), draw->context);
     }
     if (draw->draw_contact != NULL) {
-        for (i = 0; i < world->contact_count; ++i) {
-            const sx_contact *c = &world->contacts[i];
+        for (i = 0; i < world->contact_count + world->frozen_count; ++i) {
+            const sx_contact *c = i < world->contact_count
+                                      ? &world->contacts[i]
+                                      : &world->frozen[i - world->contact_count];
             for (k = 0; k < c->count; ++k) {
                 draw->draw_contact(c->points[k].point, c->normal, -c->points[k].separation,
                                    draw->context);

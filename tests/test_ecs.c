@@ -567,6 +567,222 @@ static void many_entities_step_and_go_without_leaks(void **state) {
     ecs_fini(world);
 }
 
+/* ---- concave colliders ------------------------------------------------------ */
+
+/* U outline: floor [-1.5, 1.5] x [0, 0.5], walls up to y = 2, notch
+ * [-1, 1] x [0.5, 2]. */
+static const double u_outline_xy[] = {-1.5, 0,   1.5, 0,   1.5, 2, 1,    2,
+                                      1,    0.5, -1,  0.5, -1,  2, -1.5, 2};
+
+typedef struct part_probe {
+    const sx_world *world;
+    int parts;
+} part_probe;
+
+static bool probe_parts(sx_collider_id collider, sx_body_id body, void *context) {
+    part_probe *p = (part_probe *)context;
+    (void)body;
+    p->parts = sx_collider_get_part_count(p->world, collider);
+    return true;
+}
+
+static void a_concave_outline_entity_collides_as_one_collider(void **state) {
+    ecs_world_t *world = make_world();
+    ecs_entity_t u = ecs_new(world), ball, other;
+    SxTransform t = {{SX_R(2.0), SX_R(0.0)}, SX_R(0.0)};
+    sx_vec2 pts[8];
+    const SxCollider *c;
+    const SxContacts *contacts;
+    event_log log;
+    int i, found = 0;
+    part_probe probe;
+    sx_world_ray_hit hit;
+    sx_ray_input ray;
+    (void)state;
+    memset(&log, 0, sizeof(log));
+    observe(world, &log);
+    for (i = 0; i < 8; ++i)
+        pts[i] = sx_v2((sx_real)u_outline_xy[2 * i], (sx_real)u_outline_xy[2 * i + 1]);
+    ecs_set_ptr(world, u, SxTransform, &t);
+    assert_int_equal(sx_ecs_set_outline(world, u, pts, 8, NULL), SX_OK);
+    c = ecs_get(world, u, SxCollider);
+    assert_non_null(c);
+    assert_true(c->part_count >= 3);
+    assert_non_null(c->parts);
+    /* a ball dropped into the notch (the U sits at x = 2) rests on its floor */
+    ball =
+        add_dynamic(world, sx_v2(SX_R(2.2), SX_R(3.0)), sx_circle_shape(sx_v2_zero(), SX_R(0.4)));
+    log.watch = ball;
+    progress(world, 180, 1.0 / 60.0);
+    assert_near(position_of(world, ball).y, 0.5 + 0.4, 0.01);
+    assert_true(position_of(world, ball).x > SX_R(1.4) && position_of(world, ball).x < SX_R(2.6));
+    assert_int_equal(log.begins, 1);
+    assert_true(log.last_begin.other == u);
+    assert_vec2_near(log.last_begin.normal, sx_v2(SX_R(0.0), SX_R(-1.0)), 1e-3);
+    contacts = ecs_singleton_get(world, SxContacts);
+    for (i = 0; i < contacts->count; ++i) {
+        if (contacts->items[i].entity_a == (u < ball ? u : ball) &&
+            contacts->items[i].entity_b == (u < ball ? ball : u)) {
+            ++found;
+        }
+    }
+    assert_int_equal(found, 1);
+    /* the module's world holds the U as one compound collider: the notch is
+     * empty, a wall is solid, and a ray down the notch hits the floor */
+    assert_int_equal(
+        sx_world_query_point(sx_ecs_world(world), sx_v2(SX_R(2.0), SX_R(1.8)), NULL, NULL), 0);
+    probe.world = sx_ecs_world(world);
+    probe.parts = 0;
+    assert_int_equal(
+        sx_world_query_point(sx_ecs_world(world), sx_v2(SX_R(0.7), SX_R(1.8)), probe_parts, &probe),
+        1);
+    assert_int_equal(probe.parts, c->part_count);
+    memset(&ray, 0, sizeof(ray));
+    ray.origin = sx_v2(SX_R(1.5), SX_R(5.0));
+    ray.translation = sx_v2(SX_R(0.0), SX_R(-10.0));
+    ray.max_fraction = SX_R(1.0);
+    assert_true(sx_world_cast_ray(sx_ecs_world(world), &ray, &hit));
+    assert_near(hit.point.y, 0.5, 1e-4);
+    assert_int_equal(sx_collider_get_part_count(sx_ecs_world(world), hit.collider), c->part_count);
+    /* cloning the entity deep-copies the parts (each copy owns its own) */
+    other = ecs_clone(world, 0, u, true);
+    assert_true(ecs_get(world, other, SxCollider)->parts != ecs_get(world, u, SxCollider)->parts);
+    assert_int_equal(ecs_get(world, other, SxCollider)->part_count, c->part_count);
+    ecs_delete(world, other);
+    progress(world, 2, 1.0 / 60.0);
+    ecs_fini(world);
+}
+
+/* An L compound given through SxCollider.parts on a dynamic body: the
+ * component keeps its own copy, the mass override scales the density, and
+ * the L comes to rest on the ground. */
+static void a_dynamic_compound_collider_from_parts_rests_on_the_ground(void **state) {
+    ecs_world_t *world = make_world();
+    ecs_entity_t e = ecs_new(world);
+    sx_compound_part parts[2];
+    SxTransform t = {{SX_R(0.0), SX_R(2.0)}, SX_R(0.3)};
+    SxBody b = sx_ecs_body(SX_BODY_DYNAMIC);
+    SxCollider c = sx_ecs_collider(sx_circle_shape(sx_v2_zero(), SX_R(0.1)));
+    sx_compound view;
+    sx_aabb box;
+    (void)state;
+    add_ground(world);
+    parts[0] = sx_compound_part_make(sx_box_shape(SX_R(1.0), SX_R(0.5)),
+                                     sx_xform_make(sx_v2(SX_R(1.0), SX_R(0.5)), SX_R(0.0)));
+    parts[1] = sx_compound_part_make(sx_box_shape(SX_R(0.5), SX_R(0.5)),
+                                     sx_xform_make(sx_v2(SX_R(0.5), SX_R(1.5)), SX_R(0.0)));
+    c.parts = parts;
+    c.part_count = 2;
+    b.mass = SX_R(6.0);
+    ecs_set_ptr(world, e, SxTransform, &t);
+    ecs_set_ptr(world, e, SxBody, &b);
+    ecs_set_ptr(world, e, SxCollider, &c);
+    /* ours can go: the component has its own copy */
+    assert_true(ecs_get(world, e, SxCollider)->parts != parts);
+    memset(parts, 0, sizeof(parts));
+    progress(world, 1, 1.0 / 60.0);
+    assert_int_equal(sx_world_body_count(sx_ecs_world(world)), 2);
+    progress(world, 300, 1.0 / 60.0);
+    view.parts = ecs_get(world, e, SxCollider)->parts;
+    view.count = ecs_get(world, e, SxCollider)->part_count;
+    assert_int_equal(view.count, 2);
+    t = *ecs_get(world, e, SxTransform);
+    box = sx_compound_aabb(&view, sx_xform_make(t.position, t.angle));
+    /* resting on the ground's top (y = 0) */
+    assert_near(box.lower.y, 0.0, 0.01);
+    assert_true(sx_length(ecs_get(world, e, SxBody)->velocity) < SX_R(0.05));
+    /* 6 kg, as SxBody.mass asks: 6 N s upward (gravity off) gives 1 m/s */
+    set_gravity(world, sx_v2(0, 0));
+    sx_ecs_apply_impulse(world, e, sx_v2(SX_R(0.0), SX_R(6.0)));
+    progress(world, 1, 1.0 / 60.0);
+    assert_near(ecs_get(world, e, SxBody)->velocity.y, 1.0, 1e-3);
+    /* removing the collider frees the parts (ASan / the leak check) */
+    ecs_remove(world, e, SxCollider);
+    progress(world, 1, 1.0 / 60.0);
+    ecs_fini(world);
+}
+
+/* A wide box across two teeth of a comb entity: the world has one contact
+ * per touching part pair, SxContacts one entry for the entity pair. */
+static void a_box_on_two_teeth_is_one_sx_contact(void **state) {
+    ecs_world_t *world = make_world();
+    ecs_entity_t comb = ecs_new(world), box;
+    SxTransform t = {{SX_R(0.0), SX_R(0.0)}, SX_R(0.0)};
+    sx_vec2 p[12];
+    const SxContacts *contacts;
+    int n = 0, k, i, found = 0, world_pairs = 0;
+    (void)state;
+    /* a spine [0, 5] x [0, 1] with teeth [0,1], [2,3], [4,5] up to y = 3 */
+    p[n++] = sx_v2(SX_R(0.0), SX_R(0.0));
+    p[n++] = sx_v2(SX_R(5.0), SX_R(0.0));
+    for (k = 2; k >= 0; --k) {
+        sx_real x0 = (sx_real)(2 * k), x1 = x0 + SX_R(1.0);
+        p[n++] = sx_v2(x1, SX_R(3.0));
+        p[n++] = sx_v2(x0, SX_R(3.0));
+        if (k > 0) {
+            p[n++] = sx_v2(x0, SX_R(1.0));
+            p[n++] = sx_v2(x0 - SX_R(1.0), SX_R(1.0));
+        }
+    }
+    ecs_set_ptr(world, comb, SxTransform, &t);
+    assert_int_equal(sx_ecs_set_outline(world, comb, p, n, NULL), SX_OK);
+    box = add_dynamic(world, sx_v2(SX_R(1.5), SX_R(4.0)), sx_box_shape(SX_R(1.2), SX_R(0.5)));
+    progress(world, 120, 1.0 / 60.0);
+    /* on the teeth, not between them */
+    assert_near(position_of(world, box).y, 3.5, 0.01);
+    for (i = 0; i < sx_world_contact_count(sx_ecs_world(world)); ++i) {
+        sx_contact_data d;
+        assert_int_equal(sx_world_get_contact(sx_ecs_world(world), i, &d), SX_OK);
+        if (d.count > 0) ++world_pairs;
+    }
+    assert_int_equal(world_pairs, 2);
+    contacts = ecs_singleton_get(world, SxContacts);
+    for (i = 0; i < contacts->count; ++i) {
+        if (contacts->items[i].entity_a == comb && contacts->items[i].entity_b == box) {
+            ++found;
+            assert_int_equal(contacts->items[i].point_count, 4);
+            assert_vec2_near(contacts->items[i].normal, sx_v2(SX_R(0.0), SX_R(1.0)), 1e-3);
+        }
+    }
+    assert_int_equal(found, 1);
+    ecs_fini(world);
+}
+
+static void bad_outlines_leave_the_entity_untouched(void **state) {
+    ecs_world_t *world = make_world();
+    ecs_entity_t e = ecs_new(world);
+    sx_vec2 bowtie[4], pts[8];
+    int i;
+    (void)state;
+    bowtie[0] = sx_v2(SX_R(0.0), SX_R(0.0));
+    bowtie[1] = sx_v2(SX_R(1.0), SX_R(1.0));
+    bowtie[2] = sx_v2(SX_R(1.0), SX_R(0.0));
+    bowtie[3] = sx_v2(SX_R(0.0), SX_R(1.0));
+    for (i = 0; i < 8; ++i)
+        pts[i] = sx_v2((sx_real)u_outline_xy[2 * i], (sx_real)u_outline_xy[2 * i + 1]);
+    assert_int_equal(sx_ecs_set_outline(world, e, bowtie, 4, NULL), SX_ERR_INVALID_ARG);
+    pts[3].x = (sx_real)NAN;
+    assert_int_equal(sx_ecs_set_outline(world, e, pts, 8, NULL), SX_ERR_NONFINITE);
+    pts[3].x = SX_R(1.0);
+    assert_int_equal(sx_ecs_set_outline(world, e, pts, 2, NULL), SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_ecs_set_outline(world, e, NULL, 8, NULL), SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_ecs_set_outline(NULL, e, pts, 8, NULL), SX_ERR_INVALID_ARG);
+    assert_false(ecs_has(world, e, SxCollider));
+    progress(world, 1, 1.0 / 60.0);
+    assert_int_equal(sx_world_body_count(sx_ecs_world(world)), 0);
+    /* a base collider's material and sensor flag carry over */
+    {
+        SxCollider base = sx_ecs_collider(sx_box_shape(SX_R(1.0), SX_R(1.0)));
+        base.friction = SX_R(0.25);
+        assert_int_equal(sx_ecs_set_outline(world, e, pts, 8, &base), SX_OK);
+        assert_near(ecs_get(world, e, SxCollider)->friction, 0.25, 0.0);
+        assert_true(ecs_get(world, e, SxCollider)->part_count >= 3);
+    }
+    ecs_delete(world, e);
+    assert_int_equal(sx_ecs_set_outline(world, e, pts, 8, NULL), SX_ERR_INVALID_ARG);
+    ecs_fini(world);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(box_falls_onto_static_ground_and_comes_to_rest),
@@ -585,6 +801,10 @@ int main(void) {
         cmocka_unit_test(ten_thousand_entities_step_and_are_deleted_cleanly),
         cmocka_unit_test(components_are_reflected),
         cmocka_unit_test(many_entities_step_and_go_without_leaks),
+        cmocka_unit_test(a_concave_outline_entity_collides_as_one_collider),
+        cmocka_unit_test(a_dynamic_compound_collider_from_parts_rests_on_the_ground),
+        cmocka_unit_test(a_box_on_two_teeth_is_one_sx_contact),
+        cmocka_unit_test(bad_outlines_leave_the_entity_untouched),
     };
     return cmocka_run_group_tests_name("ecs", tests, sx_test_group_setup, sx_test_group_teardown);
 }

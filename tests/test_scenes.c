@@ -71,19 +71,28 @@ static double max_depth(const sx_world *w) {
 
 /* ---- bounce -------------------------------------------------------------- */
 
-/* Drops a circle of radius 0.5 from 2 m (its lowest point) and returns the
- * first rebound's apex height over the drop height. */
-static double bounce_ratio(sx_real e, double *lowest_after) {
-    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
-    sx_shape ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+/* Drops a body (its lowest point 2 m above the ground, half-height 0.5)
+ * with `sub_steps` sub-steps and returns the first rebound's apex height
+ * over the drop height; *max_spin (if not NULL): the largest |angular
+ * velocity| seen. */
+static double bounce_ratio_ex(const sx_shape *shape, sx_real e, int sub_steps, double *lowest_after,
+                              double *max_spin) {
+    sx_world_def def = sx_default_world_def();
+    sx_world *w;
     sx_body_id b;
-    double apex = 0.0, lowest = 10.0;
+    double apex = 0.0, lowest = 10.0, spin = 0.0;
     bool bounced = false;
     int i;
+    def.enable_sleep = false;
+    def.sub_steps = sub_steps;
+    w = sx_world_create(&def);
+    assert_non_null(w);
     add_ground(w, SX_R(10.0), SX_R(0.6));
-    b = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(2.5)), SX_R(0.0), &ball, SX_R(1.0),
+    b = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(2.5)), SX_R(0.0), shape, SX_R(1.0),
                  SX_R(0.6), e);
     for (i = 0; i < 300; ++i) {
+        double w_abs = fabs((double)sx_body_get_angular_velocity(w, b));
+        if (w_abs > spin) spin = w_abs;
         double y, vy;
         step_n(w, 1);
         y = (double)sx_body_get_position(w, b).y - 0.5;
@@ -96,8 +105,15 @@ static double bounce_ratio(sx_real e, double *lowest_after) {
         if (i > 60 && y < lowest) lowest = y;
     }
     if (lowest_after != NULL) *lowest_after = lowest;
+    if (max_spin != NULL) *max_spin = spin;
     sx_world_destroy(w);
     return apex / 2.0;
+}
+
+/* A circle of radius 0.5 dropped from 2 m at the default settings. */
+static double bounce_ratio(sx_real e, double *lowest_after) {
+    sx_shape ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    return bounce_ratio_ex(&ball, e, sx_default_world_def().sub_steps, lowest_after, NULL);
 }
 
 static void bounce_apex_over_drop_is_restitution_squared(void **state) {
@@ -121,6 +137,67 @@ static void bounce_with_zero_restitution_stays_on_the_ground(void **state) {
     /* no rebound beyond the contact tolerance, and no sinking either */
     assert_true(2.0 * r < 0.005);
     assert_true(lowest > -0.005);
+}
+
+/* The impact is resolved at its time of impact within the sub-step (the
+ * bodies' positions are corrected for it), so the rebound does not depend on
+ * where the impact falls on the sub-step grid. The solver before the impact
+ * pass bounced to 0.148 instead of 0.25 with 8 sub-steps and to 0.022 with
+ * 24. */
+static void bounce_height_does_not_depend_on_the_sub_step_count(void **state) {
+    static const int subs[] = {1, 2, 3, 8, 24};
+    sx_shape ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    int i;
+    (void)state;
+    for (i = 0; i < 5; ++i) {
+        double r = bounce_ratio_ex(&ball, SX_R(0.5), subs[i], NULL, NULL);
+        printf("  bounce e=0.5, %2d sub-steps: apex/drop %.4f (e^2 0.25)\n", subs[i], r);
+        assert_near(r, 0.25, 0.05 * 0.25);
+    }
+}
+
+/* A box landing flat: its two contact points are resolved together, so it
+ * bounces straight up, without the spin that resolving one corner before
+ * the other would give it. */
+static void box_landing_flat_bounces_straight_without_spin(void **state) {
+    sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    double spin,
+        r = bounce_ratio_ex(&box, SX_R(0.5), sx_default_world_def().sub_steps, NULL, &spin);
+    (void)state;
+    printf("  box e=0.5: apex/drop %.4f (e^2 0.25), largest spin %.2e rad/s\n", r, spin);
+    assert_near(r, 0.25, 0.05 * 0.25);
+    assert_true(spin < 1e-3);
+}
+
+/* Friction acts during an impact, on the impact's own normal impulse: a disc
+ * (r 0.5) hitting the ground at vx = 5, vy = -5 m/s with e = 0.5, mu = 0.6,
+ * no gravity. The normal impulse is J = (1 + e) m 5 = 7.5 m; stopping the
+ * slip takes m 5 / 3 (a disc: 1/m + r^2/I = 3/m), within mu J, so the disc
+ * leaves rolling: vx = 5 - 5/3 = 3.333 m/s, w r = -vx, vy = 2.5 m/s, and
+ * has lost energy. */
+static void oblique_impact_with_friction_leaves_rolling(void **state) {
+    sx_world *w = make_world(sx_v2_zero());
+    sx_shape ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    sx_body_id b;
+    sx_vec2 v;
+    double om, ke0 = 0.5 * 50.0, ke;
+    (void)state;
+    add_ground(w, SX_R(10.0), SX_R(0.6));
+    b = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-3.0), SX_R(1.0)), SX_R(0.0), &ball, SX_R(1.0),
+                 SX_R(0.6), SX_R(0.5));
+    assert_int_equal(sx_body_set_linear_velocity(w, b, sx_v2(SX_R(5.0), SX_R(-5.0))), SX_OK);
+    step_n(w, 30);
+    v = sx_body_get_linear_velocity(w, b);
+    om = (double)sx_body_get_angular_velocity(w, b);
+    ke = 0.5 * ((double)sx_dot(v, v) + 0.125 * om * om); /* per kg: I / m = r^2 / 2 */
+    printf("  oblique impact: v (%.4f, %.4f) m/s, w r %.4f m/s (rolling: -vx), energy %.3f of %.3f "
+           "J/kg\n",
+           (double)v.x, (double)v.y, 0.5 * om, ke, ke0);
+    assert_near(v.x, 5.0 - 5.0 / 3.0, 0.01 * 5.0);
+    assert_near(v.y, 2.5, 0.02 * 2.5);
+    assert_near(0.5 * om, -(double)v.x, 0.01 * 5.0);
+    assert_true(ke < ke0);
+    sx_world_destroy(w);
 }
 
 /* ---- incline ------------------------------------------------------------- */
@@ -221,75 +298,222 @@ static void slow_impact_below_the_threshold_does_not_bounce(void **state) {
 
 /* ---- Newton's cradle -------------------------------------------------------- */
 
-/* Five equal balls r 0.5 with 1 mm gaps, e = 1, mu = 0, no gravity; the
- * first moves at 1 m/s. Runs 1 s and returns the velocities, the momentum
- * and the kinetic energy. */
-static void cradle_run(sx_real speculative_slops, double v[5], double *p, double *ke, double *m) {
-    sx_world_def def = sx_default_world_def();
+/* Five equal balls r 0.5 in a row along x, centres `spacing` apart (1.001:
+ * 1 mm gaps; 1: touching), e = 1, mu = 0, no gravity; the first `moving`
+ * balls move at 1 m/s towards the others. `reversed` creates the balls in
+ * the opposite order (the moving ones last, at the right, moving left), so
+ * the chain of impacts runs against the order of the contact list. Runs 1 s
+ * and returns the velocities along the row (v[0] the first moving ball, so
+ * +1 is "the way the first ball went"), the momentum and kinetic energy in
+ * the same sense, and the mass of one ball. */
+static void cradle_run_ex(const sx_world_def *def, sx_real spacing, int moving, bool reversed,
+                          double v[5], double *p, double *ke, double *m) {
     sx_shape ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
     sx_body_id b[5];
-    sx_world *w;
+    sx_world *w = sx_world_create(def);
+    double sense = reversed ? -1.0 : 1.0;
     int i;
-    def.gravity = sx_v2_zero();
-    /* the impacts here are 1 m/s: the threshold must be below that for
-     * restitution to act at all */
-    def.restitution_threshold = SX_R(0.1);
-    def.speculative_slops = speculative_slops;
-    /* balls left drifting at a few cm/s would fall asleep and drop out of
-     * the momentum sum: this scene measures conservation, so no sleeping */
-    def.enable_sleep = false;
-    w = sx_world_create(&def);
     assert_non_null(w);
     for (i = 0; i < 5; ++i) {
-        b[i] = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(1.001) * (sx_real)i, SX_R(0.0)), SX_R(0.0),
-                        &ball, SX_R(1.0), SX_R(0.0), SX_R(1.0));
+        /* ball i of the row, created in row order or in reverse */
+        int slot = reversed ? 4 - i : i;
+        sx_real x = (sx_real)sense * spacing * (sx_real)slot;
+        b[slot] = add_body(w, SX_BODY_DYNAMIC, sx_v2(x, SX_R(0.0)), SX_R(0.0), &ball, SX_R(1.0),
+                           SX_R(0.0), SX_R(1.0));
     }
-    assert_int_equal(sx_body_set_linear_velocity(w, b[0], sx_v2(SX_R(1.0), SX_R(0.0))), SX_OK);
+    for (i = 0; i < moving; ++i) {
+        assert_int_equal(sx_body_set_linear_velocity(w, b[i], sx_v2((sx_real)sense, SX_R(0.0))),
+                         SX_OK);
+    }
     step_n(w, 60);
     *p = 0.0;
     *ke = 0.0;
     *m = (double)sx_body_get_mass(w, b[0]);
     for (i = 0; i < 5; ++i) {
         sx_vec2 vi = sx_body_get_linear_velocity(w, b[i]);
-        v[i] = (double)vi.x;
-        *p += *m * (double)vi.x;
+        v[i] = sense * (double)vi.x;
+        *p += *m * v[i];
         *ke += 0.5 * *m * (double)sx_dot(vi, vi);
     }
     sx_world_destroy(w);
 }
 
-/* Without a speculative margin each impact is solved in the sub-step it
- * happens in, one after the other, as in the real cradle: the speed passes
- * down the row and the last ball leaves with it. */
-static void cradle_passes_the_speed_to_the_last_ball(void **state) {
-    double v[5], p, ke, m, residual = 0.0;
+/* The scene's world: the default settings in zero gravity (the row lies
+ * along x and nothing else acts). The impacts are at 1 m/s, exactly the
+ * default restitution threshold, which bounces (approach >= threshold). */
+static sx_world_def cradle_def(void) {
+    sx_world_def def = sx_default_world_def();
+    def.gravity = sx_v2_zero();
+    return def;
+}
+
+/* Largest |v| of balls first..last. */
+static double cradle_residual(const double v[5], int first, int last) {
+    double r = 0.0;
     int i;
+    for (i = first; i <= last; ++i)
+        r = fabs(v[i]) > r ? fabs(v[i]) : r;
+    return r;
+}
+
+/* The figures every cradle scene must meet: the last `moving` balls leave at
+ * >= 0.95 m/s, the others are nearly at rest (|v| <= 1e-3 m/s, 0.1 % of the
+ * speed), momentum within 1e-5 relative, no energy gained. */
+static void cradle_check(const char *name, const double v[5], double p, double ke, double m,
+                         int moving) {
+    double residual = cradle_residual(v, 0, 4 - moving), p0 = (double)moving * m;
+    double ke0 = 0.5 * (double)moving * m;
+    int i;
+    printf("  cradle (%s): v %.5f %.5f %.5f %.5f %.5f, others at most %.2e m/s, momentum error "
+           "%.2e, energy %.6f of %.6f\n",
+           name, v[0], v[1], v[2], v[3], v[4], residual, fabs(p - p0) / p0, ke, ke0);
+    for (i = 5 - moving; i < 5; ++i)
+        assert_true(v[i] >= 0.95);
+    assert_true(residual <= 1e-3);
+    assert_near(p, p0, 1e-5 * p0);
+    assert_true(ke <= ke0 * (1.0 + 1e-5));
+}
+
+/* Without a speculative margin each impact is found in the sub-step it
+ * happens in, one after the other, as in the real cradle. */
+static void cradle_passes_the_speed_to_the_last_ball(void **state) {
+    sx_world_def def = cradle_def();
+    double v[5], p, ke, m;
     (void)state;
-    cradle_run(SX_R(0.0), v, &p, &ke, &m);
-    for (i = 0; i < 4; ++i)
-        residual = fabs(v[i]) > residual ? fabs(v[i]) : residual;
-    printf("  cradle (no speculative margin): last %.5f m/s, others at most %.5f, momentum "
-           "error %.2e, energy %.6f of %.6f\n",
-           v[4], residual, fabs(p - m) / m, ke, 0.5 * m);
-    assert_true(v[4] >= 0.95);
-    assert_near(p, m, 1e-5 * m);
-    assert_true(ke <= 0.5 * m * (1.0 + 1e-5));
+    def.speculative_slops = SX_R(0.0);
+    cradle_run_ex(&def, SX_R(1.001), 1, false, v, &p, &ke, &m);
+    cradle_check("no speculative margin", v, p, ke, m, 1);
 }
 
 /* With the default margin (20 mm, wider than the 1 mm gaps) all four
- * contacts exist from the start and are solved together: the row shares the
- * impact (a known limit of simultaneous sequential impulses). Momentum must
- * still hold and restitution must not create energy. */
-static void cradle_with_speculative_contacts_keeps_momentum_and_gains_no_energy(void **state) {
+ * contacts exist from the first sub-step. Solved together (the solver
+ * before the impact pass) the row shared the impact: 0.029 0.029 0.061
+ * 0.255 0.626 m/s, 46 % of the energy. The impact pass resolves 0-1, 1-2,
+ * 2-3, 3-4 in time-of-impact order within one sub-step. */
+static void cradle_with_the_default_world_passes_the_speed_to_the_last_ball(void **state) {
+    sx_world_def def = cradle_def();
     double v[5], p, ke, m;
     (void)state;
-    cradle_run(sx_default_world_def().speculative_slops, v, &p, &ke, &m);
-    printf("  cradle (default margin): v %.4f %.4f %.4f %.4f %.4f, momentum error %.2e, energy "
-           "%.6f of %.6f\n",
-           v[0], v[1], v[2], v[3], v[4], fabs(p - m) / m, ke, 0.5 * m);
-    assert_near(p, m, 1e-5 * m);
-    assert_true(ke <= 0.5 * m * (1.0 + 1e-5));
-    assert_true(v[4] >= v[3] && v[3] >= v[2]);
+    cradle_run_ex(&def, SX_R(1.001), 1, false, v, &p, &ke, &m);
+    cradle_check("default world", v, p, ke, m, 1);
+}
+
+/* The same row created right to left: the contact list (ordered by collider
+ * slots) now runs against the chain, which a pass in list order would need
+ * four sweeps for; the time order does not care. */
+static void cradle_built_in_reverse_order_gives_the_same_answer(void **state) {
+    sx_world_def def = cradle_def();
+    double v[5], p, ke, m;
+    (void)state;
+    cradle_run_ex(&def, SX_R(1.001), 1, true, v, &p, &ke, &m);
+    cradle_check("created in reverse", v, p, ke, m, 1);
+}
+
+/* Five balls touching exactly (centres 1 m apart, separation 0 at every
+ * contact). The case most sequential-impulse engines get wrong: with every
+ * contact present and touching, a simultaneous solve spreads the impulse
+ * over the row (the balls leave together, or the last one slowly). Here:
+ * 0-1 has time of impact 0; resolving it gives ball 1 the speed, which makes
+ * 1-2 an impact at time 0, and so on: the idealised cradle's answer, the
+ * last ball leaves at 1 m/s and the others stop. Asserted, as the gapped
+ * row: last >= 0.95 m/s, others <= 1e-3 m/s, momentum 1e-5, no energy
+ * gained. */
+static void cradle_of_touching_balls_passes_the_speed_to_the_last_ball(void **state) {
+    sx_world_def def = cradle_def();
+    double v[5], p, ke, m;
+    (void)state;
+    cradle_run_ex(&def, SX_R(1.0), 1, false, v, &p, &ke, &m);
+    cradle_check("touching", v, p, ke, m, 1);
+    cradle_run_ex(&def, SX_R(1.0), 1, true, v, &p, &ke, &m);
+    cradle_check("touching, created in reverse", v, p, ke, m, 1);
+}
+
+/* Two balls swung together: two leave. The second wave meets contacts the
+ * first already resolved within the same sub-step. */
+static void cradle_with_two_moving_balls_sends_two_away(void **state) {
+    sx_world_def def = cradle_def();
+    double v[5], p, ke, m;
+    (void)state;
+    cradle_run_ex(&def, SX_R(1.001), 2, false, v, &p, &ke, &m);
+    cradle_check("two moving", v, p, ke, m, 2);
+    cradle_run_ex(&def, SX_R(1.0), 2, false, v, &p, &ke, &m);
+    cradle_check("two moving, touching", v, p, ke, m, 2);
+}
+
+/* The impact pass keeps the step deterministic: the same calls twice give
+ * bit-identical velocities. */
+static void cradle_is_bit_identical_when_run_twice(void **state) {
+    sx_world_def def = cradle_def();
+    double v1[5], v2[5], p1, p2, ke1, ke2, m;
+    (void)state;
+    cradle_run_ex(&def, SX_R(1.0007), 2, true, v1, &p1, &ke1, &m);
+    cradle_run_ex(&def, SX_R(1.0007), 2, true, v2, &p2, &ke2, &m);
+    assert_memory_equal(v1, v2, sizeof(v1));
+    assert_memory_equal(&ke1, &ke2, sizeof(ke1));
+}
+
+/* The impulse of an impact is reported apart from the iterations' impulses:
+ * two equal balls touching, the first at 1 m/s, e = 1: the impact pass
+ * gives (1 + e) m_eff v = m, and the iterations nothing (the balls part). */
+static void impact_impulse_is_reported_apart_from_the_iterations(void **state) {
+    sx_world_def def = cradle_def();
+    sx_world *w = sx_world_create(&def);
+    sx_shape ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    sx_body_id a, b;
+    sx_contact_data c;
+    double m;
+    (void)state;
+    assert_non_null(w);
+    a = add_body(w, SX_BODY_DYNAMIC, sx_v2_zero(), SX_R(0.0), &ball, SX_R(1.0), SX_R(0.0),
+                 SX_R(1.0));
+    b = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(1.0), SX_R(0.0)), SX_R(0.0), &ball, SX_R(1.0),
+                 SX_R(0.0), SX_R(1.0));
+    assert_int_equal(sx_body_set_linear_velocity(w, a, sx_v2(SX_R(1.0), SX_R(0.0))), SX_OK);
+    assert_int_equal(sx_world_collide(w), SX_OK);
+    assert_int_equal(sx_world_solve(w, DT), SX_OK);
+    assert_int_equal(sx_world_contact_count(w), 1);
+    assert_int_equal(sx_world_get_contact(w, 0, &c), SX_OK);
+    m = (double)sx_body_get_mass(w, a);
+    assert_near(c.impact_impulses[0], m, 1e-5 * m);
+    assert_near(c.normal_impulses[0], 0.0, 1e-9);
+    assert_near(sx_body_get_linear_velocity(w, b).x, 1.0, 1e-6);
+    assert_near(sx_body_get_linear_velocity(w, a).x, 0.0, 1e-6);
+    sx_world_destroy(w);
+}
+
+/* A ball jammed between two walls, touching both, at 5 m/s, e = 1: every
+ * impact sends it straight into the other wall at time 0. The pass resolves
+ * each contact at most SX_IMPACTS_PER_CONTACT times per sub-step, so the
+ * step ends; the rest is left to the iterations, which stop the ball (no
+ * energy is ever gained, nothing escapes). */
+static void ball_jammed_between_two_walls_ends_the_step_and_gains_no_energy(void **state) {
+    sx_world_def def = cradle_def();
+    sx_world *w = sx_world_create(&def);
+    sx_shape ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    sx_shape wall = sx_box_shape(SX_R(0.5), SX_R(2.0));
+    sx_body_id b;
+    double v0 = 5.0, vmax = 0.0;
+    int s;
+    (void)state;
+    assert_non_null(w);
+    add_body(w, SX_BODY_STATIC, sx_v2(SX_R(-1.0), SX_R(0.0)), SX_R(0.0), &wall, SX_R(0.0),
+             SX_R(0.0), SX_R(1.0));
+    add_body(w, SX_BODY_STATIC, sx_v2(SX_R(1.0), SX_R(0.0)), SX_R(0.0), &wall, SX_R(0.0), SX_R(0.0),
+             SX_R(1.0));
+    b = add_body(w, SX_BODY_DYNAMIC, sx_v2_zero(), SX_R(0.0), &ball, SX_R(1.0), SX_R(0.0),
+                 SX_R(1.0));
+    assert_int_equal(sx_body_set_linear_velocity(w, b, sx_v2((sx_real)v0, SX_R(0.0))), SX_OK);
+    for (s = 0; s < 60; ++s) {
+        double v;
+        step_n(w, 1);
+        v = (double)sx_length(sx_body_get_linear_velocity(w, b));
+        if (v > vmax) vmax = v;
+    }
+    printf("  ball jammed between walls at 5 m/s: largest speed after a step %.4f m/s, x %.5f\n",
+           vmax, (double)sx_body_get_position(w, b).x);
+    assert_true(vmax <= v0 * (1.0 + 1e-5));
+    assert_near(sx_body_get_position(w, b).x, 0.0, 0.01);
+    sx_world_destroy(w);
 }
 
 /* ---- zero-gravity pile-up ------------------------------------------------- */
@@ -623,6 +847,53 @@ static void mixed_shapes_in_a_box_run_20_seconds_without_escaping_or_blowing_up(
     sx_world_destroy(w);
 }
 
+/* PILE_N circles and boxes (half-size 0.2..0.5) of restitution 0.9 rain in
+ * rows of 40 into a 50 m wide container of the same restitution. Contacts
+ * slower than the threshold do not bounce, so the pile must come to rest:
+ * after 10 s its kinetic energy is below 0.01 J. The solver before the
+ * impact pass left this pile at 36 J (411 J with 1,000 bodies): its
+ * restitution pass, run after the iterations on speeds measured before them,
+ * kept pumping the deep pile. */
+#define PILE_N 600
+
+static void bouncy_pile_comes_to_rest(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_test_rng rng = sx_test_rng_make(777u);
+    sx_shape floor_box = sx_box_shape(SX_R(27.0), SX_R(1.0));
+    sx_shape wall = sx_box_shape(SX_R(1.0), SX_R(20.0));
+    sx_body_id ids[PILE_N];
+    double ke = 0.0, highest = 0.0;
+    int i;
+    (void)state;
+    add_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-1.0)), SX_R(0.0), &floor_box, SX_R(0.0),
+             SX_R(0.5), SX_R(0.9));
+    add_body(w, SX_BODY_STATIC, sx_v2(SX_R(-26.0), SX_R(19.0)), SX_R(0.0), &wall, SX_R(0.0),
+             SX_R(0.5), SX_R(0.9));
+    add_body(w, SX_BODY_STATIC, sx_v2(SX_R(26.0), SX_R(19.0)), SX_R(0.0), &wall, SX_R(0.0),
+             SX_R(0.5), SX_R(0.9));
+    for (i = 0; i < PILE_N; ++i) {
+        sx_real r = sx_test_rng_range(&rng, 0.2, 0.5);
+        sx_shape shape = (i % 2) ? sx_circle_shape(sx_v2_zero(), r) : sx_box_shape(r, r);
+        sx_vec2 p = sx_v2(SX_R(-24.375) + SX_R(1.25) * (sx_real)(i % 40),
+                          SX_R(1.0) + SX_R(1.25) * (sx_real)(i / 40));
+        ids[i] =
+            add_body(w, SX_BODY_DYNAMIC, p, (sx_real)i, &shape, SX_R(1.0), SX_R(0.5), SX_R(0.9));
+    }
+    step_n(w, 600);
+    for (i = 0; i < PILE_N; ++i) {
+        sx_vec2 v = sx_body_get_linear_velocity(w, ids[i]), p = sx_body_get_position(w, ids[i]);
+        double om = (double)sx_body_get_angular_velocity(w, ids[i]);
+        ke += 0.5 * ((double)sx_body_get_mass(w, ids[i]) * (double)sx_dot(v, v) +
+                     (double)sx_body_get_inertia(w, ids[i]) * om * om);
+        assert_true(p.x > SX_R(-25.0) && p.x < SX_R(25.0) && p.y > SX_R(0.0));
+        if ((double)p.y > highest) highest = (double)p.y;
+    }
+    printf("  bouncy pile (%d bodies, e = 0.9): kinetic energy after 10 s %.2e J, top at y %.2f\n",
+           PILE_N, ke, highest);
+    assert_true(ke < 0.01);
+    sx_world_destroy(w);
+}
+
 static void kinematic_paddle_pushes_a_box_without_being_pushed_back(void **state) {
     /* with sleeping on: the box dozes off before the paddle reaches it, and
      * the moving paddle must wake it rather than pass through */
@@ -650,12 +921,21 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(bounce_apex_over_drop_is_restitution_squared),
         cmocka_unit_test(bounce_with_zero_restitution_stays_on_the_ground),
+        cmocka_unit_test(bounce_height_does_not_depend_on_the_sub_step_count),
+        cmocka_unit_test(box_landing_flat_bounces_straight_without_spin),
+        cmocka_unit_test(oblique_impact_with_friction_leaves_rolling),
         cmocka_unit_test(incline_box_sticks_when_friction_exceeds_tangent),
         cmocka_unit_test(incline_box_slides_with_coulomb_acceleration),
         cmocka_unit_test(incline_friction_mixes_as_geometric_mean),
         cmocka_unit_test(slow_impact_below_the_threshold_does_not_bounce),
         cmocka_unit_test(cradle_passes_the_speed_to_the_last_ball),
-        cmocka_unit_test(cradle_with_speculative_contacts_keeps_momentum_and_gains_no_energy),
+        cmocka_unit_test(cradle_with_the_default_world_passes_the_speed_to_the_last_ball),
+        cmocka_unit_test(cradle_built_in_reverse_order_gives_the_same_answer),
+        cmocka_unit_test(cradle_of_touching_balls_passes_the_speed_to_the_last_ball),
+        cmocka_unit_test(cradle_with_two_moving_balls_sends_two_away),
+        cmocka_unit_test(cradle_is_bit_identical_when_run_twice),
+        cmocka_unit_test(impact_impulse_is_reported_apart_from_the_iterations),
+        cmocka_unit_test(ball_jammed_between_two_walls_ends_the_step_and_gains_no_energy),
         cmocka_unit_test(pileup_conserves_momentum_and_never_gains_energy),
         cmocka_unit_test(pyramid_of_base_20_stands_for_10_seconds),
         cmocka_unit_test(heavy_box_on_light_box_penetrates_less_than_five_slops),
@@ -664,6 +944,7 @@ int main(void) {
         cmocka_unit_test(column_far_from_the_origin_rests_as_at_the_origin),
         cmocka_unit_test(overlapping_pyramid_separates_without_gaining_speed),
         cmocka_unit_test(mixed_shapes_in_a_box_run_20_seconds_without_escaping_or_blowing_up),
+        cmocka_unit_test(bouncy_pile_comes_to_rest),
         cmocka_unit_test(kinematic_paddle_pushes_a_box_without_being_pushed_back),
     };
     return cmocka_run_group_tests_name("scenes", tests, sx_test_group_setup,

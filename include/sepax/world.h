@@ -34,6 +34,7 @@
 #include "math.h"
 #include "shape.h"
 #include "collide.h"
+#include "compound.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -95,8 +96,9 @@ typedef struct sx_world_def {
      *  instead of in one jump. Default 3 m/s (> 0). */
     sx_real max_correction_speed;
     /** Approach speed (m/s) below which contacts do not bounce: restitution
-     *  only applies to impacts faster than this, so resting bodies do not
-     *  jitter. Default 1 m/s (>= 0). */
+     *  only applies to impacts at this speed or faster (to round-off: an
+     *  approach within 1e-4 of it, relative, counts as equal), so resting
+     *  bodies do not jitter. Default 1 m/s (>= 0). */
     sx_real restitution_threshold;
     /** Speculative contact margin in units of the linear slop (>= 0): shapes
      *  closer than this get contact points before they touch, and the solver
@@ -119,6 +121,11 @@ typedef struct sx_world_def {
     /** Seconds a whole island must stay at rest before it sleeps (> 0).
      *  Default 0.5. */
     sx_real time_to_sleep;
+    /** Builds the contact begin/end events each collide (one merge pass over
+     *  the old and new contact lists). false: none are built and
+     *  sx_world_get_contact_events stays empty. Default true. Sensor events
+     *  cost nothing in a world without sensors. */
+    bool enable_contact_events;
 } sx_world_def;
 
 /** The default world settings documented field by field in sx_world_def. */
@@ -151,8 +158,9 @@ sx_real sx_world_linear_slop(const sx_world *world);
  *  separate with h = dt / sub_steps, then clear_forces and update_sleep(dt).
  *  Errors, with the world left
  *  untouched: SX_ERR_INVALID_ARG (NULL world, dt <= 0), SX_ERR_NONFINITE (dt
- *  NaN or infinite). SX_ERR_NO_MEMORY: the contact list could not grow; the
- *  step stops after the stages already run. */
+ *  NaN or infinite). SX_ERR_NO_MEMORY: the contact list or the impact
+ *  pass's scratch could not grow; the step stops after the stages already
+ *  run. */
 sx_status sx_world_step(sx_world *world, sx_real dt);
 
 /** Stage 1: for every enabled, awake dynamic body, v += h (gravity x gravity_scale +
@@ -177,24 +185,34 @@ sx_status sx_world_apply_forces(sx_world *world, sx_real h);
  * SX_ERR_NO_MEMORY. */
 sx_status sx_world_collide(sx_world *world);
 
-/** Stage 3: sequential impulses on the contacts of the last collide:
- *  warm start, then `velocity_iterations` passes of Coulomb friction
- *  (|tangent impulse| <= mu x normal impulse, mu = sqrt(mu_a mu_b)) and
- *  non-penetration (accumulated normal impulse >= 0; a speculative point may
- *  close its gap in this sub-step but not more), then one restitution pass:
- *  a point that pushed and was approaching faster than the restitution
- *  threshold leaves at e times its approach speed, e = max(e_a, e_b) (an
- *  impact caught while the surfaces are still apart is deferred to the
- *  sub-step in which they touch, and the rebound impulse is at most e times
- *  the impulse that stopped the approach). The two normal constraints of a
- *  two-point contact are solved together, exactly (a 2x2 complementarity
- *  problem). Penetration is not turned into velocity here (see sx_world_separate), so
- *  this stage never adds kinetic energy to a resting overlap.
- *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE. */
+/** Stage 3: the contacts of the last collide, on velocities. Warm start,
+ *  then the impact pass (restitution): the contacts approaching at the
+ *  restitution threshold or faster that close their gap within this
+ *  sub-step are resolved one at a time in order of their time of impact,
+ *  each at most once per sub-step, each approaching point leaving at e times
+ *  its approach speed (e = max(e_a, e_b); both points of a two-point contact
+ *  at once), with Coulomb friction on that impulse; after each impact the
+ *  other contacts of its two bodies are looked at again with the new
+ *  velocities, so an impulse travels down a row of touching bodies (Newton's
+ *  cradle). Each impact also records the time-of-impact correction of its
+ *  bodies' positions, applied by sx_world_integrate. Then
+ *  `velocity_iterations` passes of Coulomb friction (|tangent impulse| <= mu
+ *  x normal impulse, mu = sqrt(mu_a mu_b)) and non-penetration (accumulated
+ *  normal impulse >= 0; a speculative point may close its gap in this
+ *  sub-step but not more); the two normal constraints of a two-point contact
+ *  are solved together, exactly (a 2x2 complementarity problem). With every
+ *  restitution <= 1 no impulse of this stage adds kinetic energy, and
+ *  penetration is not turned into velocity here (see sx_world_separate).
+ *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE,
+ *  SX_ERR_NO_MEMORY (the impact pass's scratch could not grow: the pass is
+ *  skipped, the iterations still run). */
 sx_status sx_world_solve(sx_world *world, sx_real h);
 
 /** Stage 4: symplectic Euler positions: centre of mass += h v, rotation
- *  advanced by h w (renormalised), for awake dynamic and kinematic bodies.
+ *  advanced by h w (renormalised), for awake dynamic and kinematic bodies;
+ *  then the time-of-impact corrections of the last solve's impacts (a body
+ *  whose velocity changed by dv at time t of the sub-step moves by -dv t,
+ *  since it kept its old velocity until t).
  *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE. */
 sx_status sx_world_integrate(sx_world *world, sx_real h);
 
@@ -243,9 +261,17 @@ typedef struct sx_contact_data {
     sx_vec2 points[2];
     /** Overlap at collide time (> 0 overlapping, < 0 speculative gap). */
     sx_real depths[2];
-    /** Accumulated normal and tangent impulses of the last solve (N s). */
+    /** Accumulated normal and tangent impulses of the last solve's velocity
+     *  iterations (N s). */
     sx_real normal_impulses[2];
     sx_real tangent_impulses[2];
+    /** Normal impulses of the last solve's impact pass (N s): non-zero for
+     *  an impact resolved with restitution in that sub-step. */
+    sx_real impact_impulses[2];
+    /** The parts of a compound collider this contact is between (0 for a
+     *  plain collider): a compound has one contact per touching part pair,
+     *  listed after one another in (part_a, part_b) order. */
+    int part_a, part_b;
 } sx_contact_data;
 
 /** Number of contacts from the last sx_world_collide, the carried contacts
@@ -260,7 +286,10 @@ sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data
 /** Two colliders that started or stopped touching. "Touching" is having a
  *  contact manifold: shapes within the speculative margin of each other, so
  *  a resting contact that rocks by a fraction of a millimetre does not
- *  flicker. Handles are those of the colliders and bodies at the time. */
+ *  flicker. A compound collider counts as one collider: it begins touching
+ *  when its first part pair gets a manifold and ends when its last one
+ *  loses it (one event each, whichever parts touch). Handles are those of the colliders and bodies
+ * at the time. */
 typedef struct sx_contact_event {
     sx_collider_id collider_a, collider_b;
     sx_body_id body_a, body_b;
@@ -330,6 +359,10 @@ typedef struct sx_body_def {
     sx_real gravity_scale;    /**< multiplies the world gravity; default 1 */
     bool fixed_rotation;      /**< infinite inertia; default false */
     bool enabled;             /**< false: neither moves nor collides; default true */
+    /** false: the body never sleeps, nor does any island it belongs to (a
+     *  player character); default true. The world's enable_sleep still
+     *  switches sleeping off for every body. */
+    bool enable_sleep;
     void *user_data;          /**< returned by sx_body_get_user_data; default NULL */
 } sx_body_def;
 
@@ -386,6 +419,12 @@ bool sx_body_is_awake(const sx_world *world, sx_body_id body);
  *  one wakes again at the next collide). SX_ERR_INVALID_ARG (NULL),
  *  SX_ERR_STALE_HANDLE. Static and kinematic bodies ignore it (SX_OK). */
 sx_status sx_body_set_awake(sx_world *world, sx_body_id body, bool awake);
+
+/** Allows or forbids sleeping for this body (sx_body_def.enable_sleep);
+ *  forbidding wakes it. SX_ERR_INVALID_ARG (NULL), SX_ERR_STALE_HANDLE. */
+sx_status sx_body_set_sleep_enabled(sx_world *world, sx_body_id body, bool enable);
+/** The body's enable_sleep; false for a stale handle. */
+bool sx_body_is_sleep_enabled(const sx_world *world, sx_body_id body);
 
 /** Teleports the body: its origin to `position`, its angle to `angle`.
  *  Velocities are kept; the body and the bodies it touches wake. SX_ERR_INVALID_ARG (NULL),
@@ -462,6 +501,45 @@ sx_collider_def sx_default_collider_def(void);
 sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collider_def *def,
                                sx_collider_id *out);
 
+/** Attaches a compound collider: the convex parts of `compound` (each with
+ *  its offset in the body frame) act as ONE collider with one handle, one
+ *  set of material fields and one filter. The world copies the parts (the
+ *  caller's array need not outlive the call). def->shape is ignored; the
+ *  other fields of def apply to every part. Mass from def->density: the
+ *  area-weighted centroid of the parts and their inertia moved by the
+ *  parallel-axis theorem (sx_compound_mass; overlapping parts count twice).
+ *  The broadphase sees the union of the parts' bounds; the narrowphase
+ *  makes one contact (up to 2 points) per touching part pair, with the
+ *  part indices in sx_contact_data and warm starting per part pair; queries
+ *  and ray casts test the parts (a point or box in a notch of a U misses);
+ *  sx_world_draw calls draw_shape once per part. Errors as
+ *  sx_body_add_collider, plus SX_ERR_INVALID_ARG for a NULL compound and
+ *  the status of sx_compound_validate (count < 1 or a NULL parts array:
+ *  SX_ERR_INVALID_ARG; a bad part: its shape's status). */
+sx_status sx_body_add_compound(sx_world *world, sx_body_id body, const sx_compound *compound,
+                               const sx_collider_def *def, sx_collider_id *out);
+
+/** Decomposes a simple, possibly concave outline (points in the body frame,
+ *  any winding) with sx_decompose_polygon and attaches the parts as one
+ *  compound collider (sx_body_add_compound). Errors: as
+ *  sx_body_add_collider for world, body and def (def->shape is ignored);
+ *  SX_ERR_INVALID_ARG for NULL points or count < 3; otherwise the status of
+ *  sx_decompose_polygon (SX_ERR_NONFINITE for NaN/Inf, SX_ERR_INVALID_ARG
+ *  for a self-intersecting outline such as a bow-tie, SX_ERR_DEGENERATE for
+ *  all-collinear or zero-area outlines); SX_ERR_NO_MEMORY. */
+sx_status sx_body_add_outline(sx_world *world, sx_body_id body, const sx_vec2 *points, int count,
+                              const sx_collider_def *def, sx_collider_id *out);
+
+/** Number of parts of a collider: a compound's part count, 1 for a plain
+ *  collider, 0 for a stale handle or NULL world. */
+int sx_collider_get_part_count(const sx_world *world, sx_collider_id collider);
+
+/** Copies part `index` of a collider (a plain collider has one part: its
+ *  shape with the identity offset) into *out. SX_ERR_INVALID_ARG (NULL,
+ *  index out of range), SX_ERR_STALE_HANDLE. */
+sx_status sx_collider_get_part(const sx_world *world, sx_collider_id collider, int index,
+                               sx_compound_part *out);
+
 /** Removes a collider (and its contacts) and updates its body's mass.
  *  SX_ERR_INVALID_ARG (NULL), SX_ERR_STALE_HANDLE. */
 sx_status sx_destroy_collider(sx_world *world, sx_collider_id collider);
@@ -482,7 +560,8 @@ sx_body_id sx_collider_get_body(const sx_world *world, sx_collider_id collider);
 /** Called for each collider a query finds; return false to stop the query. */
 typedef bool sx_query_fn(sx_collider_id collider, sx_body_id body, void *context);
 
-/** Reports every collider whose tight bounds overlap `box`. fn may be NULL
+/** Reports every collider whose tight bounds overlap `box` (for a compound:
+ *  the bounds of one of its parts). fn may be NULL
  *  (just count). Returns the number of colliders reported (0 for a NULL
  *  world or an invalid or non-finite box). */
 int sx_world_query_aabb(const sx_world *world, sx_aabb box, sx_query_fn *fn, void *context);
@@ -504,6 +583,7 @@ typedef struct sx_world_ray_hit {
     sx_vec2 point;    /**< world hit point */
     sx_vec2 normal;   /**< unit surface normal at the hit, facing the ray */
     sx_real fraction; /**< hit = origin + fraction x translation */
+    int part;         /**< the compound part hit (0 for a plain collider) */
 } sx_world_ray_hit;
 
 /** Casts a ray (see sx_ray_input) against every collider and returns true

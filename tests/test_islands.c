@@ -1,0 +1,272 @@
+/* sepax tests — what the step skips: sleeping islands (a pyramid that wakes
+ * when hit and sleeps again, per-body sleep switch), the collision filter's
+ * truth table, sensors that never push, and a sleeping world that costs no
+ * contacts in the solver's list. */
+#include <stdio.h>
+
+#include "test_support.h"
+
+#define DT (SX_R(1.0) / SX_R(60.0))
+
+static sx_body_id add_body(sx_world *w, sx_body_type type, sx_vec2 p, const sx_shape *shape,
+                           bool enable_sleep) {
+    sx_body_def bd = sx_default_body_def();
+    sx_collider_def cd = sx_default_collider_def();
+    sx_body_id id;
+    bd.type = type;
+    bd.position = p;
+    bd.enable_sleep = enable_sleep;
+    assert_int_equal(sx_create_body(w, &bd, &id), SX_OK);
+    cd.shape = *shape;
+    assert_int_equal(sx_body_add_collider(w, id, &cd, NULL), SX_OK);
+    return id;
+}
+
+/* Steps until nothing is awake or `max_steps` ran; returns the steps run. */
+static int step_until_asleep(sx_world *w, int max_steps) {
+    int s;
+    for (s = 0; s < max_steps && sx_world_awake_body_count(w) > 0; ++s)
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+    return s;
+}
+
+/* ---- sleeping ------------------------------------------------------------- */
+
+#define BASE 6
+#define PYRAMID (BASE * (BASE + 1) / 2)
+
+static void sleeping_pyramid_wakes_when_a_ball_hits_it_and_sleeps_again(void **state) {
+    sx_world_def def = sx_default_world_def();
+    sx_shape ground = sx_box_shape(SX_R(20.0), SX_R(0.5)), box = sx_box_shape(SX_R(0.5), SX_R(0.5)),
+             ball = sx_circle_shape(sx_v2_zero(), SX_R(0.3));
+    sx_body_id ids[PYRAMID], b;
+    sx_world *w;
+    int row, col, n = 0, steps, i, woken = 0;
+    double top_y;
+    (void)state;
+    w = sx_world_create(&def);
+    assert_non_null(w);
+    add_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-0.5)), &ground, true);
+    for (row = 0; row < BASE; ++row) {
+        for (col = 0; col < BASE - row; ++col) {
+            sx_real x = SX_R(1.05) * ((sx_real)col - SX_R(0.5) * (sx_real)(BASE - row - 1));
+            ids[n++] = add_body(w, SX_BODY_DYNAMIC, sx_v2(x, SX_R(0.5) + (sx_real)row), &box, true);
+        }
+    }
+    steps = step_until_asleep(w, 600);
+    printf("  pyramid of %d asleep after %d steps\n", PYRAMID, steps);
+    assert_int_equal(sx_world_awake_body_count(w), 0);
+    top_y = (double)sx_body_get_position(w, ids[PYRAMID - 1]).y;
+    /* the sleeping pyramid's contacts are kept but solved no more */
+    assert_true(sx_world_contact_count(w) >= PYRAMID);
+
+    /* a ball thrown at the bottom row's left box */
+    b = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-8.0), SX_R(0.5)), &ball, true);
+    assert_int_equal(sx_body_set_linear_velocity(w, b, sx_v2(SX_R(6.0), SX_R(0.0))), SX_OK);
+    for (i = 0; i < 120 && woken < PYRAMID; ++i) {
+        int k, awake = 0;
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+        for (k = 0; k < PYRAMID; ++k)
+            awake += sx_body_is_awake(w, ids[k]) ? 1 : 0;
+        if (awake > woken) woken = awake;
+    }
+    /* the hit (after about 1 s of flight) wakes the whole island at once,
+     * not only the box it touched */
+    assert_int_equal(woken, PYRAMID);
+    assert_true(i > 50 && i < 80);
+    steps = step_until_asleep(w, 1200);
+    printf("  hit at 6 m/s: all %d boxes woke at step %d; asleep again %d steps later; top box "
+           "moved %.4f m\n",
+           PYRAMID, i, steps, fabs((double)sx_body_get_position(w, ids[PYRAMID - 1]).y - top_y));
+    assert_int_equal(sx_world_awake_body_count(w), 0);
+    assert_true(steps > 10);
+    /* a 0.3 m ball at 6 m/s pushes the base; the pyramid must still stand */
+    assert_near(sx_body_get_position(w, ids[PYRAMID - 1]).y, top_y, 0.05);
+    sx_world_destroy(w);
+}
+
+static void a_body_with_sleep_off_keeps_its_island_awake(void **state) {
+    sx_world_def def = sx_default_world_def();
+    sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(0.5)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_body_id a, b, c, lone;
+    sx_world *w;
+    (void)state;
+    w = sx_world_create(&def);
+    assert_non_null(w);
+    add_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-0.5)), &ground, true);
+    a = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-2.0), SX_R(0.5)), &box, true);
+    b = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-2.0), SX_R(1.5)), &box, false);
+    c = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-2.0), SX_R(2.5)), &box, true);
+    lone = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(2.0), SX_R(0.5)), &box, true);
+    assert_false(sx_body_is_sleep_enabled(w, b));
+    assert_true(sx_body_is_sleep_enabled(w, a));
+    step_until_asleep(w, 300);
+    /* b never sleeps and neither do a and c, which touch it; the lone box,
+     * on another island, does */
+    assert_true(sx_body_is_awake(w, a));
+    assert_true(sx_body_is_awake(w, b));
+    assert_true(sx_body_is_awake(w, c));
+    assert_false(sx_body_is_awake(w, lone));
+    assert_int_equal(sx_body_set_sleep_enabled(w, b, true), SX_OK);
+    assert_true(step_until_asleep(w, 300) < 300);
+    assert_false(sx_body_is_awake(w, b));
+    /* forbidding sleep wakes the body (and its island) */
+    assert_int_equal(sx_body_set_sleep_enabled(w, c, false), SX_OK);
+    assert_true(sx_body_is_awake(w, c));
+    assert_true(sx_body_is_awake(w, a));
+    /* bad input */
+    assert_int_equal(sx_body_set_sleep_enabled(NULL, c, true), SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_destroy_body(w, lone), SX_OK);
+    assert_int_equal(sx_body_set_sleep_enabled(w, lone, true), SX_ERR_STALE_HANDLE);
+    assert_false(sx_body_is_sleep_enabled(w, lone));
+    assert_false(sx_body_is_sleep_enabled(NULL, a));
+    sx_world_destroy(w);
+}
+
+/* ---- filtering ------------------------------------------------------------ */
+
+typedef struct filter_case {
+    uint32_t cat_a, mask_a, cat_b, mask_b;
+    int32_t group_a, group_b;
+    bool collide;
+} filter_case;
+
+static void filter_truth_table_decides_every_pair(void **state) {
+    static const filter_case cases[] = {
+        /* categories and masks: both sides must accept the other */
+        {1u, 0xFFFFFFFFu, 2u, 0xFFFFFFFFu, 0, 0, true},
+        {1u, 0xFFFFFFFFu & ~2u, 2u, 0xFFFFFFFFu, 0, 0, false},
+        {1u, 0xFFFFFFFFu, 2u, 0xFFFFFFFFu & ~1u, 0, 0, false},
+        {1u, 2u, 2u, 1u, 0, 0, true},
+        {1u, 0u, 2u, 0xFFFFFFFFu, 0, 0, false},
+        {0u, 0xFFFFFFFFu, 2u, 0xFFFFFFFFu, 0, 0, false},
+        /* same negative group: never, even when the masks accept */
+        {1u, 0xFFFFFFFFu, 2u, 0xFFFFFFFFu, -4, -4, false},
+        /* same positive group: always, even when the masks refuse */
+        {1u, 0u, 2u, 0u, 7, 7, true},
+        /* different groups, or one group 0: the masks decide */
+        {1u, 0xFFFFFFFFu, 2u, 0xFFFFFFFFu, -4, -5, true},
+        {1u, 0u, 2u, 0xFFFFFFFFu, -4, -5, false},
+        {1u, 0xFFFFFFFFu, 2u, 0xFFFFFFFFu, 7, 0, true},
+        {1u, 0u, 2u, 0xFFFFFFFFu, 7, 8, false},
+    };
+    sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof(cases) / sizeof(cases[0]); ++i) {
+        const filter_case *fc = &cases[i];
+        sx_world_def def = sx_default_world_def();
+        sx_body_def bd = sx_default_body_def();
+        sx_collider_def cd = sx_default_collider_def();
+        sx_body_id a, b;
+        sx_world *w;
+        def.gravity = sx_v2_zero();
+        w = sx_world_create(&def);
+        assert_non_null(w);
+        bd.type = SX_BODY_DYNAMIC;
+        cd.shape = box;
+        assert_int_equal(sx_create_body(w, &bd, &a), SX_OK);
+        cd.filter.category = fc->cat_a;
+        cd.filter.mask = fc->mask_a;
+        cd.filter.group = fc->group_a;
+        assert_int_equal(sx_body_add_collider(w, a, &cd, NULL), SX_OK);
+        bd.position = sx_v2(SX_R(0.6), SX_R(0.0)); /* 0.4 m overlap */
+        assert_int_equal(sx_create_body(w, &bd, &b), SX_OK);
+        cd.filter.category = fc->cat_b;
+        cd.filter.mask = fc->mask_b;
+        cd.filter.group = fc->group_b;
+        assert_int_equal(sx_body_add_collider(w, b, &cd, NULL), SX_OK);
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+        if (fc->collide) {
+            assert_int_equal(sx_world_contact_count(w), 1);
+            /* the contact pushes them apart */
+            assert_true(sx_body_get_position(w, a).x < SX_R(0.0));
+            assert_true(sx_body_get_position(w, b).x > SX_R(0.6));
+        } else {
+            assert_int_equal(sx_world_contact_count(w), 0);
+            assert_true(sx_body_get_linear_velocity(w, a).x == SX_R(0.0));
+            assert_true(sx_body_get_position(w, b).x == SX_R(0.6));
+        }
+        sx_world_destroy(w);
+    }
+}
+
+static void sensors_report_but_never_push(void **state) {
+    sx_world_def def = sx_default_world_def();
+    sx_shape zone = sx_box_shape(SX_R(2.0), SX_R(2.0)), ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    sx_body_def bd = sx_default_body_def();
+    sx_collider_def cd = sx_default_collider_def();
+    sx_body_id z, balls[3];
+    sx_world *w;
+    int i, s, begins = 0;
+    (void)state;
+    def.gravity = sx_v2_zero();
+    w = sx_world_create(&def);
+    assert_non_null(w);
+    /* a dynamic body whose only collider is a sensor: it must neither push
+     * nor be pushed */
+    bd.type = SX_BODY_DYNAMIC;
+    assert_int_equal(sx_create_body(w, &bd, &z), SX_OK);
+    cd.shape = zone;
+    cd.sensor = true;
+    assert_int_equal(sx_body_add_collider(w, z, &cd, NULL), SX_OK);
+    for (i = 0; i < 3; ++i) {
+        balls[i] = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-5.0), SX_R(1.5) * (sx_real)(i - 1)), &ball, true);
+        assert_int_equal(sx_body_set_linear_velocity(w, balls[i], sx_v2(SX_R(2.0), SX_R(0.0))),
+                         SX_OK);
+    }
+    for (s = 0; s < 300; ++s) {
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+        begins += sx_world_get_sensor_events(w).begin_count;
+        assert_int_equal(sx_world_contact_count(w), 0);
+    }
+    assert_int_equal(begins, 3);
+    for (i = 0; i < 3; ++i) {
+        /* straight through at the same speed */
+        assert_true(sx_body_get_linear_velocity(w, balls[i]).x == SX_R(2.0));
+        assert_true(sx_body_get_linear_velocity(w, balls[i]).y == SX_R(0.0));
+    }
+    assert_true(sx_body_get_linear_velocity(w, z).x == SX_R(0.0));
+    assert_true(sx_body_get_position(w, z).x == SX_R(0.0));
+    sx_world_destroy(w);
+}
+
+/* ---- what the world does not use costs nothing -------------------------- */
+
+static void contact_events_are_built_only_when_asked(void **state) {
+    sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(0.5)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    int pass;
+    (void)state;
+    for (pass = 0; pass < 2; ++pass) {
+        sx_world_def def = sx_default_world_def();
+        sx_world *w;
+        int s, begins = 0, contacts = 0;
+        assert_true(def.enable_contact_events);
+        def.enable_contact_events = pass == 0;
+        w = sx_world_create(&def);
+        assert_non_null(w);
+        add_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-0.5)), &ground, true);
+        add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(1.0)), &box, true);
+        for (s = 0; s < 60; ++s) {
+            assert_int_equal(sx_world_step(w, DT), SX_OK);
+            begins += sx_world_get_contact_events(w).begin_count;
+            contacts = sx_world_contact_count(w);
+        }
+        /* the box lands either way; only the events differ */
+        assert_int_equal(contacts, 1);
+        assert_int_equal(begins, pass == 0 ? 1 : 0);
+        sx_world_destroy(w);
+    }
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(sleeping_pyramid_wakes_when_a_ball_hits_it_and_sleeps_again),
+        cmocka_unit_test(a_body_with_sleep_off_keeps_its_island_awake),
+        cmocka_unit_test(filter_truth_table_decides_every_pair),
+        cmocka_unit_test(sensors_report_but_never_push),
+        cmocka_unit_test(contact_events_are_built_only_when_asked),
+    };
+    return cmocka_run_group_tests_name("islands", tests, sx_test_group_setup,
+                                       sx_test_group_teardown);
+}
