@@ -74,7 +74,7 @@ void scene_chipmunk_destroy(void *world);
  *  (large_pyramid 200 steps, rain to 16k with an 8 s cap per engine and
  *  size); 1 (--quick): fewer steps and sizes; 2 (--full): SCENES.md's 500
  *  steps and rain to 64k. smoke: every scene a few steps only. Writes
- *  out_dir/scenes.csv, the SVG plots and REPORT.md. Returns the number of
+ *  out_dir/scenes.csv, the SVG plots, REPORT.md and headline.md. Returns the number of
  *  failures (0 when everything ran). */
 int bench_scenes_run(const char *out_dir, int smoke, int level);
 
