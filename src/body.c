@@ -147,13 +147,15 @@ void sx_body_update_mass(sx_world *world, int slot) {
             /* parallel-axis theorem: inertia about the body origin first */
             inertia += md.rotational_inertia + md.mass * sx_length_sq(md.center);
         }
-        if (mass > SX_R(0.0)) {
+        if (mass > SX_R(0.0) && sx_is_finite(SX_R(1.0) / mass)) {
             lc = sx_scale(weighted, SX_R(1.0) / mass);
             inertia -= mass * sx_length_sq(lc);
             if (inertia < SX_R(0.0)) inertia = SX_R(0.0);
         } else {
             /* a dynamic body must respond to forces: give it a unit mass,
-             * and no rotation since it has no extent to spin */
+             * and no rotation since it has no extent to spin (also when the
+             * mass is so small that 1 / mass overflows: a valid shape of
+             * area 1e-39, or 1e-35 m^2 at density 1e-5) */
             mass = SX_R(1.0);
             inertia = SX_R(0.0);
         }
@@ -165,6 +167,10 @@ void sx_body_update_mass(sx_world *world, int slot) {
             inertia = SX_R(0.0);
             lc = sx_v2_zero();
         }
+        /* an inertia so small that 1 / inertia overflows (a needle of a
+         * shape) would give an infinite inverse and inf x 0 = NaN in the
+         * step: such a body does not rotate */
+        if (inertia > SX_R(0.0) && !sx_is_finite(SX_R(1.0) / inertia)) inertia = SX_R(0.0);
         if (info->fixed_rotation) inertia = SX_R(0.0);
     }
     info->mass = mass;

@@ -20,8 +20,11 @@
  * the library's own order of work is fixed (bodies, colliders and pairs in
  * slot order; no threads, no hashing of pointers). x86-64 evaluates float and
  * double in SSE registers at every level (FLT_EVAL_METHOD 0), so no excess
- * precision differs between levels either. Across compilers, C libraries
- * (sinf/cosf/atan2f) or CPU architectures the hash may differ. */
+ * precision differs between levels either. Measured with gcc 12 on x86-64:
+ * -O0, -O2 and -O3 give the same hash; -O2 -march=haswell (which has FMA)
+ * gives that same hash with -ffp-contract=off and a different one with
+ * -ffp-contract=fast. Across compilers, C libraries (sinf/cosf/atan2f) or
+ * CPU architectures the hash may differ. */
 #include <stdio.h>
 #include <string.h>
 
