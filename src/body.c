@@ -157,16 +157,30 @@ void sx_body_update_mass(sx_world *world, int slot) {
             /* parallel-axis theorem: inertia about the body origin first */
             inertia += md.rotational_inertia + md.mass * sx_length_sq(md.center);
         }
-        if (mass > SX_R(0.0)) {
+        if (mass > SX_R(0.0) && sx_is_finite(SX_R(1.0) / mass)) {
             lc = sx_scale(weighted, SX_R(1.0) / mass);
             inertia -= mass * sx_length_sq(lc);
             if (inertia < SX_R(0.0)) inertia = SX_R(0.0);
         } else {
             /* a dynamic body must respond to forces: give it a unit mass,
-             * and no rotation since it has no extent to spin */
+             * and no rotation since it has no extent to spin (also when the
+             * mass is so small that 1 / mass overflows: a valid shape of
+             * area 1e-39, or 1e-35 m^2 at density 1e-5) */
             mass = SX_R(1.0);
             inertia = SX_R(0.0);
         }
+        if (!sx_is_finite(mass) || !sx_is_finite(inertia) || !sx_vec2_is_finite(lc)) {
+            /* shapes far beyond SX_HUGE: the sums overflowed (inf / inf
+             * would make the centre NaN). The body becomes as heavy as a
+             * real can say, with no rotation and its centre at its origin. */
+            mass = SX_REAL_MAX;
+            inertia = SX_R(0.0);
+            lc = sx_v2_zero();
+        }
+        /* an inertia so small that 1 / inertia overflows (a needle of a
+         * shape) would give an infinite inverse and inf x 0 = NaN in the
+         * step: such a body does not rotate */
+        if (inertia > SX_R(0.0) && !sx_is_finite(SX_R(1.0) / inertia)) inertia = SX_R(0.0);
         if (info->fixed_rotation) inertia = SX_R(0.0);
     }
     info->mass = mass;
@@ -771,13 +785,34 @@ static sx_body_sim *sx_force_target(sx_world *world, sx_body_id body, sx_status 
     return &world->sims[slot];
 }
 
+/* Adds a linear and an angular part to the force (impulse false) or impulse
+ * accumulators of sim, or refuses with SX_ERR_NONFINITE when a sum would not
+ * be finite: a huge but finite force at a far point (or many huge ones)
+ * overflows, and an infinite accumulator becomes NaN in the step (inf x 0
+ * for a body without rotational inertia, inf - inf in the solver). */
+static sx_status sx_accumulate(sx_body_sim *sim, sx_vec2 linear, sx_real angular, bool impulse) {
+    sx_vec2 l;
+    sx_real a;
+    if (sim == NULL) return SX_OK;
+    l = sx_add(impulse ? sim->impulse : sim->force, linear);
+    a = (impulse ? sim->angular_impulse : sim->torque) + angular;
+    if (!sx_vec2_is_finite(l) || !sx_is_finite(a)) return SX_ERR_NONFINITE;
+    if (impulse) {
+        sim->impulse = l;
+        sim->angular_impulse = a;
+    } else {
+        sim->force = l;
+        sim->torque = a;
+    }
+    return SX_OK;
+}
+
 sx_status sx_body_apply_force(sx_world *world, sx_body_id body, sx_vec2 force) {
     sx_status s;
     sx_body_sim *sim = sx_force_target(world, body, &s);
     if (s != SX_OK) return s;
     if (!sx_vec2_is_finite(force)) return SX_ERR_NONFINITE;
-    if (sim != NULL) sim->force = sx_add(sim->force, force);
-    return SX_OK;
+    return sx_accumulate(sim, force, SX_R(0.0), false);
 }
 
 sx_status sx_body_apply_force_at_point(sx_world *world, sx_body_id body, sx_vec2 force,
@@ -786,11 +821,8 @@ sx_status sx_body_apply_force_at_point(sx_world *world, sx_body_id body, sx_vec2
     sx_body_sim *sim = sx_force_target(world, body, &s);
     if (s != SX_OK) return s;
     if (!sx_vec2_is_finite(force) || !sx_vec2_is_finite(point)) return SX_ERR_NONFINITE;
-    if (sim != NULL) {
-        sim->force = sx_add(sim->force, force);
-        sim->torque += sx_cross(sx_sub(point, sim->center), force);
-    }
-    return SX_OK;
+    if (sim == NULL) return SX_OK;
+    return sx_accumulate(sim, force, sx_cross(sx_sub(point, sim->center), force), false);
 }
 
 sx_status sx_body_apply_torque(sx_world *world, sx_body_id body, sx_real torque) {
@@ -798,8 +830,7 @@ sx_status sx_body_apply_torque(sx_world *world, sx_body_id body, sx_real torque)
     sx_body_sim *sim = sx_force_target(world, body, &s);
     if (s != SX_OK) return s;
     if (!sx_is_finite(torque)) return SX_ERR_NONFINITE;
-    if (sim != NULL) sim->torque += torque;
-    return SX_OK;
+    return sx_accumulate(sim, sx_v2_zero(), torque, false);
 }
 
 sx_status sx_body_apply_impulse(sx_world *world, sx_body_id body, sx_vec2 impulse) {
@@ -807,8 +838,7 @@ sx_status sx_body_apply_impulse(sx_world *world, sx_body_id body, sx_vec2 impuls
     sx_body_sim *sim = sx_force_target(world, body, &s);
     if (s != SX_OK) return s;
     if (!sx_vec2_is_finite(impulse)) return SX_ERR_NONFINITE;
-    if (sim != NULL) sim->impulse = sx_add(sim->impulse, impulse);
-    return SX_OK;
+    return sx_accumulate(sim, impulse, SX_R(0.0), true);
 }
 
 sx_status sx_body_apply_impulse_at_point(sx_world *world, sx_body_id body, sx_vec2 impulse,
@@ -817,11 +847,8 @@ sx_status sx_body_apply_impulse_at_point(sx_world *world, sx_body_id body, sx_ve
     sx_body_sim *sim = sx_force_target(world, body, &s);
     if (s != SX_OK) return s;
     if (!sx_vec2_is_finite(impulse) || !sx_vec2_is_finite(point)) return SX_ERR_NONFINITE;
-    if (sim != NULL) {
-        sim->impulse = sx_add(sim->impulse, impulse);
-        sim->angular_impulse += sx_cross(sx_sub(point, sim->center), impulse);
-    }
-    return SX_OK;
+    if (sim == NULL) return SX_OK;
+    return sx_accumulate(sim, impulse, sx_cross(sx_sub(point, sim->center), impulse), true);
 }
 
 sx_status sx_body_apply_angular_impulse(sx_world *world, sx_body_id body, sx_real impulse) {
@@ -829,6 +856,5 @@ sx_status sx_body_apply_angular_impulse(sx_world *world, sx_body_id body, sx_rea
     sx_body_sim *sim = sx_force_target(world, body, &s);
     if (s != SX_OK) return s;
     if (!sx_is_finite(impulse)) return SX_ERR_NONFINITE;
-    if (sim != NULL) sim->angular_impulse += impulse;
-    return SX_OK;
+    return sx_accumulate(sim, sx_v2_zero(), impulse, true);
 }

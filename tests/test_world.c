@@ -887,6 +887,78 @@ static sx_real hostile(sx_test_rng *rng) {
     return sx_test_rng_range(rng, -5.0, 5.0);
 }
 
+/* Found by fuzz/fuzz_world.c: an impulse of 13 N s at a finite point 1e38 m
+ * away gave an infinite angular impulse, and a body without rotational
+ * inertia turned it into NaN (inf x 0). Sums that overflow are refused. */
+static void overflowing_force_or_impulse_at_a_point_is_refused_not_nan(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_body_id b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-19.0), SX_R(-9.0)), NULL);
+    sx_vec2 far = sx_v2(SX_REAL_MAX, SX_R(0.0));
+    (void)state;
+    assert_int_equal(sx_body_apply_impulse_at_point(w, b, sx_v2(SX_R(13.0), SX_R(-16.0)), far),
+                     SX_ERR_NONFINITE);
+    assert_int_equal(sx_body_apply_force_at_point(w, b, sx_v2(SX_R(13.0), SX_R(-16.0)), far),
+                     SX_ERR_NONFINITE);
+    assert_int_equal(sx_body_apply_force(w, b, sx_v2(SX_REAL_MAX, SX_R(0.0))), SX_OK);
+    assert_int_equal(sx_body_apply_force(w, b, sx_v2(SX_REAL_MAX, SX_R(0.0))), SX_ERR_NONFINITE);
+    assert_int_equal(sx_body_apply_torque(w, b, SX_REAL_MAX), SX_OK);
+    assert_int_equal(sx_body_apply_torque(w, b, SX_REAL_MAX), SX_ERR_NONFINITE);
+    assert_int_equal(sx_body_apply_angular_impulse(w, b, -SX_REAL_MAX), SX_OK);
+    assert_int_equal(sx_body_apply_angular_impulse(w, b, -SX_REAL_MAX), SX_ERR_NONFINITE);
+    /* a modest impulse at a modest point still works */
+    assert_int_equal(sx_body_apply_impulse_at_point(w, b, sx_v2(SX_R(1.0), SX_R(0.0)),
+                                                    sx_v2(SX_R(-19.0), SX_R(-8.0))),
+                     SX_OK);
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_false(sx_body_get_angular_velocity(w, b) != sx_body_get_angular_velocity(w, b));
+    assert_true(sx_is_finite(sx_body_get_angular_velocity(w, b)));
+    sx_world_destroy(w);
+}
+
+/* Found by fuzz/fuzz_world.c: a dynamic body with a circle of radius 2.4e28
+ * (a valid shape) had mass inf and its centre of mass inf / inf = NaN. */
+static void a_collider_whose_mass_overflows_gives_no_nan(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape huge = sx_circle_shape(sx_v2_zero(), SX_R(2.36e28));
+    sx_body_id b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-20.0), SX_R(-14.625)), &huge);
+    sx_vec2 c = sx_body_get_world_center(w, b);
+    int i;
+    (void)state;
+    assert_true(sx_vec2_is_finite(c));
+    assert_true(sx_is_finite(sx_body_get_mass(w, b)) && sx_body_get_mass(w, b) > SX_R(0.0));
+    for (i = 0; i < 3; ++i)
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+    c = sx_body_get_position(w, b);
+    assert_false(c.x != c.x || c.y != c.y);
+    assert_false(sx_body_get_angle(w, b) != sx_body_get_angle(w, b));
+    sx_world_destroy(w);
+}
+
+/* Found by fuzz/fuzz_world.c: a valid circle of radius 2.2e-18 at about
+ * (-16, -10.5) in its body's frame. The body's inertia about its centre of
+ * mass is the tiny difference of two near-equal products; its inverse
+ * overflowed to inf, and inf x 0 = NaN. Such a body now does not rotate. */
+static void a_needle_small_collider_gives_no_nan(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape tiny = sx_circle_shape(sx_v2((sx_real)-0x1.0000bcp+4, (sx_real)-0x1.5p+3),
+                                    (sx_real)0x1.445214p-59);
+    sx_body_id b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-20.0), SX_R(-16.0)), &tiny);
+    int i;
+    (void)state;
+    assert_int_equal(sx_shape_validate(&tiny), SX_OK);
+    assert_true(sx_is_finite(sx_body_get_inertia(w, b)));
+    assert_int_equal(sx_body_set_linear_velocity(w, b, sx_v2(SX_R(14.84375), SX_R(-20.0))), SX_OK);
+    assert_int_equal(sx_body_apply_torque(w, b, SX_R(3.0)), SX_OK);
+    for (i = 0; i < 3; ++i) {
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+        assert_true(sx_vec2_is_finite(sx_body_get_position(w, b)));
+        assert_true(sx_vec2_is_finite(sx_body_get_linear_velocity(w, b)));
+        assert_true(sx_is_finite(sx_body_get_angular_velocity(w, b)));
+        assert_true(sx_is_finite(sx_body_get_angle(w, b)));
+    }
+    sx_world_destroy(w);
+}
+
 static void random_api_calls_never_crash_or_make_nan(void **state) {
     sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
     sx_test_rng rng = sx_test_rng_make(99u);
@@ -989,6 +1061,9 @@ int main(void) {
         cmocka_unit_test(destroying_a_collider_drops_its_contacts_and_lets_the_body_fall),
         cmocka_unit_test(sensor_reports_a_ball_falling_through_it_without_touching_it),
         cmocka_unit_test(random_api_calls_never_crash_or_make_nan),
+        cmocka_unit_test(overflowing_force_or_impulse_at_a_point_is_refused_not_nan),
+        cmocka_unit_test(a_collider_whose_mass_overflows_gives_no_nan),
+        cmocka_unit_test(a_needle_small_collider_gives_no_nan),
         cmocka_unit_test(destroying_bodies_mid_run_and_the_world_frees_everything),
     };
     return cmocka_run_group_tests_name("world", tests, sx_test_group_setup, sx_test_group_teardown);

@@ -443,7 +443,9 @@ sx_status sx_body_set_type(sx_world *world, sx_body_id body, sx_body_type type);
 /* Forces and impulses ACCUMULATE until the step applies them (forces over
  * the whole step, impulses once), and wake the body. Static and
  * kinematic bodies ignore them (SX_OK). Errors: SX_ERR_INVALID_ARG (NULL world),
- * SX_ERR_STALE_HANDLE, SX_ERR_NONFINITE. */
+ * SX_ERR_STALE_HANDLE, SX_ERR_NONFINITE (a NaN/Inf argument, or a sum that
+ * would overflow: a huge force at a far point, or huge forces added up; the
+ * accumulators are then left as they were). */
 
 /** Adds a force (N) at the centre of mass. */
 sx_status sx_body_apply_force(sx_world *world, sx_body_id body, sx_vec2 force);
@@ -493,7 +495,10 @@ sx_collider_def sx_default_collider_def(void);
 
 /** Attaches a collider to a body and updates the body's mass, centre of mass
  *  and inertia from the colliders' densities (the body origin stays where it
- *  is). *out (may be NULL) receives the handle, the null handle on error.
+ *  is). Should the mass properties overflow (shapes far beyond SX_HUGE),
+ *  the body gets mass SX_REAL_MAX, no rotational inertia and its centre of
+ *  mass at its origin, never NaN. *out (may be NULL) receives the handle,
+ *  the null handle on error.
  *  Errors: the status of sx_shape_validate for a bad shape;
  *  SX_ERR_INVALID_ARG (NULL world/def, negative density, friction or
  *  restitution); SX_ERR_NONFINITE (non-finite density, friction or
