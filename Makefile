@@ -199,6 +199,8 @@ $(BENCH_BIN): $(BENCH_OBJS) $(BENCH_REF_OBJ) $(LIB_A) | $(OUT)/bench
 
 bench: $(BENCH_BIN)
 	./$(BENCH_BIN) --out $(OUT)/bench
+	@{ printf '\n## Narrowphase (sx_collide against Box2D and Chipmunk)\n\n'; \
+	  awk -F, -f scripts/narrowphase_table.awk $(OUT)/bench/narrowphase.csv; } >> $(OUT)/bench/REPORT.md
 
 bench-smoke: $(BENCH_BIN)
 	./$(BENCH_BIN) --smoke --out $(OUT)/bench-smoke

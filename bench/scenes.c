@@ -475,7 +475,7 @@ static void build_rain(scene_def *d, int n, uint64_t seed) {
     }
 }
 
-static int rain(const int *sizes, int nsizes, int steps, double cap_ms) {
+static int rain(const int *sizes, int nsizes, int steps, double cap_ms, const char *out_dir) {
     out("\n## rain: mixed shapes (circles, boxes, capsules, 3..8-gons) falling into a container, "
         "time of steps 2..%d of 1/60 s (the first builds the engines' trees)\n\n",
         steps + 1);
@@ -562,6 +562,29 @@ static int rain(const int *sizes, int nsizes, int steps, double cap_ms) {
         out("\n");
     }
     md("```\n");
+    /* the scaling curves: ms per step against bodies, log-log */
+    {
+        svg_point pts[SCENE_ENGINE_COUNT * 8];
+        int np = 0;
+        char path[1200];
+        for (int e = 0; e < SCENE_ENGINE_COUNT; ++e) {
+            for (int k = 0; k < nsizes && k < 8; ++k) {
+                if (!(ms[e][k] > 0)) continue;
+                pts[np].x = (double)sizes[k];
+                pts[np].y = ms[e][k];
+                pts[np].series = e;
+                pts[np].label = "bodies, ms/step";
+                ++np;
+            }
+        }
+        snprintf(path, sizeof path, "%s/rain.svg", out_dir);
+        if (!svg_plot_write_lines(path, "rain: ms per step against bodies", "bodies",
+                                  "ms per step", pts, np, engine_names, SCENE_ENGINE_COUNT)) {
+            fprintf(stderr, "sepax_bench: cannot write %s\n", path);
+            ++failures;
+        }
+        md("\n![rain scaling](rain.svg)\n");
+    }
     return failures;
 }
 
@@ -1669,13 +1692,13 @@ int bench_scenes_run(const char *out_dir, int smoke, int level) {
         static const int smoke_sizes[1] = {200};
         static const int sizes[4] = {1000, 4000, 16000, 64000};
         if (smoke)
-            failures += rain(smoke_sizes, 1, 3, 1e3);
+            failures += rain(smoke_sizes, 1, 3, 1e3, out_dir);
         else if (level == 1)
-            failures += rain(sizes, 2, 60, 5e3);
+            failures += rain(sizes, 2, 60, 5e3, out_dir);
         else if (level == 2)
-            failures += rain(sizes, 4, 100, 120e3);
+            failures += rain(sizes, 4, 100, 120e3, out_dir);
         else
-            failures += rain(sizes, 3, 100, 8e3);
+            failures += rain(sizes, 3, 100, 8e3, out_dir);
     }
     if (WANT("bounce"))
         failures += run_sweep("bounce", "mean |apex/drop - e^2|",

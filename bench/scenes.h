@@ -92,6 +92,11 @@ typedef struct svg_point {
  *  the file cannot be written. */
 int svg_plot_write(const char *path, const char *title, const char *xlabel, const char *ylabel,
                    const svg_point *pts, int n, const char *const *series_names, int series_count);
+/** The same axes with each series' points joined in x order (a scaling
+ *  curve). */
+int svg_plot_write_lines(const char *path, const char *title, const char *xlabel,
+                         const char *ylabel, const svg_point *pts, int n,
+                         const char *const *series_names, int series_count);
 
 #ifdef __cplusplus
 }

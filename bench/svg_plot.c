@@ -39,8 +39,9 @@ static void xml_text(FILE *f, const char *s) {
     }
 }
 
-int svg_plot_write(const char *path, const char *title, const char *xlabel, const char *ylabel,
-                   const svg_point *pts, int n, const char *const *series_names, int series_count) {
+static int plot_write(const char *path, const char *title, const char *xlabel, const char *ylabel,
+                      const svg_point *pts, int n, const char *const *series_names,
+                      int series_count, int pareto) {
     FILE *f = fopen(path, "w");
     if (!f) return 0;
     double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
@@ -110,7 +111,7 @@ int svg_plot_write(const char *path, const char *title, const char *xlabel, cons
             double best = INFINITY;
             for (int i = 0; i < m; ++i) {
                 double yv = tmp[i].y > 0 ? tmp[i].y : pow(10.0, ly0);
-                if (yv < best) {
+                if (!pareto || yv < best) {
                     best = yv;
                     fprintf(f, "%.1f,%.1f ", map_log(tmp[i].x, lx0, lx1, px0, px1),
                             map_log(yv, ly0, ly1, py0, py1));
@@ -125,7 +126,10 @@ int svg_plot_write(const char *path, const char *title, const char *xlabel, cons
                 xml_text(f, series_names[s]);
                 fprintf(f, " ");
                 xml_text(f, tmp[i].label ? tmp[i].label : "");
-                fprintf(f, ": %.4g ms, %.4g</title></circle>\n", tmp[i].x, tmp[i].y);
+                if (pareto)
+                    fprintf(f, ": %.4g ms, %.4g</title></circle>\n", tmp[i].x, tmp[i].y);
+                else
+                    fprintf(f, ": %.4g, %.4g</title></circle>\n", tmp[i].x, tmp[i].y);
             }
         }
         fprintf(f, "<rect x=\"%d\" y=\"%d\" width=\"12\" height=\"12\" fill=\"%s\"/>\n",
@@ -134,9 +138,22 @@ int svg_plot_write(const char *path, const char *title, const char *xlabel, cons
         xml_text(f, series_names[s]);
         fprintf(f, "</text>\n");
     }
-    fprintf(f, "<text x=\"%d\" y=\"%d\" font-size=\"10\">line: Pareto front</text>\n", W - MR + 16,
-            MT + 20 * series_count + 12);
+    if (pareto) {
+        fprintf(f, "<text x=\"%d\" y=\"%d\" font-size=\"10\">line: Pareto front</text>\n",
+                W - MR + 16, MT + 20 * series_count + 12);
+    }
     free(tmp);
     fprintf(f, "</svg>\n");
     return fclose(f) == 0;
+}
+
+int svg_plot_write(const char *path, const char *title, const char *xlabel, const char *ylabel,
+                   const svg_point *pts, int n, const char *const *series_names, int series_count) {
+    return plot_write(path, title, xlabel, ylabel, pts, n, series_names, series_count, 1);
+}
+
+int svg_plot_write_lines(const char *path, const char *title, const char *xlabel,
+                         const char *ylabel, const svg_point *pts, int n,
+                         const char *const *series_names, int series_count) {
+    return plot_write(path, title, xlabel, ylabel, pts, n, series_names, series_count, 0);
 }
