@@ -341,24 +341,37 @@ sx_vec2 sx_shape_centroid(const sx_shape *shape) {
     return sx_narrow(moments_centroid(&m));
 }
 
+void sx_shape_wide_mass(const sx_shape *shape, sx_wide *area, sx_wvec2 *center, sx_wide *inertia) {
+    area_moments m = shape_moments(shape);
+    sx_wide j = SX_W(0.0);
+    *center = moments_centroid(&m);
+    if (m.area > SX_W(0.0)) {
+        /* Parallel-axis theorem, from the reference point to the centroid;
+         * the reference is near the centroid so little cancels. */
+        j = m.second - sx_wdot(m.first, m.first) / m.area;
+        if (!(j > SX_W(0.0))) j = SX_W(0.0);
+        *area = m.area;
+    } else {
+        *area = SX_W(0.0);
+    }
+    *inertia = j;
+}
+
 sx_mass_data sx_shape_mass(const sx_shape *shape, sx_real density) {
     sx_mass_data md;
-    area_moments m;
-    sx_wide rho, inertia;
+    sx_wide rho, area, inertia;
+    sx_wvec2 center;
     md.mass = SX_R(0.0);
     md.center = sx_v2_zero();
     md.rotational_inertia = SX_R(0.0);
     if (!sx_is_finite(density) || density < SX_R(0.0)) return md;
     if (sx_shape_validate(shape) != SX_OK) return md;
-    m = shape_moments(shape);
+    sx_shape_wide_mass(shape, &area, &center, &inertia);
     rho = (sx_wide)density;
-    md.center = sx_narrow(moments_centroid(&m));
-    if (!(m.area > SX_W(0.0))) return md;
-    /* Parallel-axis theorem, from the reference point to the centroid; the
-     * reference is near the centroid so little cancels. */
-    inertia = m.second - sx_wdot(m.first, m.first) / m.area;
-    md.mass = (sx_real)(rho * m.area);
-    md.rotational_inertia = (sx_real)(rho * (inertia > SX_W(0.0) ? inertia : SX_W(0.0)));
+    md.center = sx_narrow(center);
+    if (!(area > SX_W(0.0))) return md;
+    md.mass = (sx_real)(rho * area);
+    md.rotational_inertia = (sx_real)(rho * inertia);
     return md;
 }
 

@@ -62,4 +62,12 @@ static inline sx_wide sx_wline_distance(sx_vec2 a, sx_vec2 b, sx_vec2 v) {
     return sx_wcross(e, w) / len;
 }
 
+/* Unit-density mass properties of a shape that passes sx_shape_validate, in
+ * the wide real (shape.c): *area (the mass), *center (centre of mass) and
+ * *inertia (polar second moment about that centre, >= 0). sx_shape_mass is
+ * these times the density, rounded to sx_real; a shape whose mass overflows
+ * sx_real still has finite wide values here (except near the top of the wide
+ * range). */
+void sx_shape_wide_mass(const sx_shape *shape, sx_wide *area, sx_wvec2 *center, sx_wide *inertia);
+
 #endif /* SEPAX_WIDE_H */
