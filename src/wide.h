@@ -14,6 +14,7 @@
 #ifdef SX_DOUBLE
 typedef long double sx_wide;
 #define SX_W(x) (x##L)
+#define SX_WIDE_EPSILON LDBL_EPSILON
 static inline sx_wide sx_wsqrt(sx_wide a) { return sqrtl(a); }
 static inline sx_wide sx_wsin(sx_wide a) { return sinl(a); }
 static inline sx_wide sx_wcos(sx_wide a) { return cosl(a); }
@@ -21,6 +22,7 @@ static inline sx_wide sx_watan2(sx_wide y, sx_wide x) { return atan2l(y, x); }
 #else
 typedef double sx_wide;
 #define SX_W(x) (x)
+#define SX_WIDE_EPSILON DBL_EPSILON
 static inline sx_wide sx_wsqrt(sx_wide a) { return sqrt(a); }
 static inline sx_wide sx_wsin(sx_wide a) { return sin(a); }
 static inline sx_wide sx_wcos(sx_wide a) { return cos(a); }

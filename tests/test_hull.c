@@ -477,6 +477,57 @@ static void hull_of_grid_snapped_clouds_with_any_tolerance_is_valid_or_refused(v
     assert_true(ok > 1000);
 }
 
+/* Regression (fuzz: double-hull-point-outside-hull): a run of points along
+ * y = x, from (580000, 580000) down to (-16, -16), collinear to within the
+ * rounding of the orientation test even in the wide real. The wrap jumped
+ * from (580000, 580000) to (-7.375, -7.375) (a noise-level tie) and then left
+ * out (-16, -16) as lying "behind" that edge, although it lies 0.0141 outside
+ * the closing edge to (-16, -16.02), 11 x the tolerance. Ties within the
+ * rounding noise are now decided one way everywhere (the farther point,
+ * and a point just behind the previous edge's extension counts as ahead).
+ * The float build rounds the cloud and was already right; both must be. */
+static void hull_of_a_near_collinear_run_keeps_its_far_end(void **state) {
+    static const double xy[] = {-15.625,
+                                -16,
+                                -16,
+                                -16,
+                                -16,
+                                -16.02,
+                                -15.875,
+                                -16,
+                                -4.5,
+                                -4.52,
+                                -13,
+                                -16,
+                                -7.375,
+                                -7.374999999999905,
+                                -7.3749999999998099,
+                                -7.3749999999997149,
+                                -7.3749999999996199,
+                                -7.3749999999995248,
+                                -7.374999999999317,
+                                -7.374999999999222,
+                                7.25,
+                                7.2500000000000933,
+                                580000,
+                                580000.00000000745};
+    sx_vec2 pts[12];
+    sx_hull h;
+    int i;
+    bool has_corner = false;
+    (void)state;
+    for (i = 0; i < 12; ++i)
+        pts[i] = sx_v2((sx_real)xy[2 * i], (sx_real)xy[2 * i + 1]);
+    assert_int_equal(sx_compute_hull(pts, 12, SX_WELD_TOLERANCE, &h), SX_OK);
+    assert_hull_properties(&h, pts, 12, (double)SX_WELD_TOLERANCE);
+    /* (-16, -16) stands 0.0141 off the hull's other vertices' line: it is a
+     * corner of the hull. */
+    for (i = 0; i < h.count; ++i)
+        has_corner = has_corner || (h.points[i].x == SX_R(-16.0) && h.points[i].y == SX_R(-16.0));
+    assert_true(has_corner);
+    assert_true(max_outside(&h, pts, 12) <= 1e-6);
+}
+
 static void hull_starts_at_lowest_x_then_lowest_y_and_runs_ccw(void **state) {
     sx_vec2 pts[5];
     sx_hull h;
@@ -805,6 +856,7 @@ int main(void) {
         cmocka_unit_test(
             hull_of_millimetre_hexagon_is_welded_by_default_and_kept_with_a_small_tolerance),
         cmocka_unit_test(hull_of_grid_snapped_clouds_with_any_tolerance_is_valid_or_refused),
+        cmocka_unit_test(hull_of_a_near_collinear_run_keeps_its_far_end),
         cmocka_unit_test(hull_starts_at_lowest_x_then_lowest_y_and_runs_ccw),
         cmocka_unit_test(hull_welds_duplicates_and_near_duplicates),
         cmocka_unit_test(hull_with_zero_tolerance_keeps_tiny_edges_but_welds_exact_duplicates),
