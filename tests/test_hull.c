@@ -526,6 +526,23 @@ static void hull_of_a_near_collinear_run_keeps_its_far_end(void **state) {
         has_corner = has_corner || (h.points[i].x == SX_R(-16.0) && h.points[i].y == SX_R(-16.0));
     assert_true(has_corner);
     assert_true(max_outside(&h, pts, 12) <= 1e-6);
+
+    /* The noise of a tie is per coordinate: one point 4.5e37 below seven
+     * small ones makes every difference from it lose its low bits in y, but
+     * not in x, and the small points still order exactly (a bound from the
+     * points' whole magnitude took them all as ties and built a 2-gon). */
+    {
+        static const double far_xy[] = {
+            -1.875,   -1.875,  -1.3258252143859863, -3.2008252143859863,
+            0.0,      -3.75,   1.3258252143859863,  -3.2008252143859863,
+            -122.125, -4.5e37, 1.3258249759674072,  -0.54917454719543457,
+            0.0,      0.0,     -1.3258256912231445, -0.54917526245117188};
+        for (i = 0; i < 8; ++i)
+            pts[i] = sx_v2((sx_real)far_xy[2 * i], (sx_real)far_xy[2 * i + 1]);
+        assert_int_equal(sx_compute_hull(pts, 8, SX_WELD_TOLERANCE, &h), SX_OK);
+        assert_int_equal(h.count, 5);
+        assert_true(max_outside(&h, pts, 8) <= 1e-6);
+    }
 }
 
 static void hull_starts_at_lowest_x_then_lowest_y_and_runs_ccw(void **state) {
