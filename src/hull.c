@@ -81,15 +81,16 @@ static int wrap_step(const sx_vec2 *points, int count, int p, sx_wvec2 d, sx_wve
     for (r = 0; r < count; ++r) {
         sx_wvec2 e = sx_wdiff(points[r], points[p]);
         sx_wvec2 e_mag;
-        sx_wide side, c;
+        sx_wide side, c, noise;
+        bool take;
         if (sx_wdot(e, e) <= tol2) continue; /* welded to p (and p itself) */
         side = sx_wcross(d, e);
         e_mag = wmag2(points[r], points[p]);
         /* Only points ahead of the previous edge: this keeps every candidate
-         * within a half-turn of each other, so the cross product orders them. */
-        if (side < SX_W(0.0) || (side == SX_W(0.0) && sx_wdot(d, e) <= SX_W(0.0))) {
-            if (sx_wdot(d, e) <= SX_W(0.0) || side < -cross_noise(d, d_mag, e, e_mag)) continue;
-        }
+         * within a half-turn of each other, so the cross product orders them.
+         * A side within the noise counts as 0: ahead only beyond p. */
+        noise = cross_noise(d, d_mag, e, e_mag);
+        if (side < -noise || (side <= noise && sx_wdot(d, e) <= SX_W(0.0))) continue;
         if (q < 0) {
             q = r;
             qe = e;
@@ -97,14 +98,23 @@ static int wrap_step(const sx_vec2 *points, int count, int p, sx_wvec2 d, sx_wve
             continue;
         }
         c = sx_wcross(qe, e);
-        if (c <= SX_W(0.0) || c <= cross_noise(qe, q_mag, e, e_mag)) {
-            /* e clockwise of qe, or collinear with it within the noise: the
-             * farther one wins the tie */
-            if (c < -cross_noise(qe, q_mag, e, e_mag) || sx_wdot(e, e) > sx_wdot(qe, qe)) {
-                q = r;
-                qe = e;
-                q_mag = e_mag;
-            }
+        noise = cross_noise(qe, q_mag, e, e_mag);
+        if (c < -noise) {
+            take = true; /* e clockwise of qe */
+        } else if (c <= noise) {
+            /* Collinear within the noise: the farther point wins the tie of
+             * two in the same direction. Opposite directions (possible only
+             * within the noise of the previous edge's line) go to the one
+             * ahead along it. */
+            take = sx_wdot(qe, e) > SX_W(0.0) ? sx_wdot(e, e) > sx_wdot(qe, qe)
+                                              : sx_wdot(d, e) > sx_wdot(d, qe);
+        } else {
+            take = false;
+        }
+        if (take) {
+            q = r;
+            qe = e;
+            q_mag = e_mag;
         }
     }
     *edge = qe;

@@ -543,6 +543,24 @@ static void hull_of_a_near_collinear_run_keeps_its_far_end(void **state) {
         assert_int_equal(h.count, 5);
         assert_true(max_outside(&h, pts, 8) <= 1e-6);
     }
+    /* A point straight below the previous vertex, a hair behind the long
+     * previous edge's line, and another straight above it (on that edge):
+     * opposite directions within the noise, where "farther wins" alone would
+     * walk back up the edge and skip (1.09e24, 2.7e6). */
+    {
+        static const double tie_xy[] = {
+            -15.625, -16,      -16,       -1.75,      -16,        -12.375,
+            8.125,   -16,      15.875,    0,          -15.875,    3.875,
+            -128,    1.141e18, 1.0918e24, 2738633.75, 2738607.25, 7012.89404296875,
+            -7.375,  9.875,    -16,       15.875,     15.875,     15.875};
+        for (i = 0; i < 12; ++i)
+            pts[i] = sx_v2((sx_real)tie_xy[2 * i], (sx_real)tie_xy[2 * i + 1]);
+        assert_int_equal(sx_compute_hull(pts, 12, SX_WELD_TOLERANCE, &h), SX_OK);
+        assert_true(max_outside(&h, pts, 12) <= (double)SX_WELD_TOLERANCE);
+        for (i = 0, has_corner = false; i < h.count; ++i)
+            has_corner = has_corner || (double)h.points[i].x > 1e24;
+        assert_true(has_corner);
+    }
 }
 
 static void hull_starts_at_lowest_x_then_lowest_y_and_runs_ccw(void **state) {
