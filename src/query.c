@@ -154,16 +154,19 @@ bool sx_contains_point(const sx_shape *s, sx_xform x, sx_vec2 p) {
         int i, n = poly->count;
         bool in_band = false;
         if (poly->radius > SX_R(0.0)) return polygon_distance(poly, lp).distance <= tol;
-        /* p is left of every CCW edge: inside. cross(e, p - v) is |e| times
-         * the signed distance to the edge's line (from the edge's nearer
-         * end, see edge_offset), so a point farther than tol right of a line
-         * is outside. */
+        /* p is left of every CCW edge: inside. cross(u, p - v), u the
+         * edge's unit direction, is the signed distance to the edge's line
+         * (from the edge's nearer end, see edge_offset), so a point farther
+         * than tol right of a line is outside. u is normalised by its
+         * largest component first: cross(e, p - v) itself underflows to 0
+         * for an edge of denormal length. */
         for (i = 0; i < n; ++i) {
-            sx_vec2 v = poly->vertices[i], v2 = poly->vertices[(i + 1) % n];
-            sx_vec2 e = sx_sub(v2, v);
-            sx_real c = sx_cross(e, edge_offset(v, v2, lp));
+            sx_vec2 v = poly->vertices[i], v2 = poly->vertices[(i + 1) % n], u;
+            sx_real c;
+            if (!sx_query_unit(sx_sub(v2, v), &u)) continue;
+            c = sx_cross(u, edge_offset(v, v2, lp));
             if (c < SX_R(0.0)) {
-                if (c < -tol * sx_length(e)) return false;
+                if (c < -tol) return false;
                 in_band = true;
             }
         }

@@ -4,6 +4,7 @@
  * vertices and rounded corners), every relation of two segments, hostile
  * input, and random properties with fixed seeds checked against points drawn
  * from the shapes' own definitions. */
+#include <float.h>
 #include <math.h>
 
 #include "query_fixtures.h"
@@ -152,6 +153,27 @@ static void sliver_tip_contains_only_its_band(void **state) {
     assert_true(sx_contains_point(&s, id, w(id, 0.01, 0.0100005)));
     assert_true(sx_contains_point(&s, id, w(id, 6.5, 6.5012)));
     assert_false(sx_contains_point(&s, id, w(id, 6.5 + 3.0 * band, 6.5012)));
+}
+
+/* Regression (make fuzz, double build): a box of denormal half extents
+ * (valid: strictly convex, CCW) contained points 5 cm away, because
+ * cross(e, p - v) of an edge that short underflowed to 0, "on the line". */
+static void denormal_box_contains_only_its_band(void **state) {
+#ifdef SX_DOUBLE
+    const sx_real tiny = (sx_real)(DBL_MIN * 1e-15);
+#else
+    const sx_real tiny = (sx_real)(FLT_MIN * 1e-6f);
+#endif
+    sx_shape s = sx_box_shape(tiny, tiny);
+    sx_xform x = sx_xform_make(sx_v2(SX_R(0.0140625), SX_R(0.028125)), SX_R(0.0422));
+    const double band = 1e-3 * (double)SX_LINEAR_SLOP;
+    (void)state;
+    if (sx_shape_validate(&s) != SX_OK) return; /* nothing to check */
+    assert_true(sx_contains_point(&s, x, x.p));
+    assert_false(sx_contains_point(&s, x, sx_v2(SX_R(0.05625), SX_R(0.06125))));
+    assert_true(sx_contains_point(&s, x, w(x, 0.4 * band, 0.0)));
+    assert_false(sx_contains_point(&s, x, w(x, 3.0 * band, 0.0)));
+    assert_false(sx_contains_point(&s, x, w(x, -3.0 * band, 3.0 * band)));
 }
 
 static void rounded_box_contains_its_rounding_but_not_the_sharp_corner(void **state) {
@@ -796,6 +818,7 @@ int main(void) {
         cmocka_unit_test(box_contains_inside_edges_and_corners_under_a_rotation),
         cmocka_unit_test(triangle_contains_its_hypotenuse_and_vertices),
         cmocka_unit_test(sliver_tip_contains_only_its_band),
+        cmocka_unit_test(denormal_box_contains_only_its_band),
         cmocka_unit_test(rounded_box_contains_its_rounding_but_not_the_sharp_corner),
         cmocka_unit_test(contains_answers_false_for_unusable_input),
         cmocka_unit_test(closest_point_on_segment_projects_and_clamps),
