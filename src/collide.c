@@ -163,6 +163,24 @@ static sx_vec2 circle_offset(const sx_circle *a, sx_xform xa, const sx_circle *b
                   sx_sub(sx_rotate(xb.q, b->center), sx_rotate(xa.q, a->center)));
 }
 
+/* |d| <= r. The squares keep full precision down to this magnitude of d
+ * (d.x^2 stays above the smallest normal real over epsilon); below it they
+ * underflow, and two points 1e-265 apart would compare as touching. There
+ * the test runs on d and r scaled by d's largest component, which keeps it
+ * exact up to rounding and still antisymmetric (d and -d scale alike). */
+#ifdef SX_DOUBLE
+#define SX_SQUARE_SAFE 1e-146
+#else
+#define SX_SQUARE_SAFE 3e-16f
+#endif
+static bool within_reach(sx_vec2 d, sx_real r) {
+    sx_real m = sx_maxr(sx_absr(d.x), sx_absr(d.y)), k;
+    if (!(m < SX_SQUARE_SAFE)) return sx_length_sq(d) <= r * r;
+    if (m == SX_R(0.0)) return r >= SX_R(0.0);
+    k = r / m;
+    return sx_length_sq(sx_v2(d.x / m, d.y / m)) <= k * k;
+}
+
 static bool circles_valid(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
     return a != NULL && b != NULL && xform_finite(xa) && xform_finite(xb) &&
            (a->center.x - a->center.x) + (a->center.y - a->center.y) + (b->center.x - b->center.x) +
@@ -206,7 +224,7 @@ bool sx_overlap_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_
     if (!circles_valid(a, xa, b, xb)) return false;
     d = circle_offset(a, xa, b, xb);
     r = a->radius + b->radius;
-    return sx_length_sq(d) <= r * r;
+    return within_reach(d, r);
 }
 
 bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
@@ -217,7 +235,7 @@ bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xfor
     if (circles_valid(a, xa, b, xb)) {
         d = circle_offset(a, xa, b, xb);
         r = a->radius + b->radius;
-        if (sx_length_sq(d) <= r * r) {
+        if (within_reach(d, r)) {
             n = circles_direction(a, xa, b, xb, d, &dist);
             v = sx_scale(n, sx_minr(dist - r, SX_R(0.0)));
             hit = sx_vec2_is_finite(v);
@@ -239,7 +257,7 @@ static int collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, 
         d = circle_offset(a, xa, b, xb);
         r = a->radius + b->radius;
         limit = r + margin;
-        if (sx_length_sq(d) <= limit * limit) {
+        if (within_reach(d, limit)) {
             n = circles_direction(a, xa, b, xb, d, &dist);
             ca = sx_xform_point(xa, a->center);
             /* Midway between A's surface (ra along n) and B's (dist - rb). */

@@ -1068,6 +1068,34 @@ static void a_speculative_margin_never_reports_fewer_points_than_margin_0(void *
     }
 }
 
+/* Regression (make fuzz, double build: sx_compound_overlap disagreed with
+ * sx_overlap): two circles whose centres are closer than the square root of
+ * the smallest normal real compared squares that underflowed to 0, so two
+ * points 1e-265 apart counted as touching. */
+static void circles_closer_than_square_underflow_compare_exactly(void **state) {
+#ifdef SX_DOUBLE
+    const double t = 1e-265;
+#else
+    const double t = 1e-30;
+#endif
+    sx_shape p0 = sx_point_shape(sx_v2_zero()), p1 = sx_point_shape(V(t, t));
+    sx_shape c1 = circle(t, t, t), c2 = circle(t, t, 2.0 * t);
+    sx_manifold m;
+    sx_vec2 v;
+    (void)state;
+    assert_false(sx_overlap(&p0, I(), &p1, I()));
+    assert_false(sx_overlap(&p1, I(), &p0, I()));
+    assert_false(sx_mtv(&p0, I(), &p1, I(), &v));
+    assert_int_equal(sx_collide(&p0, I(), &p1, I(), &m), 0);
+    /* |d| = 1.41 t: a circle of radius t around it misses the origin, one of
+     * radius 2 t reaches it. */
+    assert_false(sx_overlap(&p0, I(), &c1, I()));
+    assert_true(sx_overlap(&p0, I(), &c2, I()));
+    assert_true(sx_overlap(&c2, I(), &p0, I()));
+    assert_int_equal(sx_collide(&p0, I(), &c2, I(), &m), 1);
+    assert_int_equal(sx_collide(&p0, I(), &p0, I(), &m), 1); /* coincident points touch */
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(circles_separated_touching_and_overlapping),
@@ -1117,6 +1145,7 @@ int main(void) {
         cmocka_unit_test(reference_face_does_not_flip_between_nearly_equal_faces),
         cmocka_unit_test(separations_at_the_top_of_the_range_still_choose_a_face),
         cmocka_unit_test(a_speculative_margin_never_reports_fewer_points_than_margin_0),
+        cmocka_unit_test(circles_closer_than_square_underflow_compare_exactly),
     };
     return cmocka_run_group_tests_name("collide", tests, sx_test_group_setup,
                                        sx_test_group_teardown);
