@@ -163,16 +163,10 @@ static sx_vec2 circle_offset(const sx_circle *a, sx_xform xa, const sx_circle *b
                   sx_sub(sx_rotate(xb.q, b->center), sx_rotate(xa.q, a->center)));
 }
 
-/* |d| <= r. The squares keep full precision down to this magnitude of d
- * (d.x^2 stays above the smallest normal real over epsilon); below it they
- * underflow, and two points 1e-265 apart would compare as touching. There
- * the test runs on d and r scaled by d's largest component, which keeps it
- * exact up to rounding and still antisymmetric (d and -d scale alike). */
-#ifdef SX_DOUBLE
-#define SX_SQUARE_SAFE 1e-146
-#else
-#define SX_SQUARE_SAFE 3e-16f
-#endif
+/* |d| <= r. Below SX_SQUARE_SAFE (narrow.h) the squares underflow, and two
+ * points 1e-265 apart would compare as touching: there the test runs on d
+ * and r scaled by d's largest component, which keeps it exact up to
+ * rounding and still antisymmetric (d and -d scale alike). */
 static bool within_reach(sx_vec2 d, sx_real r) {
     sx_real m = sx_maxr(sx_absr(d.x), sx_absr(d.y)), k;
     if (!(m < SX_SQUARE_SAFE)) return sx_length_sq(d) <= r * r;

@@ -1094,6 +1094,17 @@ static void circles_closer_than_square_underflow_compare_exactly(void **state) {
     assert_true(sx_overlap(&c2, I(), &p0, I()));
     assert_int_equal(sx_collide(&p0, I(), &c2, I(), &m), 1);
     assert_int_equal(sx_collide(&p0, I(), &p0, I(), &m), 1); /* coincident points touch */
+    /* The same through the core routines: a zero-length capsule (a point
+     * core) and a segment end against a point t away. */
+    {
+        sx_shape cap = capsule(0, t, 0, t, 0), seg = segment(0, t, -1, t);
+        assert_false(sx_overlap(&cap, I(), &p1, I()));
+        assert_false(sx_overlap(&p1, I(), &cap, I()));
+        assert_false(sx_mtv(&cap, I(), &p1, I(), &v));
+        assert_int_equal(sx_collide(&cap, I(), &p1, I(), &m), 0);
+        assert_false(sx_overlap(&seg, I(), &p1, I()));
+        assert_true(sx_overlap(&seg, I(), &c2, I()));
+    }
 }
 
 int main(void) {
