@@ -340,10 +340,21 @@ static void vertex_direction(sx_closest *c) {
     c->distance = sx_sqrt(c->dist_sq);
     if (c->distance < SX_SQUARE_SAFE) {
         /* The square may have underflowed (points 1e-265 apart would be
-         * touching): the length of the scaled difference instead. */
-        sx_vec2 d = sx_sub(c->pb, c->pa);
-        sx_real m = sx_maxr(sx_absr(d.x), sx_absr(d.y));
-        c->distance = m > SX_R(0.0) ? m * sx_length(sx_v2(d.x / m, d.y / m)) : SX_R(0.0);
+         * touching): length and direction of the difference scaled by its
+         * largest component instead (1 / distance may overflow here). */
+        sx_vec2 d = sx_sub(c->pb, c->pa), u;
+        sx_real m = sx_maxr(sx_absr(d.x), sx_absr(d.y)), len;
+        if (!(m > SX_R(0.0))) {
+            c->distance = SX_R(0.0);
+            return;
+        }
+        u = sx_v2(d.x / m, d.y / m);
+        len = sx_length(u);
+        c->distance = m * len;
+        if (c->distance > SX_DIRECTION_EPSILON * max_abs_coord(c->pa, c->pb)) {
+            c->normal = sx_scale(u, SX_R(1.0) / len);
+        }
+        return;
     }
     if (c->distance > SX_DIRECTION_EPSILON * max_abs_coord(c->pa, c->pb)) {
         c->normal = sx_scale(sx_sub(c->pb, c->pa), SX_R(1.0) / c->distance);

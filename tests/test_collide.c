@@ -5,6 +5,7 @@
  * cases: exact negation of the MTV under swapped arguments, the box fast path
  * agreeing with the general SAT, translation invariance far from the origin,
  * degenerate shapes, non-finite input, and stable feature ids. */
+#include <float.h>
 #include <string.h>
 
 #include "test_support.h"
@@ -1104,6 +1105,27 @@ static void circles_closer_than_square_underflow_compare_exactly(void **state) {
         assert_int_equal(sx_collide(&cap, I(), &p1, I(), &m), 0);
         assert_false(sx_overlap(&seg, I(), &p1, I()));
         assert_true(sx_overlap(&seg, I(), &c2, I()));
+    }
+    /* Cores a denormal distance apart: the direction between them is
+     * scaled before it is normalised (1 / distance overflows), so the MTV
+     * is finite and agrees with sx_overlap (make fuzz, double build). */
+    {
+        sx_shape cap = capsule(0, 0, -560000, 1270000, 1270000), tri;
+        sx_vec2 q[3];
+        bool ov, hit;
+        q[0] = V(-16, -16);
+        q[1] = V(16, -16);
+#ifdef SX_DOUBLE
+        q[2] = sx_v2((sx_real)(DBL_MIN * 1e-3), SX_R(0.0)); /* denormal */
+#else
+        q[2] = sx_v2(FLT_MIN * 1e-3f, SX_R(0.0)); /* denormal */
+#endif
+        assert_int_equal(sx_polygon_shape_ex(q, 3, SX_R(0.0), SX_R(0.0), &tri), SX_OK);
+        ov = sx_overlap(&cap, X(-16, -16, 0), &tri, X(-16, -16, 0));
+        hit = sx_mtv(&cap, X(-16, -16, 0), &tri, X(-16, -16, 0), &v);
+        assert_true(ov && hit);
+        assert_true(sx_vec2_is_finite(v));
+        assert_near(sx_length(v), 1270000.0, 1.0);
     }
 }
 
