@@ -189,6 +189,20 @@ sx_mass_data sx_compound_mass(const sx_compound *c, sx_real density) {
     return md;
 }
 
+/* The bounding-box prefilter of a part pair, loose by the rounding of the
+ * narrowphase at the boxes' magnitude: sx_overlap counts shapes whose exact
+ * gap is a few ulps of their coordinates as touching (it works in one
+ * shape's frame), so boxes that miss by less must still reach it, or the
+ * compound would disagree with its parts. */
+static bool boxes_may_touch(sx_aabb a, sx_aabb b) {
+    sx_real s = sx_maxr(sx_maxr(sx_maxr(sx_absr(a.lower.x), sx_absr(a.lower.y)),
+                                sx_maxr(sx_absr(a.upper.x), sx_absr(a.upper.y))),
+                        sx_maxr(sx_maxr(sx_absr(b.lower.x), sx_absr(b.lower.y)),
+                                sx_maxr(sx_absr(b.upper.x), sx_absr(b.upper.y))));
+    sx_real g = SX_R(64.0) * SX_REAL_EPSILON * sx_maxr(s, SX_R(1.0));
+    return sx_aabb_overlaps(sx_aabb_fatten(a, g), b);
+}
+
 /* ---- overlap ------------------------------------------------------------ */
 
 static bool sides_overlap(const side *a, const side *b) {
@@ -200,7 +214,7 @@ static bool sides_overlap(const side *a, const side *b) {
         for (j = 0; j < b->count; ++j) {
             sx_xform xb;
             const sx_shape *sb = side_part(b, j, &xb);
-            if (!sx_aabb_overlaps(ba, sx_shape_aabb(sb, xb))) continue;
+            if (!boxes_may_touch(ba, sx_shape_aabb(sb, xb))) continue;
             if (sx_overlap(sa, xa, sb, xb)) return true;
         }
     }
@@ -327,7 +341,7 @@ static bool find_overlap_at(const side *a, const side *b, sx_vec2 d, sx_real t, 
         for (j = 0; j < b->count; ++j) {
             sx_xform xb;
             const sx_shape *sb = side_part(b, j, &xb);
-            if (!sx_aabb_overlaps(ba, sx_shape_aabb(sb, xb))) continue;
+            if (!boxes_may_touch(ba, sx_shape_aabb(sb, xb))) continue;
             if (sx_overlap(sa, xt, sb, xb)) {
                 *pi = i;
                 *pj = j;
@@ -357,7 +371,7 @@ static bool clear_along(const side *a, const side *b, sx_vec2 d, sx_real best, s
                 sx_xform xb, xt;
                 const sx_shape *sb = side_part(b, j, &xb);
                 xt = shifted(xa, sx_scale(d, t));
-                if (!sx_aabb_overlaps(sx_shape_aabb(sa, xt), sx_shape_aabb(sb, xb))) continue;
+                if (!boxes_may_touch(sx_shape_aabb(sa, xt), sx_shape_aabb(sb, xb))) continue;
                 if (!penetrates(sa, xt, sb, xb)) continue;
                 t += pair_exit(sa, xt, sb, xb, d);
                 moved = true;
@@ -488,7 +502,7 @@ static bool sides_mtv(const side *a, const side *b, sx_vec2 *mtv) {
             sx_xform xb;
             sx_vec2 m;
             const sx_shape *sb = side_part(b, j, &xb);
-            if (!sx_aabb_overlaps(ba, sx_shape_aabb(sb, xb))) continue;
+            if (!boxes_may_touch(ba, sx_shape_aabb(sb, xb))) continue;
             if (!sx_mtv(sa, xa, sb, xb, &m)) continue;
             any = true;
             if (mtv == NULL) return true;
@@ -567,7 +581,7 @@ static int sides_collide(const side *a, const side *b, sx_real margin, sx_compou
         for (j = 0; j < b->count && n < capacity; ++j) {
             sx_xform xb;
             const sx_shape *sb = side_part(b, j, &xb);
-            if (!sx_aabb_overlaps(ba, sx_shape_aabb(sb, xb))) continue;
+            if (!boxes_may_touch(ba, sx_shape_aabb(sb, xb))) continue;
             if (sx_collide_ex(sa, xa, sb, xb, margin, &out[n].manifold) > 0) {
                 out[n].part_a = i;
                 out[n].part_b = j;
