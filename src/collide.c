@@ -163,6 +163,18 @@ static sx_vec2 circle_offset(const sx_circle *a, sx_xform xa, const sx_circle *b
                   sx_sub(sx_rotate(xb.q, b->center), sx_rotate(xa.q, a->center)));
 }
 
+/* |d| <= r. Below SX_SQUARE_SAFE (narrow.h) the squares underflow, and two
+ * points 1e-265 apart would compare as touching: there the test runs on d
+ * and r scaled by d's largest component, which keeps it exact up to
+ * rounding and still antisymmetric (d and -d scale alike). */
+static bool within_reach(sx_vec2 d, sx_real r) {
+    sx_real m = sx_maxr(sx_absr(d.x), sx_absr(d.y)), k;
+    if (!(m < SX_SQUARE_SAFE)) return sx_length_sq(d) <= r * r;
+    if (m == SX_R(0.0)) return r >= SX_R(0.0);
+    k = r / m;
+    return sx_length_sq(sx_v2(d.x / m, d.y / m)) <= k * k;
+}
+
 static bool circles_valid(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
     return a != NULL && b != NULL && xform_finite(xa) && xform_finite(xb) &&
            (a->center.x - a->center.x) + (a->center.y - a->center.y) + (b->center.x - b->center.x) +
@@ -206,7 +218,7 @@ bool sx_overlap_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_
     if (!circles_valid(a, xa, b, xb)) return false;
     d = circle_offset(a, xa, b, xb);
     r = a->radius + b->radius;
-    return sx_length_sq(d) <= r * r;
+    return within_reach(d, r);
 }
 
 bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
@@ -217,7 +229,7 @@ bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xfor
     if (circles_valid(a, xa, b, xb)) {
         d = circle_offset(a, xa, b, xb);
         r = a->radius + b->radius;
-        if (sx_length_sq(d) <= r * r) {
+        if (within_reach(d, r)) {
             n = circles_direction(a, xa, b, xb, d, &dist);
             v = sx_scale(n, sx_minr(dist - r, SX_R(0.0)));
             hit = sx_vec2_is_finite(v);
@@ -239,7 +251,7 @@ static int collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, 
         d = circle_offset(a, xa, b, xb);
         r = a->radius + b->radius;
         limit = r + margin;
-        if (sx_length_sq(d) <= limit * limit) {
+        if (within_reach(d, limit)) {
             n = circles_direction(a, xa, b, xb, d, &dist);
             ca = sx_xform_point(xa, a->center);
             /* Midway between A's surface (ra along n) and B's (dist - rb). */
@@ -391,26 +403,48 @@ static bool pair_mtv_sym(sx_core_builder *f, const void *a, sx_xform xa, const v
  * far above any rounding and far below anything physical. */
 #define SX_TOUCH_RESCUE_MARGIN (SX_R(0.01) * SX_LINEAR_SLOP)
 
+/* The margin-0 manifold of a pair that sx_overlap counts as touching but
+ * whose exact gap is a few ulps above zero: asked again with the rescue
+ * margin, its depths clamped to 0 (the pair touches). */
+static int collide_rescue(sx_core_builder *f, const void *a, sx_xform xa, const void *b,
+                          sx_xform xb, sx_manifold *m) {
+    int count = pair_collide(f, a, xa, f, b, xb, SX_TOUCH_RESCUE_MARGIN, m), i;
+    for (i = 0; i < count; ++i)
+        m->points[i].depth = sx_maxr(m->points[i].depth, SX_R(0.0));
+    return count;
+}
+
+/* The canonical-order overlap test of a same-type pair. */
+typedef bool sx_sym_overlap(const void *a, sx_xform xa, const void *b, sx_xform xb);
+
 /* Same-type manifolds follow the caller's order (stable feature ids), but at
  * margin 0 whether the pair touches at all is the canonical order's answer
  * (`overlap`), so sx_collide reports points exactly when sx_overlap is
- * true. Speculative calls (margin > 0) need no such agreement. */
+ * true. A speculative call (margin > 0) needs no such agreement, but it must
+ * never report fewer points than margin 0 does: a margin below the rescue
+ * margin would miss a pair that margin 0 rescues as touching (its exact gap
+ * lies between the margin and the rounding tolerance), so such a pair is
+ * rescued the same way. Larger margins include the rescue margin's points
+ * already, and need no overlap test. */
 static int collide_gated(sx_core_builder *f, const void *a, sx_xform xa, const void *b, sx_xform xb,
-                         sx_real margin, bool overlap, sx_manifold *out) {
+                         sx_real margin, sx_sym_overlap *overlap, sx_manifold *out) {
     sx_manifold m;
-    int count, i;
-    if (sx_is_finite(margin) && margin > SX_R(0.0))
-        return pair_collide(f, a, xa, f, b, xb, margin, out);
-    if (!overlap) {
+    int count;
+    if (sx_is_finite(margin) && margin > SX_R(0.0)) {
+        int rescued;
+        count = pair_collide(f, a, xa, f, b, xb, margin, out);
+        if (count == 2 || margin >= SX_TOUCH_RESCUE_MARGIN || !overlap(a, xa, b, xb)) return count;
+        rescued = collide_rescue(f, a, xa, b, xb, &m);
+        if (rescued <= count) return count;
+        if (out) *out = m;
+        return rescued;
+    }
+    if (!overlap(a, xa, b, xb)) {
         clear_manifold(out);
         return 0;
     }
     count = pair_collide(f, a, xa, f, b, xb, SX_R(0.0), &m);
-    if (count == 0) {
-        count = pair_collide(f, a, xa, f, b, xb, SX_TOUCH_RESCUE_MARGIN, &m);
-        for (i = 0; i < count; ++i)
-            m.points[i].depth = sx_maxr(m.points[i].depth, SX_R(0.0));
-    }
+    if (count == 0) count = collide_rescue(f, a, xa, b, xb, &m);
     if (out) *out = m;
     return count;
 }
@@ -445,6 +479,9 @@ static int order_segments(const sx_segment *a, sx_xform xa, const sx_segment *b,
 bool sx_overlap_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb) {
     return pair_overlap_sym(build_segment, a, xa, b, xb, order_segments(a, xa, b, xb));
 }
+static bool overlap_segments_any(const void *a, sx_xform xa, const void *b, sx_xform xb) {
+    return sx_overlap_segments((const sx_segment *)a, xa, (const sx_segment *)b, xb);
+}
 bool sx_mtv_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                      sx_vec2 *mtv) {
     return pair_mtv_sym(build_segment, a, xa, b, xb, order_segments(a, xa, b, xb), mtv);
@@ -462,8 +499,7 @@ int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, s
                                          canonical ? NULL : &clear_cut);
         if (canonical || clear_cut) return count;
     }
-    return collide_gated(build_segment, a, xa, b, xb, margin,
-                         touch_test && sx_overlap_segments(a, xa, b, xb), out);
+    return collide_gated(build_segment, a, xa, b, xb, margin, overlap_segments_any, out);
 }
 
 /* ---- capsule - circle / segment / capsule ------------------------------- */
@@ -513,6 +549,9 @@ static int order_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b,
 bool sx_overlap_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb) {
     return pair_overlap_sym(build_capsule, a, xa, b, xb, order_capsules(a, xa, b, xb));
 }
+static bool overlap_capsules_any(const void *a, sx_xform xa, const void *b, sx_xform xb) {
+    return sx_overlap_capsules((const sx_capsule *)a, xa, (const sx_capsule *)b, xb);
+}
 bool sx_mtv_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                      sx_vec2 *mtv) {
     return pair_mtv_sym(build_capsule, a, xa, b, xb, order_capsules(a, xa, b, xb), mtv);
@@ -530,8 +569,7 @@ int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, s
                                          canonical ? NULL : &clear_cut);
         if (canonical || clear_cut) return count;
     }
-    return collide_gated(build_capsule, a, xa, b, xb, margin,
-                         touch_test && sx_overlap_capsules(a, xa, b, xb), out);
+    return collide_gated(build_capsule, a, xa, b, xb, margin, overlap_capsules_any, out);
 }
 
 /* ---- polygon - circle / segment / capsule ------------------------------- */
@@ -687,6 +725,9 @@ bool sx_overlap_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, 
     if (order_polygons(a, xa, b, xb) > 0) return overlap_polygons_ordered(b, xb, a, xa);
     return overlap_polygons_ordered(a, xa, b, xb);
 }
+static bool overlap_polygons_any(const void *a, sx_xform xa, const void *b, sx_xform xb) {
+    return sx_overlap_polygons((const sx_polygon *)a, xa, (const sx_polygon *)b, xb);
+}
 bool sx_mtv_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
                      sx_vec2 *mtv) {
     sx_vec2 v;
@@ -713,8 +754,7 @@ int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, s
                                          canonical ? NULL : &clear_cut);
         if (canonical || clear_cut) return count;
     }
-    return collide_gated(build_polygon, a, xa, b, xb, margin,
-                         touch_test && sx_overlap_polygons(a, xa, b, xb), out);
+    return collide_gated(build_polygon, a, xa, b, xb, margin, overlap_polygons_any, out);
 }
 
 /* ---- the dispatch table ------------------------------------------------- */

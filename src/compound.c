@@ -133,35 +133,74 @@ sx_aabb sx_compound_aabb(const sx_compound *c, sx_xform x) {
     return box;
 }
 
+/* The centre of a part (unit-density mass properties from the wide real, so
+ * a part whose mass overflows sx_real still weighs a finite amount here) in
+ * the compound's frame. */
+static sx_wvec2 part_mass(const sx_compound_part *p, sx_wide *area, sx_wide *inertia) {
+    sx_wvec2 local;
+    sx_rot q = p->offset.q;
+    sx_shape_wide_mass(&p->shape, area, &local, inertia);
+    return sx_wv((sx_wide)p->offset.p.x + ((sx_wide)q.c * local.x - (sx_wide)q.s * local.y),
+                 (sx_wide)p->offset.p.y + ((sx_wide)q.s * local.x + (sx_wide)q.c * local.y));
+}
+
 sx_mass_data sx_compound_mass(const sx_compound *c, sx_real density) {
     sx_mass_data md;
-    sx_wide area = SX_W(0.0), inertia = SX_W(0.0), rho;
-    sx_wvec2 first = sx_wv(SX_W(0.0), SX_W(0.0)), center;
+    sx_wide area = SX_W(0.0), inertia = SX_W(0.0), rho, a, j;
+    sx_wvec2 first = sx_wv(SX_W(0.0), SX_W(0.0)), mean = first, center, ci;
     int i;
     md.mass = SX_R(0.0);
     md.center = sx_v2_zero();
     md.rotational_inertia = SX_R(0.0);
     if (!sx_is_finite(density) || density < SX_R(0.0)) return md;
     if (sx_compound_validate(c) != SX_OK) return md;
-    /* Unit-density moments of each part: mass is then area. */
+    /* Unit-density moments of each part, in the wide real: mass is then
+     * area. Parts too heavy for sx_real (a circle of radius 1e30 in the
+     * float build) are summed here without overflow, and the result rounds
+     * to infinity exactly as sx_shape_mass of that part does. */
     for (i = 0; i < c->count; ++i) {
-        sx_mass_data pm = sx_shape_mass(&c->parts[i].shape, SX_R(1.0));
-        sx_wvec2 ci = sx_widen(sx_xform_point(c->parts[i].offset, pm.center));
-        area += (sx_wide)pm.mass;
-        first = sx_wadd(first, sx_wscale(ci, (sx_wide)pm.mass));
+        ci = part_mass(&c->parts[i], &a, &j);
+        area += a;
+        first = sx_wadd(first, sx_wscale(ci, a));
+        mean = sx_wadd(mean, ci);
     }
     if (!(area > SX_W(0.0))) return md;
     center = sx_wscale(first, SX_W(1.0) / area);
+    if ((area - area) + (center.x - center.x) + (center.y - center.y) != SX_W(0.0)) {
+        /* Overflow even in the wide real (an infinite area, inf / inf):
+         * the plain mean of the part centres, finite since every part
+         * validated, and infinite mass and inertia (zero for density 0). */
+        sx_real big = density > SX_R(0.0) ? (sx_real)INFINITY : SX_R(0.0);
+        md.center = sx_narrow(sx_wscale(mean, SX_W(1.0) / (sx_wide)c->count));
+        md.mass = big;
+        md.rotational_inertia = big;
+        return md;
+    }
     for (i = 0; i < c->count; ++i) {
-        sx_mass_data pm = sx_shape_mass(&c->parts[i].shape, SX_R(1.0));
-        sx_wvec2 r = sx_wsub(sx_widen(sx_xform_point(c->parts[i].offset, pm.center)), center);
-        inertia += (sx_wide)pm.rotational_inertia + (sx_wide)pm.mass * sx_wdot(r, r);
+        sx_wvec2 r;
+        ci = part_mass(&c->parts[i], &a, &j);
+        r = sx_wsub(ci, center);
+        inertia += j + a * sx_wdot(r, r);
     }
     rho = (sx_wide)density;
     md.mass = (sx_real)(rho * area);
     md.center = sx_narrow(center);
     md.rotational_inertia = (sx_real)(rho * inertia);
     return md;
+}
+
+/* The bounding-box prefilter of a part pair, loose by the rounding of the
+ * narrowphase at the boxes' magnitude: sx_overlap counts shapes whose exact
+ * gap is a few ulps of their coordinates as touching (it works in one
+ * shape's frame), so boxes that miss by less must still reach it, or the
+ * compound would disagree with its parts. */
+static bool boxes_may_touch(sx_aabb a, sx_aabb b) {
+    sx_real s = sx_maxr(sx_maxr(sx_maxr(sx_absr(a.lower.x), sx_absr(a.lower.y)),
+                                sx_maxr(sx_absr(a.upper.x), sx_absr(a.upper.y))),
+                        sx_maxr(sx_maxr(sx_absr(b.lower.x), sx_absr(b.lower.y)),
+                                sx_maxr(sx_absr(b.upper.x), sx_absr(b.upper.y))));
+    sx_real g = SX_R(64.0) * SX_REAL_EPSILON * sx_maxr(s, SX_R(1.0));
+    return sx_aabb_overlaps(sx_aabb_fatten(a, g), b);
 }
 
 /* ---- overlap ------------------------------------------------------------ */
@@ -175,7 +214,7 @@ static bool sides_overlap(const side *a, const side *b) {
         for (j = 0; j < b->count; ++j) {
             sx_xform xb;
             const sx_shape *sb = side_part(b, j, &xb);
-            if (!sx_aabb_overlaps(ba, sx_shape_aabb(sb, xb))) continue;
+            if (!boxes_may_touch(ba, sx_shape_aabb(sb, xb))) continue;
             if (sx_overlap(sa, xa, sb, xb)) return true;
         }
     }
@@ -302,7 +341,7 @@ static bool find_overlap_at(const side *a, const side *b, sx_vec2 d, sx_real t, 
         for (j = 0; j < b->count; ++j) {
             sx_xform xb;
             const sx_shape *sb = side_part(b, j, &xb);
-            if (!sx_aabb_overlaps(ba, sx_shape_aabb(sb, xb))) continue;
+            if (!boxes_may_touch(ba, sx_shape_aabb(sb, xb))) continue;
             if (sx_overlap(sa, xt, sb, xb)) {
                 *pi = i;
                 *pj = j;
@@ -332,7 +371,7 @@ static bool clear_along(const side *a, const side *b, sx_vec2 d, sx_real best, s
                 sx_xform xb, xt;
                 const sx_shape *sb = side_part(b, j, &xb);
                 xt = shifted(xa, sx_scale(d, t));
-                if (!sx_aabb_overlaps(sx_shape_aabb(sa, xt), sx_shape_aabb(sb, xb))) continue;
+                if (!boxes_may_touch(sx_shape_aabb(sa, xt), sx_shape_aabb(sb, xb))) continue;
                 if (!penetrates(sa, xt, sb, xb)) continue;
                 t += pair_exit(sa, xt, sb, xb, d);
                 moved = true;
@@ -463,7 +502,7 @@ static bool sides_mtv(const side *a, const side *b, sx_vec2 *mtv) {
             sx_xform xb;
             sx_vec2 m;
             const sx_shape *sb = side_part(b, j, &xb);
-            if (!sx_aabb_overlaps(ba, sx_shape_aabb(sb, xb))) continue;
+            if (!boxes_may_touch(ba, sx_shape_aabb(sb, xb))) continue;
             if (!sx_mtv(sa, xa, sb, xb, &m)) continue;
             any = true;
             if (mtv == NULL) return true;
@@ -542,7 +581,7 @@ static int sides_collide(const side *a, const side *b, sx_real margin, sx_compou
         for (j = 0; j < b->count && n < capacity; ++j) {
             sx_xform xb;
             const sx_shape *sb = side_part(b, j, &xb);
-            if (!sx_aabb_overlaps(ba, sx_shape_aabb(sb, xb))) continue;
+            if (!boxes_may_touch(ba, sx_shape_aabb(sb, xb))) continue;
             if (sx_collide_ex(sa, xa, sb, xb, margin, &out[n].manifold) > 0) {
                 out[n].part_a = i;
                 out[n].part_b = j;

@@ -95,8 +95,16 @@ static int clean_outline(sx_vec2 *pts, int m, sx_real weld_tolerance) {
             sx_wvec2 e = sx_wdiff(nx, v);
             sx_wide dist;
             int k, drop = -1;
+            sx_wvec2 base = sx_wdiff(nx, pv);
             if (sx_wdot(e, e) <= tol * tol) {
                 drop = (i + 1) % m;
+            } else if (sx_wdot(base, base) <= tol * tol) {
+                /* A spike whose two sides return to within the tolerance of
+                 * where they left: zero width, so its tip goes (the line
+                 * through two such close neighbours has no meaningful
+                 * direction, and measuring v against it kept a 0.0128 m wide
+                 * spike 1e-117 m wide at its base). */
+                drop = i;
             } else {
                 dist = sx_wline_distance(pv, nx, v);
                 if (dist <= tol && dist >= -tol) drop = i;

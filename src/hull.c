@@ -9,8 +9,10 @@
  * wide.h). Each step only considers points strictly ahead of the previous
  * edge (its open left half-plane, plus the ray straight ahead), so the
  * "more clockwise" comparison is a consistent order even when welded or
- * rounding-displaced points sit just outside the hull already built. And
- * every loop is bounded. Welding happens during the wrap (points within the
+ * rounding-displaced points sit just outside the hull already built.
+ * Orientations within their rounding noise count as collinear, and such
+ * ties are decided the same way in both tests (see wrap_step). And every
+ * loop is bounded. Welding happens during the wrap (points within the
  * tolerance of the current vertex are not candidates). The wrap records the
  * exact hull as indices into the input (a fixed buffer of
  * SX_HULL_MAX_RAW_VERTICES); near-collinear vertices are then pruned from
@@ -38,30 +40,81 @@ static void hull_clear(sx_hull *out) {
 /* True if a comes before b in the (x, then y) order the hull starts from. */
 static bool lower_left(sx_vec2 a, sx_vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
 
+static sx_wide wabs(sx_wide x) { return x < SX_W(0.0) ? -x : x; }
+
+/* Per coordinate, the larger magnitude of two points: bounds the rounding of
+ * their difference in the wide real (a difference of two reals is not
+ * always exact even there: float coordinates 2^30 apart in the float build,
+ * double ones near 1e6 and 1e-10 in the double build). */
+static sx_wvec2 wmag2(sx_vec2 a, sx_vec2 b) {
+    sx_wide ax = wabs((sx_wide)a.x), ay = wabs((sx_wide)a.y);
+    sx_wide bx = wabs((sx_wide)b.x), by = wabs((sx_wide)b.y);
+    return sx_wv(ax > bx ? ax : bx, ay > by ? ay : by);
+}
+
+/* Bound on the rounding of sx_wcross(a, b), where a and b are differences of
+ * points whose coordinates are bounded per axis by ma and mb: each
+ * difference is off by up to an ulp of those magnitudes per coordinate, and
+ * the two products round too. Within it, the sign of the cross product is
+ * noise and the two directions count as collinear. */
+static sx_wide cross_noise(sx_wvec2 a, sx_wvec2 ma, sx_wvec2 b, sx_wvec2 mb) {
+    sx_wide ax = wabs(a.x), ay = wabs(a.y), bx = wabs(b.x), by = wabs(b.y);
+    return SX_W(4.0) * SX_WIDE_EPSILON *
+           (ma.x * by + ma.y * bx + mb.x * ay + mb.y * ax + ax * by + ay * bx);
+}
+
 /* One gift-wrapping step from points[p], where d is the direction of the
- * previous edge. Returns the next hull point, or -1 when no point lies ahead
- * (the cloud is collinear, or everything left is welded to p). */
-static int wrap_step(const sx_vec2 *points, int count, int p, sx_wvec2 d, sx_wide tol2,
-                     sx_wvec2 *edge) {
+ * previous edge, computed from points of magnitudes d_mag (per axis). Returns
+ * the next hull point, or -1 when no point lies ahead (the cloud is
+ * collinear, or everything left is welded to p). Orientations within their
+ * rounding noise of zero (cross_noise) are ties, decided the same way in
+ * both tests: a point collinear with the previous edge within the noise is
+ * ahead when it lies beyond p, and of two candidates collinear with p within
+ * the noise the farther one wins. Deciding such a tie by the noise's sign
+ * instead can let the wrap jump past a point that lies almost on the
+ * previous edge's extension and then exclude it as "behind" that edge,
+ * although it lies outside the hull by much more than the noise. */
+static int wrap_step(const sx_vec2 *points, int count, int p, sx_wvec2 d, sx_wvec2 d_mag,
+                     sx_wide tol2, sx_wvec2 *edge) {
     int q = -1, r;
-    sx_wvec2 qe = sx_wv(SX_W(0.0), SX_W(0.0));
+    sx_wvec2 qe = sx_wv(SX_W(0.0), SX_W(0.0)), q_mag = qe;
     for (r = 0; r < count; ++r) {
         sx_wvec2 e = sx_wdiff(points[r], points[p]);
-        sx_wide side, c;
+        sx_wvec2 e_mag;
+        sx_wide side, c, noise;
+        bool take;
         if (sx_wdot(e, e) <= tol2) continue; /* welded to p (and p itself) */
         side = sx_wcross(d, e);
+        e_mag = wmag2(points[r], points[p]);
         /* Only points ahead of the previous edge: this keeps every candidate
-         * within a half-turn of each other, so the cross product orders them. */
-        if (side < SX_W(0.0) || (side == SX_W(0.0) && sx_wdot(d, e) <= SX_W(0.0))) continue;
+         * within a half-turn of each other, so the cross product orders them.
+         * A side within the noise counts as 0: ahead only beyond p. */
+        noise = cross_noise(d, d_mag, e, e_mag);
+        if (side < -noise || (side <= noise && sx_wdot(d, e) <= SX_W(0.0))) continue;
         if (q < 0) {
             q = r;
             qe = e;
+            q_mag = e_mag;
             continue;
         }
         c = sx_wcross(qe, e);
-        if (c < SX_W(0.0) || (c == SX_W(0.0) && sx_wdot(e, e) > sx_wdot(qe, qe))) {
+        noise = cross_noise(qe, q_mag, e, e_mag);
+        if (c < -noise) {
+            take = true; /* e clockwise of qe */
+        } else if (c <= noise) {
+            /* Collinear within the noise: the farther point wins the tie of
+             * two in the same direction. Opposite directions (possible only
+             * within the noise of the previous edge's line) go to the one
+             * ahead along it. */
+            take = sx_wdot(qe, e) > SX_W(0.0) ? sx_wdot(e, e) > sx_wdot(qe, qe)
+                                              : sx_wdot(d, e) > sx_wdot(d, qe);
+        } else {
+            take = false;
+        }
+        if (take) {
             q = r;
             qe = e;
+            q_mag = e_mag;
         }
     }
     *edge = qe;
@@ -208,6 +261,7 @@ static void prune(hull_work *w) {
 sx_status sx_compute_hull(const sx_vec2 *points, int count, sx_real weld_tolerance, sx_hull *out) {
     hull_work w;
     sx_wvec2 d, edge;
+    sx_wvec2 d_mag = sx_wv(SX_W(0.0), SX_W(0.0));
     sx_wide area2 = SX_W(0.0);
     int i, start, p, first;
     if (out == NULL) return SX_ERR_INVALID_ARG;
@@ -236,7 +290,7 @@ sx_status sx_compute_hull(const sx_vec2 *points, int count, sx_real weld_toleran
     w.raw_count = 1;
     p = start;
     for (;;) {
-        int q = wrap_step(points, count, p, d, w.tol2, &edge);
+        int q = wrap_step(points, count, p, d, d_mag, w.tol2, &edge);
         sx_wvec2 back;
         if (q < 0) break;
         back = sx_wdiff(points[q], points[start]);
@@ -244,6 +298,7 @@ sx_status sx_compute_hull(const sx_vec2 *points, int count, sx_real weld_toleran
         if (w.raw_count == SX_HULL_MAX_RAW_VERTICES) return SX_ERR_CAPACITY;
         w.raw[w.raw_count++] = q;
         d = edge;
+        d_mag = wmag2(points[p], points[q]);
         p = q;
     }
     for (i = 0; i < w.raw_count; ++i)

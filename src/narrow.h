@@ -13,6 +13,15 @@
 
 #include "core.h"
 
+/* Coordinate differences down to this magnitude have squares that keep
+ * full precision (d.x^2 stays above the smallest normal real over epsilon);
+ * below it squared distances underflow and need scaling first. */
+#ifdef SX_DOUBLE
+#define SX_SQUARE_SAFE 1e-146
+#else
+#define SX_SQUARE_SAFE 3e-16f
+#endif
+
 /** A convex core plus radius, in some working frame. Pass it by pointer
  *  only: v and n may point into its own storage. */
 typedef struct sx_core {

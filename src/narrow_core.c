@@ -131,8 +131,16 @@ static inline sx_real face_separation(const sx_core *p, int i, const sx_core *q)
     sx_vec2 n = p->n[i], v = p->v[i];
     sx_real best = SX_REAL_MAX;
     int j;
-    for (j = 0; j < q->count; ++j)
-        best = sx_minr(best, sx_dot(n, sx_sub(q->v[j], v)));
+    for (j = 0; j < q->count; ++j) {
+        sx_real d = sx_dot(n, sx_sub(q->v[j], v));
+        if (d < best) {
+            best = d;
+        } else if (d != d) {
+            /* Overflow (a 0 x inf product of cores beyond the range): the
+             * separation is unknown, and NaN says so to sat_run. */
+            return d;
+        }
+    }
     return best;
 }
 
@@ -147,6 +155,7 @@ static sx_real cap_separation(const sx_core *p, const sx_core *q, sx_vec2 *axis)
         sx_real sa = sx_dot(t, sx_sub(p->v[0], q->v[j]));
         if (sb < beyond_b) beyond_b = sb;
         if (sa < beyond_a) beyond_a = sa;
+        if (sb != sb || sa != sa) return sb + sa; /* overflow: NaN, see sat_run */
     }
     if (beyond_b >= beyond_a) {
         *axis = t;
@@ -156,8 +165,12 @@ static sx_real cap_separation(const sx_core *p, const sx_core *q, sx_vec2 *axis)
     return beyond_a;
 }
 
+/* "No face yet": below every separation, -inf included, so the first face
+ * examined is always taken (the choice tests face < 0 first). */
+#define SX_NO_SEPARATION (-(sx_real)INFINITY)
+
 typedef struct sx_sat {
-    sx_real sep_a, sep_b; /* best separation over A's / B's faces (-max: none) */
+    sx_real sep_a, sep_b; /* best separation over A's / B's faces (-inf: none) */
     int face_a, face_b;   /* their faces (-1: none) */
     sx_real sep;          /* best over every axis, caps included */
     sx_vec2 axis;         /* unit axis of sep, from A towards B */
@@ -166,31 +179,36 @@ typedef struct sx_sat {
 
 /* Runs SAT over the faces of both cores (and the caps when both have zero
  * area). Returns false as soon as an axis separates by more than `limit`
- * (the cores then lie farther apart than limit). */
+ * (the cores then lie farther apart than limit), and also when a separation
+ * is NaN: coordinates near the top of the range overflowed (0 x inf), no
+ * answer can be trusted, and "apart" is the one that needs no face. When it
+ * returns true with has_axes, face_a or face_b is a valid face: every
+ * separation is then a number (-inf included) and the first face is always
+ * taken. */
 static bool sat_run(const sx_core *a, const sx_core *b, sx_real limit, sx_sat *out) {
     int i, na = face_count(a), nb = face_count(b);
-    out->sep_a = -SX_REAL_MAX;
-    out->sep_b = -SX_REAL_MAX;
+    out->sep_a = SX_NO_SEPARATION;
+    out->sep_b = SX_NO_SEPARATION;
     out->face_a = -1;
     out->face_b = -1;
     for (i = 0; i < na; ++i) {
         sx_real s = face_separation(a, i, b);
-        if (s > limit) {
+        if (!(s <= limit)) {
             out->sep = s;
             return false;
         }
-        if (s > out->sep_a) {
+        if (out->face_a < 0 || s > out->sep_a) {
             out->sep_a = s;
             out->face_a = i;
         }
     }
     for (i = 0; i < nb; ++i) {
         sx_real s = face_separation(b, i, a);
-        if (s > limit) {
+        if (!(s <= limit)) {
             out->sep = s;
             return false;
         }
-        if (s > out->sep_b) {
+        if (out->face_b < 0 || s > out->sep_b) {
             out->sep_b = s;
             out->face_b = i;
         }
@@ -204,14 +222,14 @@ static bool sat_run(const sx_core *a, const sx_core *b, sx_real limit, sx_sat *o
         out->sep = out->sep_b;
         out->axis = sx_neg(b->n[out->face_b]);
     } else {
-        out->sep = -SX_REAL_MAX;
+        out->sep = SX_NO_SEPARATION;
     }
     if (out->has_axes && a->count <= 2 && b->count <= 2) {
         sx_vec2 axis;
         sx_real s;
         if (a->count == 2) {
             s = cap_separation(a, b, &axis);
-            if (s > limit) {
+            if (!(s <= limit)) {
                 out->sep = s;
                 return false;
             }
@@ -222,7 +240,7 @@ static bool sat_run(const sx_core *a, const sx_core *b, sx_real limit, sx_sat *o
         }
         if (b->count == 2) {
             s = cap_separation(b, a, &axis);
-            if (s > limit) {
+            if (!(s <= limit)) {
                 out->sep = s;
                 return false;
             }
@@ -320,6 +338,24 @@ static sx_real max_abs_coord(sx_vec2 a, sx_vec2 b) {
 static void vertex_direction(sx_closest *c) {
     if (c->kind != SX_CLOSEST_VERTICES) return;
     c->distance = sx_sqrt(c->dist_sq);
+    if (c->distance < SX_SQUARE_SAFE) {
+        /* The square may have underflowed (points 1e-265 apart would be
+         * touching): length and direction of the difference scaled by its
+         * largest component instead (1 / distance may overflow here). */
+        sx_vec2 d = sx_sub(c->pb, c->pa), u;
+        sx_real m = sx_maxr(sx_absr(d.x), sx_absr(d.y)), len;
+        if (!(m > SX_R(0.0))) {
+            c->distance = SX_R(0.0);
+            return;
+        }
+        u = sx_v2(d.x / m, d.y / m);
+        len = sx_length(u);
+        c->distance = m * len;
+        if (c->distance > SX_DIRECTION_EPSILON * max_abs_coord(c->pa, c->pb)) {
+            c->normal = sx_scale(u, SX_R(1.0) / len);
+        }
+        return;
+    }
     if (c->distance > SX_DIRECTION_EPSILON * max_abs_coord(c->pa, c->pb)) {
         c->normal = sx_scale(sx_sub(c->pb, c->pa), SX_R(1.0) / c->distance);
     }
@@ -576,7 +612,7 @@ int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_mani
     if (sat.face_b >= 0 && (sat.face_a < 0 || sat.sep_b > sat.sep_a + SX_REFERENCE_HYSTERESIS)) {
         out->count = clip_face(b, sat.face_b, a, margin, true, exact, out->points);
         out->normal = sx_neg(b->n[sat.face_b]);
-    } else {
+    } else if (sat.face_a >= 0) {
         out->count = clip_face(a, sat.face_a, b, margin, false, exact, out->points);
         out->normal = a->n[sat.face_a];
     }
@@ -598,14 +634,14 @@ int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_mani
 /* sat_run for b = the point c. */
 static bool point_sat(const sx_core *a, sx_vec2 c, sx_real limit, sx_sat *out) {
     int i, n = face_count(a);
-    out->sep_a = -SX_REAL_MAX;
-    out->sep_b = -SX_REAL_MAX;
+    out->sep_a = SX_NO_SEPARATION;
+    out->sep_b = SX_NO_SEPARATION;
     out->face_a = -1;
     out->face_b = -1;
     for (i = 0; i < n; ++i) {
         sx_real s = sx_dot(a->n[i], sx_sub(c, a->v[i]));
-        if (s > limit) return false;
-        if (s > out->sep_a) {
+        if (!(s <= limit)) return false; /* apart, or NaN: see sat_run */
+        if (out->face_a < 0 || s > out->sep_a) {
             out->sep_a = s;
             out->face_a = i;
         }
@@ -618,7 +654,7 @@ static bool point_sat(const sx_core *a, sx_vec2 c, sx_real limit, sx_sat *out) {
         sx_real beyond_b = sx_dot(t, sx_sub(c, a->v[1]));
         sx_real beyond_a = sx_dot(t, sx_sub(a->v[0], c));
         sx_real s = beyond_b >= beyond_a ? beyond_b : beyond_a;
-        if (s > limit) return false;
+        if (!(s <= limit)) return false;
         if (s > out->sep) {
             out->sep = s;
             out->axis = beyond_b >= beyond_a ? t : sx_neg(t);

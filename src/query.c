@@ -54,6 +54,16 @@ static local_distance round_segment_distance(sx_vec2 a, sx_vec2 b, sx_real radiu
     return round_point_distance(q, radius, p, fallback);
 }
 
+/* p - v for the end v of edge a-b nearer p (by the 1-norm): a signed
+ * distance to the edge's line taken from it rounds to a few ulps of |p - v|
+ * rather than of the edge's length. That matters beyond the tip of a
+ * sliver, where a point a hair's breadth outside the far edge's line can lie
+ * well outside the polygon, and only the nearer end resolves it. */
+static sx_vec2 edge_offset(sx_vec2 a, sx_vec2 b, sx_vec2 p) {
+    sx_vec2 da = sx_sub(p, a), db = sx_sub(p, b);
+    return sx_absr(db.x) + sx_absr(db.y) < sx_absr(da.x) + sx_absr(da.y) ? db : da;
+}
+
 /* Distance from p to a (possibly rounded) convex polygon. Inside the core the
  * nearest boundary point lies straight out through the edge of largest
  * separation (the disc of that radius fits inside every half-plane), so one
@@ -65,7 +75,8 @@ static local_distance polygon_distance(const sx_polygon *poly, sx_vec2 p) {
     sx_vec2 best_q;
     int i, best = 0, n = poly->count;
     for (i = 0; i < n; ++i) {
-        sx_real sep = sx_dot(poly->normals[i], sx_sub(p, poly->vertices[i]));
+        sx_real sep = sx_dot(poly->normals[i],
+                             edge_offset(poly->vertices[i], poly->vertices[(i + 1) % n], p));
         if (sep > best_sep) {
             best_sep = sep;
             best = i;
@@ -141,15 +152,29 @@ bool sx_contains_point(const sx_shape *s, sx_xform x, sx_vec2 p) {
     default: {
         const sx_polygon *poly = &s->u.polygon;
         int i, n = poly->count;
+        bool in_band = false;
         if (poly->radius > SX_R(0.0)) return polygon_distance(poly, lp).distance <= tol;
-        /* p is left of (or within tol of) every CCW edge: cross(e, p - v)
-         * is |e| times the signed distance to the edge's line. */
+        /* p is left of every CCW edge: inside. cross(u, p - v), u the
+         * edge's unit direction, is the signed distance to the edge's line
+         * (from the edge's nearer end, see edge_offset), so a point farther
+         * than tol right of a line is outside. u is normalised by its
+         * largest component first: cross(e, p - v) itself underflows to 0
+         * for an edge of denormal length. */
         for (i = 0; i < n; ++i) {
-            sx_vec2 v = poly->vertices[i];
-            sx_vec2 e = sx_sub(poly->vertices[(i + 1) % n], v);
-            if (sx_cross(e, sx_sub(lp, v)) < -tol * sx_length(e)) return false;
+            sx_vec2 v = poly->vertices[i], v2 = poly->vertices[(i + 1) % n], u;
+            sx_real c;
+            if (!sx_query_unit(sx_sub(v2, v), &u)) continue;
+            c = sx_cross(u, edge_offset(v, v2, lp));
+            if (c < SX_R(0.0)) {
+                if (c < -tol) return false;
+                in_band = true;
+            }
         }
-        return true;
+        /* A point within tol of some edge lines but right of one: the
+         * half-planes widened by tol meet up to tol / sin(theta / 2) beyond
+         * a vertex of angle theta (hundreds of tol at a sliver's tip), so
+         * the band is measured as the true distance to the polygon. */
+        return !in_band || polygon_distance(poly, lp).distance <= tol;
     }
     }
 }

@@ -115,10 +115,10 @@ static void add_part(area_moments *m, sx_wide area, sx_wvec2 c, sx_wide own) {
  * outside of each edge, plus a circular sector at each vertex spanning the
  * angle between the two adjacent edge normals; the sectors' angles sum to
  * 2 pi, so together they are one disc, and the sum is exact. */
-static area_moments polygon_moments(const sx_polygon *p) {
+static area_moments polygon_moments(const sx_polygon *p, sx_real radius) {
     area_moments m;
     sx_wvec2 v[SX_MAX_POLYGON_VERTICES];
-    sx_wide r = (sx_wide)p->radius;
+    sx_wide r = (sx_wide)radius;
     int i, n = p->count;
     m.origin = sx_wv(SX_W(0.0), SX_W(0.0));
     for (i = 0; i < n; ++i)
@@ -167,10 +167,25 @@ static area_moments polygon_moments(const sx_polygon *p) {
     return m;
 }
 
+/* The centroid of the sharp core, or false when its area, summed in the
+ * wide real about the vertex average, is not positive or the centroid is not
+ * finite. A hull that passes sx_validate_hull has a positive area in exact
+ * arithmetic, but far beyond SX_HUGE (coordinates ~1e18 in the float build)
+ * the rounding of a sliver's moments can make it zero or negative: no mass
+ * properties can be had from such a polygon, and it is refused as
+ * degenerate by the builder and by sx_shape_validate alike. */
+static bool core_centroid(const sx_polygon *p, sx_vec2 *centroid) {
+    area_moments m = polygon_moments(p, SX_R(0.0));
+    sx_wvec2 c;
+    if (!(m.area > SX_W(0.0))) return false;
+    c = sx_wadd(m.origin, sx_wscale(m.first, SX_W(1.0) / m.area));
+    *centroid = sx_narrow(c);
+    return sx_vec2_is_finite(*centroid);
+}
+
 sx_status sx_polygon_from_hull(const sx_hull *hull, sx_real radius, sx_shape *out) {
     sx_shape s;
     sx_polygon *p = &s.u.polygon;
-    area_moments m;
     int i, n;
     if (hull == NULL || out == NULL) return SX_ERR_INVALID_ARG;
     n = hull->count;
@@ -193,8 +208,7 @@ sx_status sx_polygon_from_hull(const sx_hull *hull, sx_real radius, sx_shape *ou
         p->vertices[i] = sx_v2_zero();
         p->normals[i] = sx_v2_zero();
     }
-    m = polygon_moments(p);
-    p->centroid = sx_narrow(sx_wadd(m.origin, sx_wscale(m.first, SX_W(1.0) / m.area)));
+    if (!core_centroid(p, &p->centroid)) return SX_ERR_DEGENERATE;
     p->radius = radius;
     *out = s;
     return SX_OK;
@@ -225,6 +239,7 @@ static sx_status validate_radius(sx_real radius) {
 
 static sx_status validate_polygon(const sx_polygon *p) {
     sx_hull hull;
+    sx_vec2 c;
     sx_real min_cos;
     int i, n = p->count;
     if (n < 3 || n > SX_MAX_POLYGON_VERTICES) return SX_ERR_INVALID_ARG;
@@ -250,6 +265,9 @@ static sx_status validate_polygon(const sx_polygon *p) {
             return SX_ERR_INVALID_ARG;
         }
     }
+    /* Positive area in the arithmetic the mass properties use (see
+     * core_centroid): what the builder refuses is refused here too. */
+    if (!core_centroid(p, &c)) return SX_ERR_DEGENERATE;
     return SX_OK;
 }
 
@@ -312,7 +330,7 @@ static area_moments shape_moments(const sx_shape *shape) {
                    SX_W(4.0) / SX_W(3.0) * r * r * r * len;
         break;
     }
-    case SX_SHAPE_POLYGON: m = polygon_moments(&shape->u.polygon); break;
+    case SX_SHAPE_POLYGON: m = polygon_moments(&shape->u.polygon, shape->u.polygon.radius); break;
     default: break;
     }
     return m;
@@ -341,24 +359,37 @@ sx_vec2 sx_shape_centroid(const sx_shape *shape) {
     return sx_narrow(moments_centroid(&m));
 }
 
+void sx_shape_wide_mass(const sx_shape *shape, sx_wide *area, sx_wvec2 *center, sx_wide *inertia) {
+    area_moments m = shape_moments(shape);
+    sx_wide j = SX_W(0.0);
+    *center = moments_centroid(&m);
+    if (m.area > SX_W(0.0)) {
+        /* Parallel-axis theorem, from the reference point to the centroid;
+         * the reference is near the centroid so little cancels. */
+        j = m.second - sx_wdot(m.first, m.first) / m.area;
+        if (!(j > SX_W(0.0))) j = SX_W(0.0);
+        *area = m.area;
+    } else {
+        *area = SX_W(0.0);
+    }
+    *inertia = j;
+}
+
 sx_mass_data sx_shape_mass(const sx_shape *shape, sx_real density) {
     sx_mass_data md;
-    area_moments m;
-    sx_wide rho, inertia;
+    sx_wide rho, area, inertia;
+    sx_wvec2 center;
     md.mass = SX_R(0.0);
     md.center = sx_v2_zero();
     md.rotational_inertia = SX_R(0.0);
     if (!sx_is_finite(density) || density < SX_R(0.0)) return md;
     if (sx_shape_validate(shape) != SX_OK) return md;
-    m = shape_moments(shape);
+    sx_shape_wide_mass(shape, &area, &center, &inertia);
     rho = (sx_wide)density;
-    md.center = sx_narrow(moments_centroid(&m));
-    if (!(m.area > SX_W(0.0))) return md;
-    /* Parallel-axis theorem, from the reference point to the centroid; the
-     * reference is near the centroid so little cancels. */
-    inertia = m.second - sx_wdot(m.first, m.first) / m.area;
-    md.mass = (sx_real)(rho * m.area);
-    md.rotational_inertia = (sx_real)(rho * (inertia > SX_W(0.0) ? inertia : SX_W(0.0)));
+    md.center = sx_narrow(center);
+    if (!(area > SX_W(0.0))) return md;
+    md.mass = (sx_real)(rho * area);
+    md.rotational_inertia = (sx_real)(rho * inertia);
     return md;
 }
 

@@ -14,6 +14,7 @@
 #ifdef SX_DOUBLE
 typedef long double sx_wide;
 #define SX_W(x) (x##L)
+#define SX_WIDE_EPSILON LDBL_EPSILON
 static inline sx_wide sx_wsqrt(sx_wide a) { return sqrtl(a); }
 static inline sx_wide sx_wsin(sx_wide a) { return sinl(a); }
 static inline sx_wide sx_wcos(sx_wide a) { return cosl(a); }
@@ -21,6 +22,7 @@ static inline sx_wide sx_watan2(sx_wide y, sx_wide x) { return atan2l(y, x); }
 #else
 typedef double sx_wide;
 #define SX_W(x) (x)
+#define SX_WIDE_EPSILON DBL_EPSILON
 static inline sx_wide sx_wsqrt(sx_wide a) { return sqrt(a); }
 static inline sx_wide sx_wsin(sx_wide a) { return sin(a); }
 static inline sx_wide sx_wcos(sx_wide a) { return cos(a); }
@@ -61,5 +63,13 @@ static inline sx_wide sx_wline_distance(sx_vec2 a, sx_vec2 b, sx_vec2 v) {
     if (!(len > SX_W(0.0))) return sx_wsqrt(sx_wdot(w, w));
     return sx_wcross(e, w) / len;
 }
+
+/* Unit-density mass properties of a shape that passes sx_shape_validate, in
+ * the wide real (shape.c): *area (the mass), *center (centre of mass) and
+ * *inertia (polar second moment about that centre, >= 0). sx_shape_mass is
+ * these times the density, rounded to sx_real; a shape whose mass overflows
+ * sx_real still has finite wide values here (except near the top of the wide
+ * range). */
+void sx_shape_wide_mass(const sx_shape *shape, sx_wide *area, sx_wvec2 *center, sx_wide *inertia);
 
 #endif /* SEPAX_WIDE_H */

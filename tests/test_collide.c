@@ -5,6 +5,7 @@
  * cases: exact negation of the MTV under swapped arguments, the box fast path
  * agreeing with the general SAT, translation invariance far from the origin,
  * degenerate shapes, non-finite input, and stable feature ids. */
+#include <float.h>
 #include <string.h>
 
 #include "test_support.h"
@@ -980,6 +981,154 @@ static void reference_face_does_not_flip_between_nearly_equal_faces(void **state
     assert_vec2_near(m.normal, V(cos(0.2), sin(0.2)), 1e-4);
 }
 
+/* Checks a manifold of inputs beyond SX_HUGE: 0 points and a zero normal, or
+ * 1..2 finite points with a unit normal (never a zero normal with points). */
+static void assert_manifold_sane(const sx_manifold *m, int n) {
+    int i;
+    assert_true(n >= 0 && n <= 2);
+    assert_int_equal(m->count, n);
+    if (n == 0) {
+        assert_true(m->normal.x == SX_R(0.0) && m->normal.y == SX_R(0.0));
+        return;
+    }
+    assert_near(sx_length(m->normal), 1.0, 64.0 * (double)SX_REAL_EPSILON);
+    for (i = 0; i < n; ++i) {
+        assert_true(sx_vec2_is_finite(m->points[i].point));
+        assert_true(sx_is_finite(m->points[i].depth));
+    }
+}
+
+/* Regression (fuzz: collide-clip-face-negative-index and
+ * collide-mtv-antisymmetry-beyond-huge): a box of half extents SX_REAL_MAX
+ * makes every SAT separation -SX_REAL_MAX, which used to equal the "no face
+ * yet" sentinel, so no reference face was chosen and the manifold clipped
+ * against face -1 (an out-of-bounds read) and the MTV read a normal at index
+ * -1 (garbage, so the two argument orders disagreed). */
+static void separations_at_the_top_of_the_range_still_choose_a_face(void **state) {
+    sx_shape giant = sx_box_shape(SX_REAL_MAX, SX_REAL_MAX), small = box(0.5, 0.25);
+    sx_shape seg = segment(15.375, 15.875, 0, -0.125);
+    sx_xform x = X(-16, -16, 0);
+    sx_manifold m;
+    sx_vec2 ab, ba;
+    bool hit_ab, hit_ba;
+    int n;
+    (void)state;
+    assert_int_equal(sx_shape_validate(&giant), SX_OK);
+    n = sx_collide(&giant, x, &small, x, &m);
+    assert_manifold_sane(&m, n);
+    n = sx_collide(&small, x, &giant, x, &m);
+    assert_manifold_sane(&m, n);
+    n = sx_collide_ex(&giant, x, &seg, x, (sx_real)SX_SPECULATIVE_DISTANCE, &m);
+    assert_manifold_sane(&m, n);
+
+    /* Antisymmetry is unconditional (collide.h), also beyond SX_HUGE. */
+    hit_ab = sx_mtv(&seg, x, &giant, x, &ab);
+    hit_ba = sx_mtv(&giant, x, &seg, x, &ba);
+    assert_true(hit_ab == hit_ba);
+    assert_false(ab.x != ab.x || ab.y != ab.y);
+    assert_true(ab.x == -ba.x && ab.y == -ba.y);
+    hit_ab = sx_mtv(&small, x, &giant, x, &ab);
+    hit_ba = sx_mtv(&giant, x, &small, x, &ba);
+    assert_true(hit_ab == hit_ba);
+    assert_false(ab.x != ab.x || ab.y != ab.y);
+    assert_true(ab.x == -ba.x && ab.y == -ba.y);
+}
+
+/* Regression (fuzz: collide-margin-loses-touching-contact): two boxes whose
+ * faces are a few ulps apart in float. sx_overlap counts them as touching
+ * and sx_collide reports 2 points of depth 0; a speculative margin smaller
+ * than that rounding gap (1e-9, or a denormal) used to report 0 points. A
+ * larger margin must never report fewer points than margin 0. */
+static void a_speculative_margin_never_reports_fewer_points_than_margin_0(void **state) {
+    sx_shape a = sx_box_shape(SX_R(0.034062501), SX_R(0.0681250021));
+    sx_shape b = sx_box_shape(SX_R(0.102187499), SX_R(0.136250004));
+    sx_xform xa = sx_xform_make(sx_v2(SX_R(0.136250004), SX_R(0.136250004)), SX_R(0.0));
+    sx_xform xb = I();
+    const double margins[] = {1e-30, 1e-9, 1e-8, 1e-7, 1e-6, 1e-5, 1e-4, 1e-2};
+    sx_manifold m0, m;
+    int n0, n, i, order;
+    (void)state;
+    for (order = 0; order < 2; ++order) {
+        const sx_shape *p = order ? &b : &a, *q = order ? &a : &b;
+        sx_xform xp = order ? xb : xa, xq = order ? xa : xb;
+        n0 = sx_collide(p, xp, q, xq, &m0);
+        assert_int_equal(n0 > 0, sx_overlap(p, xp, q, xq));
+#ifndef SX_DOUBLE
+        /* The float case the fuzzer found: touching within rounding. */
+        assert_int_equal(n0, 2);
+        assert_near(m0.points[0].depth, 0.0, 1e-7);
+#endif
+        for (i = 0; i < (int)(sizeof margins / sizeof margins[0]); ++i) {
+            n = sx_collide_ex(p, xp, q, xq, (sx_real)margins[i], &m);
+            assert_true(n >= n0);
+            if (n > 0) {
+                assert_near(sx_length(m.normal), 1.0, 64.0 * (double)SX_REAL_EPSILON);
+                assert_true((double)m.points[0].depth >= -margins[i] - 1e-7);
+            }
+        }
+    }
+}
+
+/* Regression (make fuzz, double build: sx_compound_overlap disagreed with
+ * sx_overlap): two circles whose centres are closer than the square root of
+ * the smallest normal real compared squares that underflowed to 0, so two
+ * points 1e-265 apart counted as touching. */
+static void circles_closer_than_square_underflow_compare_exactly(void **state) {
+#ifdef SX_DOUBLE
+    const double t = 1e-265;
+#else
+    const double t = 1e-30;
+#endif
+    sx_shape p0 = sx_point_shape(sx_v2_zero()), p1 = sx_point_shape(V(t, t));
+    sx_shape c1 = circle(t, t, t), c2 = circle(t, t, 2.0 * t);
+    sx_manifold m;
+    sx_vec2 v;
+    (void)state;
+    assert_false(sx_overlap(&p0, I(), &p1, I()));
+    assert_false(sx_overlap(&p1, I(), &p0, I()));
+    assert_false(sx_mtv(&p0, I(), &p1, I(), &v));
+    assert_int_equal(sx_collide(&p0, I(), &p1, I(), &m), 0);
+    /* |d| = 1.41 t: a circle of radius t around it misses the origin, one of
+     * radius 2 t reaches it. */
+    assert_false(sx_overlap(&p0, I(), &c1, I()));
+    assert_true(sx_overlap(&p0, I(), &c2, I()));
+    assert_true(sx_overlap(&c2, I(), &p0, I()));
+    assert_int_equal(sx_collide(&p0, I(), &c2, I(), &m), 1);
+    assert_int_equal(sx_collide(&p0, I(), &p0, I(), &m), 1); /* coincident points touch */
+    /* The same through the core routines: a zero-length capsule (a point
+     * core) and a segment end against a point t away. */
+    {
+        sx_shape cap = capsule(0, t, 0, t, 0), seg = segment(0, t, -1, t);
+        assert_false(sx_overlap(&cap, I(), &p1, I()));
+        assert_false(sx_overlap(&p1, I(), &cap, I()));
+        assert_false(sx_mtv(&cap, I(), &p1, I(), &v));
+        assert_int_equal(sx_collide(&cap, I(), &p1, I(), &m), 0);
+        assert_false(sx_overlap(&seg, I(), &p1, I()));
+        assert_true(sx_overlap(&seg, I(), &c2, I()));
+    }
+    /* Cores a denormal distance apart: the direction between them is
+     * scaled before it is normalised (1 / distance overflows), so the MTV
+     * is finite and agrees with sx_overlap (make fuzz, double build). */
+    {
+        sx_shape cap = capsule(0, 0, -560000, 1270000, 1270000), tri;
+        sx_vec2 q[3];
+        bool ov, hit;
+        q[0] = V(-16, -16);
+        q[1] = V(16, -16);
+#ifdef SX_DOUBLE
+        q[2] = sx_v2((sx_real)(DBL_MIN * 1e-3), SX_R(0.0)); /* denormal */
+#else
+        q[2] = sx_v2(FLT_MIN * 1e-3f, SX_R(0.0)); /* denormal */
+#endif
+        assert_int_equal(sx_polygon_shape_ex(q, 3, SX_R(0.0), SX_R(0.0), &tri), SX_OK);
+        ov = sx_overlap(&cap, X(-16, -16, 0), &tri, X(-16, -16, 0));
+        hit = sx_mtv(&cap, X(-16, -16, 0), &tri, X(-16, -16, 0), &v);
+        assert_true(ov && hit);
+        assert_true(sx_vec2_is_finite(v));
+        assert_near(sx_length(v), 1270000.0, 1.0);
+    }
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(circles_separated_touching_and_overlapping),
@@ -1027,6 +1176,9 @@ int main(void) {
         cmocka_unit_test(null_and_unknown_types_answer_no_contact),
         cmocka_unit_test(feature_ids_stay_stable_when_b_moves_slightly),
         cmocka_unit_test(reference_face_does_not_flip_between_nearly_equal_faces),
+        cmocka_unit_test(separations_at_the_top_of_the_range_still_choose_a_face),
+        cmocka_unit_test(a_speculative_margin_never_reports_fewer_points_than_margin_0),
+        cmocka_unit_test(circles_closer_than_square_underflow_compare_exactly),
     };
     return cmocka_run_group_tests_name("collide", tests, sx_test_group_setup,
                                        sx_test_group_teardown);

@@ -579,6 +579,43 @@ static void l_from_two_boxes_has_the_mass_of_the_l(void **state) {
     assert_near(md.rotational_inertia, 0.0, 0.0);
 }
 
+/* Regression (fuzz: compound-mass-nan-on-overflow): a part whose mass
+ * overflows sx_real (a circle of radius 1e30 in the float build, 1e160 in
+ * the double one) used to give centre = inf / inf = NaN and a NaN inertia.
+ * The compound now answers as sx_shape_mass does for that part: infinite
+ * mass and inertia, a finite centre. */
+static void a_part_too_heavy_for_sx_real_gives_no_nan(void **state) {
+#ifdef SX_DOUBLE
+    const sx_real radius = SX_R(1e160);
+#else
+    const sx_real radius = SX_R(1e30);
+#endif
+    sx_shape heavy = sx_circle_shape(sx_v2(SX_R(-16.0), SX_R(-16.0)), radius);
+    sx_compound_part parts[2];
+    sx_compound c;
+    sx_mass_data md, sm = sx_shape_mass(&heavy, SX_R(1.0));
+    (void)state;
+    assert_int_equal(sx_shape_validate(&heavy), SX_OK);
+    assert_false(sx_is_finite(sm.mass)); /* the case has teeth: sx_real overflows */
+    assert_vec2_near(sm.center, sx_v2(SX_R(-16.0), SX_R(-16.0)), 0.0);
+    parts[0] = sx_compound_part_make(heavy, at(-16.0, -16.0, 0.0));
+    parts[1] = sx_compound_part_make(sx_box_shape(SX_R(1.0), SX_R(1.0)), at(100.0, 0.0, 0.0));
+    c.parts = parts;
+    for (c.count = 1; c.count <= 2; ++c.count) {
+        assert_int_equal(sx_compound_validate(&c), SX_OK);
+        md = sx_compound_mass(&c, SX_R(1.0));
+        assert_true(md.mass == sm.mass);
+        assert_true(md.rotational_inertia == sm.rotational_inertia);
+        /* The box weighs nothing next to the circle: the centre is the
+         * circle's, offset by the part's placement. */
+        assert_vec2_near(md.center, sx_v2(SX_R(-32.0), SX_R(-32.0)), 1e-4);
+        md = sx_compound_mass(&c, SX_R(0.0));
+        assert_near(md.mass, 0.0, 0.0);
+        assert_near(md.rotational_inertia, 0.0, 0.0);
+        assert_vec2_near(md.center, sx_v2(SX_R(-32.0), SX_R(-32.0)), 1e-4);
+    }
+}
+
 /* ---- bad input ----------------------------------------------------------- */
 
 static void invalid_compounds_are_reported_and_answered_safely(void **state) {
@@ -640,6 +677,7 @@ int main(void) {
         cmocka_unit_test(decomposed_spiral_compound_matches_its_outline),
         cmocka_unit_test(aabb_contains_every_part),
         cmocka_unit_test(l_from_two_boxes_has_the_mass_of_the_l),
+        cmocka_unit_test(a_part_too_heavy_for_sx_real_gives_no_nan),
         cmocka_unit_test(invalid_compounds_are_reported_and_answered_safely),
     };
     return cmocka_run_group_tests_name("compound", tests, sx_test_group_setup,

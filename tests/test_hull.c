@@ -477,6 +477,92 @@ static void hull_of_grid_snapped_clouds_with_any_tolerance_is_valid_or_refused(v
     assert_true(ok > 1000);
 }
 
+/* Regression (fuzz: double-hull-point-outside-hull): a run of points along
+ * y = x, from (580000, 580000) down to (-16, -16), collinear to within the
+ * rounding of the orientation test even in the wide real. The wrap jumped
+ * from (580000, 580000) to (-7.375, -7.375) (a noise-level tie) and then left
+ * out (-16, -16) as lying "behind" that edge, although it lies 0.0141 outside
+ * the closing edge to (-16, -16.02), 11 x the tolerance. Ties within the
+ * rounding noise are now decided one way everywhere (the farther point,
+ * and a point just behind the previous edge's extension counts as ahead).
+ * The float build rounds the cloud and was already right; both must be. */
+static void hull_of_a_near_collinear_run_keeps_its_far_end(void **state) {
+    static const double xy[] = {-15.625,
+                                -16,
+                                -16,
+                                -16,
+                                -16,
+                                -16.02,
+                                -15.875,
+                                -16,
+                                -4.5,
+                                -4.52,
+                                -13,
+                                -16,
+                                -7.375,
+                                -7.374999999999905,
+                                -7.3749999999998099,
+                                -7.3749999999997149,
+                                -7.3749999999996199,
+                                -7.3749999999995248,
+                                -7.374999999999317,
+                                -7.374999999999222,
+                                7.25,
+                                7.2500000000000933,
+                                580000,
+                                580000.00000000745};
+    sx_vec2 pts[12];
+    sx_hull h;
+    int i;
+    bool has_corner = false;
+    (void)state;
+    for (i = 0; i < 12; ++i)
+        pts[i] = sx_v2((sx_real)xy[2 * i], (sx_real)xy[2 * i + 1]);
+    assert_int_equal(sx_compute_hull(pts, 12, SX_WELD_TOLERANCE, &h), SX_OK);
+    assert_hull_properties(&h, pts, 12, (double)SX_WELD_TOLERANCE);
+    /* (-16, -16) stands 0.0141 off the hull's other vertices' line: it is a
+     * corner of the hull. */
+    for (i = 0; i < h.count; ++i)
+        has_corner = has_corner || (h.points[i].x == SX_R(-16.0) && h.points[i].y == SX_R(-16.0));
+    assert_true(has_corner);
+    assert_true(max_outside(&h, pts, 12) <= 1e-6);
+
+    /* The noise of a tie is per coordinate: one point 4.5e37 below seven
+     * small ones makes every difference from it lose its low bits in y, but
+     * not in x, and the small points still order exactly (a bound from the
+     * points' whole magnitude took them all as ties and built a 2-gon). */
+    {
+        static const double far_xy[] = {
+            -1.875,   -1.875,  -1.3258252143859863, -3.2008252143859863,
+            0.0,      -3.75,   1.3258252143859863,  -3.2008252143859863,
+            -122.125, -4.5e37, 1.3258249759674072,  -0.54917454719543457,
+            0.0,      0.0,     -1.3258256912231445, -0.54917526245117188};
+        for (i = 0; i < 8; ++i)
+            pts[i] = sx_v2((sx_real)far_xy[2 * i], (sx_real)far_xy[2 * i + 1]);
+        assert_int_equal(sx_compute_hull(pts, 8, SX_WELD_TOLERANCE, &h), SX_OK);
+        assert_int_equal(h.count, 5);
+        assert_true(max_outside(&h, pts, 8) <= 1e-6);
+    }
+    /* A point straight below the previous vertex, a hair behind the long
+     * previous edge's line, and another straight above it (on that edge):
+     * opposite directions within the noise, where "farther wins" alone would
+     * walk back up the edge and skip (1.09e24, 2.7e6). */
+    {
+        static const double tie_xy[] = {
+            -15.625, -16,      -16,       -1.75,      -16,        -12.375,
+            8.125,   -16,      15.875,    0,          -15.875,    3.875,
+            -128,    1.141e18, 1.0918e24, 2738633.75, 2738607.25, 7012.89404296875,
+            -7.375,  9.875,    -16,       15.875,     15.875,     15.875};
+        for (i = 0; i < 12; ++i)
+            pts[i] = sx_v2((sx_real)tie_xy[2 * i], (sx_real)tie_xy[2 * i + 1]);
+        assert_int_equal(sx_compute_hull(pts, 12, SX_WELD_TOLERANCE, &h), SX_OK);
+        assert_true(max_outside(&h, pts, 12) <= (double)SX_WELD_TOLERANCE);
+        for (i = 0, has_corner = false; i < h.count; ++i)
+            has_corner = has_corner || (double)h.points[i].x > 1e24;
+        assert_true(has_corner);
+    }
+}
+
 static void hull_starts_at_lowest_x_then_lowest_y_and_runs_ccw(void **state) {
     sx_vec2 pts[5];
     sx_hull h;
@@ -805,6 +891,7 @@ int main(void) {
         cmocka_unit_test(
             hull_of_millimetre_hexagon_is_welded_by_default_and_kept_with_a_small_tolerance),
         cmocka_unit_test(hull_of_grid_snapped_clouds_with_any_tolerance_is_valid_or_refused),
+        cmocka_unit_test(hull_of_a_near_collinear_run_keeps_its_far_end),
         cmocka_unit_test(hull_starts_at_lowest_x_then_lowest_y_and_runs_ccw),
         cmocka_unit_test(hull_welds_duplicates_and_near_duplicates),
         cmocka_unit_test(hull_with_zero_tolerance_keeps_tiny_edges_but_welds_exact_duplicates),

@@ -4,6 +4,7 @@
  * vertices and rounded corners), every relation of two segments, hostile
  * input, and random properties with fixed seeds checked against points drawn
  * from the shapes' own definitions. */
+#include <float.h>
 #include <math.h>
 
 #include "query_fixtures.h"
@@ -112,6 +113,67 @@ static void triangle_contains_its_hypotenuse_and_vertices(void **state) {
     assert_false(sx_contains_point(&s, x, w(x, 2.001, 1.501)));
     assert_false(sx_contains_point(&s, x, w(x, -0.001, 1.0)));
     assert_false(sx_contains_point(&s, x, w(x, 4.001, 0.0)));
+}
+
+/* Regression (fuzz: query-contains-sliver-vertex): the boundary band of a
+ * sharp polygon used to be every edge's half-plane widened by the band, and
+ * beyond a vertex of angle theta those widened half-planes meet up to
+ * band / sin(theta / 2) away: a point 1.7 mm beyond this sliver's tip (340 x
+ * the band) counted as contained although its distance is +1.7 mm. */
+static void sliver_tip_contains_only_its_band(void **state) {
+    sx_vec2 v[3];
+    sx_shape s;
+    sx_xform far = sx_xform_make(sx_v2(SX_R(-16.0), SX_R(-16.0)), SX_R(0.0));
+    sx_xform id = sx_xform_identity();
+    const double band = 1e-3 * (double)SX_LINEAR_SLOP, axis = 0.70710678118654752;
+    (void)state;
+    v[0] = sx_v2(SX_R(0.0012), SX_R(0.0012));
+    v[1] = sx_v2(SX_R(6.5), SX_R(6.5));
+    v[2] = sx_v2(SX_R(6.5), SX_R(6.5024));
+    s = qf_polygon(v, 3, SX_R(0.0));
+    assert_int_equal(sx_shape_validate(&s), SX_OK);
+    /* The fuzzer's case: local (0, 0), 1.7 mm beyond the tip. */
+    assert_true((double)sx_shape_distance_to_point(&s, far, far.p, NULL, NULL) > 1e-3);
+    assert_false(sx_contains_point(&s, far, far.p));
+    /* Along the axis beyond the tip: inside the band, then just past it. */
+    assert_true(sx_contains_point(&s, id, v[0]));
+    assert_true(
+        sx_contains_point(&s, id, w(id, 0.0012 - 0.4 * band * axis, 0.0012 - 0.4 * band * axis)));
+    assert_false(
+        sx_contains_point(&s, id, w(id, 0.0012 - 3.0 * band * axis, 0.0012 - 3.0 * band * axis)));
+    assert_false(sx_contains_point(
+        &s, id, w(id, 0.0012 - 100.0 * band * axis, 0.0012 - 100.0 * band * axis)));
+    /* The signed distance there is the distance to the tip (it used to
+     * round to 0 from the far vertex of the long edge). */
+    assert_near(
+        sx_shape_distance_to_point(
+            &s, id, w(id, 0.0012 - 3.0 * band * axis, 0.0012 - 3.0 * band * axis), NULL, NULL),
+        3.0 * band, 1e-7);
+    /* Inside the sliver near its tip, and across its width at the far end. */
+    assert_true(sx_contains_point(&s, id, w(id, 0.01, 0.0100005)));
+    assert_true(sx_contains_point(&s, id, w(id, 6.5, 6.5012)));
+    assert_false(sx_contains_point(&s, id, w(id, 6.5 + 3.0 * band, 6.5012)));
+}
+
+/* Regression (make fuzz, double build): a box of denormal half extents
+ * (valid: strictly convex, CCW) contained points 5 cm away, because
+ * cross(e, p - v) of an edge that short underflowed to 0, "on the line". */
+static void denormal_box_contains_only_its_band(void **state) {
+#ifdef SX_DOUBLE
+    const sx_real tiny = (sx_real)(DBL_MIN * 1e-15);
+#else
+    const sx_real tiny = (sx_real)(FLT_MIN * 1e-6f);
+#endif
+    sx_shape s = sx_box_shape(tiny, tiny);
+    sx_xform x = sx_xform_make(sx_v2(SX_R(0.0140625), SX_R(0.028125)), SX_R(0.0422));
+    const double band = 1e-3 * (double)SX_LINEAR_SLOP;
+    (void)state;
+    if (sx_shape_validate(&s) != SX_OK) return; /* nothing to check */
+    assert_true(sx_contains_point(&s, x, x.p));
+    assert_false(sx_contains_point(&s, x, sx_v2(SX_R(0.05625), SX_R(0.06125))));
+    assert_true(sx_contains_point(&s, x, w(x, 0.4 * band, 0.0)));
+    assert_false(sx_contains_point(&s, x, w(x, 3.0 * band, 0.0)));
+    assert_false(sx_contains_point(&s, x, w(x, -3.0 * band, 3.0 * band)));
 }
 
 static void rounded_box_contains_its_rounding_but_not_the_sharp_corner(void **state) {
@@ -755,6 +817,8 @@ int main(void) {
         cmocka_unit_test(capsule_contains_its_body_and_end_caps),
         cmocka_unit_test(box_contains_inside_edges_and_corners_under_a_rotation),
         cmocka_unit_test(triangle_contains_its_hypotenuse_and_vertices),
+        cmocka_unit_test(sliver_tip_contains_only_its_band),
+        cmocka_unit_test(denormal_box_contains_only_its_band),
         cmocka_unit_test(rounded_box_contains_its_rounding_but_not_the_sharp_corner),
         cmocka_unit_test(contains_answers_false_for_unusable_input),
         cmocka_unit_test(closest_point_on_segment_projects_and_clamps),

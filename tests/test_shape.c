@@ -2,6 +2,7 @@
  * against closed forms and against a numerical integration on a fine grid,
  * and bounds (AABB and support) against points sampled on the shapes. */
 #include <math.h>
+#include <string.h>
 
 #include "test_support.h"
 
@@ -585,6 +586,81 @@ static void bounds_of_bad_values_are_finite_and_never_nan(void **state) {
     assert_near(sx_shape_support(&s, sx_v2(1, 0)), 0, 0);
 }
 
+/* What the polygon builder returns for a cloud: an error with *out
+ * untouched, or a shape that validates with a non-negative area and mass
+ * properties free of NaN. */
+static sx_status check_built_polygon(const sx_vec2 *pts, int n) {
+    sx_shape s, before;
+    sx_status st;
+    sx_mass_data md;
+    memset(&before, 0xA5, sizeof before);
+    s = before;
+    st = sx_polygon_shape(pts, n, SX_R(0.0), &s);
+    if (st != SX_OK) {
+        assert_memory_equal(&s, &before, sizeof s);
+        return st;
+    }
+    assert_int_equal(sx_shape_validate(&s), SX_OK);
+    assert_true(sx_shape_area(&s) >= SX_R(0.0));
+    md = sx_shape_mass(&s, SX_R(1.0));
+    assert_false(md.mass != md.mass || md.rotational_inertia != md.rotational_inertia);
+    assert_true(md.mass >= SX_R(0.0));
+    assert_true(sx_vec2_is_finite(md.center));
+    return st;
+}
+
+/* Regression (fuzz: hull-polygon-negative-area-beyond-huge and
+ * hull-polygon-fails-validate-beyond-huge): thin triangles reaching 1e18,
+ * far beyond SX_HUGE. The hull is valid (every vertex strictly left of every
+ * edge), but the area summed about the vertex average rounds to -9.2e18 for
+ * the first and to 0 for the second (centroid inf / 0). The builder used to
+ * return SX_OK for both, the first with a negative area and the second with
+ * a NaN centroid that sx_shape_validate then refused. Now it refuses such a
+ * polygon as degenerate, and sx_shape_validate refuses the same value built
+ * by hand. */
+static void polygons_whose_area_rounds_away_are_refused(void **state) {
+    const sx_vec2 a[3] = {{SX_R(-16.0), SX_R(-16.0)},
+                          {SX_R(2113481.75), SX_R(2113449.5)},
+                          {SX_R(9.96937982e17), SX_R(9.96931591e17)}};
+    const sx_vec2 b[3] = {{SX_R(-16.0), SX_R(-16.0)},
+                          {SX_R(2738633.75), SX_R(2738607.25)},
+                          {SX_R(9.96937982e17), SX_R(9.96937982e17)}};
+    const sx_vec2 *clouds[2] = {a, b};
+    int k, i;
+    (void)state;
+    for (k = 0; k < 2; ++k) {
+        sx_shape raw;
+        sx_status st = check_built_polygon(clouds[k], 3);
+#ifndef SX_DOUBLE
+        assert_int_equal(st, SX_ERR_DEGENERATE);
+#else
+        (void)st;
+#endif
+        /* The same triangle (its points are in CCW order) as a hand-made
+         * value: validation agrees with the builder (OK only with a usable
+         * area). */
+        memset(&raw, 0, sizeof raw);
+        raw.type = SX_SHAPE_POLYGON;
+        raw.u.polygon.count = 3;
+        for (i = 0; i < 3; ++i) {
+            sx_vec2 e = sx_sub(clouds[k][(i + 1) % 3], clouds[k][i]);
+            raw.u.polygon.vertices[i] = clouds[k][i];
+            raw.u.polygon.normals[i] = sx_normalize(sx_v2(e.y, -e.x));
+        }
+        raw.u.polygon.centroid = clouds[k][0];
+        if (sx_shape_validate(&raw) == SX_OK) {
+            sx_mass_data md = sx_shape_mass(&raw, SX_R(1.0));
+            assert_true(sx_shape_area(&raw) >= SX_R(0.0));
+            assert_true(sx_vec2_is_finite(md.center));
+        } else {
+            assert_true(sx_shape_area(&raw) == SX_R(0.0));
+        }
+#ifndef SX_DOUBLE
+        assert_int_equal(sx_shape_validate(&raw), SX_ERR_DEGENERATE);
+#endif
+    }
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(validate_accepts_good_circles_and_refuses_bad_ones),
@@ -606,6 +682,7 @@ int main(void) {
         cmocka_unit_test(aabb_contains_the_placed_shape_and_touches_it_on_every_side),
         cmocka_unit_test(support_is_the_extent_along_the_axis),
         cmocka_unit_test(bounds_of_bad_values_are_finite_and_never_nan),
+        cmocka_unit_test(polygons_whose_area_rounds_away_are_refused),
     };
     return cmocka_run_group_tests_name("shape", tests, sx_test_group_setup, sx_test_group_teardown);
 }

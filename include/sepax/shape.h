@@ -142,8 +142,11 @@ sx_status sx_polygon_shape_ex(const sx_vec2 *points, int count, sx_real radius,
  *  3..SX_MAX_POLYGON_VERTICES, negative radius, or points that are not a
  *  strictly convex counter-clockwise polygon without coincident points, i.e.
  *  sx_validate_hull(hull, 0) fails), SX_ERR_NONFINITE (NaN/Inf point or
- *  radius), SX_ERR_DEGENERATE (exactly zero area, e.g. all points collinear).
- *  On error *out is left unchanged. */
+ *  radius), SX_ERR_DEGENERATE (exactly zero area, e.g. all points collinear,
+ *  or a sliver so far beyond SX_HUGE that its area, summed in wider
+ *  precision, rounds to zero or below: no mass properties exist for it).
+ *  What it returns always passes sx_shape_validate. On error *out is left
+ *  unchanged. */
 sx_status sx_polygon_from_hull(const sx_hull *hull, sx_real radius, sx_shape *out);
 
 /** Checks a shape value. SX_OK, or: SX_ERR_INVALID_ARG (NULL, unknown type,
@@ -151,8 +154,10 @@ sx_status sx_polygon_from_hull(const sx_hull *hull, sx_real radius, sx_shape *ou
  *  not strictly convex and CCW, or a normal not unit or more than
  *  SX_ANGULAR_SLOP away from its edge's outward direction); SX_ERR_NONFINITE
  *  (NaN/Inf in any used field); SX_ERR_DEGENERATE (a segment no longer than
- *  SX_REAL_EPSILON, a polygon of exactly zero area). Checked in that order
- *  per field group: count, finiteness, radius, area, convexity, normals. A
+ *  SX_REAL_EPSILON, a polygon of exactly zero area, or one whose area and
+ *  centroid rounding cannot resolve, as sx_polygon_from_hull refuses).
+ *  Checked in that order per field group: count, finiteness, radius, area,
+ *  convexity, normals, then the rounded area and centroid. A
  *  circle of radius 0 (a point) is valid; so is a capsule with a == b (a
  *  circle) or radius 0 (a segment). */
 sx_status sx_shape_validate(const sx_shape *shape);
