@@ -211,6 +211,26 @@ bool sx_grow_array(void **array, int *capacity, int need, size_t size) {
     return true;
 }
 
+bool sx_grow_zeroed(void **array, int *capacity, int need, size_t size) {
+    int old = *capacity;
+    if (!sx_grow_array(array, capacity, need, size)) return false;
+    if (*capacity > old) {
+        memset((unsigned char *)*array + (size_t)old * size, 0, (size_t)(*capacity - old) * size);
+    }
+    return true;
+}
+
+bool sx_push_int(int **array, int *count, int *capacity, int value) {
+    if (*count == *capacity) {
+        void *p = *array;
+        bool ok = sx_grow_array(&p, capacity, *count + 1, sizeof(int));
+        *array = (int *)p;
+        if (!ok) return false;
+    }
+    (*array)[(*count)++] = value;
+    return true;
+}
+
 /* Grows both body arrays; each keeps its own capacity so a failure half way
  * leaves both consistent. */
 static bool sx_reserve_bodies(sx_world *world, int need) {

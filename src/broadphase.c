@@ -118,17 +118,13 @@ static bool sx_is_fixed_kind(unsigned char k) { return k == SX_BP_FIXED || k == 
 
 sx_status sx_broadphase_touch(sx_broadphase *bp, int slot, int slot_count) {
     void *p = bp->tmark;
-    int old = bp->tmark_capacity;
-    bool ok = sx_grow_array(&p, &bp->tmark_capacity, slot_count, 1);
+    bool ok = sx_grow_zeroed(&p, &bp->tmark_capacity, slot_count, 1);
     bp->tmark = (unsigned char *)p;
     if (!ok) return SX_ERR_NO_MEMORY;
-    if (bp->tmark_capacity > old) memset(bp->tmark + old, 0, (size_t)(bp->tmark_capacity - old));
     if (bp->tmark[slot]) return SX_OK;
-    p = bp->touched;
-    ok = sx_grow_array(&p, &bp->touched_capacity, bp->touched_count + 1, sizeof(int));
-    bp->touched = (int *)p;
-    if (!ok) return SX_ERR_NO_MEMORY;
-    bp->touched[bp->touched_count++] = slot;
+    if (!sx_push_int(&bp->touched, &bp->touched_count, &bp->touched_capacity, slot)) {
+        return SX_ERR_NO_MEMORY;
+    }
     bp->tmark[slot] = 1;
     return SX_OK;
 }
@@ -217,12 +213,9 @@ static sx_status sx_update_fixed(sx_broadphase *bp, const sx_aabb *aabbs,
     bp->wide_count = 0;
     for (i = 0; i < n; ++i) {
         const sx_aabb *b = &bp->fixed[i].box;
-        if (!(b->upper.x - b->lower.x <= bp->wide_limit)) {
-            p = bp->wide;
-            ok = sx_grow_array(&p, &bp->wide_capacity, bp->wide_count + 1, sizeof(int));
-            bp->wide = (int *)p;
-            if (!ok) return SX_ERR_NO_MEMORY;
-            bp->wide[bp->wide_count++] = i;
+        if (!(b->upper.x - b->lower.x <= bp->wide_limit) &&
+            !sx_push_int(&bp->wide, &bp->wide_count, &bp->wide_capacity, i)) {
+            return SX_ERR_NO_MEMORY;
         }
     }
     return SX_OK;
@@ -232,32 +225,52 @@ static bool sx_y_overlap(const sx_aabb *a, const sx_aabb *b) {
     return !(b->lower.y > a->upper.y || b->upper.y < a->lower.y);
 }
 
+/* Walks the fixed set's boxes that overlap `box`: the narrow ones from the
+ * first whose lower x could reach it (binary search, bounded by the widest
+ * narrow box), then the wide list. Start with *at = -1; NULL at the end. */
+static const sx_sorted_box *sx_fixed_next(const sx_broadphase *bp, sx_aabb box, int *at) {
+    int i = *at + 1;
+    if (*at < 0) {
+        const sx_real from = box.lower.x - bp->wide_limit;
+        int hi = bp->fixed_count;
+        i = 0;
+        while (i < hi) {
+            int mid = i + (hi - i) / 2;
+            if (bp->fixed[mid].box.lower.x < from)
+                i = mid + 1;
+            else
+                hi = mid;
+        }
+    }
+    for (; i < bp->fixed_count; ++i) {
+        const sx_sorted_box *b = &bp->fixed[i];
+        if (b->box.lower.x > box.upper.x) {
+            i = bp->fixed_count;
+            break;
+        }
+        if (b->box.upper.x - b->box.lower.x > bp->wide_limit) continue; /* on the wide list */
+        if (sx_aabb_overlaps(box, b->box)) {
+            *at = i;
+            return b;
+        }
+    }
+    for (i -= bp->fixed_count; i < bp->wide_count; ++i) {
+        const sx_sorted_box *b = &bp->fixed[bp->wide[i]];
+        if (sx_aabb_overlaps(box, b->box)) {
+            *at = bp->fixed_count + i;
+            return b;
+        }
+    }
+    *at = bp->fixed_count + bp->wide_count;
+    return NULL;
+}
+
 /* Pairs one moving box with the fixed set. */
 static sx_status sx_query_fixed(sx_broadphase *bp, const sx_sorted_box *a) {
-    int lo = 0, hi = bp->fixed_count, i;
-    const sx_real from = a->box.lower.x - bp->wide_limit;
-    /* first fixed box whose lower x could reach a (narrow boxes only) */
-    while (lo < hi) {
-        int mid = lo + (hi - lo) / 2;
-        if (bp->fixed[mid].box.lower.x < from)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    for (i = lo; i < bp->fixed_count; ++i) {
-        const sx_sorted_box *b = &bp->fixed[i];
-        if (b->box.lower.x > a->box.upper.x) break;
-        if (b->box.upper.x - b->box.lower.x > bp->wide_limit) continue; /* on the wide list */
-        if (b->box.upper.x < a->box.lower.x || !sx_y_overlap(&a->box, &b->box)) continue;
+    const sx_sorted_box *b;
+    int at = -1;
+    while ((b = sx_fixed_next(bp, a->box, &at)) != NULL) {
         if (!sx_kinds_pair(a->kind, b->kind)) continue;
-        if (sx_add_pair(bp, a->slot, b->slot) != SX_OK) return SX_ERR_NO_MEMORY;
-    }
-    for (i = 0; i < bp->wide_count; ++i) {
-        const sx_sorted_box *b = &bp->fixed[bp->wide[i]];
-        if (b->box.lower.x > a->box.upper.x || b->box.upper.x < a->box.lower.x ||
-            !sx_y_overlap(&a->box, &b->box) || !sx_kinds_pair(a->kind, b->kind)) {
-            continue;
-        }
         if (sx_add_pair(bp, a->slot, b->slot) != SX_OK) return SX_ERR_NO_MEMORY;
     }
     return SX_OK;
@@ -273,13 +286,9 @@ sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const un
     s = sx_update_fixed(bp, aabbs, kind, slot_count);
     if (s != SX_OK) return s;
     p = bp->mark;
-    {
-        int old = bp->mark_capacity;
-        ok = sx_grow_array(&p, &bp->mark_capacity, slot_count, 1);
-        bp->mark = (unsigned char *)p;
-        if (!ok) return SX_ERR_NO_MEMORY;
-        if (bp->mark_capacity > old) memset(bp->mark + old, 0, (size_t)(bp->mark_capacity - old));
-    }
+    ok = sx_grow_zeroed(&p, &bp->mark_capacity, slot_count, 1);
+    bp->mark = (unsigned char *)p;
+    if (!ok) return SX_ERR_NO_MEMORY;
     p = bp->order;
     ok = sx_grow_array(&p, &bp->order_capacity, moving_count + 1, sizeof(int));
     bp->order = (int *)p;
@@ -373,55 +382,20 @@ sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const un
     return sx_sort_pairs(bp, slot_count);
 }
 
-/* Appends one slot to a growing int array. */
-static sx_status sx_append_slot(int **out, int *count, int *capacity, int slot) {
-    if (*count == *capacity) {
-        void *p = *out;
-        bool ok = sx_grow_array(&p, capacity, *count + 1, sizeof(int));
-        *out = (int *)p;
-        if (!ok) return SX_ERR_NO_MEMORY;
-    }
-    (*out)[(*count)++] = slot;
-    return SX_OK;
-}
-
-static bool sx_overlaps(const sx_aabb *a, const sx_aabb *b) {
-    return !(b->lower.x > a->upper.x || b->upper.x < a->lower.x) && sx_y_overlap(a, b);
-}
-
 sx_status sx_broadphase_query(const sx_broadphase *bp, sx_aabb box, int **out, int *count,
                               int *capacity) {
-    int lo = 0, hi = bp->fixed_count, i;
-    const sx_real from = box.lower.x - bp->wide_limit;
-    sx_status s;
-    while (lo < hi) {
-        int mid = lo + (hi - lo) / 2;
-        if (bp->fixed[mid].box.lower.x < from)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    for (i = lo; i < bp->fixed_count; ++i) {
-        const sx_sorted_box *b = &bp->fixed[i];
-        if (b->box.lower.x > box.upper.x) break;
-        if (b->box.upper.x - b->box.lower.x > bp->wide_limit) continue;
-        if (!sx_overlaps(&box, &b->box)) continue;
-        s = sx_append_slot(out, count, capacity, b->slot);
-        if (s != SX_OK) return s;
-    }
-    for (i = 0; i < bp->wide_count; ++i) {
-        const sx_sorted_box *b = &bp->fixed[bp->wide[i]];
-        if (!sx_overlaps(&box, &b->box)) continue;
-        s = sx_append_slot(out, count, capacity, b->slot);
-        if (s != SX_OK) return s;
+    const sx_sorted_box *b;
+    int at = -1, i;
+    while ((b = sx_fixed_next(bp, box, &at)) != NULL) {
+        if (!sx_push_int(out, count, capacity, b->slot)) return SX_ERR_NO_MEMORY;
     }
     /* the moving set is small: a plain pass, stopping past box on x */
     for (i = 0; i < bp->order_count; ++i) {
-        const sx_sorted_box *b = &bp->sorted[i];
+        b = &bp->sorted[i];
         if (b->box.lower.x > box.upper.x) break;
-        if (!sx_overlaps(&box, &b->box)) continue;
-        s = sx_append_slot(out, count, capacity, b->slot);
-        if (s != SX_OK) return s;
+        if (sx_aabb_overlaps(box, b->box) && !sx_push_int(out, count, capacity, b->slot)) {
+            return SX_ERR_NO_MEMORY;
+        }
     }
     return SX_OK;
 }

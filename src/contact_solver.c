@@ -449,20 +449,15 @@ static bool sx_impact_candidate(const sx_world *world, const sx_contact *c) {
 }
 
 static bool sx_impact_reserve(sx_world *world) {
-    int contacts = world->contact_count, bodies = world->body_slots,
-        old = world->impact_body_capacity;
+    int contacts = world->contact_count, bodies = world->body_slots;
     void *p;
     bool ok;
     p = world->impact_bodies;
-    ok = sx_grow_array(&p, &world->impact_body_capacity, bodies, sizeof(sx_impact_body));
-    world->impact_bodies = (sx_impact_body *)p;
-    if (!ok) return false;
     /* only the active bodies' entries are reset per pass: the others (static
      * bodies, read as zero shifts) must start at zero */
-    if (world->impact_body_capacity > old) {
-        memset(world->impact_bodies + old, 0,
-               (size_t)(world->impact_body_capacity - old) * sizeof(sx_impact_body));
-    }
+    ok = sx_grow_zeroed(&p, &world->impact_body_capacity, bodies, sizeof(sx_impact_body));
+    world->impact_bodies = (sx_impact_body *)p;
+    if (!ok) return false;
     p = world->impact_adjacency;
     ok = sx_grow_array(&p, &world->impact_adjacency_capacity, 2 * contacts, sizeof(int));
     world->impact_adjacency = (int *)p;

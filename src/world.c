@@ -141,17 +141,6 @@ static sx_status sx_check_step(const sx_world *world, sx_real h) {
 
 /* ---- active sets ------------------------------------------------------------ */
 
-static bool sx_push_slot(int **array, int *count, int *capacity, int slot) {
-    if (*count == *capacity) {
-        void *p = *array;
-        bool ok = sx_grow_array(&p, capacity, *count + 1, sizeof(int));
-        *array = (int *)p;
-        if (!ok) return false;
-    }
-    (*array)[(*count)++] = slot;
-    return true;
-}
-
 /* The fattened bounds of a collider (half the margin on each side: bounds
  * meet when the gap < margin) into world->aabbs; a compound's are the union
  * of its parts', each kept in part_boxes for the part-pair culling of the
@@ -185,7 +174,7 @@ sx_status sx_world_refresh_sets(sx_world *world) {
     for (i = 0; i < world->body_slots; ++i) {
         const sx_body_sim *b = &world->sims[i];
         if (world->infos[i].alive && b->moving && b->awake &&
-            !sx_push_slot(&world->active_bodies, &world->active_body_count,
+            !sx_push_int(&world->active_bodies, &world->active_body_count,
                           &world->active_body_capacity, i)) {
             return SX_ERR_NO_MEMORY;
         }
@@ -205,7 +194,7 @@ sx_status sx_world_refresh_sets(sx_world *world) {
         }
         world->bp_kind[i] = kind;
         if (c->alive && c->sensor && world->infos[c->body].enabled &&
-            !sx_push_slot(&world->sensor_colliders, &world->sensor_collider_count,
+            !sx_push_int(&world->sensor_colliders, &world->sensor_collider_count,
                           &world->sensor_collider_capacity, i)) {
             return SX_ERR_NO_MEMORY;
         }
@@ -217,7 +206,7 @@ sx_status sx_world_refresh_sets(sx_world *world) {
             continue;
         }
         if ((kind == SX_BP_AWAKE || kind == SX_BP_MOVING_KINEMATIC) &&
-            !sx_push_slot(&world->active_colliders, &world->active_collider_count,
+            !sx_push_int(&world->active_colliders, &world->active_collider_count,
                           &world->active_collider_capacity, i)) {
             return SX_ERR_NO_MEMORY;
         }

@@ -308,6 +308,10 @@ static inline bool sx_colliders_overlap(const sx_collider *a, sx_xform xa, const
  * `need`, doubling; copies the old contents. false when out of memory (the
  * array is then unchanged). */
 bool sx_grow_array(void **array, int *capacity, int need, size_t size);
+/* sx_grow_array that zeroes the elements it adds. */
+bool sx_grow_zeroed(void **array, int *capacity, int need, size_t size);
+/* Appends value to a growing int array; false when out of memory. */
+bool sx_push_int(int **array, int *count, int *capacity, int value);
 
 /* world.c */
 /* Rebuilds the active sets if sets_dirty, and every collider's broadphase
