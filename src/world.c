@@ -391,20 +391,28 @@ static bool sx_contact_sleeps(const sx_world *world, const sx_contact *c) {
            ((a->dynamic && !a->awake) || (b->dynamic && !b->awake));
 }
 
+/* Appends a copy of c to a growing contact array; false when out of memory. */
+static bool sx_push_contact(sx_contact **array, int *count, int *capacity, const sx_contact *c) {
+    if (*count == *capacity) {
+        void *p = *array;
+        bool ok = sx_grow_array(&p, capacity, *count + 1, sizeof(sx_contact));
+        *array = (sx_contact *)p;
+        if (!ok) return false;
+    }
+    (*array)[(*count)++] = *c;
+    return true;
+}
+
 /* Moves the sleeping contacts of the current list into the frozen store. */
 static sx_status sx_freeze_contacts(sx_world *world) {
     int i, n = 0;
     for (i = 0; i < world->contact_count; ++i) {
         const sx_contact *c = &world->contacts[i];
         if (sx_contact_sleeps(world, c)) {
-            if (world->frozen_count == world->frozen_capacity) {
-                void *p = world->frozen;
-                bool ok = sx_grow_array(&p, &world->frozen_capacity, world->frozen_count + 1,
-                                        sizeof(sx_contact));
-                world->frozen = (sx_contact *)p;
-                if (!ok) return SX_ERR_NO_MEMORY;
+            if (!sx_push_contact(&world->frozen, &world->frozen_count, &world->frozen_capacity,
+                                 c)) {
+                return SX_ERR_NO_MEMORY;
             }
-            world->frozen[world->frozen_count++] = *c;
         } else {
             world->contacts[n++] = *c;
         }
@@ -452,20 +460,15 @@ static sx_status sx_thaw_contacts(sx_world *world, bool mark) {
             continue;
         }
         if (sx_has_key(world->contacts, world->contact_count, c->key)) continue;
-        if (world->thaw_count == world->thaw_capacity) {
-            p = world->thaw;
-            ok = sx_grow_array(&p, &world->thaw_capacity, world->thaw_count + 1,
-                               sizeof(sx_contact));
-            world->thaw = (sx_contact *)p;
-            if (!ok) return SX_ERR_NO_MEMORY;
+        if (!sx_push_contact(&world->thaw, &world->thaw_count, &world->thaw_capacity, c)) {
+            return SX_ERR_NO_MEMORY;
         }
-        world->thaw[world->thaw_count] = *c;
-        world->thaw[world->thaw_count++].thawed = mark;
+        world->thaw[world->thaw_count - 1].thawed = mark;
     }
     world->frozen_count = n;
     k = world->thaw_count;
     if (k == 0) return SX_OK;
-    /* keys are unique: the order is total and the same on every run */
+    /* (key, part_a, part_b) is unique: the order is total, the same on every run */
     qsort(world->thaw, (size_t)k, sizeof(sx_contact), sx_contact_key_cmp);
     p = world->contacts;
     ok = sx_grow_array(&p, &world->contact_capacity, world->contact_count + k, sizeof(sx_contact));
@@ -636,15 +639,13 @@ sx_status sx_world_collide(sx_world *world) {
     /* an awake body touching a sleeping island woke it: its contacts join
      * this step as they are */
     if (world->thaw_pending) {
-        s = sx_thaw_contacts(world, true);
+        /* marked only for the event pass, which clears the mark */
+        s = sx_thaw_contacts(world, world->def.enable_contact_events);
         if (s != SX_OK) return s;
     }
     if (world->def.enable_contact_events) {
         s = sx_record_events(world);
         if (s != SX_OK) return s;
-    } else if (world->thaw_count > 0) {
-        for (i = 0; i < world->contact_count; ++i)
-            world->contacts[i].thawed = false;
     }
     return sx_sensors_update(world);
 }
