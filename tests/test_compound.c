@@ -50,18 +50,7 @@ static void make_comb(fixture *f) {
     sx_shape shapes[MAX_PARTS];
     size_t bytes;
     void *scratch;
-    int n = 0, k, count = 0;
-    p[n++] = sx_v2(SX_R(0.0), SX_R(0.0));
-    p[n++] = sx_v2(SX_R(7.0), SX_R(0.0));
-    for (k = 3; k >= 0; --k) {
-        sx_real x0 = (sx_real)(2 * k), x1 = x0 + SX_R(1.0);
-        p[n++] = sx_v2(x1, SX_R(3.0));
-        p[n++] = sx_v2(x0, SX_R(3.0));
-        if (k > 0) {
-            p[n++] = sx_v2(x0, SX_R(1.0));
-            p[n++] = sx_v2(x0 - SX_R(1.0), SX_R(1.0));
-        }
-    }
+    int n = sx_test_comb_outline(p, 4), k, count = 0;
     bytes = sx_decompose_scratch_bytes(n);
     scratch = malloc(bytes);
     assert_int_equal(sx_decompose_polygon(p, n, scratch, bytes, shapes, MAX_PARTS, &count, NULL),

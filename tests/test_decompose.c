@@ -153,22 +153,7 @@ static int make_star(sx_vec2 *p) {
 }
 
 /* A comb: a 7 x 1 spine with four 1 x 2 teeth standing on it. */
-static int make_comb(sx_vec2 *p) {
-    int n = 0, k;
-    p[n++] = sx_v2(SX_R(0.0), SX_R(0.0));
-    p[n++] = sx_v2(SX_R(7.0), SX_R(0.0));
-    for (k = 3; k >= 0; --k) {
-        sx_real x0 = (sx_real)(2 * k), x1 = x0 + SX_R(1.0);
-        p[n++] = sx_v2(x1, SX_R(3.0));
-        p[n++] = sx_v2(x0, SX_R(3.0));
-        if (k > 0) {
-            p[n++] = sx_v2(x0, SX_R(1.0));
-            p[n++] = sx_v2(x0 - SX_R(1.0), SX_R(1.0));
-        }
-    }
-    /* Close: the last tooth's left side runs down to (0, 0). */
-    return n;
-}
+static int make_comb(sx_vec2 *p) { return sx_test_comb_outline(p, 4); }
 
 /* A thick Archimedean spiral strip: out along one edge, back along the
  * other, one and a half turns. */

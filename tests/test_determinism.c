@@ -97,16 +97,7 @@ static uint64_t det_run(bool nudge) {
             sh = sx_capsule_shape(sx_v2(SX_R(-0.3), SX_R(0.0)), sx_v2(SX_R(0.3), SX_R(0.0)),
                                   SX_R(0.15));
             break;
-        default: {
-            sx_vec2 pts[6];
-            int k;
-            for (k = 0; k < 6; ++k) {
-                sx_real a = SX_R(2.0) * SX_PI * (sx_real)k / SX_R(6.0);
-                sx_real r = sx_test_rng_range(&rng, 0.2, 0.4);
-                pts[k] = sx_v2(r * sx_cos(a), r * sx_sin(a));
-            }
-            assert_int_equal(sx_polygon_shape(pts, 6, SX_R(0.0), &sh), SX_OK);
-        } break;
+        default: sh = sx_test_random_ngon(&rng, 6, 0.2, 0.4); break;
         }
         ids[n++] = det_body(w, SX_BODY_DYNAMIC, p, sx_test_rng_range(&rng, 0.0, 3.0), &sh, false);
     }

@@ -710,20 +710,10 @@ static void a_box_on_two_teeth_is_one_sx_contact(void **state) {
     SxTransform t = {{SX_R(0.0), SX_R(0.0)}, SX_R(0.0)};
     sx_vec2 p[12];
     const SxContacts *contacts;
-    int n = 0, k, i, found = 0, world_pairs = 0;
+    int n, i, found = 0, world_pairs = 0;
     (void)state;
     /* a spine [0, 5] x [0, 1] with teeth [0,1], [2,3], [4,5] up to y = 3 */
-    p[n++] = sx_v2(SX_R(0.0), SX_R(0.0));
-    p[n++] = sx_v2(SX_R(5.0), SX_R(0.0));
-    for (k = 2; k >= 0; --k) {
-        sx_real x0 = (sx_real)(2 * k), x1 = x0 + SX_R(1.0);
-        p[n++] = sx_v2(x1, SX_R(3.0));
-        p[n++] = sx_v2(x0, SX_R(3.0));
-        if (k > 0) {
-            p[n++] = sx_v2(x0, SX_R(1.0));
-            p[n++] = sx_v2(x0 - SX_R(1.0), SX_R(1.0));
-        }
-    }
+    n = sx_test_comb_outline(p, 3);
     ecs_set_ptr(world, comb, SxTransform, &t);
     assert_int_equal(sx_ecs_set_outline(world, comb, p, n, NULL), SX_OK);
     box = add_dynamic(world, sx_v2(SX_R(1.5), SX_R(4.0)), sx_box_shape(SX_R(1.2), SX_R(0.5)));

@@ -313,16 +313,7 @@ static void busy_box_runs_long_with_bounded_energy_and_no_nan(void **state) {
             shape = sx_capsule_shape(sx_v2(SX_R(-0.2), SX_R(0.0)), sx_v2(SX_R(0.2), SX_R(0.0)),
                                      sx_test_rng_range(&rng, 0.1, 0.2));
             break;
-        default: {
-            sx_vec2 pts[5];
-            int k;
-            for (k = 0; k < 5; ++k) {
-                sx_real a = SX_R(2.0) * SX_PI * (sx_real)k / SX_R(5.0);
-                sx_real r = sx_test_rng_range(&rng, 0.2, 0.35);
-                pts[k] = sx_v2(r * sx_cos(a), r * sx_sin(a));
-            }
-            assert_int_equal(sx_polygon_shape(pts, 5, SX_R(0.0), &shape), SX_OK);
-        } break;
+        default: shape = sx_test_random_ngon(&rng, 5, 0.2, 0.35); break;
         }
         ids[i] = hostile_body(w, SX_BODY_DYNAMIC, p, sx_test_rng_range(&rng, 0.0, 3.0), &shape,
                               SX_R(1.0));

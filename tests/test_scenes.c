@@ -808,16 +808,7 @@ static void mixed_shapes_in_a_box_run_20_seconds_without_escaping_or_blowing_up(
             shape = sx_capsule_shape(sx_v2(SX_R(-0.3), SX_R(0.0)), sx_v2(SX_R(0.3), SX_R(0.0)),
                                      sx_test_rng_range(&rng, 0.1, 0.3));
             break;
-        default: {
-            sx_vec2 pts[6];
-            int k;
-            for (k = 0; k < 6; ++k) {
-                sx_real a = SX_R(2.0) * SX_PI * (sx_real)k / SX_R(6.0);
-                sx_real r = sx_test_rng_range(&rng, 0.25, 0.5);
-                pts[k] = sx_v2(r * sx_cos(a), r * sx_sin(a));
-            }
-            assert_int_equal(sx_polygon_shape(pts, 6, SX_R(0.0), &shape), SX_OK);
-        } break;
+        default: shape = sx_test_random_ngon(&rng, 6, 0.25, 0.5); break;
         }
         ids[i] = add_body(w, SX_BODY_DYNAMIC, p, sx_test_rng_range(&rng, 0.0, 3.0), &shape,
                           SX_R(1.0), SX_R(0.5), (i % 5 == 0) ? SX_R(0.5) : SX_R(0.0));

@@ -64,25 +64,6 @@ static sx_collider_id add_u(sx_world *w, sx_body_id b) {
     return id;
 }
 
-/* Comb outline: a 7 x 1 spine with four 1 x 2 teeth on top (x in [0,1],
- * [2,3], [4,5], [6,7]; tops at y = 3), gaps of width 1 between the teeth
- * down to the spine's top at y = 1. Returns the point count. */
-static int comb_outline(sx_vec2 *p) {
-    int n = 0, k;
-    p[n++] = sx_v2(SX_R(0.0), SX_R(0.0));
-    p[n++] = sx_v2(SX_R(7.0), SX_R(0.0));
-    for (k = 3; k >= 0; --k) {
-        sx_real x0 = (sx_real)(2 * k), x1 = x0 + SX_R(1.0);
-        p[n++] = sx_v2(x1, SX_R(3.0));
-        p[n++] = sx_v2(x0, SX_R(3.0));
-        if (k > 0) {
-            p[n++] = sx_v2(x0, SX_R(1.0));
-            p[n++] = sx_v2(x0 - SX_R(1.0), SX_R(1.0));
-        }
-    }
-    return n;
-}
-
 static void run(sx_world *w, double seconds) {
     int i, n = (int)(seconds * 60.0 + 0.5);
     for (i = 0; i < n; ++i)
@@ -134,7 +115,7 @@ static void wide_box_lands_on_the_comb_teeth(void **state) {
     sx_collider_def cd = sx_default_collider_def();
     sx_collider_id cc;
     sx_vec2 p[16];
-    int n = comb_outline(p), i, parts_touched = 0, last_part = -1;
+    int n = sx_test_comb_outline(p, 4), i, parts_touched = 0, last_part = -1;
     double slop;
     (void)state;
     assert_int_equal(sx_body_add_outline(w, comb, p, n, &cd, &cc), SX_OK);
@@ -178,7 +159,7 @@ static void contacts_warm_start_per_part_pair_and_report_one_event(void **state)
     sx_contact_events ev;
     sx_vec2 p[16];
     sx_contact_data before[8], after;
-    int n = comb_outline(p), i, count, begins = 0;
+    int n = sx_test_comb_outline(p, 4), i, count, begins = 0;
     sx_world_def def = sx_default_world_def();
     (void)state;
     sx_world_destroy(w);

@@ -61,3 +61,33 @@ double sx_test_rng_unit(sx_test_rng *rng) {
 sx_real sx_test_rng_range(sx_test_rng *rng, double lo, double hi) {
     return (sx_real)(lo + (hi - lo) * sx_test_rng_unit(rng));
 }
+
+int sx_test_comb_outline(sx_vec2 *p, int teeth) {
+    int n = 0, k;
+    p[n++] = sx_v2(SX_R(0.0), SX_R(0.0));
+    p[n++] = sx_v2((sx_real)(2 * teeth - 1), SX_R(0.0));
+    for (k = teeth - 1; k >= 0; --k) {
+        sx_real x0 = (sx_real)(2 * k), x1 = x0 + SX_R(1.0);
+        p[n++] = sx_v2(x1, SX_R(3.0));
+        p[n++] = sx_v2(x0, SX_R(3.0));
+        if (k > 0) {
+            p[n++] = sx_v2(x0, SX_R(1.0));
+            p[n++] = sx_v2(x0 - SX_R(1.0), SX_R(1.0));
+        }
+    }
+    return n;
+}
+
+sx_shape sx_test_random_ngon(sx_test_rng *rng, int n, double rmin, double rmax) {
+    sx_vec2 pts[SX_MAX_POLYGON_VERTICES];
+    sx_shape shape;
+    int k;
+    assert_true(n >= 3 && n <= SX_MAX_POLYGON_VERTICES);
+    for (k = 0; k < n; ++k) {
+        sx_real a = SX_R(2.0) * SX_PI * (sx_real)k / (sx_real)n;
+        sx_real r = sx_test_rng_range(rng, rmin, rmax);
+        pts[k] = sx_v2(r * sx_cos(a), r * sx_sin(a));
+    }
+    assert_int_equal(sx_polygon_shape(pts, n, SX_R(0.0), &shape), SX_OK);
+    return shape;
+}

@@ -58,4 +58,15 @@ double sx_test_rng_unit(sx_test_rng *rng);
 /* Uniform sx_real in [lo, hi). */
 sx_real sx_test_rng_range(sx_test_rng *rng, double lo, double hi);
 
+/* A comb outline, counter-clockwise: a (2 teeth - 1) x 1 spine on y in
+ * [0, 1] with `teeth` 1 x 2 teeth (x in [2k, 2k + 1]) up to y = 3, the gaps
+ * between them down to the spine's top. Writes 4 x teeth points to p and
+ * returns that count. */
+int sx_test_comb_outline(sx_vec2 *p, int teeth);
+
+/* A random convex n-gon (n <= SX_MAX_POLYGON_VERTICES): vertex k at angle
+ * 2 pi k / n, its radius drawn in [rmin, rmax) (one draw per vertex, in
+ * order); fails the test if it does not build. */
+sx_shape sx_test_random_ngon(sx_test_rng *rng, int n, double rmin, double rmax);
+
 #endif /* SEPAX_TEST_SUPPORT_H */
