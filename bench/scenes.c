@@ -1700,62 +1700,63 @@ int bench_scenes_run(const char *out_dir, int smoke, int level) {
         else
             failures += rain(sizes, 3, 100, 8e3, out_dir);
     }
-    if (WANT("bounce"))
-        failures += run_sweep("bounce", "mean |apex/drop - e^2|",
-                              "circle r 0.5 dropped 2 m, e = 0.2, 0.5, 0.8; first apex / drop "
-                              "against e^2 (details: measured(exact))",
-                              bounce_run, out_dir, smoke);
-    if (WANT("incline"))
-        failures += run_sweep("incline", "mean |a - exact| m/s^2",
-                              "box on a 0.25 rad ramp, mu = 0.5 (sticks), 0.1, 0; acceleration "
-                              "between t = 0.5 and 2 s (details: measured(exact))",
-                              incline_run, out_dir, smoke);
-    if (WANT("pyramid20"))
-        failures += run_sweep("pyramid20", "top drift m",
-                              "base-20 pyramid, 10 s; top box displacement between t = 1 s and "
-                              "10 s; max penetration beyond 5 mm slop (sepax narrowphase on the "
-                              "poses; Box2D's 1 cm skin reads as 0)",
-                              pyramid20_run, out_dir, smoke);
-    if (WANT("stack20"))
-        failures += run_sweep("stack20", "lateral creep m",
-                              "20 boxes in a column, alternate rows shifted +-0.01 m, 10 s; "
-                              "largest lateral creep of a box",
-                              stack20_run, out_dir, smoke);
-    if (WANT("cradle"))
-        failures += run_sweep("cradle", "|v_last - 1| + sum |v_others| m/s",
-                              "five circles r 0.5, 1 mm gaps, e = 1, mu = 0, no gravity, the first "
-                              "at 1 m/s; velocities after 1 s",
-                              cradle_run, out_dir, smoke);
-    if (WANT("projectile"))
-        failures += run_sweep("projectile", "|p - parabola| m",
-                              "circle launched at (3, 8) m/s, no contacts, 2 s; distance to the "
-                              "parabola (details: measured(exact), distance to symplectic "
-                              "Euler's closed form at the engine's own step)",
-                              projectile_run, out_dir, smoke);
-    if (WANT("pileup"))
-        failures += run_sweep("pileup", "momentum drift + energy gain",
-                              "40 circles and boxes thrown together in zero gravity, e = 0, "
-                              "4 s; |dP| / sum m|v0| + |dL| / sum m|r0||v0| + max(0, max KE / "
-                              "KE0 - 1)",
-                              pileup_run, out_dir, smoke);
-    if (WANT("mass_ratio"))
-        failures += run_sweep("mass_ratio", "max penetration beyond slop m",
-                              "density-100 box on a density-1 box on the ground, and a 20 m plank "
-                              "on two 1 m boxes, 5 s; largest overlap beyond 5 mm (every step, "
-                              "clamped at 1e-6)",
-                              mass_ratio_run, out_dir, smoke);
-    if (WANT("overlap_recovery"))
-        failures += run_sweep("overlap_recovery", "max speed m/s",
-                              "base-4 pyramid created 25 % and 50 % overlapping (boxes and "
-                              "ground), 3 s; largest speed reached (details: time to separate, "
-                              "energy gained beyond separating in J, top y)",
-                              overlap_run, out_dir, smoke);
-    if (WANT("consistency"))
-        failures += run_sweep("consistency", "rms |x(dt) - x(dt/2)| m",
-                              "40 mixed bodies tumbling into a container, run at dt and at dt/2; "
-                              "RMS distance between the two runs' positions at t = 1 s (details: "
-                              "at 0.25, 0.5, 1, 2 s)",
-                              consistency_run, out_dir, smoke);
+    /* The accuracy sweeps, in report order. */
+    static const struct {
+        const char *scene, *err_name, *what;
+        acc_scene_fn fn;
+    } sweeps[] = {
+        {"bounce", "mean |apex/drop - e^2|",
+         "circle r 0.5 dropped 2 m, e = 0.2, 0.5, 0.8; first apex / drop "
+         "against e^2 (details: measured(exact))",
+         bounce_run},
+        {"incline", "mean |a - exact| m/s^2",
+         "box on a 0.25 rad ramp, mu = 0.5 (sticks), 0.1, 0; acceleration "
+         "between t = 0.5 and 2 s (details: measured(exact))",
+         incline_run},
+        {"pyramid20", "top drift m",
+         "base-20 pyramid, 10 s; top box displacement between t = 1 s and "
+         "10 s; max penetration beyond 5 mm slop (sepax narrowphase on the "
+         "poses; Box2D's 1 cm skin reads as 0)",
+         pyramid20_run},
+        {"stack20", "lateral creep m",
+         "20 boxes in a column, alternate rows shifted +-0.01 m, 10 s; "
+         "largest lateral creep of a box",
+         stack20_run},
+        {"cradle", "|v_last - 1| + sum |v_others| m/s",
+         "five circles r 0.5, 1 mm gaps, e = 1, mu = 0, no gravity, the first "
+         "at 1 m/s; velocities after 1 s",
+         cradle_run},
+        {"projectile", "|p - parabola| m",
+         "circle launched at (3, 8) m/s, no contacts, 2 s; distance to the "
+         "parabola (details: measured(exact), distance to symplectic "
+         "Euler's closed form at the engine's own step)",
+         projectile_run},
+        {"pileup", "momentum drift + energy gain",
+         "40 circles and boxes thrown together in zero gravity, e = 0, "
+         "4 s; |dP| / sum m|v0| + |dL| / sum m|r0||v0| + max(0, max KE / "
+         "KE0 - 1)",
+         pileup_run},
+        {"mass_ratio", "max penetration beyond slop m",
+         "density-100 box on a density-1 box on the ground, and a 20 m plank "
+         "on two 1 m boxes, 5 s; largest overlap beyond 5 mm (every step, "
+         "clamped at 1e-6)",
+         mass_ratio_run},
+        {"overlap_recovery", "max speed m/s",
+         "base-4 pyramid created 25 % and 50 % overlapping (boxes and "
+         "ground), 3 s; largest speed reached (details: time to separate, "
+         "energy gained beyond separating in J, top y)",
+         overlap_run},
+        {"consistency", "rms |x(dt) - x(dt/2)| m",
+         "40 mixed bodies tumbling into a container, run at dt and at dt/2; "
+         "RMS distance between the two runs' positions at t = 1 s (details: "
+         "at 0.25, 0.5, 1, 2 s)",
+         consistency_run},
+    };
+    for (size_t k = 0; k < sizeof sweeps / sizeof sweeps[0]; ++k) {
+        if (WANT(sweeps[k].scene))
+            failures += run_sweep(sweeps[k].scene, sweeps[k].err_name, sweeps[k].what,
+                                  sweeps[k].fn, out_dir, smoke);
+    }
 #undef WANT
     failures += write_summary(out_dir, smoke);
     fclose(csv_file);
