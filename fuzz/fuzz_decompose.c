@@ -339,9 +339,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
             (double)fz_extent(&p, 1) <= 1e100 && dec_outline_dist(pts, count, p) > band) {
             int deep = 0;
             bool in_part = false;
+            /* The parts' boundary lies within the band of the outline's, so
+             * a point farther than the band from the outline is inside a
+             * part (up to rounding) exactly when it is inside the outline;
+             * a tolerance of the band itself would count points just
+             * outside the outline as inside a part whose boundary moved
+             * towards them. */
             for (j = 0; j < part_count; ++j) {
                 double d = dec_part_depth(&parts[j], p);
-                if (d <= band) in_part = true;
+                if (d <= dec_round(scale)) in_part = true;
                 if (d < -band) ++deep;
             }
 #ifdef DEC_DEBUG
