@@ -51,8 +51,10 @@ static bool core_radius_ok(sx_real r) { return sx_is_finite(r) && r >= SX_R(0.0)
 /* (x - x) summed over the coordinates of a vertex and its normal: exactly 0
  * when all are finite, NaN otherwise. Summed over a polygon, one branch
  * checks it whole. */
-static sx_real finite_fold(sx_vec2 v, sx_vec2 m) {
-    return (v.x - v.x) + (v.y - v.y) + (m.x - m.x) + (m.y - m.y);
+static inline sx_real finite_fold(sx_vec2 v, sx_vec2 m) {
+    /* Grouped as a tree: the sums are 0 or NaN whatever the grouping, and
+     * a chain of dependent additions is what this loop would wait on. */
+    return ((v.x - v.x) + (v.y - v.y)) + ((m.x - m.x) + (m.y - m.y));
 }
 
 /* Builds the 2-point core a-b (or a 1-point core when a-b has no direction).
@@ -91,7 +93,7 @@ bool sx_core_from_capsule(const sx_capsule *c, const sx_xform *x, sx_core *out) 
 }
 
 bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) {
-    sx_real acc = SX_R(0.0);
+    sx_real acc = SX_R(0.0), acc1 = SX_R(0.0);
     int i, n;
     if (p == NULL || !core_radius_ok(p->radius)) return false;
     n = p->count;
@@ -102,8 +104,11 @@ bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) 
         /* Shape A is read in place: no copy. */
         out->v = p->vertices;
         out->n = p->normals;
-        for (i = 0; i < n; ++i)
+        for (i = 0; i + 1 < n; i += 2) {
             acc += finite_fold(p->vertices[i], p->normals[i]);
+            acc1 += finite_fold(p->vertices[i + 1], p->normals[i + 1]);
+        }
+        if (i < n) acc += finite_fold(p->vertices[i], p->normals[i]);
     } else {
         /* One pass places each vertex and normal and checks the result. */
         sx_xform q = *x;
@@ -111,12 +116,16 @@ bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) 
             sx_vec2 v = sx_xform_point(q, p->vertices[i]), m = sx_rotate(q.q, p->normals[i]);
             out->vs[i] = v;
             out->ns[i] = m;
-            acc += finite_fold(v, m);
+            if (i & 1) {
+                acc1 += finite_fold(v, m);
+            } else {
+                acc += finite_fold(v, m);
+            }
         }
         out->v = out->vs;
         out->n = out->ns;
     }
-    return acc == SX_R(0.0);
+    return acc + acc1 == SX_R(0.0);
 }
 
 /* ---- separating axes ---------------------------------------------------- */
@@ -126,22 +135,33 @@ static int face_count(const sx_core *c) { return c->count >= 2 ? c->count : 0; }
 static int next_index(const sx_core *c, int i) { return i + 1 < c->count ? i + 1 : 0; }
 
 /* Separation of q from face i of p: how far q's nearest point lies in front
- * of the face's line (negative: q reaches behind it). */
+ * of the face's line (negative: q reaches behind it). The loop is
+ * branch-free (running minima and a running NaN flag), which matters: it is
+ * the inner loop of every polygon pair. A NaN (a 0 x inf product of cores
+ * beyond the range) makes the separation unknown, and NaN says so to
+ * sat_run. */
 static inline sx_real face_separation(const sx_core *p, int i, const sx_core *q) {
     sx_vec2 n = p->n[i], v = p->v[i];
-    sx_real best = SX_REAL_MAX;
-    int j;
-    for (j = 0; j < q->count; ++j) {
-        sx_real d = sx_dot(n, sx_sub(q->v[j], v));
-        if (d < best) {
-            best = d;
-        } else if (d != d) {
-            /* Overflow (a 0 x inf product of cores beyond the range): the
-             * separation is unknown, and NaN says so to sat_run. */
-            return d;
-        }
+    const sx_vec2 *qv = q->v;
+    sx_real best0 = SX_REAL_MAX, best1 = SX_REAL_MAX, d0, d1;
+    int j, count = q->count;
+    bool nan = false;
+    /* Two independent minima (even and odd vertices) halve the dependency
+     * chain; an odd count repeats the last vertex. */
+    for (j = 0; j + 1 < count; j += 2) {
+        d0 = sx_dot(n, sx_sub(qv[j], v));
+        d1 = sx_dot(n, sx_sub(qv[j + 1], v));
+        nan |= (d0 != d0) | (d1 != d1);
+        best0 = d0 < best0 ? d0 : best0;
+        best1 = d1 < best1 ? d1 : best1;
     }
-    return best;
+    if (j < count) {
+        d0 = sx_dot(n, sx_sub(qv[j], v));
+        nan |= d0 != d0;
+        best0 = d0 < best0 ? d0 : best0;
+    }
+    if (nan) return (sx_real)NAN;
+    return best1 < best0 ? best1 : best0;
 }
 
 /* Separation of q from the end caps of the 2-point core p, along p's
@@ -328,8 +348,14 @@ static void offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index, bool p_i
     best->normal = p_is_a ? n : sx_neg(n);
 }
 
-static sx_real max_abs_coord(sx_vec2 a, sx_vec2 b) {
-    return sx_maxr(sx_maxr(sx_absr(a.x), sx_absr(a.y)), sx_maxr(sx_absr(b.x), sx_absr(b.y)));
+/* |x| as a maximum, which compiles without a branch (sx_absr's sign test
+ * does not, and the signs here are random). It differs from sx_absr only in
+ * the sign of a zero, which no maximum below can see. */
+static inline sx_real magnitude(sx_real x) { return x > -x ? x : -x; }
+
+static inline sx_real max_abs_coord(sx_vec2 a, sx_vec2 b) {
+    return sx_maxr(sx_maxr(magnitude(a.x), magnitude(a.y)),
+                   sx_maxr(magnitude(b.x), magnitude(b.y)));
 }
 
 /* Completes a sweep: a vertex-vertex result gets its distance (the sweep
@@ -550,7 +576,7 @@ static sx_real core_scale(const sx_core *c) {
     sx_real m = SX_R(0.0);
     int i;
     for (i = 0; i < c->count; ++i)
-        m = sx_maxr(m, sx_maxr(sx_absr(c->v[i].x), sx_absr(c->v[i].y)));
+        m = sx_maxr(m, sx_maxr(magnitude(c->v[i].x), magnitude(c->v[i].y)));
     return m;
 }
 
