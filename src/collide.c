@@ -26,8 +26,8 @@
 
 /* (x - x) is 0 for finite x and NaN otherwise: one comparison checks a
  * whole transform. */
-static bool xform_finite(sx_xform x) {
-    return (x.p.x - x.p.x) + (x.p.y - x.p.y) + (x.q.c - x.q.c) + (x.q.s - x.q.s) == SX_R(0.0);
+static inline bool xform_finite(sx_xform x) {
+    return ((x.p.x - x.p.x) + (x.p.y - x.p.y)) + ((x.q.c - x.q.c) + (x.q.s - x.q.s)) == SX_R(0.0);
 }
 
 /* B's placement in A's frame; false if either transform is not finite. */
@@ -167,7 +167,7 @@ static sx_vec2 circle_offset(const sx_circle *a, sx_xform xa, const sx_circle *b
  * points 1e-265 apart would compare as touching: there the test runs on d
  * and r scaled by d's largest component, which keeps it exact up to
  * rounding and still antisymmetric (d and -d scale alike). */
-static bool within_reach(sx_vec2 d, sx_real r) {
+static inline bool within_reach(sx_vec2 d, sx_real r) {
     sx_real m = sx_maxr(sx_absr(d.x), sx_absr(d.y)), k;
     if (!(m < SX_SQUARE_SAFE)) return sx_length_sq(d) <= r * r;
     if (m == SX_R(0.0)) return r >= SX_R(0.0);
@@ -175,11 +175,15 @@ static bool within_reach(sx_vec2 d, sx_real r) {
     return sx_length_sq(sx_v2(d.x / m, d.y / m)) <= k * k;
 }
 
+/* The checks of two circles whose offset and radii are already known to be
+ * within reach (a NaN anywhere fails that test): the answer "apart" needs no
+ * validation, since invalid input answers it too, so the checks run only on
+ * the pairs that touch. a and b are not NULL. */
 static bool circles_valid(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
-    return a != NULL && b != NULL && xform_finite(xa) && xform_finite(xb) &&
-           (a->center.x - a->center.x) + (a->center.y - a->center.y) + (b->center.x - b->center.x) +
-                   (b->center.y - b->center.y) + (a->radius - a->radius) +
-                   (b->radius - b->radius) ==
+    return xform_finite(xa) && xform_finite(xb) &&
+           (((a->center.x - a->center.x) + (a->center.y - a->center.y)) +
+            ((b->center.x - b->center.x) + (b->center.y - b->center.y))) +
+                   ((a->radius - a->radius) + (b->radius - b->radius)) ==
                SX_R(0.0) &&
            a->radius >= SX_R(0.0) && b->radius >= SX_R(0.0);
 }
@@ -213,12 +217,9 @@ static sx_vec2 circles_direction(const sx_circle *a, sx_xform xa, const sx_circl
 }
 
 bool sx_overlap_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
-    sx_vec2 d;
-    sx_real r;
-    if (!circles_valid(a, xa, b, xb)) return false;
-    d = circle_offset(a, xa, b, xb);
-    r = a->radius + b->radius;
-    return within_reach(d, r);
+    if (a == NULL || b == NULL) return false;
+    return within_reach(circle_offset(a, xa, b, xb), a->radius + b->radius) &&
+           circles_valid(a, xa, b, xb);
 }
 
 bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
@@ -226,10 +227,10 @@ bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xfor
     sx_vec2 d, n, v = sx_v2_zero();
     sx_real r, dist;
     bool hit = false;
-    if (circles_valid(a, xa, b, xb)) {
+    if (a != NULL && b != NULL) {
         d = circle_offset(a, xa, b, xb);
         r = a->radius + b->radius;
-        if (within_reach(d, r)) {
+        if (within_reach(d, r) && circles_valid(a, xa, b, xb)) {
             n = circles_direction(a, xa, b, xb, d, &dist);
             v = sx_scale(n, sx_minr(dist - r, SX_R(0.0)));
             hit = sx_vec2_is_finite(v);
@@ -242,16 +243,16 @@ bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xfor
 
 /* The body of sx_collide_circles, static so that the dispatch table's entry
  * can inline it (an exported function of a shared library cannot be). */
-static int collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
-                           sx_real margin, sx_manifold *m) {
+static inline int collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b,
+                                  sx_xform xb, sx_real margin, sx_manifold *m) {
     sx_vec2 d, n, ca;
     sx_real r, limit, dist;
     margin = clean_margin(margin);
-    if (circles_valid(a, xa, b, xb)) {
+    if (a != NULL && b != NULL) {
         d = circle_offset(a, xa, b, xb);
         r = a->radius + b->radius;
         limit = r + margin;
-        if (within_reach(d, limit)) {
+        if (within_reach(d, limit) && circles_valid(a, xa, b, xb)) {
             n = circles_direction(a, xa, b, xb, d, &dist);
             ca = sx_xform_point(xa, a->center);
             /* Midway between A's surface (ra along n) and B's (dist - rb). */
