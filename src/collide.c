@@ -243,8 +243,8 @@ bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xfor
 
 /* The body of sx_collide_circles, static so that the dispatch table's entry
  * can inline it (an exported function of a shared library cannot be). */
-static inline int collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b,
-                                  sx_xform xb, sx_real margin, sx_manifold *m) {
+static inline int collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                                  sx_real margin, sx_manifold *m) {
     sx_vec2 d, n, ca;
     sx_real r, limit, dist;
     margin = clean_margin(margin);

@@ -205,34 +205,42 @@ typedef struct sx_sat {
  * returns true with has_axes, face_a or face_b is a valid face: every
  * separation is then a number (-inf included) and the first face is always
  * taken. */
+/* The best face of p against q: the first of largest separation. Returns
+ * false as soon as a face separates by more than limit (or by NaN), with
+ * that separation in *stop. The running maximum is kept without a branch
+ * (its comparisons go either way at random); the face index follows it. */
+static inline bool best_face(const sx_core *p, const sx_core *q, sx_real limit, sx_real *sep,
+                             int *face, sx_real *stop) {
+    int i, n = face_count(p), f = 0;
+    sx_real best;
+    if (n == 0) {
+        *sep = SX_NO_SEPARATION;
+        *face = -1;
+        return true;
+    }
+    best = face_separation(p, 0, q);
+    if (!(best <= limit)) {
+        *stop = best;
+        return false;
+    }
+    for (i = 1; i < n; ++i) {
+        sx_real s = face_separation(p, i, q);
+        if (!(s <= limit)) {
+            *stop = s;
+            return false;
+        }
+        f = s > best ? i : f;
+        best = s > best ? s : best;
+    }
+    *sep = best;
+    *face = f;
+    return true;
+}
+
 static bool sat_run(const sx_core *a, const sx_core *b, sx_real limit, sx_sat *out) {
-    int i, na = face_count(a), nb = face_count(b);
-    out->sep_a = SX_NO_SEPARATION;
-    out->sep_b = SX_NO_SEPARATION;
-    out->face_a = -1;
-    out->face_b = -1;
-    for (i = 0; i < na; ++i) {
-        sx_real s = face_separation(a, i, b);
-        if (!(s <= limit)) {
-            out->sep = s;
-            return false;
-        }
-        if (out->face_a < 0 || s > out->sep_a) {
-            out->sep_a = s;
-            out->face_a = i;
-        }
-    }
-    for (i = 0; i < nb; ++i) {
-        sx_real s = face_separation(b, i, a);
-        if (!(s <= limit)) {
-            out->sep = s;
-            return false;
-        }
-        if (out->face_b < 0 || s > out->sep_b) {
-            out->sep_b = s;
-            out->face_b = i;
-        }
-    }
+    int na = face_count(a), nb = face_count(b);
+    if (!best_face(a, b, limit, &out->sep_a, &out->face_a, &out->sep)) return false;
+    if (!best_face(b, a, limit, &out->sep_b, &out->face_b, &out->sep)) return false;
     out->has_axes = na + nb > 0;
     out->axis = sx_v2_zero();
     if (out->face_a >= 0 && out->sep_a >= out->sep_b) {
@@ -659,19 +667,27 @@ int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_mani
 
 /* sat_run for b = the point c. */
 static bool point_sat(const sx_core *a, sx_vec2 c, sx_real limit, sx_sat *out) {
-    int i, n = face_count(a);
-    out->sep_a = SX_NO_SEPARATION;
+    int i, n = face_count(a), face = -1;
+    sx_real best = SX_NO_SEPARATION;
     out->sep_b = SX_NO_SEPARATION;
-    out->face_a = -1;
     out->face_b = -1;
-    for (i = 0; i < n; ++i) {
-        sx_real s = sx_dot(a->n[i], sx_sub(c, a->v[i]));
-        if (!(s <= limit)) return false; /* apart, or NaN: see sat_run */
-        if (out->face_a < 0 || s > out->sep_a) {
-            out->sep_a = s;
-            out->face_a = i;
+    if (n > 0) {
+        /* Every face, then one test: a point has few faces to skip, and the
+         * running maximum stays free of branches (as in best_face). */
+        bool bad;
+        best = sx_dot(a->n[0], sx_sub(c, a->v[0]));
+        bad = best != best;
+        face = 0;
+        for (i = 1; i < n; ++i) {
+            sx_real s = sx_dot(a->n[i], sx_sub(c, a->v[i]));
+            bad |= s != s;
+            face = s > best ? i : face;
+            best = s > best ? s : best;
         }
+        if (bad || !(best <= limit)) return false; /* apart, or NaN: see sat_run */
     }
+    out->sep_a = best;
+    out->face_a = face;
     out->has_axes = n > 0;
     out->sep = out->sep_a;
     out->axis = out->face_a >= 0 ? a->n[out->face_a] : sx_v2_zero();
