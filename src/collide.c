@@ -653,9 +653,11 @@ static bool is_axis_box(const sx_polygon *p) {
  * relative rotation is a multiple of 90 degrees (to within one epsilon of a
  * rotation component, i.e. below rounding). */
 static bool box_pair_aligned(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb) {
-    sx_rot q = sx_rot_inv_mul(xa.q, xb.q);
+    sx_rot q;
+    if (a == NULL || b == NULL || a->count != 4 || b->count != 4) return false;
+    q = sx_rot_inv_mul(xa.q, xb.q);
     if (!(sx_absr(q.s) <= SX_REAL_EPSILON || sx_absr(q.c) <= SX_REAL_EPSILON)) return false;
-    return a != NULL && b != NULL && is_axis_box(a) && is_axis_box(b);
+    return is_axis_box(a) && is_axis_box(b);
 }
 
 /* Fast path for two axis-aligned boxes whose relative rotation is a multiple

@@ -303,8 +303,8 @@ typedef struct sx_closest {
 
 /* Offers the pair (vertex q of one core, edge i of core p) to the sweep.
  * p_is_a says which core owns the edge. */
-static void offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index, bool p_is_a,
-                       sx_closest *best) {
+static inline void offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index, bool p_is_a,
+                              sx_closest *best) {
     int i2 = next_index(p, i);
     sx_vec2 v1 = p->v[i], e = sx_sub(p->v[i2], v1), w = sx_sub(q, v1);
     sx_real t = sx_dot(w, e);
@@ -492,11 +492,10 @@ static int clip_face(const sx_core *ref, int i, const sx_core *inc, sx_real marg
         sx_real lo = SX_REAL_MAX, lower, upper, d0, d1;
         int f = 0;
         for (j = 0; j < inc->count; ++j) {
+            /* The first of least d, kept without a branch. */
             sx_real d = sx_dot(inc->n[j], nref);
-            if (d < lo) {
-                lo = d;
-                f = j;
-            }
+            f = d < lo ? j : f;
+            lo = d < lo ? d : lo;
         }
         k[0] = f;
         k[1] = next_index(inc, f);
