@@ -30,9 +30,13 @@ static inline bool xform_finite(sx_xform x) {
     return ((x.p.x - x.p.x) + (x.p.y - x.p.y)) + ((x.q.c - x.q.c) + (x.q.s - x.q.s)) == SX_R(0.0);
 }
 
-/* B's placement in A's frame; false if either transform is not finite. */
+/* B's placement in A's frame; false if either transform is not finite.
+ * Checking the result is enough: each of its components is a sum of
+ * products that takes in every rotation component of both transforms (and
+ * both coordinates of the position difference, times a rotation component
+ * of A), so a NaN or infinity in xa or xb makes some component NaN or
+ * infinite (inf x 0 is NaN, inf x nonzero is infinite). */
 static bool relative_xform(sx_xform xa, sx_xform xb, sx_xform *rel) {
-    if (!xform_finite(xa) || !xform_finite(xb)) return false;
     *rel = sx_xform_inv_mul(xa, xb);
     return xform_finite(*rel);
 }
@@ -336,9 +340,12 @@ static int pair_collide(sx_core_builder *fa, const void *a, sx_xform xa, sx_core
  * without a core for B. */
 static bool circle_in_frame(const sx_circle *b, sx_xform xa, sx_xform xb, sx_vec2 *c) {
     if (b == NULL || !(b->radius >= SX_R(0.0)) || !sx_is_finite(b->radius) ||
-        !sx_vec2_is_finite(b->center) || !xform_finite(xa) || !xform_finite(xb)) {
+        !sx_vec2_is_finite(b->center) || !xform_finite(xb)) {
         return false;
     }
+    /* xa needs no check of its own: a NaN or infinity in it makes *c
+     * non-finite (both components of the inverse rotation take in both
+     * rotation components and both coordinates of the offset). */
     /* The world offset of the positions first (exact for nearby bodies far
      * from the origin), then B's rotated centre, then into A's frame. */
     *c = sx_inv_rotate(xa.q, sx_add(sx_sub(xb.p, xa.p), sx_rotate(xb.q, b->center)));

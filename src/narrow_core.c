@@ -92,6 +92,15 @@ bool sx_core_from_capsule(const sx_capsule *c, const sx_xform *x, sx_core *out) 
     return core_set_segment(c->a, c->b, c->radius, x, out);
 }
 
+/* Places vertex i of p and its normal into out's storage by *q; returns
+ * their finite_fold. */
+static inline sx_real place_vertex(const sx_xform *q, const sx_polygon *p, int i, sx_core *out) {
+    sx_vec2 v = sx_xform_point(*q, p->vertices[i]), m = sx_rotate(q->q, p->normals[i]);
+    out->vs[i] = v;
+    out->ns[i] = m;
+    return finite_fold(v, m);
+}
+
 bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) {
     sx_real acc = SX_R(0.0), acc1 = SX_R(0.0);
     int i, n;
@@ -112,16 +121,12 @@ bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) 
     } else {
         /* One pass places each vertex and normal and checks the result. */
         sx_xform q = *x;
-        for (i = 0; i < n; ++i) {
-            sx_vec2 v = sx_xform_point(q, p->vertices[i]), m = sx_rotate(q.q, p->normals[i]);
-            out->vs[i] = v;
-            out->ns[i] = m;
-            if (i & 1) {
-                acc1 += finite_fold(v, m);
-            } else {
-                acc += finite_fold(v, m);
-            }
+        /* Two sums (even and odd vertices): half the chain to wait on. */
+        for (i = 0; i + 1 < n; i += 2) {
+            acc += place_vertex(&q, p, i, out);
+            acc1 += place_vertex(&q, p, i + 1, out);
         }
+        if (i < n) acc += place_vertex(&q, p, i, out);
         out->v = out->vs;
         out->n = out->ns;
     }
