@@ -172,7 +172,7 @@ static sx_vec2 circle_offset(const sx_circle *a, sx_xform xa, const sx_circle *b
  * and r scaled by d's largest component, which keeps it exact up to
  * rounding and still antisymmetric (d and -d scale alike). */
 static inline bool within_reach(sx_vec2 d, sx_real r) {
-    sx_real m = sx_maxr(sx_absr(d.x), sx_absr(d.y)), k;
+    sx_real m = sx_maxr(sx_magnitude(d.x), sx_magnitude(d.y)), k;
     if (!(m < SX_SQUARE_SAFE)) return sx_length_sq(d) <= r * r;
     if (m == SX_R(0.0)) return r >= SX_R(0.0);
     k = r / m;
@@ -213,7 +213,8 @@ static sx_vec2 circles_direction(const sx_circle *a, sx_xform xa, const sx_circl
                                  sx_vec2 d, sx_real *dist) {
     sx_real r = a->radius + b->radius;
     *dist = sx_sqrt(sx_length_sq(d));
-    if (*dist > SX_R(64.0) * SX_REAL_EPSILON * sx_maxr(r, sx_maxr(sx_absr(d.x), sx_absr(d.y)))) {
+    if (*dist >
+        SX_R(64.0) * SX_REAL_EPSILON * sx_maxr(r, sx_maxr(sx_magnitude(d.x), sx_magnitude(d.y)))) {
         return sx_scale(d, SX_R(1.0) / *dist);
     }
     if (order_circles(a, xa, b, xb) > 0) return sx_v2(-xb.q.c, -xb.q.s);
@@ -663,7 +664,9 @@ static bool box_pair_aligned(const sx_polygon *a, sx_xform xa, const sx_polygon 
     sx_rot q;
     if (a == NULL || b == NULL || a->count != 4 || b->count != 4) return false;
     q = sx_rot_inv_mul(xa.q, xb.q);
-    if (!(sx_absr(q.s) <= SX_REAL_EPSILON || sx_absr(q.c) <= SX_REAL_EPSILON)) return false;
+    if (!(sx_magnitude(q.s) <= SX_REAL_EPSILON || sx_magnitude(q.c) <= SX_REAL_EPSILON)) {
+        return false;
+    }
     return is_axis_box(a) && is_axis_box(b);
 }
 

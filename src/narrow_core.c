@@ -361,14 +361,9 @@ static inline void offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index, b
     best->normal = p_is_a ? n : sx_neg(n);
 }
 
-/* |x| as a maximum, which compiles without a branch (sx_absr's sign test
- * does not, and the signs here are random). It differs from sx_absr only in
- * the sign of a zero, which no maximum below can see. */
-static inline sx_real magnitude(sx_real x) { return x > -x ? x : -x; }
-
 static inline sx_real max_abs_coord(sx_vec2 a, sx_vec2 b) {
-    return sx_maxr(sx_maxr(magnitude(a.x), magnitude(a.y)),
-                   sx_maxr(magnitude(b.x), magnitude(b.y)));
+    return sx_maxr(sx_maxr(sx_magnitude(a.x), sx_magnitude(a.y)),
+                   sx_maxr(sx_magnitude(b.x), sx_magnitude(b.y)));
 }
 
 /* Completes a sweep: a vertex-vertex result gets its distance (the sweep
@@ -588,7 +583,7 @@ static sx_real core_scale(const sx_core *c) {
     sx_real m = SX_R(0.0);
     int i;
     for (i = 0; i < c->count; ++i)
-        m = sx_maxr(m, sx_maxr(magnitude(c->v[i].x), magnitude(c->v[i].y)));
+        m = sx_maxr(m, sx_maxr(sx_magnitude(c->v[i].x), sx_magnitude(c->v[i].y)));
     return m;
 }
 
@@ -601,7 +596,7 @@ static sx_real core_scale(const sx_core *c) {
 
 static bool gap_is_clear(const sx_core *a, const sx_core *b, sx_real gap) {
     sx_real scale = sx_maxr(sx_maxr(core_scale(a), core_scale(b)), a->radius + b->radius);
-    return sx_absr(gap) > SX_ORDER_RESCUE + SX_ORDER_ROUNDING * scale;
+    return sx_magnitude(gap) > SX_ORDER_RESCUE + SX_ORDER_ROUNDING * scale;
 }
 
 int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_manifold *out,
