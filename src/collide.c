@@ -26,13 +26,17 @@
 
 /* (x - x) is 0 for finite x and NaN otherwise: one comparison checks a
  * whole transform. */
-static bool xform_finite(sx_xform x) {
-    return (x.p.x - x.p.x) + (x.p.y - x.p.y) + (x.q.c - x.q.c) + (x.q.s - x.q.s) == SX_R(0.0);
+static inline bool xform_finite(sx_xform x) {
+    return ((x.p.x - x.p.x) + (x.p.y - x.p.y)) + ((x.q.c - x.q.c) + (x.q.s - x.q.s)) == SX_R(0.0);
 }
 
-/* B's placement in A's frame; false if either transform is not finite. */
+/* B's placement in A's frame; false if either transform is not finite.
+ * Checking the result is enough: each of its components is a sum of
+ * products that takes in every rotation component of both transforms (and
+ * both coordinates of the position difference, times a rotation component
+ * of A), so a NaN or infinity in xa or xb makes some component NaN or
+ * infinite (inf x 0 is NaN, inf x nonzero is infinite). */
 static bool relative_xform(sx_xform xa, sx_xform xb, sx_xform *rel) {
-    if (!xform_finite(xa) || !xform_finite(xb)) return false;
     *rel = sx_xform_inv_mul(xa, xb);
     return xform_finite(*rel);
 }
@@ -167,19 +171,23 @@ static sx_vec2 circle_offset(const sx_circle *a, sx_xform xa, const sx_circle *b
  * points 1e-265 apart would compare as touching: there the test runs on d
  * and r scaled by d's largest component, which keeps it exact up to
  * rounding and still antisymmetric (d and -d scale alike). */
-static bool within_reach(sx_vec2 d, sx_real r) {
-    sx_real m = sx_maxr(sx_absr(d.x), sx_absr(d.y)), k;
+static inline bool within_reach(sx_vec2 d, sx_real r) {
+    sx_real m = sx_maxr(sx_magnitude(d.x), sx_magnitude(d.y)), k;
     if (!(m < SX_SQUARE_SAFE)) return sx_length_sq(d) <= r * r;
     if (m == SX_R(0.0)) return r >= SX_R(0.0);
     k = r / m;
     return sx_length_sq(sx_v2(d.x / m, d.y / m)) <= k * k;
 }
 
+/* The checks of two circles whose offset and radii are already known to be
+ * within reach (a NaN anywhere fails that test): the answer "apart" needs no
+ * validation, since invalid input answers it too, so the checks run only on
+ * the pairs that touch. a and b are not NULL. */
 static bool circles_valid(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
-    return a != NULL && b != NULL && xform_finite(xa) && xform_finite(xb) &&
-           (a->center.x - a->center.x) + (a->center.y - a->center.y) + (b->center.x - b->center.x) +
-                   (b->center.y - b->center.y) + (a->radius - a->radius) +
-                   (b->radius - b->radius) ==
+    return xform_finite(xa) && xform_finite(xb) &&
+           (((a->center.x - a->center.x) + (a->center.y - a->center.y)) +
+            ((b->center.x - b->center.x) + (b->center.y - b->center.y))) +
+                   ((a->radius - a->radius) + (b->radius - b->radius)) ==
                SX_R(0.0) &&
            a->radius >= SX_R(0.0) && b->radius >= SX_R(0.0);
 }
@@ -205,7 +213,8 @@ static sx_vec2 circles_direction(const sx_circle *a, sx_xform xa, const sx_circl
                                  sx_vec2 d, sx_real *dist) {
     sx_real r = a->radius + b->radius;
     *dist = sx_sqrt(sx_length_sq(d));
-    if (*dist > SX_R(64.0) * SX_REAL_EPSILON * sx_maxr(r, sx_maxr(sx_absr(d.x), sx_absr(d.y)))) {
+    if (*dist >
+        SX_R(64.0) * SX_REAL_EPSILON * sx_maxr(r, sx_maxr(sx_magnitude(d.x), sx_magnitude(d.y)))) {
         return sx_scale(d, SX_R(1.0) / *dist);
     }
     if (order_circles(a, xa, b, xb) > 0) return sx_v2(-xb.q.c, -xb.q.s);
@@ -213,12 +222,9 @@ static sx_vec2 circles_direction(const sx_circle *a, sx_xform xa, const sx_circl
 }
 
 bool sx_overlap_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
-    sx_vec2 d;
-    sx_real r;
-    if (!circles_valid(a, xa, b, xb)) return false;
-    d = circle_offset(a, xa, b, xb);
-    r = a->radius + b->radius;
-    return within_reach(d, r);
+    if (a == NULL || b == NULL) return false;
+    return within_reach(circle_offset(a, xa, b, xb), a->radius + b->radius) &&
+           circles_valid(a, xa, b, xb);
 }
 
 bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
@@ -226,10 +232,10 @@ bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xfor
     sx_vec2 d, n, v = sx_v2_zero();
     sx_real r, dist;
     bool hit = false;
-    if (circles_valid(a, xa, b, xb)) {
+    if (a != NULL && b != NULL) {
         d = circle_offset(a, xa, b, xb);
         r = a->radius + b->radius;
-        if (within_reach(d, r)) {
+        if (within_reach(d, r) && circles_valid(a, xa, b, xb)) {
             n = circles_direction(a, xa, b, xb, d, &dist);
             v = sx_scale(n, sx_minr(dist - r, SX_R(0.0)));
             hit = sx_vec2_is_finite(v);
@@ -242,16 +248,16 @@ bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xfor
 
 /* The body of sx_collide_circles, static so that the dispatch table's entry
  * can inline it (an exported function of a shared library cannot be). */
-static int collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
-                           sx_real margin, sx_manifold *m) {
+static inline int collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                                  sx_real margin, sx_manifold *m) {
     sx_vec2 d, n, ca;
     sx_real r, limit, dist;
     margin = clean_margin(margin);
-    if (circles_valid(a, xa, b, xb)) {
+    if (a != NULL && b != NULL) {
         d = circle_offset(a, xa, b, xb);
         r = a->radius + b->radius;
         limit = r + margin;
-        if (within_reach(d, limit)) {
+        if (within_reach(d, limit) && circles_valid(a, xa, b, xb)) {
             n = circles_direction(a, xa, b, xb, d, &dist);
             ca = sx_xform_point(xa, a->center);
             /* Midway between A's surface (ra along n) and B's (dist - rb). */
@@ -335,9 +341,12 @@ static int pair_collide(sx_core_builder *fa, const void *a, sx_xform xa, sx_core
  * without a core for B. */
 static bool circle_in_frame(const sx_circle *b, sx_xform xa, sx_xform xb, sx_vec2 *c) {
     if (b == NULL || !(b->radius >= SX_R(0.0)) || !sx_is_finite(b->radius) ||
-        !sx_vec2_is_finite(b->center) || !xform_finite(xa) || !xform_finite(xb)) {
+        !sx_vec2_is_finite(b->center) || !xform_finite(xb)) {
         return false;
     }
+    /* xa needs no check of its own: a NaN or infinity in it makes *c
+     * non-finite (both components of the inverse rotation take in both
+     * rotation components and both coordinates of the offset). */
     /* The world offset of the positions first (exact for nearby bodies far
      * from the origin), then B's rotated centre, then into A's frame. */
     *c = sx_inv_rotate(xa.q, sx_add(sx_sub(xb.p, xa.p), sx_rotate(xb.q, b->center)));
@@ -652,9 +661,13 @@ static bool is_axis_box(const sx_polygon *p) {
  * relative rotation is a multiple of 90 degrees (to within one epsilon of a
  * rotation component, i.e. below rounding). */
 static bool box_pair_aligned(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb) {
-    sx_rot q = sx_rot_inv_mul(xa.q, xb.q);
-    if (!(sx_absr(q.s) <= SX_REAL_EPSILON || sx_absr(q.c) <= SX_REAL_EPSILON)) return false;
-    return a != NULL && b != NULL && is_axis_box(a) && is_axis_box(b);
+    sx_rot q;
+    if (a == NULL || b == NULL || a->count != 4 || b->count != 4) return false;
+    q = sx_rot_inv_mul(xa.q, xb.q);
+    if (!(sx_magnitude(q.s) <= SX_REAL_EPSILON || sx_magnitude(q.c) <= SX_REAL_EPSILON)) {
+        return false;
+    }
+    return is_axis_box(a) && is_axis_box(b);
 }
 
 /* Fast path for two axis-aligned boxes whose relative rotation is a multiple

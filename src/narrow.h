@@ -22,6 +22,12 @@
 #define SX_SQUARE_SAFE 3e-16f
 #endif
 
+/* |x| as a maximum, which compiles without a branch (sx_absr's sign test
+ * does not, and in the narrowphase the signs are random, so that test
+ * mispredicts half the time). It differs from sx_absr only in the sign of
+ * a zero: use it where only comparisons and maxima see the result. */
+static inline sx_real sx_magnitude(sx_real x) { return x > -x ? x : -x; }
+
 /** A convex core plus radius, in some working frame. Pass it by pointer
  *  only: v and n may point into its own storage. */
 typedef struct sx_core {

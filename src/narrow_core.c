@@ -51,8 +51,10 @@ static bool core_radius_ok(sx_real r) { return sx_is_finite(r) && r >= SX_R(0.0)
 /* (x - x) summed over the coordinates of a vertex and its normal: exactly 0
  * when all are finite, NaN otherwise. Summed over a polygon, one branch
  * checks it whole. */
-static sx_real finite_fold(sx_vec2 v, sx_vec2 m) {
-    return (v.x - v.x) + (v.y - v.y) + (m.x - m.x) + (m.y - m.y);
+static inline sx_real finite_fold(sx_vec2 v, sx_vec2 m) {
+    /* Grouped as a tree: the sums are 0 or NaN whatever the grouping, and
+     * a chain of dependent additions is what this loop would wait on. */
+    return ((v.x - v.x) + (v.y - v.y)) + ((m.x - m.x) + (m.y - m.y));
 }
 
 /* Builds the 2-point core a-b (or a 1-point core when a-b has no direction).
@@ -90,8 +92,17 @@ bool sx_core_from_capsule(const sx_capsule *c, const sx_xform *x, sx_core *out) 
     return core_set_segment(c->a, c->b, c->radius, x, out);
 }
 
+/* Places vertex i of p and its normal into out's storage by *q; returns
+ * their finite_fold. */
+static inline sx_real place_vertex(const sx_xform *q, const sx_polygon *p, int i, sx_core *out) {
+    sx_vec2 v = sx_xform_point(*q, p->vertices[i]), m = sx_rotate(q->q, p->normals[i]);
+    out->vs[i] = v;
+    out->ns[i] = m;
+    return finite_fold(v, m);
+}
+
 bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) {
-    sx_real acc = SX_R(0.0);
+    sx_real acc = SX_R(0.0), acc1 = SX_R(0.0);
     int i, n;
     if (p == NULL || !core_radius_ok(p->radius)) return false;
     n = p->count;
@@ -102,21 +113,24 @@ bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) 
         /* Shape A is read in place: no copy. */
         out->v = p->vertices;
         out->n = p->normals;
-        for (i = 0; i < n; ++i)
+        for (i = 0; i + 1 < n; i += 2) {
             acc += finite_fold(p->vertices[i], p->normals[i]);
+            acc1 += finite_fold(p->vertices[i + 1], p->normals[i + 1]);
+        }
+        if (i < n) acc += finite_fold(p->vertices[i], p->normals[i]);
     } else {
         /* One pass places each vertex and normal and checks the result. */
         sx_xform q = *x;
-        for (i = 0; i < n; ++i) {
-            sx_vec2 v = sx_xform_point(q, p->vertices[i]), m = sx_rotate(q.q, p->normals[i]);
-            out->vs[i] = v;
-            out->ns[i] = m;
-            acc += finite_fold(v, m);
+        /* Two sums (even and odd vertices): half the chain to wait on. */
+        for (i = 0; i + 1 < n; i += 2) {
+            acc += place_vertex(&q, p, i, out);
+            acc1 += place_vertex(&q, p, i + 1, out);
         }
+        if (i < n) acc += place_vertex(&q, p, i, out);
         out->v = out->vs;
         out->n = out->ns;
     }
-    return acc == SX_R(0.0);
+    return acc + acc1 == SX_R(0.0);
 }
 
 /* ---- separating axes ---------------------------------------------------- */
@@ -126,22 +140,33 @@ static int face_count(const sx_core *c) { return c->count >= 2 ? c->count : 0; }
 static int next_index(const sx_core *c, int i) { return i + 1 < c->count ? i + 1 : 0; }
 
 /* Separation of q from face i of p: how far q's nearest point lies in front
- * of the face's line (negative: q reaches behind it). */
+ * of the face's line (negative: q reaches behind it). The loop is
+ * branch-free (running minima and a running NaN flag), which matters: it is
+ * the inner loop of every polygon pair. A NaN (a 0 x inf product of cores
+ * beyond the range) makes the separation unknown, and NaN says so to
+ * sat_run. */
 static inline sx_real face_separation(const sx_core *p, int i, const sx_core *q) {
     sx_vec2 n = p->n[i], v = p->v[i];
-    sx_real best = SX_REAL_MAX;
-    int j;
-    for (j = 0; j < q->count; ++j) {
-        sx_real d = sx_dot(n, sx_sub(q->v[j], v));
-        if (d < best) {
-            best = d;
-        } else if (d != d) {
-            /* Overflow (a 0 x inf product of cores beyond the range): the
-             * separation is unknown, and NaN says so to sat_run. */
-            return d;
-        }
+    const sx_vec2 *qv = q->v;
+    sx_real best0 = SX_REAL_MAX, best1 = SX_REAL_MAX, d0, d1;
+    int j, count = q->count;
+    bool nan = false;
+    /* Two independent minima (even and odd vertices) halve the dependency
+     * chain; an odd count repeats the last vertex. */
+    for (j = 0; j + 1 < count; j += 2) {
+        d0 = sx_dot(n, sx_sub(qv[j], v));
+        d1 = sx_dot(n, sx_sub(qv[j + 1], v));
+        nan |= (d0 != d0) | (d1 != d1);
+        best0 = d0 < best0 ? d0 : best0;
+        best1 = d1 < best1 ? d1 : best1;
     }
-    return best;
+    if (j < count) {
+        d0 = sx_dot(n, sx_sub(qv[j], v));
+        nan |= d0 != d0;
+        best0 = d0 < best0 ? d0 : best0;
+    }
+    if (nan) return (sx_real)NAN;
+    return best1 < best0 ? best1 : best0;
 }
 
 /* Separation of q from the end caps of the 2-point core p, along p's
@@ -185,34 +210,42 @@ typedef struct sx_sat {
  * returns true with has_axes, face_a or face_b is a valid face: every
  * separation is then a number (-inf included) and the first face is always
  * taken. */
+/* The best face of p against q: the first of largest separation. Returns
+ * false as soon as a face separates by more than limit (or by NaN), with
+ * that separation in *stop. The running maximum is kept without a branch
+ * (its comparisons go either way at random); the face index follows it. */
+static inline bool best_face(const sx_core *p, const sx_core *q, sx_real limit, sx_real *sep,
+                             int *face, sx_real *stop) {
+    int i, n = face_count(p), f = 0;
+    sx_real best;
+    if (n == 0) {
+        *sep = SX_NO_SEPARATION;
+        *face = -1;
+        return true;
+    }
+    best = face_separation(p, 0, q);
+    if (!(best <= limit)) {
+        *stop = best;
+        return false;
+    }
+    for (i = 1; i < n; ++i) {
+        sx_real s = face_separation(p, i, q);
+        if (!(s <= limit)) {
+            *stop = s;
+            return false;
+        }
+        f = s > best ? i : f;
+        best = s > best ? s : best;
+    }
+    *sep = best;
+    *face = f;
+    return true;
+}
+
 static bool sat_run(const sx_core *a, const sx_core *b, sx_real limit, sx_sat *out) {
-    int i, na = face_count(a), nb = face_count(b);
-    out->sep_a = SX_NO_SEPARATION;
-    out->sep_b = SX_NO_SEPARATION;
-    out->face_a = -1;
-    out->face_b = -1;
-    for (i = 0; i < na; ++i) {
-        sx_real s = face_separation(a, i, b);
-        if (!(s <= limit)) {
-            out->sep = s;
-            return false;
-        }
-        if (out->face_a < 0 || s > out->sep_a) {
-            out->sep_a = s;
-            out->face_a = i;
-        }
-    }
-    for (i = 0; i < nb; ++i) {
-        sx_real s = face_separation(b, i, a);
-        if (!(s <= limit)) {
-            out->sep = s;
-            return false;
-        }
-        if (out->face_b < 0 || s > out->sep_b) {
-            out->sep_b = s;
-            out->face_b = i;
-        }
-    }
+    int na = face_count(a), nb = face_count(b);
+    if (!best_face(a, b, limit, &out->sep_a, &out->face_a, &out->sep)) return false;
+    if (!best_face(b, a, limit, &out->sep_b, &out->face_b, &out->sep)) return false;
     out->has_axes = na + nb > 0;
     out->axis = sx_v2_zero();
     if (out->face_a >= 0 && out->sep_a >= out->sep_b) {
@@ -275,8 +308,8 @@ typedef struct sx_closest {
 
 /* Offers the pair (vertex q of one core, edge i of core p) to the sweep.
  * p_is_a says which core owns the edge. */
-static void offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index, bool p_is_a,
-                       sx_closest *best) {
+static inline void offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index, bool p_is_a,
+                              sx_closest *best) {
     int i2 = next_index(p, i);
     sx_vec2 v1 = p->v[i], e = sx_sub(p->v[i2], v1), w = sx_sub(q, v1);
     sx_real t = sx_dot(w, e);
@@ -328,8 +361,9 @@ static void offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index, bool p_i
     best->normal = p_is_a ? n : sx_neg(n);
 }
 
-static sx_real max_abs_coord(sx_vec2 a, sx_vec2 b) {
-    return sx_maxr(sx_maxr(sx_absr(a.x), sx_absr(a.y)), sx_maxr(sx_absr(b.x), sx_absr(b.y)));
+static inline sx_real max_abs_coord(sx_vec2 a, sx_vec2 b) {
+    return sx_maxr(sx_maxr(sx_magnitude(a.x), sx_magnitude(a.y)),
+                   sx_maxr(sx_magnitude(b.x), sx_magnitude(b.y)));
 }
 
 /* Completes a sweep: a vertex-vertex result gets its distance (the sweep
@@ -458,11 +492,10 @@ static int clip_face(const sx_core *ref, int i, const sx_core *inc, sx_real marg
         sx_real lo = SX_REAL_MAX, lower, upper, d0, d1;
         int f = 0;
         for (j = 0; j < inc->count; ++j) {
+            /* The first of least d, kept without a branch. */
             sx_real d = sx_dot(inc->n[j], nref);
-            if (d < lo) {
-                lo = d;
-                f = j;
-            }
+            f = d < lo ? j : f;
+            lo = d < lo ? d : lo;
         }
         k[0] = f;
         k[1] = next_index(inc, f);
@@ -550,7 +583,7 @@ static sx_real core_scale(const sx_core *c) {
     sx_real m = SX_R(0.0);
     int i;
     for (i = 0; i < c->count; ++i)
-        m = sx_maxr(m, sx_maxr(sx_absr(c->v[i].x), sx_absr(c->v[i].y)));
+        m = sx_maxr(m, sx_maxr(sx_magnitude(c->v[i].x), sx_magnitude(c->v[i].y)));
     return m;
 }
 
@@ -563,7 +596,7 @@ static sx_real core_scale(const sx_core *c) {
 
 static bool gap_is_clear(const sx_core *a, const sx_core *b, sx_real gap) {
     sx_real scale = sx_maxr(sx_maxr(core_scale(a), core_scale(b)), a->radius + b->radius);
-    return sx_absr(gap) > SX_ORDER_RESCUE + SX_ORDER_ROUNDING * scale;
+    return sx_magnitude(gap) > SX_ORDER_RESCUE + SX_ORDER_ROUNDING * scale;
 }
 
 int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_manifold *out,
@@ -633,19 +666,27 @@ int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_mani
 
 /* sat_run for b = the point c. */
 static bool point_sat(const sx_core *a, sx_vec2 c, sx_real limit, sx_sat *out) {
-    int i, n = face_count(a);
-    out->sep_a = SX_NO_SEPARATION;
+    int i, n = face_count(a), face = -1;
+    sx_real best = SX_NO_SEPARATION;
     out->sep_b = SX_NO_SEPARATION;
-    out->face_a = -1;
     out->face_b = -1;
-    for (i = 0; i < n; ++i) {
-        sx_real s = sx_dot(a->n[i], sx_sub(c, a->v[i]));
-        if (!(s <= limit)) return false; /* apart, or NaN: see sat_run */
-        if (out->face_a < 0 || s > out->sep_a) {
-            out->sep_a = s;
-            out->face_a = i;
+    if (n > 0) {
+        /* Every face, then one test: a point has few faces to skip, and the
+         * running maximum stays free of branches (as in best_face). */
+        bool bad;
+        best = sx_dot(a->n[0], sx_sub(c, a->v[0]));
+        bad = best != best;
+        face = 0;
+        for (i = 1; i < n; ++i) {
+            sx_real s = sx_dot(a->n[i], sx_sub(c, a->v[i]));
+            bad |= s != s;
+            face = s > best ? i : face;
+            best = s > best ? s : best;
         }
+        if (bad || !(best <= limit)) return false; /* apart, or NaN: see sat_run */
     }
+    out->sep_a = best;
+    out->face_a = face;
     out->has_axes = n > 0;
     out->sep = out->sep_a;
     out->axis = out->face_a >= 0 ? a->n[out->face_a] : sx_v2_zero();
