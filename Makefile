@@ -294,16 +294,20 @@ bench-smoke: bench-ecs-smoke
 
 # ---- fuzzing -----------------------------------------------------------------
 
-# make fuzz [FUZZ_SECONDS=60] [SX_REAL=double]: builds every fuzz/fuzz_<h>.c
+# make fuzz [FUZZ_SECONDS=60] [FUZZ_RUNS=N] [FUZZ_HARNESSES="world ..."]
+# [SX_REAL=double]: builds every fuzz/fuzz_<h>.c
 # with clang's libFuzzer under ASan + UBSan (the library too, so its branches
 # guide the fuzzer) and runs each for FUZZ_SECONDS on a copy of
 # fuzz/corpus/<h>/. A broken invariant aborts and leaves the input in
 # build/fuzz[-double]/crash-<h>-* (FUZZ_FLAGS="-fork=1 -ignore_crashes=1"
-# keeps fuzzing past failures). make fuzz-merge adds the inputs a run found
-# that bring new coverage to fuzz/corpus/<h>/ (keep that small).
+# keeps fuzzing past failures; FUZZ_RUNS=10000000 stops each harness after
+# that many executions, or at FUZZ_SECONDS if that comes first). make
+# fuzz-merge adds the inputs a run found that bring new coverage to
+# fuzz/corpus/<h>/ (keep that small).
 .PHONY: fuzz fuzz-build fuzz-merge deps-fuzz
 FUZZ_SECONDS ?= 60
 FUZZ_FLAGS ?=
+FUZZ_RUNS ?=
 FUZZ_CC ?= clang
 FUZZ_HARNESSES := $(sort $(patsubst fuzz/fuzz_%.c,%,$(wildcard fuzz/fuzz_*.c)))
 FUZZ_OUT := build/fuzz$(if $(filter double,$(SX_REAL)),-double)
@@ -331,7 +335,8 @@ fuzz: $(FUZZ_BINS)
 	  if [ -d fuzz/corpus/$$h ]; then cp fuzz/corpus/$$h/* $$work/ 2>/dev/null; fi; \
 	  log=$(FUZZ_OUT)/$$h.log; \
 	  if ./$(FUZZ_OUT)/fuzz_$$h -max_total_time=$(FUZZ_SECONDS) -max_len=1024 -timeout=10 \
-	       -print_final_stats=1 -artifact_prefix=$(FUZZ_OUT)/crash-$$h- $(FUZZ_FLAGS) $$work \
+	       -print_final_stats=1 -artifact_prefix=$(FUZZ_OUT)/crash-$$h- \
+	       $(if $(FUZZ_RUNS),-runs=$(FUZZ_RUNS)) $(FUZZ_FLAGS) $$work \
 	       > $$log 2>&1; \
 	  then verdict=clean; else failed=$$((failed + 1)); \
 	    verdict="FAILED: $$(grep -m1 -E 'invariant broken|ERROR:|runtime error' $$log | cut -c1-160) (see $$log)"; fi; \
