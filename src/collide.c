@@ -203,10 +203,22 @@ static int order_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx
  * it (so the swapped call gets exactly the reversed direction). */
 static sx_vec2 circles_direction(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                                  sx_vec2 d, sx_real *dist) {
-    sx_real r = a->radius + b->radius;
-    *dist = sx_sqrt(sx_length_sq(d));
-    if (*dist > SX_R(64.0) * SX_REAL_EPSILON * sx_maxr(r, sx_maxr(sx_absr(d.x), sx_absr(d.y)))) {
-        return sx_scale(d, SX_R(1.0) / *dist);
+    sx_real r = a->radius + b->radius, m = sx_maxr(sx_absr(d.x), sx_absr(d.y));
+    if (m < SX_SQUARE_SAFE && m > SX_R(0.0)) {
+        /* The square would underflow to a denormal of few bits (centres
+         * 1.9e-22 apart in float gave a normal of length 0.994): length
+         * and direction of d scaled by its largest component instead. */
+        sx_vec2 u = sx_v2(d.x / m, d.y / m);
+        sx_real len = sx_length(u);
+        *dist = m * len;
+        if (*dist > SX_R(64.0) * SX_REAL_EPSILON * sx_maxr(r, m)) {
+            return sx_scale(u, SX_R(1.0) / len);
+        }
+    } else {
+        *dist = sx_sqrt(sx_length_sq(d));
+        if (*dist > SX_R(64.0) * SX_REAL_EPSILON * sx_maxr(r, m)) {
+            return sx_scale(d, SX_R(1.0) / *dist);
+        }
     }
     if (order_circles(a, xa, b, xb) > 0) return sx_v2(-xb.q.c, -xb.q.s);
     return sx_v2(xa.q.c, xa.q.s);

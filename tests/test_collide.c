@@ -1184,6 +1184,36 @@ static void tiny_box_on_a_far_corner_touches_in_both_orders(void **state) {
     }
 }
 
+/* Regression (make fuzz, harness collide, input
+ * collide-point-circles-denormal-normal): two point circles 1.9e-22 apart
+ * (float) with a speculative margin. The squared distance, 3.6e-44, is a
+ * denormal with a few bits left, so the normal d / |d| came out 0.6 % short
+ * of unit length. Below SX_SQUARE_SAFE the direction is now taken from d
+ * scaled by its largest component. */
+static void speculative_circles_closer_than_square_underflow_get_a_unit_normal(void **state) {
+#ifdef SX_DOUBLE
+    const double t = 1.89755227e-160;
+#else
+    const double t = 1.89755227e-22;
+#endif
+    sx_shape p0 = sx_point_shape(sx_v2_zero()), p1 = sx_point_shape(sx_v2_zero());
+    sx_xform xa = I(), xb;
+    sx_manifold m;
+    int order;
+    (void)state;
+    xb.p = V(0.0, -t);
+    xb.q.c = (sx_real)-0.986081779;
+    xb.q.s = (sx_real)-0.166261062;
+    for (order = 0; order < 2; ++order) {
+        int n = order ? sx_collide_ex(&p1, xb, &p0, xa, SX_R(3.125), &m)
+                      : sx_collide_ex(&p0, xa, &p1, xb, SX_R(3.125), &m);
+        assert_int_equal(n, 1);
+        assert_near(sx_length(m.normal), 1.0, 64.0 * (double)SX_REAL_EPSILON);
+        assert_near(m.normal.y, order ? 1.0 : -1.0, 64.0 * (double)SX_REAL_EPSILON);
+        assert_near(m.points[0].depth, -t, 1e-6 * t);
+    }
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(circles_separated_touching_and_overlapping),
@@ -1235,6 +1265,7 @@ int main(void) {
         cmocka_unit_test(a_speculative_margin_never_reports_fewer_points_than_margin_0),
         cmocka_unit_test(circles_closer_than_square_underflow_compare_exactly),
         cmocka_unit_test(tiny_box_on_a_far_corner_touches_in_both_orders),
+        cmocka_unit_test(speculative_circles_closer_than_square_underflow_get_a_unit_normal),
     };
     return cmocka_run_group_tests_name("collide", tests, sx_test_group_setup,
                                        sx_test_group_teardown);
