@@ -504,6 +504,9 @@ sx_status sx_decompose_polygon_ex(const sx_vec2 *points, int count, sx_real weld
         (void)piece_valid(&w, idx, w.pcount[i], &h);
         if (sx_polygon_from_hull(&h, SX_R(0.0), &parts[roots]) == SX_OK) ++roots;
     }
+    /* Far beyond SX_HUGE every piece can fail sx_polygon_from_hull (its
+     * area overflows): no part is no decomposition. */
+    if (roots == 0) return SX_ERR_DEGENERATE;
     *part_count = roots;
     if (triangle_count != NULL) *triangle_count = nt;
     return SX_OK;

@@ -680,6 +680,56 @@ static void outline_pinched_below_the_weld_tolerance_is_refused(void **state) {
     }
 }
 
+/* Regression (make fuzz, harness decompose, input
+ * decompose-ok-without-parts-beyond-huge): an outline with points at 1e24,
+ * 1.8e19 and 3.3e35 (far beyond SX_HUGE) next to points at 1e-2 and 16
+ * passed the cleaning and the ear clipping, but its one piece failed
+ * sx_polygon_from_hull, and the call returned SX_OK with 0 parts. A
+ * decomposition without a part is SX_ERR_DEGENERATE now. */
+static void an_outline_whose_parts_all_fail_is_degenerate(void **state) {
+    const float xy[] = {0x1.cececep+79f,
+                        0x1.cececep+79f,
+                        0x1.b05002p-126f,
+                        0.0f,
+                        -16.0f,
+                        0.0f,
+                        -8.5f,
+                        -11.0f,
+                        0x1.fffffep+63f,
+                        -0x1.a02752p-7f,
+                        -0x1.a02d52p-7f,
+                        -0x1.a03352p-7f,
+                        -0x1.a03952p-7f,
+                        -0x1.a03f52p-7f,
+                        -0x1.a04552p-7f,
+                        -0x1.a04b52p-7f,
+                        0x1.cececep+79f,
+                        0x1.cececep+79f,
+                        0x1.f4cecep+117f,
+                        0x1.f4ceb6p+117f,
+                        0.0f,
+                        -16.0f,
+                        -16.0f,
+                        -16.0f};
+    sx_vec2 p[12];
+    decomp d;
+    int i;
+    (void)state;
+    for (i = 0; i < 12; ++i)
+        p[i] = sx_v2((sx_real)xy[2 * i], (sx_real)xy[2 * i + 1]);
+    run_decompose(p, 12, &d);
+    if (d.status == SX_OK) {
+        assert_true(d.part_count >= 1 && d.part_count <= 10);
+        for (i = 0; i < d.part_count; ++i)
+            assert_int_equal(sx_shape_validate(&d.parts[i]), SX_OK);
+    } else {
+        assert_int_equal(d.part_count, 0);
+    }
+#ifndef SX_DOUBLE
+    assert_int_equal(d.status, SX_ERR_DEGENERATE); /* the float case found */
+#endif
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(l_shape_splits_into_two_parts),
@@ -701,6 +751,7 @@ int main(void) {
         cmocka_unit_test(point_in_outline_follows_the_winding_number),
         cmocka_unit_test(a_spike_whose_base_is_below_the_tolerance_is_dropped),
         cmocka_unit_test(outline_pinched_below_the_weld_tolerance_is_refused),
+        cmocka_unit_test(an_outline_whose_parts_all_fail_is_degenerate),
     };
     return cmocka_run_group_tests_name("decompose", tests, sx_test_group_setup,
                                        sx_test_group_teardown);

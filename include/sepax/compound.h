@@ -63,8 +63,9 @@ size_t sx_decompose_scratch_bytes(int count);
  *  the tolerance that are not consecutive, which the cleaning does not weld
  *  and which would make the outline visit one place twice; split such an
  *  outline into its lobes yourself);
- *  SX_ERR_DEGENERATE for zero area, or when no ear can be found in the
- *  precision available (not observed for simple outlines); SX_ERR_CAPACITY
+ *  SX_ERR_DEGENERATE for zero area, when no ear can be found in the
+ *  precision available (not observed for simple outlines), or when no part
+ *  survives (far beyond SX_HUGE, where the parts' areas overflow); SX_ERR_CAPACITY
  *  when more than part_capacity parts are needed (then *part_count receives
  *  the number needed). */
 sx_status sx_decompose_polygon(const sx_vec2 *points, int count, void *scratch,
