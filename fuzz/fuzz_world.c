@@ -21,10 +21,9 @@
  *  - "sane" input (every accepted value finite and within modest ranges:
  *    shapes of 1 cm to 10 m, densities 0.01 to 100, speeds up to 100 m/s,
  *    forces up to 1e4 N, dt up to 0.1 s, positions within 1e3 m) keeps every
- *    live body's position, angle and velocities finite (and not NaN); mass
- *    and inertia are never NaN for any input (-DWLD_STRICT_NAN=1 also
- *    demands no NaN state for any input within SX_HUGE: open, see
- *    fuzz/crashes/README.md);
+ *    live body's position, angle and velocities finite (and not NaN); any
+ *    input keeps them, and mass and inertia, free of NaN (see
+ *    WLD_STRICT_NAN);
  *  - queries and contacts are well formed (unit normals, 1..2 points,
  *    hits within the ray);
  *  - after sx_world_destroy, sx_live_bytes() is back where it started. */
@@ -36,13 +35,14 @@
 #define WLD_MAX_STALE 32
 #define WLD_MAX_STEPS 12
 
-/* -DWLD_STRICT_NAN=1 demands "never NaN" of every input whose shapes and
- * positions stay within SX_HUGE (any forces, speeds, masses, dt), not only of
- * sane input, and =2 of every input: open problems (fuzz/crashes/README.md,
- * world-torque-overflow-nan and world-huge-segment-nan), so it is off by
- * default. */
+/* WLD_STRICT_NAN=2 (the default) demands "never NaN" of every input: any
+ * forces, torques, speeds, masses, restitution and dt, positions beyond
+ * SX_HUGE included (colliders reaching beyond it are refused, and the step's
+ * speed limit keeps velocities finite). -DWLD_STRICT_NAN=1 demands it only
+ * of input whose shapes and positions stay within SX_HUGE, and 0 only of
+ * sane input (for triaging a failure). */
 #ifndef WLD_STRICT_NAN
-#define WLD_STRICT_NAN 0
+#define WLD_STRICT_NAN 2
 #endif
 
 /* -DWLD_DEBUG prints the commands of an input (for reproducers). */
@@ -337,8 +337,13 @@ static void wld_add_collider(fz_reader *r, wld_state *s) {
         FZ_CHECK(st != SX_OK);
     if (b >= 0 && shape_st == SX_OK && sx_is_finite(cd.density) && sx_is_finite(cd.friction) &&
         sx_is_finite(cd.restitution) && cd.density >= SX_R(0.0) && cd.friction >= SX_R(0.0) &&
-        cd.restitution >= SX_R(0.0))
-        FZ_CHECK(st == SX_OK);
+        cd.restitution >= SX_R(0.0)) {
+        /* a shape reaching beyond SX_HUGE from the body origin is refused */
+        sx_aabb box = sx_shape_aabb(&cd.shape, sx_xform_identity());
+        bool within = box.lower.x >= -SX_HUGE && box.lower.y >= -SX_HUGE &&
+                      box.upper.x <= SX_HUGE && box.upper.y <= SX_HUGE;
+        FZ_CHECK(st == (within ? SX_OK : SX_ERR_INVALID_ARG));
+    }
     if (st != SX_OK) {
         if (!(flags & 128u)) FZ_CHECK(id.index == 0 && id.generation == 0);
         return;

@@ -405,11 +405,25 @@ static sx_status sx_check_material(const sx_collider_def *def) {
     return SX_OK;
 }
 
+/* The box lies within SX_HUGE of the body origin in every coordinate (false
+ * for NaN). Colliders reaching farther are refused: the narrowphase promises
+ * precision only within SX_HUGE, and beyond it its answers (depths of 1e22
+ * for a segment of extent 1e30) would feed the solver garbage. */
+static bool sx_box_within_huge(sx_aabb b) {
+    return b.lower.x >= -SX_HUGE && b.lower.y >= -SX_HUGE && b.upper.x <= SX_HUGE &&
+           b.upper.y <= SX_HUGE;
+}
+
 /* Validates a collider def: the status sx_body_add_collider returns. */
 static sx_status sx_check_collider_def(const sx_collider_def *def) {
     sx_status s = sx_shape_validate(&def->shape);
     if (s != SX_OK) return s;
-    return sx_check_material(def);
+    s = sx_check_material(def);
+    if (s != SX_OK) return s;
+    if (!sx_box_within_huge(sx_shape_aabb(&def->shape, sx_xform_identity()))) {
+        return SX_ERR_INVALID_ARG;
+    }
+    return SX_OK;
 }
 
 /* Grows the three per-collider arrays, each with its own capacity. */
@@ -534,6 +548,9 @@ sx_status sx_body_add_compound(sx_world *world, sx_body_id body, const sx_compou
     if (s != SX_OK) return s;
     s = sx_check_material(def);
     if (s != SX_OK) return s;
+    if (!sx_box_within_huge(sx_compound_aabb(compound, sx_xform_identity()))) {
+        return SX_ERR_INVALID_ARG;
+    }
     if ((size_t)compound->count > SIZE_MAX / sizeof(sx_compound_part)) return SX_ERR_CAPACITY;
     parts = (sx_compound_part *)sx_alloc((size_t)compound->count * sizeof(sx_compound_part));
     if (parts == NULL) return SX_ERR_NO_MEMORY;
@@ -553,6 +570,12 @@ sx_status sx_body_add_outline(sx_world *world, sx_body_id body, const sx_vec2 *p
     if (points == NULL || count < 3) return SX_ERR_INVALID_ARG;
     s = sx_check_material(def);
     if (s != SX_OK) return s;
+    for (i = 0; i < count; ++i) {
+        if (!sx_vec2_is_finite(points[i])) return SX_ERR_NONFINITE;
+    }
+    for (i = 0; i < count; ++i) {
+        if (!sx_box_within_huge(sx_aabb_make(points[i], points[i]))) return SX_ERR_INVALID_ARG;
+    }
     scratch_bytes = sx_decompose_scratch_bytes(count);
     if (scratch_bytes == 0 || (size_t)(count - 2) > SIZE_MAX / sizeof(sx_compound_part)) {
         return SX_ERR_CAPACITY;

@@ -211,11 +211,22 @@ static int order_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx
  * it (so the swapped call gets exactly the reversed direction). */
 static sx_vec2 circles_direction(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                                  sx_vec2 d, sx_real *dist) {
-    sx_real r = a->radius + b->radius;
-    *dist = sx_sqrt(sx_length_sq(d));
-    if (*dist >
-        SX_R(64.0) * SX_REAL_EPSILON * sx_maxr(r, sx_maxr(sx_magnitude(d.x), sx_magnitude(d.y)))) {
-        return sx_scale(d, SX_R(1.0) / *dist);
+    sx_real r = a->radius + b->radius, m = sx_maxr(sx_magnitude(d.x), sx_magnitude(d.y));
+    if (m < SX_SQUARE_SAFE && m > SX_R(0.0)) {
+        /* The square would underflow to a denormal of few bits (centres
+         * 1.9e-22 apart in float gave a normal of length 0.994): length
+         * and direction of d scaled by its largest component instead. */
+        sx_vec2 u = sx_v2(d.x / m, d.y / m);
+        sx_real len = sx_length(u);
+        *dist = m * len;
+        if (*dist > SX_R(64.0) * SX_REAL_EPSILON * sx_maxr(r, m)) {
+            return sx_scale(u, SX_R(1.0) / len);
+        }
+    } else {
+        *dist = sx_sqrt(sx_length_sq(d));
+        if (*dist > SX_R(64.0) * SX_REAL_EPSILON * sx_maxr(r, m)) {
+            return sx_scale(d, SX_R(1.0) / *dist);
+        }
     }
     if (order_circles(a, xa, b, xb) > 0) return sx_v2(-xb.q.c, -xb.q.s);
     return sx_v2(xa.q.c, xa.q.s);
@@ -414,10 +425,18 @@ static bool pair_mtv_sym(sx_core_builder *f, const void *a, sx_xform xa, const v
 
 /* The margin-0 manifold of a pair that sx_overlap counts as touching but
  * whose exact gap is a few ulps above zero: asked again with the rescue
- * margin, its depths clamped to 0 (the pair touches). */
+ * margin, its depths clamped to 0 (the pair touches). In A's frame B's faces
+ * are placed from B's coordinates, and far from B's origin (a tiny A on the
+ * corner of a B that spans 1e5 m) their rounding can exceed the rescue
+ * margin; the canonical order, which decided the overlap, is then the other
+ * one, so its manifold, mirrored, is the answer. */
 static int collide_rescue(sx_core_builder *f, const void *a, sx_xform xa, const void *b,
                           sx_xform xb, sx_manifold *m) {
     int count = pair_collide(f, a, xa, f, b, xb, SX_TOUCH_RESCUE_MARGIN, m), i;
+    if (count == 0) {
+        count = pair_collide(f, b, xb, f, a, xa, SX_TOUCH_RESCUE_MARGIN, m);
+        if (count > 0) mirror_manifold(m);
+    }
     for (i = 0; i < count; ++i)
         m->points[i].depth = sx_maxr(m->points[i].depth, SX_R(0.0));
     return count;
@@ -434,15 +453,21 @@ typedef bool sx_sym_overlap(const void *a, sx_xform xa, const void *b, sx_xform 
  * margin would miss a pair that margin 0 rescues as touching (its exact gap
  * lies between the margin and the rounding tolerance), so such a pair is
  * rescued the same way. Larger margins include the rescue margin's points
- * already, and need no overlap test. */
+ * already, unless they found none at all and the gap is within rounding of
+ * zero (not clear-cut): margin 0 may then have used the other order's
+ * manifold (collide_rescue), and so does this call. */
 static int collide_gated(sx_core_builder *f, const void *a, sx_xform xa, const void *b, sx_xform xb,
                          sx_real margin, sx_sym_overlap *overlap, sx_manifold *out) {
     sx_manifold m;
     int count;
     if (sx_is_finite(margin) && margin > SX_R(0.0)) {
         int rescued;
-        count = pair_collide(f, a, xa, f, b, xb, margin, out);
-        if (count == 2 || margin >= SX_TOUCH_RESCUE_MARGIN || !overlap(a, xa, b, xb)) return count;
+        bool clear_cut = false;
+        count = pair_collide_checked(f, a, xa, f, b, xb, margin, out, &clear_cut);
+        if (count == 2 || (margin >= SX_TOUCH_RESCUE_MARGIN && (count > 0 || clear_cut)) ||
+            !overlap(a, xa, b, xb)) {
+            return count;
+        }
         rescued = collide_rescue(f, a, xa, b, xb, &m);
         if (rescued <= count) return count;
         if (out) *out = m;

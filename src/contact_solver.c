@@ -327,6 +327,10 @@ static void sx_resolve_impact(sx_world *world, sx_contact *c, sx_real h, sx_real
     sx_impact_body *sa = &world->impact_bodies[c->body_a], *sb = &world->impact_bodies[c->body_b];
     sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;
     sx_real threshold = sx_bounce_threshold(world), e = c->restitution;
+    /* the rebound speed stays within the step's speed limit (world.h): a
+     * restitution of 1e19 would otherwise fling the bodies (and their
+     * time-of-impact shifts) out of range, or overflow */
+    sx_real max_rebound = sx_minr(SX_HUGE / h, SX_REAL_MAX), rebound[2] = {SX_R(0.0), SX_R(0.0)};
     sx_vec2 n = c->normal, tangent = sx_cross_vs(n, SX_R(1.0));
     sx_vec2 va = a->v, vb = b->v, va0 = a->v, vb0 = b->v;
     sx_real wa = a->w, wb = b->w, wa0 = a->w, wb0 = b->w;
@@ -340,7 +344,8 @@ static void sx_resolve_impact(sx_world *world, sx_contact *c, sx_real h, sx_real
         closing[k] = true;
         /* leave at e x approach: vn' = vn + (K x)_k >= e x approach, i.e.
          * K x + bias >= 0 with bias = vn - e x approach */
-        bias[k] = vn - (approach >= threshold ? e : SX_R(0.0)) * approach;
+        if (approach >= threshold) rebound[k] = sx_minr(e * approach, max_rebound);
+        bias[k] = vn - rebound[k];
     }
     if (c->count == 2 && closing[0] && closing[1] && c->block_solve) {
         if (sx_solve_lcp2(c, bias[0], bias[1], &x[0], &x[1])) {
@@ -358,8 +363,12 @@ static void sx_resolve_impact(sx_world *world, sx_contact *c, sx_real h, sx_real
             if (!closing[k]) continue;
             approach = -sx_point_speed(va, wa, vb, wb, p, n);
             if (!(approach > SX_R(0.0))) continue;
-            x[k] =
-                p->normal_mass * (SX_R(1.0) + (approach >= threshold ? e : SX_R(0.0))) * approach;
+            if (approach >= threshold && !(e * approach <= max_rebound)) {
+                x[k] = p->normal_mass * (approach + max_rebound);
+            } else {
+                x[k] = p->normal_mass * (SX_R(1.0) + (approach >= threshold ? e : SX_R(0.0))) *
+                       approach;
+            }
             sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p, sx_scale(n, x[k]));
         }
     }

@@ -122,18 +122,42 @@ static int clean_outline(sx_vec2 *pts, int m, sx_real weld_tolerance) {
     return m;
 }
 
-static bool outline_is_simple(const sx_vec2 *pts, int m) {
+/* c lies within tol of the closed segment a-b (wide precision; the squares
+ * neither overflow nor underflow the wide real for any finite sx_real). */
+static bool near_segment(sx_vec2 a, sx_vec2 b, sx_vec2 c, sx_wide tol) {
+    sx_wvec2 e = sx_wdiff(b, a), w = sx_wdiff(c, a), u = sx_wdiff(c, b);
+    sx_wide cr;
+    if (sx_wdot(w, e) <= SX_W(0.0)) return sx_wdot(w, w) <= tol * tol;
+    if (sx_wdot(u, e) >= SX_W(0.0)) return sx_wdot(u, u) <= tol * tol;
+    cr = sx_wcross(e, w);
+    return cr * cr <= tol * tol * sx_wdot(e, e);
+}
+
+/* No two non-adjacent edges of the cleaned outline cross, touch or come
+ * within the weld tolerance of each other. The tolerance matters where the
+ * outline pinches: two points closer than it that are not consecutive (the
+ * cleaning welds consecutive ones only) make the outline visit one place
+ * twice, and an exact crossing of edges far smaller than the rounding of
+ * their other end points (1e-30 against 1e6) has no reliable sign. */
+static bool outline_is_simple(const sx_vec2 *pts, int m, sx_real weld_tolerance) {
+    const sx_wide tol = (sx_wide)weld_tolerance;
     int i, j;
     for (i = 0; i < m; ++i) {
         sx_vec2 a = pts[i], b = pts[(i + 1) % m];
         for (j = i + 2; j < m; ++j) {
             sx_vec2 c = pts[j], d = pts[(j + 1) % m];
             if (i == 0 && j == m - 1) continue; /* adjacent through the closing edge */
-            if (sx_maxr(c.x, d.x) < sx_minr(a.x, b.x) || sx_maxr(a.x, b.x) < sx_minr(c.x, d.x) ||
-                sx_maxr(c.y, d.y) < sx_minr(a.y, b.y) || sx_maxr(a.y, b.y) < sx_minr(c.y, d.y)) {
+            if ((sx_wide)sx_maxr(c.x, d.x) + tol < (sx_wide)sx_minr(a.x, b.x) ||
+                (sx_wide)sx_maxr(a.x, b.x) + tol < (sx_wide)sx_minr(c.x, d.x) ||
+                (sx_wide)sx_maxr(c.y, d.y) + tol < (sx_wide)sx_minr(a.y, b.y) ||
+                (sx_wide)sx_maxr(a.y, b.y) + tol < (sx_wide)sx_minr(c.y, d.y)) {
                 continue;
             }
-            if (segments_meet(a, b, c, d)) return false;
+            if (segments_meet(a, b, c, d) || near_segment(a, b, c, tol) ||
+                near_segment(a, b, d, tol) || near_segment(c, d, a, tol) ||
+                near_segment(c, d, b, tol)) {
+                return false;
+            }
         }
     }
     return true;
@@ -451,7 +475,7 @@ sx_status sx_decompose_polygon_ex(const sx_vec2 *points, int count, sx_real weld
         w.pts[i] = points[i];
     m = clean_outline(w.pts, count, weld_tolerance);
     if (m < 3) return SX_ERR_DEGENERATE;
-    if (!outline_is_simple(w.pts, m)) return SX_ERR_INVALID_ARG;
+    if (!outline_is_simple(w.pts, m, weld_tolerance)) return SX_ERR_INVALID_ARG;
     {
         sx_wide area2 = outline_area2(w.pts, m);
         if (area2 == SX_W(0.0)) return SX_ERR_DEGENERATE;
@@ -480,6 +504,9 @@ sx_status sx_decompose_polygon_ex(const sx_vec2 *points, int count, sx_real weld
         (void)piece_valid(&w, idx, w.pcount[i], &h);
         if (sx_polygon_from_hull(&h, SX_R(0.0), &parts[roots]) == SX_OK) ++roots;
     }
+    /* Far beyond SX_HUGE every piece can fail sx_polygon_from_hull (its
+     * area overflows): no part is no decomposition. */
+    if (roots == 0) return SX_ERR_DEGENERATE;
     *part_count = roots;
     if (triangle_count != NULL) *triangle_count = nt;
     return SX_OK;

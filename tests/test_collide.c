@@ -1129,6 +1129,96 @@ static void circles_closer_than_square_underflow_compare_exactly(void **state) {
     }
 }
 
+/* Regression (fuzz: collide-tiny-box-touching-no-points): a 1e-30 box on the
+ * corner (1e-30, 1e-30) of a quadrilateral whose other corners lie 1e5 away.
+ * sx_overlap says the pair touches (in B's frame, the canonical order, the
+ * corner is exact), but in A's frame B's faces are placed from 1e5
+ * coordinates and carry a rounding error of ~1e-2 m, far above the touch
+ * rescue margin, so sx_collide(A, B) used to report 0 points while
+ * sx_collide(B, A) reported 2. Now the rescue falls back to the other
+ * order's manifold, mirrored, and both orders agree with sx_overlap at
+ * margin 0 and never report fewer points at a speculative margin. */
+static void tiny_box_on_a_far_corner_touches_in_both_orders(void **state) {
+    sx_shape a = sx_box_shape(SX_R(1e-30), SX_R(1e-30)), b;
+    sx_vec2 q[4];
+    sx_xform xa, xb;
+    sx_manifold mab, mba, m;
+    const double margins[] = {1e-30, 1e-6, 1e-4, 1e-3, 1e-2, (double)SX_SPECULATIVE_DISTANCE};
+    int nab, nba, n, i;
+    (void)state;
+    q[0] = V(-100000, -99999.9766);
+    q[1] = V(1e-30, -100000);
+    q[2] = V(1e-30, 1e-30);
+    q[3] = V(-99999.9766, 9.125);
+    assert_int_equal(sx_polygon_shape(q, 4, SX_R(0.0), &b), SX_OK);
+    xa.p = V(9.14781284, 9.14781284);
+#ifdef SX_DOUBLE
+    /* the float values are not unit to double precision: the same angle */
+    xa.q = sx_rot_make(atan2(0.273437679, -0.961889744));
+#else
+    xa.q.c = (sx_real)-0.961889744;
+    xa.q.s = (sx_real)0.273437679;
+#endif
+    xb.p = xa.p;
+    xb.q.c = SX_R(1.0);
+#ifdef SX_DOUBLE
+    xb.q.s = 1.17554928e-41;
+#else
+    xb.q.s = FLT_MIN * 1e-3f;                     /* a denormal angle, 1.18e-41 */
+#endif
+    assert_true(sx_overlap(&a, xa, &b, xb));
+    assert_true(sx_overlap(&b, xb, &a, xa));
+    nab = sx_collide(&a, xa, &b, xb, &mab);
+    nba = sx_collide(&b, xb, &a, xa, &mba);
+    assert_true(nab >= 1 && nab <= 2);
+    assert_true(nba >= 1 && nba <= 2);
+    assert_int_equal(mab.count, nab);
+    assert_near(sx_length(mab.normal), 1.0, 64.0 * (double)SX_REAL_EPSILON);
+    for (i = 0; i < nab; ++i) {
+        /* The contact is at the shared corner, touching (depth 0 up to the
+         * box's size). */
+        assert_near(mab.points[i].depth, 0.0, 1e-6);
+        assert_near(mab.points[i].point.x, xa.p.x, 1e-5);
+        assert_near(mab.points[i].point.y, xa.p.y, 1e-5);
+    }
+    for (i = 0; i < (int)(sizeof margins / sizeof margins[0]); ++i) {
+        n = sx_collide_ex(&a, xa, &b, xb, (sx_real)margins[i], &m);
+        assert_true(n >= nab);
+        n = sx_collide_ex(&b, xb, &a, xa, (sx_real)margins[i], &m);
+        assert_true(n >= nba);
+    }
+}
+
+/* Regression (make fuzz, harness collide, input
+ * collide-point-circles-denormal-normal): two point circles 1.9e-22 apart
+ * (float) with a speculative margin. The squared distance, 3.6e-44, is a
+ * denormal with a few bits left, so the normal d / |d| came out 0.6 % short
+ * of unit length. Below SX_SQUARE_SAFE the direction is now taken from d
+ * scaled by its largest component. */
+static void speculative_circles_closer_than_square_underflow_get_a_unit_normal(void **state) {
+#ifdef SX_DOUBLE
+    const double t = 1.89755227e-160;
+#else
+    const double t = 1.89755227e-22;
+#endif
+    sx_shape p0 = sx_point_shape(sx_v2_zero()), p1 = sx_point_shape(sx_v2_zero());
+    sx_xform xa = I(), xb;
+    sx_manifold m;
+    int order;
+    (void)state;
+    xb.p = V(0.0, -t);
+    xb.q.c = (sx_real)-0.986081779;
+    xb.q.s = (sx_real)-0.166261062;
+    for (order = 0; order < 2; ++order) {
+        int n = order ? sx_collide_ex(&p1, xb, &p0, xa, SX_R(3.125), &m)
+                      : sx_collide_ex(&p0, xa, &p1, xb, SX_R(3.125), &m);
+        assert_int_equal(n, 1);
+        assert_near(sx_length(m.normal), 1.0, 64.0 * (double)SX_REAL_EPSILON);
+        assert_near(m.normal.y, order ? 1.0 : -1.0, 64.0 * (double)SX_REAL_EPSILON);
+        assert_near(m.points[0].depth, -t, 1e-6 * t);
+    }
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(circles_separated_touching_and_overlapping),
@@ -1179,6 +1269,8 @@ int main(void) {
         cmocka_unit_test(separations_at_the_top_of_the_range_still_choose_a_face),
         cmocka_unit_test(a_speculative_margin_never_reports_fewer_points_than_margin_0),
         cmocka_unit_test(circles_closer_than_square_underflow_compare_exactly),
+        cmocka_unit_test(tiny_box_on_a_far_corner_touches_in_both_orders),
+        cmocka_unit_test(speculative_circles_closer_than_square_underflow_get_a_unit_normal),
     };
     return cmocka_run_group_tests_name("collide", tests, sx_test_group_setup,
                                        sx_test_group_teardown);

@@ -619,6 +619,117 @@ static void a_spike_whose_base_is_below_the_tolerance_is_dropped(void **state) {
     assert_near(sum, area, AREA_REL * area);
 }
 
+/* Regression (fuzz, double build: double-decompose-parts-exceed-outline-area):
+ * the points (1e-30, 1e-30) and (1.68e-305, 2.21e-30) lie within the weld
+ * tolerance of each other but are not consecutive, so the cleaned outline
+ * pinches there: it visits the origin twice, and its edges towards
+ * (1240000, 0.0039) and (70.3, 124.4) cross 1e-30 from the origin, far below
+ * the rounding of their far end points. The crossing went undetected, and
+ * the decomposition returned SX_OK with parts of 2.64e7 m^2 for an outline
+ * of 1.96e7 m^2. A pinch closer than the weld tolerance now counts as the
+ * outline touching itself (SX_ERR_INVALID_ARG). */
+static void outline_pinched_below_the_weld_tolerance_is_refused(void **state) {
+    const double xy[] = {70.3359375, 124.3828125, 1e-30,    1e-30,    1e-30,    -10.875, 1240000,
+                         0.0039,     1.68e-305,   2.21e-30, 2.21e-30, 2.21e-30, -16,     750000};
+    const double tol = (double)SX_WELD_TOLERANCE;
+    sx_vec2 p[7];
+    decomp d;
+    double sum = 0.0;
+    int i, k;
+    (void)state;
+    for (i = 0; i < 7; ++i)
+        p[i] = sx_v2((sx_real)xy[2 * i], (sx_real)xy[2 * i + 1]);
+    run_decompose(p, 7, &d);
+    /* Refused, or (were it ever split correctly) parts that sum to the
+     * outline's area: never SX_OK with the wrong lobe. */
+    if (d.status == SX_OK) {
+        double area = fabs(outline_area(p, 7));
+        for (i = 0; i < d.part_count; ++i)
+            sum += (double)sx_shape_area(&d.parts[i]);
+        assert_near(sum, area, AREA_REL * area);
+    } else {
+        assert_int_equal(d.status, SX_ERR_INVALID_ARG);
+        assert_int_equal(d.part_count, 0);
+    }
+    assert_int_equal(d.status, SX_ERR_INVALID_ARG);
+
+    /* The same at a sane scale: an hourglass whose neck is g wide. Below
+     * the weld tolerance it is a pinch (refused); a few tolerances wide it
+     * is a simple outline (two or more parts that sum to its area). */
+    for (k = 0; k < 3; ++k) {
+        const double g = k == 0 ? 0.5 * tol : (k == 1 ? 0.9 * tol : 4.0 * tol);
+        sx_vec2 h[6];
+        h[0] = sx_v2(SX_R(-1.0), SX_R(-1.0));
+        h[1] = sx_v2(SX_R(1.0), SX_R(-1.0));
+        h[2] = sx_v2((sx_real)(0.5 * g), SX_R(0.0));
+        h[3] = sx_v2(SX_R(1.0), SX_R(1.0));
+        h[4] = sx_v2(SX_R(-1.0), SX_R(1.0));
+        h[5] = sx_v2((sx_real)(-0.5 * g), SX_R(0.0));
+        run_decompose(h, 6, &d);
+        if (k < 2) {
+            assert_int_equal(d.status, SX_ERR_INVALID_ARG);
+            assert_int_equal(d.part_count, 0);
+        } else {
+            double area = fabs(outline_area(h, 6));
+            assert_int_equal(d.status, SX_OK);
+            assert_true(d.part_count >= 2);
+            for (sum = 0.0, i = 0; i < d.part_count; ++i)
+                sum += (double)sx_shape_area(&d.parts[i]);
+            assert_near(sum, area, AREA_REL * area);
+        }
+    }
+}
+
+/* Regression (make fuzz, harness decompose, input
+ * decompose-ok-without-parts-beyond-huge): an outline with points at 1e24,
+ * 1.8e19 and 3.3e35 (far beyond SX_HUGE) next to points at 1e-2 and 16
+ * passed the cleaning and the ear clipping, but its one piece failed
+ * sx_polygon_from_hull, and the call returned SX_OK with 0 parts. A
+ * decomposition without a part is SX_ERR_DEGENERATE now. */
+static void an_outline_whose_parts_all_fail_is_degenerate(void **state) {
+    const float xy[] = {0x1.cececep+79f,
+                        0x1.cececep+79f,
+                        0x1.b05002p-126f,
+                        0.0f,
+                        -16.0f,
+                        0.0f,
+                        -8.5f,
+                        -11.0f,
+                        0x1.fffffep+63f,
+                        -0x1.a02752p-7f,
+                        -0x1.a02d52p-7f,
+                        -0x1.a03352p-7f,
+                        -0x1.a03952p-7f,
+                        -0x1.a03f52p-7f,
+                        -0x1.a04552p-7f,
+                        -0x1.a04b52p-7f,
+                        0x1.cececep+79f,
+                        0x1.cececep+79f,
+                        0x1.f4cecep+117f,
+                        0x1.f4ceb6p+117f,
+                        0.0f,
+                        -16.0f,
+                        -16.0f,
+                        -16.0f};
+    sx_vec2 p[12];
+    decomp d;
+    int i;
+    (void)state;
+    for (i = 0; i < 12; ++i)
+        p[i] = sx_v2((sx_real)xy[2 * i], (sx_real)xy[2 * i + 1]);
+    run_decompose(p, 12, &d);
+    if (d.status == SX_OK) {
+        assert_true(d.part_count >= 1 && d.part_count <= 10);
+        for (i = 0; i < d.part_count; ++i)
+            assert_int_equal(sx_shape_validate(&d.parts[i]), SX_OK);
+    } else {
+        assert_int_equal(d.part_count, 0);
+    }
+#ifndef SX_DOUBLE
+    assert_int_equal(d.status, SX_ERR_DEGENERATE); /* the float case found */
+#endif
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(l_shape_splits_into_two_parts),
@@ -639,6 +750,8 @@ int main(void) {
         cmocka_unit_test(bad_arguments_and_capacity_are_reported),
         cmocka_unit_test(point_in_outline_follows_the_winding_number),
         cmocka_unit_test(a_spike_whose_base_is_below_the_tolerance_is_dropped),
+        cmocka_unit_test(outline_pinched_below_the_weld_tolerance_is_refused),
+        cmocka_unit_test(an_outline_whose_parts_all_fail_is_degenerate),
     };
     return cmocka_run_group_tests_name("decompose", tests, sx_test_group_setup,
                                        sx_test_group_teardown);

@@ -916,21 +916,206 @@ static void overflowing_force_or_impulse_at_a_point_is_refused_not_nan(void **st
 }
 
 /* Found by fuzz/fuzz_world.c: a dynamic body with a circle of radius 2.4e28
- * (a valid shape) had mass inf and its centre of mass inf / inf = NaN. */
+ * (a valid shape) had mass inf and its centre of mass inf / inf = NaN. Such
+ * a shape is now refused (it reaches beyond SX_HUGE); a mass that overflows
+ * through its density still gives mass SX_REAL_MAX and no NaN. */
 static void a_collider_whose_mass_overflows_gives_no_nan(void **state) {
     sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
     sx_shape huge = sx_circle_shape(sx_v2_zero(), SX_R(2.36e28));
-    sx_body_id b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-20.0), SX_R(-14.625)), &huge);
-    sx_vec2 c = sx_body_get_world_center(w, b);
+    sx_body_id b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-20.0), SX_R(-14.625)), NULL);
+    sx_collider_def cd = sx_default_collider_def();
+    sx_vec2 c;
     int i;
     (void)state;
+    cd.shape = huge;
+    assert_int_equal(sx_body_add_collider(w, b, &cd, NULL), SX_ERR_INVALID_ARG);
+    cd.shape = sx_circle_shape(sx_v2(SX_R(3.0), SX_R(0.0)), SX_R(1000.0));
+    cd.density = SX_REAL_MAX;
+    assert_int_equal(sx_body_add_collider(w, b, &cd, NULL), SX_OK);
+    c = sx_body_get_world_center(w, b);
     assert_true(sx_vec2_is_finite(c));
-    assert_true(sx_is_finite(sx_body_get_mass(w, b)) && sx_body_get_mass(w, b) > SX_R(0.0));
+    assert_true(sx_body_get_mass(w, b) == SX_REAL_MAX);
     for (i = 0; i < 3; ++i)
         assert_int_equal(sx_world_step(w, DT), SX_OK);
     c = sx_body_get_position(w, b);
-    assert_false(c.x != c.x || c.y != c.y);
-    assert_false(sx_body_get_angle(w, b) != sx_body_get_angle(w, b));
+    assert_true(sx_vec2_is_finite(c));
+    assert_true(sx_is_finite(sx_body_get_angle(w, b)));
+    sx_world_destroy(w);
+}
+
+/* Found by fuzz/fuzz_world.c (world-huge-segment-nan): a spinning body with
+ * a box and a segment of extent 1e30 met a static box; the narrowphase,
+ * beyond SX_HUGE, gave contacts 1e22 deep and the step turned the bodies'
+ * state (and the static body's reported velocities) into NaN. Colliders
+ * reaching beyond SX_HUGE from the body origin are refused now, plain,
+ * compound and outline alike; up to SX_HUGE they are accepted. */
+static void colliders_beyond_huge_are_refused(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_body_def bd = sx_default_body_def();
+    sx_collider_def cd = sx_default_collider_def();
+    sx_collider_id out = {7, 7};
+    sx_compound_part parts[2];
+    sx_compound comp;
+    sx_vec2 outline[4];
+    sx_body_id a, b;
+    int i;
+    (void)state;
+    bd.type = SX_BODY_DYNAMIC;
+    bd.position = sx_v2(SX_R(-4.84375), SX_R(-4.6875));
+    bd.angular_velocity = SX_R(-16.875);
+    assert_int_equal(sx_create_body(w, &bd, &a), SX_OK);
+    cd.shape = box;
+    assert_int_equal(sx_body_add_collider(w, a, &cd, NULL), SX_OK);
+    cd.shape = sx_segment_shape(sx_v2(SX_R(-1e30), SX_R(0.0)), sx_v2(SX_R(1e30), SX_R(0.0)));
+    assert_int_equal(sx_shape_validate(&cd.shape), SX_OK);
+    assert_int_equal(sx_body_add_collider(w, a, &cd, &out), SX_ERR_INVALID_ARG);
+    assert_true(out.index == 0 && out.generation == 0);
+    /* a circle whose bounds pass SX_HUGE by its radius, and one within it */
+    cd.shape = sx_circle_shape(sx_v2(SX_R(0.75) * SX_HUGE, SX_R(0.0)), SX_R(0.5) * SX_HUGE);
+    assert_int_equal(sx_body_add_collider(w, a, &cd, NULL), SX_ERR_INVALID_ARG);
+    cd.shape = sx_segment_shape(sx_v2(SX_R(0.0), -SX_HUGE), sx_v2(SX_R(0.0), SX_HUGE));
+    cd.density = SX_R(0.0);
+    assert_int_equal(sx_body_add_collider(w, a, &cd, &out), SX_OK);
+    assert_int_equal(sx_destroy_collider(w, out), SX_OK);
+    cd.density = SX_R(1.0);
+    /* a compound with a part placed beyond SX_HUGE */
+    parts[0] = sx_compound_part_make(box, sx_xform_identity());
+    parts[1] =
+        sx_compound_part_make(box, sx_xform_make(sx_v2(SX_R(2.0) * SX_HUGE, SX_R(0.0)), SX_R(0.0)));
+    comp.parts = parts;
+    comp.count = 2;
+    assert_int_equal(sx_body_add_compound(w, a, &comp, &cd, NULL), SX_ERR_INVALID_ARG);
+    /* an outline with a point beyond SX_HUGE */
+    outline[0] = sx_v2(SX_R(0.0), SX_R(0.0));
+    outline[1] = sx_v2(SX_R(2.0) * SX_HUGE, SX_R(0.0));
+    outline[2] = sx_v2(SX_R(1.0), SX_R(1.0));
+    outline[3] = sx_v2(SX_R(0.0), SX_R(1.0));
+    assert_int_equal(sx_body_add_outline(w, a, outline, 4, &cd, NULL), SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_body_get_mass(w, a) > SX_R(0.99), true);
+    assert_true(sx_body_get_mass(w, a) < SX_R(1.01)); /* only the 1 x 1 box */
+
+    /* the reproducer's scene, without the refused segment: no NaN, and the
+     * static body's velocities stay zero */
+    b = make_body(w, SX_BODY_STATIC, sx_v2(SX_R(-16.0), SX_R(-7.96875)), &box);
+    for (i = 0; i < 3; ++i) {
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+        assert_true(sx_vec2_is_finite(sx_body_get_position(w, a)));
+        assert_true(sx_vec2_is_finite(sx_body_get_linear_velocity(w, a)));
+        assert_true(sx_is_finite(sx_body_get_angular_velocity(w, a)));
+        assert_true(sx_body_get_linear_velocity(w, b).x == SX_R(0.0));
+        assert_true(sx_body_get_linear_velocity(w, b).y == SX_R(0.0));
+        assert_true(sx_body_get_angular_velocity(w, b) == SX_R(0.0));
+    }
+    sx_world_destroy(w);
+}
+
+/* Found by fuzz/fuzz_world.c (world-torque-overflow-nan): a force of about
+ * 1e3 N at a point 2.6e33 m away is a finite torque of 2.4e36 N m, accepted;
+ * on a box of inertia 0.0025 kg m^2 the angular velocity overflowed to
+ * infinity in the first sub-step, and after the box hit its neighbour both
+ * had NaN positions. The step's speed limit (world.h, SX_MAX_ROTATION) now
+ * keeps every body within a quarter turn per sub-step. */
+static void a_finite_torque_that_overflows_the_spin_is_limited(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape box = sx_box_shape(SX_R(0.175), SX_R(0.175));
+    sx_body_id a = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-97.08), SX_R(10.9375)), &box);
+    sx_body_id b;
+    const double h = (double)DT / 4.0; /* the default 4 sub-steps */
+    const double wmax = (double)SX_MAX_ROTATION / h;
+    int i;
+    (void)state;
+    (void)make_body(w, SX_BODY_STATIC, sx_v2(SX_R(-20.0), SX_R(-8.0)), NULL);
+    b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-97.08), SX_R(10.3125)), &box);
+    assert_int_equal(sx_body_apply_force_at_point(w, b, sx_v2(SX_R(-1000.0), SX_R(921.875)),
+                                                  sx_v2(SX_R(-2.586e33), SX_R(-14.84))),
+                     SX_OK);
+    assert_int_equal(sx_body_apply_impulse_at_point(w, b, sx_v2(SX_R(10.3125), SX_R(19.6875)),
+                                                    sx_v2(SX_R(-20.0), SX_R(-16.0))),
+                     SX_OK);
+    for (i = 0; i < 3; ++i) {
+        int k;
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+        for (k = 0; k < 2; ++k) {
+            sx_body_id id = k ? b : a;
+            sx_real av = sx_body_get_angular_velocity(w, id);
+            assert_true(sx_vec2_is_finite(sx_body_get_position(w, id)));
+            assert_true(sx_vec2_is_finite(sx_body_get_linear_velocity(w, id)));
+            assert_true(sx_is_finite(sx_body_get_angle(w, id)));
+            assert_true(sx_is_finite(av));
+            assert_true(fabs((double)av) <= wmax * (1.0 + 1e-5));
+        }
+    }
+    /* the torque spun B (clockwise) up to the limit */
+    assert_true((double)sx_body_get_angular_velocity(w, b) < -0.5 * wmax);
+    sx_world_destroy(w);
+}
+
+/* Found by make fuzz (harness world, input world-restitution-1e19-nan): a
+ * collider of restitution 3.9e19 (finite, so accepted) overlapping another
+ * body flung both out with a rebound of 1e20 m/s and a time-of-impact shift
+ * to match, and the step ended with NaN positions; with a restitution near
+ * SX_REAL_MAX the impulse itself overflowed. The rebound speed is capped by
+ * the speed limit now. */
+static void a_huge_restitution_rebounds_at_the_speed_limit(void **state) {
+    const double h = (double)DT / 4.0;
+    int r;
+    (void)state;
+    for (r = 0; r < 2; ++r) {
+        sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+        sx_shape ground = sx_box_shape(SX_R(20.0), SX_R(0.5)),
+                 box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+        sx_body_def bd = sx_default_body_def();
+        sx_collider_def cd = sx_default_collider_def();
+        sx_body_id b;
+        int i;
+        (void)make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-0.5)), &ground);
+        bd.type = SX_BODY_DYNAMIC;
+        bd.position = sx_v2(SX_R(0.0), SX_R(0.55));
+        bd.linear_velocity = sx_v2(SX_R(0.0), SX_R(-5.0));
+        assert_int_equal(sx_create_body(w, &bd, &b), SX_OK);
+        cd.shape = box;
+        cd.restitution = r == 0 ? SX_R(3.88116e19) : SX_REAL_MAX;
+        assert_int_equal(sx_body_add_collider(w, b, &cd, NULL), SX_OK);
+        for (i = 0; i < 3; ++i) {
+            sx_vec2 v;
+            assert_int_equal(sx_world_step(w, DT), SX_OK);
+            v = sx_body_get_linear_velocity(w, b);
+            assert_true(sx_vec2_is_finite(sx_body_get_position(w, b)));
+            assert_true(sx_vec2_is_finite(v));
+            assert_true(sx_is_finite(sx_body_get_angular_velocity(w, b)));
+            assert_true((double)sx_length(v) <= (double)SX_HUGE / h * (1.0 + 1e-5));
+        }
+        /* it bounced, upwards, at the limit (less three steps of gravity) */
+        assert_true((double)sx_body_get_linear_velocity(w, b).y > 0.5 * (double)SX_HUGE / h);
+        sx_world_destroy(w);
+    }
+}
+
+/* The speed limit bites only above a quarter turn per sub-step: a free spin
+ * of 300 rad/s is kept exactly, one of 1000 rad/s becomes SX_MAX_ROTATION /
+ * h (377 rad/s at 60 Hz and 4 sub-steps), and a velocity beyond SX_HUGE per
+ * sub-step keeps its direction. */
+static void the_speed_limit_keeps_direction_and_spares_ordinary_speeds(void **state) {
+    sx_world *w = make_world(sx_v2_zero());
+    sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_body_id a = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.0)), &box);
+    sx_body_id b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(10.0), SX_R(0.0)), &box);
+    const double h = (double)DT / 4.0;
+    sx_vec2 v;
+    (void)state;
+    assert_int_equal(sx_body_set_angular_velocity(w, a, SX_R(300.0)), SX_OK);
+    assert_int_equal(sx_body_set_angular_velocity(w, b, SX_R(-1000.0)), SX_OK);
+    assert_int_equal(sx_body_set_linear_velocity(w, b, sx_v2(SX_R(3e38), SX_R(-1e38))), SX_OK);
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_near(sx_body_get_angular_velocity(w, a), 300.0, 1e-3);
+    assert_near(sx_body_get_angular_velocity(w, b), -(double)SX_MAX_ROTATION / h,
+                1e-4 * (double)SX_MAX_ROTATION / h);
+    v = sx_body_get_linear_velocity(w, b);
+    assert_near(sx_length(v), (double)SX_HUGE / h, 1e-4 * (double)SX_HUGE / h);
+    assert_near(v.x / sx_length(v), 3.0 / sqrt(10.0), 1e-4);
+    assert_near(v.y / sx_length(v), -1.0 / sqrt(10.0), 1e-4);
+    assert_true(sx_vec2_is_finite(sx_body_get_position(w, b)));
     sx_world_destroy(w);
 }
 
@@ -1063,6 +1248,10 @@ int main(void) {
         cmocka_unit_test(random_api_calls_never_crash_or_make_nan),
         cmocka_unit_test(overflowing_force_or_impulse_at_a_point_is_refused_not_nan),
         cmocka_unit_test(a_collider_whose_mass_overflows_gives_no_nan),
+        cmocka_unit_test(colliders_beyond_huge_are_refused),
+        cmocka_unit_test(a_finite_torque_that_overflows_the_spin_is_limited),
+        cmocka_unit_test(the_speed_limit_keeps_direction_and_spares_ordinary_speeds),
+        cmocka_unit_test(a_huge_restitution_rebounds_at_the_speed_limit),
         cmocka_unit_test(a_needle_small_collider_gives_no_nan),
         cmocka_unit_test(destroying_bodies_mid_run_and_the_world_frees_everything),
     };

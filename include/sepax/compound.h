@@ -57,10 +57,15 @@ size_t sx_decompose_scratch_bytes(int count);
  *  sx_decompose_scratch_bytes(count)); SX_ERR_NONFINITE (a NaN/Inf
  *  coordinate); SX_ERR_DEGENERATE (fewer than 3 points left after cleaning:
  *  duplicates only, all collinear); SX_ERR_INVALID_ARG for an outline that
- *  is not simple: two non-adjacent edges of the cleaned outline cross or
- *  touch (a bow-tie, a figure eight, a vertex on another edge);
- *  SX_ERR_DEGENERATE for zero area, or when no ear can be found in the
- *  precision available (not observed for simple outlines); SX_ERR_CAPACITY
+ *  is not simple: two non-adjacent edges of the cleaned outline cross,
+ *  touch, or come within the weld tolerance of each other (a bow-tie, a
+ *  figure eight, a vertex on another edge, a pinch: two points closer than
+ *  the tolerance that are not consecutive, which the cleaning does not weld
+ *  and which would make the outline visit one place twice; split such an
+ *  outline into its lobes yourself);
+ *  SX_ERR_DEGENERATE for zero area, when no ear can be found in the
+ *  precision available (not observed for simple outlines), or when no part
+ *  survives (far beyond SX_HUGE, where the parts' areas overflow); SX_ERR_CAPACITY
  *  when more than part_capacity parts are needed (then *part_count receives
  *  the number needed). */
 sx_status sx_decompose_polygon(const sx_vec2 *points, int count, void *scratch,

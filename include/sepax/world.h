@@ -20,6 +20,15 @@
  * velocities). Callers such as the flecs systems may run the stages
  * themselves, in this order, with their own code in between.
  *
+ * Speed limit: in one sub-step a body turns at most SX_MAX_ROTATION and
+ * moves at most SX_HUGE. sx_world_apply_forces and sx_world_integrate scale
+ * faster velocities down to the limit (direction kept), so a finite torque
+ * on a tiny inertia, a huge impulse or a huge dt gives a fast body, never an
+ * infinite or NaN state. At the default 60 Hz and 4 sub-steps the rotation
+ * limit is 377 rad/s (3600 rpm); a faster spin needs more sub-steps (the
+ * rotation update, q + h w q' renormalised, turns by atan(h w), less than a
+ * quarter turn per sub-step, whatever w is).
+ *
  * Sleeping: islands of touching bodies that stay slow fall asleep and cost
  * no solver work until something touches or pushes them. Around the step: contact begin/end events,
  * world queries (bounds, point, shape, ray) and a debug-draw callback interface.
@@ -39,6 +48,10 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+/** Largest rotation (radians) of a body in one sub-step: a quarter turn
+ *  (see "Speed limit" above). */
+#define SX_MAX_ROTATION (SX_R(0.5) * SX_PI)
 
 /* ---- handles ------------------------------------------------------------ */
 
@@ -165,7 +178,8 @@ sx_status sx_world_step(sx_world *world, sx_real dt);
 
 /** Stage 1: for every enabled, awake dynamic body, v += h (gravity x gravity_scale +
  *  F / m) + J / m and w += h (T / I) + L / I, then damping
- *  v *= 1 / (1 + h c). F, T are the force and torque accumulators (kept: they
+ *  v *= 1 / (1 + h c), then the speed limit (h w within SX_MAX_ROTATION, h
+ *  |v| within SX_HUGE). F, T are the force and torque accumulators (kept: they
  *  act over every sub-step of a step until sx_world_clear_forces); J, L the
  *  impulse accumulators, applied once and cleared here. Static and kinematic
  *  bodies are untouched. Errors: SX_ERR_INVALID_ARG (NULL, h <= 0),
@@ -209,7 +223,8 @@ sx_status sx_world_collide(sx_world *world);
 sx_status sx_world_solve(sx_world *world, sx_real h);
 
 /** Stage 4: symplectic Euler positions: centre of mass += h v, rotation
- *  advanced by h w (renormalised), for awake dynamic and kinematic bodies;
+ *  advanced by h w (renormalised), for awake dynamic and kinematic bodies,
+ *  after the speed limit of stage 1 (for what the solver added);
  *  then the time-of-impact corrections of the last solve's impacts (a body
  *  whose velocity changed by dv at time t of the sub-step moves by -dv t,
  *  since it kept its old velocity until t).
@@ -480,9 +495,12 @@ typedef struct sx_collider_def {
     /** The shape in the body frame. Default: a circle of radius 0.5 at the
      *  body origin. Checked with sx_shape_validate. */
     sx_shape shape;
-    sx_real density;     /**< kg/m^2, >= 0; default 1 */
-    sx_real friction;    /**< >= 0; default 0.6; mixed as sqrt(mu_a mu_b) */
-    sx_real restitution; /**< >= 0; default 0; mixed as max(e_a, e_b) */
+    sx_real density;  /**< kg/m^2, >= 0; default 1 */
+    sx_real friction; /**< >= 0; default 0.6; mixed as sqrt(mu_a mu_b) */
+    /** >= 0; default 0; mixed as max(e_a, e_b). Above 1 a bounce adds
+     *  energy; the rebound speed is capped by the speed limit (SX_HUGE per
+     *  sub-step, see "Speed limit"). */
+    sx_real restitution;
     sx_filter filter;
     /** A sensor takes part in no contact (it has no response); it reports
      *  the colliders overlapping it as sensor events. Default false. */
@@ -495,13 +513,15 @@ sx_collider_def sx_default_collider_def(void);
 
 /** Attaches a collider to a body and updates the body's mass, centre of mass
  *  and inertia from the colliders' densities (the body origin stays where it
- *  is). Should the mass properties overflow (shapes far beyond SX_HUGE),
+ *  is). Should the mass properties overflow (a density near SX_REAL_MAX),
  *  the body gets mass SX_REAL_MAX, no rotational inertia and its centre of
  *  mass at its origin, never NaN. *out (may be NULL) receives the handle,
  *  the null handle on error.
  *  Errors: the status of sx_shape_validate for a bad shape;
  *  SX_ERR_INVALID_ARG (NULL world/def, negative density, friction or
- *  restitution); SX_ERR_NONFINITE (non-finite density, friction or
+ *  restitution, a shape reaching farther than SX_HUGE from the body origin
+ *  in x or y: beyond it the narrowphase has no precision left to offer the
+ *  solver); SX_ERR_NONFINITE (non-finite density, friction or
  *  restitution); SX_ERR_STALE_HANDLE; SX_ERR_NO_MEMORY; SX_ERR_CAPACITY. */
 sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collider_def *def,
                                sx_collider_id *out);
@@ -528,7 +548,9 @@ sx_status sx_body_add_compound(sx_world *world, sx_body_id body, const sx_compou
  *  any winding) with sx_decompose_polygon and attaches the parts as one
  *  compound collider (sx_body_add_compound). Errors: as
  *  sx_body_add_collider for world, body and def (def->shape is ignored);
- *  SX_ERR_INVALID_ARG for NULL points or count < 3; otherwise the status of
+ *  SX_ERR_INVALID_ARG for NULL points or count < 3 and (after
+ *  SX_ERR_NONFINITE for NaN/Inf) for a point farther than SX_HUGE from the
+ *  body origin in x or y; otherwise the status of
  *  sx_decompose_polygon (SX_ERR_NONFINITE for NaN/Inf, SX_ERR_INVALID_ARG
  *  for a self-intersecting outline such as a bow-tie, SX_ERR_DEGENERATE for
  *  all-collinear or zero-area outlines); SX_ERR_NO_MEMORY. */
