@@ -578,8 +578,8 @@ static int rain(const int *sizes, int nsizes, int steps, double cap_ms, const ch
             }
         }
         snprintf(path, sizeof path, "%s/rain.svg", out_dir);
-        if (!svg_plot_write_lines(path, "rain: ms per step against bodies", "bodies",
-                                  "ms per step", pts, np, engine_names, SCENE_ENGINE_COUNT)) {
+        if (!svg_plot_write_lines(path, "rain: ms per step against bodies", "bodies", "ms per step",
+                                  pts, np, engine_names, SCENE_ENGINE_COUNT)) {
             fprintf(stderr, "sepax_bench: cannot write %s\n", path);
             ++failures;
         }
@@ -1754,8 +1754,8 @@ int bench_scenes_run(const char *out_dir, int smoke, int level) {
     };
     for (size_t k = 0; k < sizeof sweeps / sizeof sweeps[0]; ++k) {
         if (WANT(sweeps[k].scene))
-            failures += run_sweep(sweeps[k].scene, sweeps[k].err_name, sweeps[k].what,
-                                  sweeps[k].fn, out_dir, smoke);
+            failures += run_sweep(sweeps[k].scene, sweeps[k].err_name, sweeps[k].what, sweeps[k].fn,
+                                  out_dir, smoke);
     }
 #undef WANT
     failures += write_summary(out_dir, smoke);

@@ -149,8 +149,8 @@ static int sx_real_cmp(const void *pa, const void *pb) {
  * stay in order, the new ones are sorted among themselves and merged in
  * (linear in the set plus k log k for k changes), then the wide boxes are
  * listed again. */
-static sx_status sx_update_fixed(sx_broadphase *bp, const sx_aabb *aabbs,
-                                 const unsigned char *kind, int slot_count) {
+static sx_status sx_update_fixed(sx_broadphase *bp, const sx_aabb *aabbs, const unsigned char *kind,
+                                 int slot_count) {
     int i, j, n = 0, out;
     void *p;
     bool ok;
@@ -326,8 +326,7 @@ sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const un
         int c = moving[i];
         if (bp->mark[c] == 1) {
             p = bp->added;
-            ok = sx_grow_array(&p, &bp->added_capacity, bp->added_count + 1,
-                               sizeof(sx_sorted_box));
+            ok = sx_grow_array(&p, &bp->added_capacity, bp->added_count + 1, sizeof(sx_sorted_box));
             bp->added = (sx_sorted_box *)p;
             if (!ok) return SX_ERR_NO_MEMORY;
             bp->added[bp->added_count].box = aabbs[c];

@@ -175,7 +175,7 @@ sx_status sx_world_refresh_sets(sx_world *world) {
         const sx_body_sim *b = &world->sims[i];
         if (world->infos[i].alive && b->moving && b->awake &&
             !sx_push_int(&world->active_bodies, &world->active_body_count,
-                          &world->active_body_capacity, i)) {
+                         &world->active_body_capacity, i)) {
             return SX_ERR_NO_MEMORY;
         }
     }
@@ -195,7 +195,7 @@ sx_status sx_world_refresh_sets(sx_world *world) {
         world->bp_kind[i] = kind;
         if (c->alive && c->sensor && world->infos[c->body].enabled &&
             !sx_push_int(&world->sensor_colliders, &world->sensor_collider_count,
-                          &world->sensor_collider_capacity, i)) {
+                         &world->sensor_collider_capacity, i)) {
             return SX_ERR_NO_MEMORY;
         }
         if (kind == SX_BP_OUT) {
@@ -207,7 +207,7 @@ sx_status sx_world_refresh_sets(sx_world *world) {
         }
         if ((kind == SX_BP_AWAKE || kind == SX_BP_MOVING_KINEMATIC) &&
             !sx_push_int(&world->active_colliders, &world->active_collider_count,
-                          &world->active_collider_capacity, i)) {
+                         &world->active_collider_capacity, i)) {
             return SX_ERR_NO_MEMORY;
         }
         /* Bodies the step does not move keep their bounds: they are
@@ -595,10 +595,8 @@ static sx_status sx_collide_parts(sx_world *world, uint64_t key, int old_begin, 
     sx_compound_part ta, tb;
     sx_compound va = sx_collider_compound(ca, &ta), vb = sx_collider_compound(cb, &tb);
     /* a plain collider's one part box is its own bounds */
-    const sx_aabb *boxes_a =
-        ca->part_count > 0 ? ca->part_boxes : &world->aabbs[ia];
-    const sx_aabb *boxes_b =
-        cb->part_count > 0 ? cb->part_boxes : &world->aabbs[ib];
+    const sx_aabb *boxes_a = ca->part_count > 0 ? ca->part_boxes : &world->aabbs[ia];
+    const sx_aabb *boxes_b = cb->part_count > 0 ? cb->part_boxes : &world->aabbs[ib];
     for (i = 0; i < va.count; ++i) {
         sx_xform xi;
         if (!sx_aabb_overlaps(boxes_a[i], world->aabbs[ib])) continue;

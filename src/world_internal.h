@@ -70,7 +70,7 @@ typedef struct sx_collider {
     bool sensor;
     bool alive;
     uint32_t generation;
-    int body;      /* slot of the owning body */
+    int body; /* slot of the owning body */
     /* the cached bounds in world->aabbs no longer fit (teleport of a body
      * the step does not move) */
     bool aabb_stale;

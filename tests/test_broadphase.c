@@ -89,7 +89,8 @@ static void check_sensors(const sx_world *w) {
         if (!s->alive || !s->sensor || !w->infos[s->body].enabled) continue;
         for (j = 0; j < w->collider_slots; ++j) {
             const sx_collider *c = &w->colliders[j];
-            if (!c->alive || c->sensor || c->body == s->body || !w->infos[c->body].enabled) continue;
+            if (!c->alive || c->sensor || c->body == s->body || !w->infos[c->body].enabled)
+                continue;
             if (w->infos[c->body].type == SX_BODY_STATIC &&
                 w->infos[s->body].type == SX_BODY_STATIC) {
                 continue;
@@ -129,8 +130,7 @@ static sx_body_id add(sx_world *w, sx_body_type type, sx_vec2 p, const sx_shape 
 
 #define MAX_IDS 400
 
-static void broadphase_pairs_equal_brute_force_through_sleep_teleport_create_destroy(
-    void **state) {
+static void broadphase_pairs_equal_brute_force_through_sleep_teleport_create_destroy(void **state) {
     sx_world_def def = sx_default_world_def();
     sx_test_rng rng = sx_test_rng_make(20261123u);
     sx_body_id ids[MAX_IDS];
@@ -167,9 +167,16 @@ static void broadphase_pairs_equal_brute_force_through_sleep_teleport_create_des
     }
     {
         /* concave compounds: a static U and two dynamic L outlines */
-        static const sx_vec2 u[8] = {{-2, 0}, {2, 0}, {2, 2}, {SX_R(1.5), 2}, {SX_R(1.5), SX_R(0.5)}, {-SX_R(1.5), SX_R(0.5)},
-                                     {-SX_R(1.5), 2}, {-2, 2}};
-        static const sx_vec2 l[6] = {{0, 0}, {2, 0}, {2, SX_R(0.5)}, {SX_R(0.5), SX_R(0.5)}, {SX_R(0.5), 2}, {0, 2}};
+        static const sx_vec2 u[8] = {{-2, 0},
+                                     {2, 0},
+                                     {2, 2},
+                                     {SX_R(1.5), 2},
+                                     {SX_R(1.5), SX_R(0.5)},
+                                     {-SX_R(1.5), SX_R(0.5)},
+                                     {-SX_R(1.5), 2},
+                                     {-2, 2}};
+        static const sx_vec2 l[6] = {{0, 0},         {2, 0}, {2, SX_R(0.5)}, {SX_R(0.5), SX_R(0.5)},
+                                     {SX_R(0.5), 2}, {0, 2}};
         sx_collider_def cd = sx_default_collider_def();
         sx_body_def bd = sx_default_body_def();
         sx_body_id b;
@@ -186,10 +193,9 @@ static void broadphase_pairs_equal_brute_force_through_sleep_teleport_create_des
     }
     for (i = 0; i < 150; ++i) {
         sx_shape s = random_shape(&rng);
-        ids[count++] = add(w, SX_BODY_DYNAMIC,
-                           sx_v2(sx_test_rng_range(&rng, -20.0, 20.0),
-                                 sx_test_rng_range(&rng, 0.5, 12.0)),
-                           &s);
+        ids[count++] = add(
+            w, SX_BODY_DYNAMIC,
+            sx_v2(sx_test_rng_range(&rng, -20.0, 20.0), sx_test_rng_range(&rng, 0.5, 12.0)), &s);
     }
     for (step = 0; step < 1500; ++step) {
         /* one random event per step */
@@ -216,10 +222,10 @@ static void broadphase_pairs_equal_brute_force_through_sleep_teleport_create_des
                 sx_shape s = random_shape(&rng);
                 sx_body_type t =
                     sx_test_rng_next(&rng) % 5u == 0 ? SX_BODY_STATIC : SX_BODY_DYNAMIC;
-                ids[count++] = add(w, t,
-                                   sx_v2(sx_test_rng_range(&rng, -20.0, 20.0),
-                                         sx_test_rng_range(&rng, 0.5, 10.0)),
-                                   &s);
+                ids[count++] = add(
+                    w, t,
+                    sx_v2(sx_test_rng_range(&rng, -20.0, 20.0), sx_test_rng_range(&rng, 0.5, 10.0)),
+                    &s);
             }
             break;
         case 3: /* kinematic start or stop, or a push */

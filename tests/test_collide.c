@@ -1164,7 +1164,7 @@ static void tiny_box_on_a_far_corner_touches_in_both_orders(void **state) {
 #ifdef SX_DOUBLE
     xb.q.s = 1.17554928e-41;
 #else
-    xb.q.s = FLT_MIN * 1e-3f;                     /* a denormal angle, 1.18e-41 */
+    xb.q.s = FLT_MIN * 1e-3f; /* a denormal angle, 1.18e-41 */
 #endif
     assert_true(sx_overlap(&a, xa, &b, xb));
     assert_true(sx_overlap(&b, xb, &a, xa));

@@ -193,7 +193,8 @@ static void filter_truth_table_decides_every_pair(void **state) {
 
 static void sensors_report_but_never_push(void **state) {
     sx_world_def def = sx_default_world_def();
-    sx_shape zone = sx_box_shape(SX_R(2.0), SX_R(2.0)), ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    sx_shape zone = sx_box_shape(SX_R(2.0), SX_R(2.0)),
+             ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
     sx_body_def bd = sx_default_body_def();
     sx_collider_def cd = sx_default_collider_def();
     sx_body_id z, balls[3];
@@ -211,7 +212,8 @@ static void sensors_report_but_never_push(void **state) {
     cd.sensor = true;
     assert_int_equal(sx_body_add_collider(w, z, &cd, NULL), SX_OK);
     for (i = 0; i < 3; ++i) {
-        balls[i] = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-5.0), SX_R(1.5) * (sx_real)(i - 1)), &ball, true);
+        balls[i] = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-5.0), SX_R(1.5) * (sx_real)(i - 1)),
+                            &ball, true);
         assert_int_equal(sx_body_set_linear_velocity(w, balls[i], sx_v2(SX_R(2.0), SX_R(0.0))),
                          SX_OK);
     }

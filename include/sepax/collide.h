@@ -40,7 +40,7 @@ extern "C" {
  *  feature index, bit 16 set when B supplied the reference face. Stable for
  *  as long as the same features touch. */
 #define SX_FEATURE_ID(ref_index, inc_index, flipped)                                               \
-    ((uint32_t)((uint32_t)((ref_index) & 0xFF) | ((uint32_t)((inc_index) & 0xFF) << 8) |           \
+    ((uint32_t)((uint32_t)((ref_index)&0xFF) | ((uint32_t)((inc_index)&0xFF) << 8) |               \
                 ((uint32_t)((flipped) ? 1 : 0) << 16)))
 
 /** One contact point. */
@@ -117,47 +117,56 @@ int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_x
                        sx_real margin, sx_manifold *out);
 
 bool sx_overlap_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb);
-bool sx_mtv_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb, sx_vec2 *mtv);
+bool sx_mtv_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                           sx_vec2 *mtv);
 int sx_collide_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out);
 
 bool sx_overlap_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb);
-bool sx_mtv_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb, sx_vec2 *mtv);
+bool sx_mtv_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
+                     sx_vec2 *mtv);
 int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                         sx_real margin, sx_manifold *out);
 
 bool sx_overlap_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb);
-bool sx_mtv_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb, sx_vec2 *mtv);
+bool sx_mtv_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                           sx_vec2 *mtv);
 int sx_collide_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out);
 
 bool sx_overlap_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb);
-bool sx_mtv_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb, sx_vec2 *mtv);
+bool sx_mtv_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb,
+                            sx_vec2 *mtv);
 int sx_collide_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                                sx_real margin, sx_manifold *out);
 
 bool sx_overlap_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb);
-bool sx_mtv_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb, sx_vec2 *mtv);
+bool sx_mtv_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
+                     sx_vec2 *mtv);
 int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                         sx_real margin, sx_manifold *out);
 
 bool sx_overlap_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb);
-bool sx_mtv_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb, sx_vec2 *mtv);
+bool sx_mtv_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                           sx_vec2 *mtv);
 int sx_collide_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out);
 
 bool sx_overlap_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb);
-bool sx_mtv_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb, sx_vec2 *mtv);
+bool sx_mtv_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb,
+                            sx_vec2 *mtv);
 int sx_collide_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                                sx_real margin, sx_manifold *out);
 
 bool sx_overlap_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb);
-bool sx_mtv_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb, sx_vec2 *mtv);
+bool sx_mtv_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
+                            sx_vec2 *mtv);
 int sx_collide_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                                sx_real margin, sx_manifold *out);
 
 bool sx_overlap_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb);
-bool sx_mtv_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb, sx_vec2 *mtv);
+bool sx_mtv_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
+                     sx_vec2 *mtv);
 int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
                         sx_real margin, sx_manifold *out);
 /* ---- point queries ------------------------------------------------------ */
@@ -200,18 +209,18 @@ sx_vec2 sx_closest_point(const sx_shape *s, sx_xform x, sx_vec2 p);
  *  separation.
  *  Unusable input (or a point so far out that the arithmetic overflows
  *  sx_real) returns SX_REAL_MAX with zero vectors. */
-sx_real sx_shape_distance_to_point(const sx_shape *s, sx_xform x, sx_vec2 p, sx_vec2 *boundary_point,
-                                   sx_vec2 *normal);
+sx_real sx_shape_distance_to_point(const sx_shape *s, sx_xform x, sx_vec2 p,
+                                   sx_vec2 *boundary_point, sx_vec2 *normal);
 
 /* ---- segment-segment intersection --------------------------------------- */
 
 typedef enum sx_segment_relation {
-    SX_SEGMENTS_DISJOINT = 0,      /**< not parallel (or a point), no common point */
-    SX_SEGMENTS_INTERSECT,         /**< exactly one common point */
-    SX_SEGMENTS_PARALLEL,          /**< parallel on distinct lines */
+    SX_SEGMENTS_DISJOINT = 0,       /**< not parallel (or a point), no common point */
+    SX_SEGMENTS_INTERSECT,          /**< exactly one common point */
+    SX_SEGMENTS_PARALLEL,           /**< parallel on distinct lines */
     SX_SEGMENTS_COLLINEAR_DISJOINT, /**< on one line, no common point */
-    SX_SEGMENTS_OVERLAP,           /**< on one line, sharing a sub-segment (or one point) */
-    SX_SEGMENTS_DEGENERATE         /**< an input was non-finite (or too large, see below) */
+    SX_SEGMENTS_OVERLAP,            /**< on one line, sharing a sub-segment (or one point) */
+    SX_SEGMENTS_DEGENERATE          /**< an input was non-finite (or too large, see below) */
 } sx_segment_relation;
 
 typedef struct sx_segment_intersection {

@@ -130,8 +130,12 @@ static inline bool sx_is_normalized(sx_vec2 v) {
 static inline sx_vec2 sx_lerp(sx_vec2 a, sx_vec2 b, sx_real t) {
     return sx_v2(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y));
 }
-static inline sx_vec2 sx_vmin(sx_vec2 a, sx_vec2 b) { return sx_v2(sx_minr(a.x, b.x), sx_minr(a.y, b.y)); }
-static inline sx_vec2 sx_vmax(sx_vec2 a, sx_vec2 b) { return sx_v2(sx_maxr(a.x, b.x), sx_maxr(a.y, b.y)); }
+static inline sx_vec2 sx_vmin(sx_vec2 a, sx_vec2 b) {
+    return sx_v2(sx_minr(a.x, b.x), sx_minr(a.y, b.y));
+}
+static inline sx_vec2 sx_vmax(sx_vec2 a, sx_vec2 b) {
+    return sx_v2(sx_maxr(a.x, b.x), sx_maxr(a.y, b.y));
+}
 static inline sx_vec2 sx_vabs(sx_vec2 a) { return sx_v2(sx_absr(a.x), sx_absr(a.y)); }
 /** Component-wise clamp of v to [lo, hi]. */
 static inline sx_vec2 sx_vclamp(sx_vec2 v, sx_vec2 lo, sx_vec2 hi) {
@@ -240,9 +244,13 @@ static inline sx_xform sx_xform_make(sx_vec2 position, sx_real angle) {
     return x;
 }
 /** Local point to world: q v + p. */
-static inline sx_vec2 sx_xform_point(sx_xform x, sx_vec2 v) { return sx_add(sx_rotate(x.q, v), x.p); }
+static inline sx_vec2 sx_xform_point(sx_xform x, sx_vec2 v) {
+    return sx_add(sx_rotate(x.q, v), x.p);
+}
 /** World point to local: q^-1 (v - p). */
-static inline sx_vec2 sx_xform_inv_point(sx_xform x, sx_vec2 v) { return sx_inv_rotate(x.q, sx_sub(v, x.p)); }
+static inline sx_vec2 sx_xform_inv_point(sx_xform x, sx_vec2 v) {
+    return sx_inv_rotate(x.q, sx_sub(v, x.p));
+}
 /** Local direction to world (rotation only). */
 static inline sx_vec2 sx_xform_vector(sx_xform x, sx_vec2 v) { return sx_rotate(x.q, v); }
 /** World direction to local (rotation only). */

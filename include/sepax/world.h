@@ -378,7 +378,7 @@ typedef struct sx_body_def {
      *  player character); default true. The world's enable_sleep still
      *  switches sleeping off for every body. */
     bool enable_sleep;
-    void *user_data;          /**< returned by sx_body_get_user_data; default NULL */
+    void *user_data; /**< returned by sx_body_get_user_data; default NULL */
 } sx_body_def;
 
 /** The default body settings (a static body at the origin). */
