@@ -307,18 +307,24 @@ typedef struct sx_closest {
 } sx_closest;
 
 /* Offers the pair (vertex q of one core, edge i of core p) to the sweep.
- * p_is_a says which core owns the edge. */
+ * p_is_a says which core owns the edge. Where q projects on the edge is
+ * measured along the edge direction of the face's normal, not along the
+ * difference of the placed end points: a polygon placed far from the working
+ * origin has its vertices rounded while its normals stay exact, and an edge
+ * shorter than that rounding (a 5 mm edge at 1e5 m in float) points
+ * anywhere; the face case would then take q's distance to the face's line
+ * for a q far beyond the face's ends (a 16 m gap reported as 77 km). */
 static inline void offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index, bool p_is_a,
                               sx_closest *best) {
     int i2 = next_index(p, i);
-    sx_vec2 v1 = p->v[i], e = sx_sub(p->v[i2], v1), w = sx_sub(q, v1);
-    sx_real t = sx_dot(w, e);
-    sx_vec2 on_p, n;
+    sx_vec2 v1 = p->v[i], w = sx_sub(q, v1), n = p->n[i], dir = sx_v2(-n.y, n.x);
+    sx_real t = sx_dot(w, dir);
+    sx_vec2 on_p;
     sx_real dsq, s;
     int face = i, vertex = -1;
     if (t <= SX_R(0.0)) {
         vertex = i;
-    } else if (t >= sx_dot(e, e)) {
+    } else if (t >= sx_dot(sx_sub(p->v[i2], v1), dir)) {
         vertex = i2;
     }
     if (vertex >= 0) {
@@ -338,7 +344,6 @@ static inline void offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index, b
         best->normal = sx_v2_zero();
         return;
     }
-    n = p->n[i];
     s = sx_dot(w, n);
     if (p->count == 2 && s < SX_R(0.0)) {
         n = p->n[1];

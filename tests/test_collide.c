@@ -1190,6 +1190,54 @@ static void tiny_box_on_a_far_corner_touches_in_both_orders(void **state) {
 }
 
 /* Regression (make fuzz, harness collide, input
+ * collide-far-tiny-octagon-rounded-gap): a tiny octagon (5 mm edges) 1e5 m
+ * from a rounded octagon of radius 1e5, 16 m apart. Worked in the rounded
+ * octagon's frame, the tiny one's vertices round by ~8 mm (float) while its
+ * normals stay exact, so its placed edges point anywhere; the closest-feature
+ * sweep took a vertex's distance to a face's line although the vertex lies
+ * far beyond the face's ends, and sx_collide(B, A) reported a contact 22 km
+ * deep while sx_overlap said apart. The sweep now measures where a vertex
+ * projects along the face normal's edge direction. Moved 20 m closer the
+ * pair overlaps by about 4 m in both orders. */
+static void tiny_octagon_far_from_a_huge_rounded_octagon_is_apart_in_both_orders(void **state) {
+    static const double ka[8][2] = {
+        {-0.0203999989, -0.0135999992}, {-0.0184083246, -0.0184083246},
+        {-0.0135999992, -0.0203999989}, {-0.00879167393, -0.0184083246},
+        {-0.00679999962, -0.0135999992}, {-0.00879167393, -0.00879167207},
+        {-0.0135999992, -0.00679999962}, {-0.0184083264, -0.00879167579}};
+    sx_vec2 qa[8], qb[8];
+    sx_shape a, b;
+    sx_xform xa, xb = X(-16, -16, 0);
+    sx_manifold m;
+    sx_vec2 v;
+    int i, order;
+    (void)state;
+    for (i = 0; i < 8; ++i) {
+        qa[i] = V(ka[i][0], ka[i][1]);
+        /* B's core is A's octagon moved up by 0.0195 */
+        qb[i] = V(ka[i][0], ka[i][1] + 0.0195);
+    }
+    assert_int_equal(sx_polygon_shape(qa, 8, SX_R(0.0), &a), SX_OK);
+    assert_int_equal(sx_polygon_shape(qb, 8, SX_R(100000.0), &b), SX_OK);
+    xa.p = V(100000.0, -16.0);
+    xa.q = sx_rot_make((sx_real)atan2(0.287903309, -0.957659483));
+    assert_false(sx_overlap(&a, xa, &b, xb));
+    assert_false(sx_overlap(&b, xb, &a, xa));
+    assert_false(sx_mtv(&b, xb, &a, xa, &v));
+    assert_int_equal(sx_collide(&a, xa, &b, xb, &m), 0);
+    assert_int_equal(sx_collide(&b, xb, &a, xa, &m), 0);
+    /* 1 m of speculative margin does not reach across the 16 m gap */
+    assert_int_equal(sx_collide_ex(&b, xb, &a, xa, SX_R(1.0), &m), 0);
+    /* 20 m closer: about 4 m deep (the octagons' own size is < 0.02 m) */
+    xa.p = V(99980.0, -16.0);
+    for (order = 0; order < 2; ++order) {
+        int n = order ? sx_collide(&b, xb, &a, xa, &m) : sx_collide(&a, xa, &b, xb, &m);
+        assert_true(n >= 1);
+        assert_near(m.points[0].depth, 4.0, 0.05);
+    }
+}
+
+/* Regression (make fuzz, harness collide, input
  * collide-point-circles-denormal-normal): two point circles 1.9e-22 apart
  * (float) with a speculative margin. The squared distance, 3.6e-44, is a
  * denormal with a few bits left, so the normal d / |d| came out 0.6 % short
@@ -1270,6 +1318,7 @@ int main(void) {
         cmocka_unit_test(a_speculative_margin_never_reports_fewer_points_than_margin_0),
         cmocka_unit_test(circles_closer_than_square_underflow_compare_exactly),
         cmocka_unit_test(tiny_box_on_a_far_corner_touches_in_both_orders),
+        cmocka_unit_test(tiny_octagon_far_from_a_huge_rounded_octagon_is_apart_in_both_orders),
         cmocka_unit_test(speculative_circles_closer_than_square_underflow_get_a_unit_normal),
     };
     return cmocka_run_group_tests_name("collide", tests, sx_test_group_setup,
