@@ -395,12 +395,50 @@ static void vertex_direction(sx_closest *c) {
     }
 }
 
+/* The face of polygon core p (count >= 3) that separates the point q the
+ * most: the first of largest separation, kept without a branch. */
+static inline int point_best_face(const sx_core *p, sx_vec2 q) {
+    int i, f = 0;
+    sx_real best = sx_dot(p->n[0], sx_sub(q, p->v[0]));
+    for (i = 1; i < p->count; ++i) {
+        sx_real s = sx_dot(p->n[i], sx_sub(q, p->v[i]));
+        f = s > best ? i : f;
+        best = s > best ? s : best;
+    }
+    return f;
+}
+
+/* Offers every vertex of q to the edges of p (p_is_a: p is A), edge-major.
+ * A polygon p needs only one edge per vertex: for a point outside a convex
+ * polygon the closest point lies on the face that separates it the most
+ * (see point_closest below; every vertex of q is outside p, the cores being
+ * disjoint), so the other edges cannot win the sweep, and the sweep visits
+ * the candidates that can in the order of the full sweep, edge-major, so
+ * exact ties resolve as they did. */
+static void offer_vertices(const sx_core *p, const sx_core *q, bool p_is_a, sx_closest *out) {
+    int i, j, edges = p->count >= 3 ? p->count : p->count - 1;
+    if (p->count >= 3) {
+        int face[SX_MAX_POLYGON_VERTICES];
+        for (j = 0; j < q->count; ++j)
+            face[j] = point_best_face(p, q->v[j]);
+        for (i = 0; i < edges; ++i) {
+            for (j = 0; j < q->count; ++j) {
+                if (face[j] == i) offer_edge(p, i, q->v[j], j, p_is_a, out);
+            }
+        }
+        return;
+    }
+    for (i = 0; i < edges; ++i) {
+        for (j = 0; j < q->count; ++j)
+            offer_edge(p, i, q->v[j], j, p_is_a, out);
+    }
+}
+
 /* Distance and closest features of two disjoint cores: every vertex of one
- * against every edge of the other (A's edges first, so ties keep A's face). */
+ * against the edges of the other (A's edges first, so ties keep A's face). */
 static void closest_features(const sx_core *a, const sx_core *b, sx_closest *out) {
     int ea = a->count >= 3 ? a->count : a->count - 1;
     int eb = b->count >= 3 ? b->count : b->count - 1;
-    int i, j;
     out->dist_sq = SX_REAL_MAX;
     out->distance = SX_REAL_MAX;
     out->kind = SX_CLOSEST_VERTICES;
@@ -409,14 +447,8 @@ static void closest_features(const sx_core *a, const sx_core *b, sx_closest *out
     out->pa = a->v[0];
     out->pb = b->v[0];
     out->normal = sx_v2_zero();
-    for (i = 0; i < ea; ++i) {
-        for (j = 0; j < b->count; ++j)
-            offer_edge(a, i, b->v[j], j, true, out);
-    }
-    for (i = 0; i < eb; ++i) {
-        for (j = 0; j < a->count; ++j)
-            offer_edge(b, i, a->v[j], j, false, out);
-    }
+    offer_vertices(a, b, true, out);
+    offer_vertices(b, a, false, out);
     if (ea == 0 && eb == 0) out->dist_sq = sx_distance_sq(a->v[0], b->v[0]);
     vertex_direction(out);
 }
