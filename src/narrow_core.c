@@ -110,14 +110,11 @@ bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) 
     out->radius = p->radius;
     out->count = n;
     if (x == NULL) {
-        /* Shape A is read in place: no copy. */
+        /* Shape A is read in place: no copy, and no check of its values
+         * yet (sx_core_values_finite, once the answer is not "apart"). */
         out->v = p->vertices;
         out->n = p->normals;
-        for (i = 0; i + 1 < n; i += 2) {
-            acc += finite_fold(p->vertices[i], p->normals[i]);
-            acc1 += finite_fold(p->vertices[i + 1], p->normals[i + 1]);
-        }
-        if (i < n) acc += finite_fold(p->vertices[i], p->normals[i]);
+        return true;
     } else {
         /* One pass places each vertex and normal and checks the result. */
         sx_xform q = *x;
@@ -130,6 +127,18 @@ bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) 
         out->v = out->vs;
         out->n = out->ns;
     }
+    return acc + acc1 == SX_R(0.0);
+}
+
+bool sx_core_values_finite(const sx_core *c) {
+    sx_real acc = SX_R(0.0), acc1 = SX_R(0.0);
+    int i, n = c->count;
+    if (n < 3) return true; /* segments and capsules are checked when built */
+    for (i = 0; i + 1 < n; i += 2) {
+        acc += finite_fold(c->v[i], c->n[i]);
+        acc1 += finite_fold(c->v[i + 1], c->n[i + 1]);
+    }
+    if (i < n) acc += finite_fold(c->v[i], c->n[i]);
     return acc + acc1 == SX_R(0.0);
 }
 
