@@ -91,7 +91,7 @@ static int finish_collide(const sx_core *ca, const sx_core *cb, sx_xform xa, sx_
     sx_manifold *m = out ? out : &scratch;
     int local = sx_core_manifold(ca, cb, clean_margin(margin), m, clear_cut);
     int count;
-    if (local > 0 && !sx_core_values_finite(ca)) local = 0;
+    if (local > 0 && !(sx_core_values_finite(ca) && sx_core_values_finite(cb))) local = 0;
     count = world_manifold(m, local, xa);
     if (clear_cut && count != local) *clear_cut = false;
     return count;
@@ -311,7 +311,7 @@ static bool pair_overlap(sx_core_builder *fa, const void *a, sx_xform xa, sx_cor
                          const void *b, sx_xform xb) {
     sx_core ca, cb;
     return build_pair(fa, a, xa, fb, b, xb, &ca, &cb) && sx_core_overlap(&ca, &cb) &&
-           sx_core_values_finite(&ca);
+           sx_core_values_finite(&ca) && sx_core_values_finite(&cb);
 }
 
 static bool pair_mtv(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
@@ -319,7 +319,7 @@ static bool pair_mtv(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_bu
     sx_core ca, cb;
     sx_vec2 local = sx_v2_zero();
     bool hit = build_pair(fa, a, xa, fb, b, xb, &ca, &cb) && sx_core_mtv(&ca, &cb, &local) &&
-               sx_core_values_finite(&ca);
+               sx_core_values_finite(&ca) && sx_core_values_finite(&cb);
     return finish_mtv(hit, local, xa, mtv);
 }
 
