@@ -90,7 +90,9 @@ static int finish_collide(const sx_core *ca, const sx_core *cb, sx_xform xa, sx_
     sx_manifold scratch;
     sx_manifold *m = out ? out : &scratch;
     int local = sx_core_manifold(ca, cb, clean_margin(margin), m, clear_cut);
-    int count = world_manifold(m, local, xa);
+    int count;
+    if (local > 0 && !(sx_core_values_finite(ca) && sx_core_values_finite(cb))) local = 0;
+    count = world_manifold(m, local, xa);
     if (clear_cut && count != local) *clear_cut = false;
     return count;
 }
@@ -319,14 +321,16 @@ static bool build_pair(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_
 static bool pair_overlap(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
                          const void *b, sx_xform xb) {
     sx_core ca, cb;
-    return build_pair(fa, a, xa, fb, b, xb, &ca, &cb) && sx_core_overlap(&ca, &cb);
+    return build_pair(fa, a, xa, fb, b, xb, &ca, &cb) && sx_core_overlap(&ca, &cb) &&
+           sx_core_values_finite(&ca) && sx_core_values_finite(&cb);
 }
 
 static bool pair_mtv(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
                      const void *b, sx_xform xb, sx_vec2 *mtv) {
     sx_core ca, cb;
     sx_vec2 local = sx_v2_zero();
-    bool hit = build_pair(fa, a, xa, fb, b, xb, &ca, &cb) && sx_core_mtv(&ca, &cb, &local);
+    bool hit = build_pair(fa, a, xa, fb, b, xb, &ca, &cb) && sx_core_mtv(&ca, &cb, &local) &&
+               sx_core_values_finite(&ca) && sx_core_values_finite(&cb);
     return finish_mtv(hit, local, xa, mtv);
 }
 
@@ -369,7 +373,7 @@ static bool point_overlap(sx_core_builder *fa, const void *a, sx_xform xa, const
     sx_core ca;
     sx_vec2 c;
     return circle_in_frame(b, xa, xb, &c) && fa(a, NULL, &ca) &&
-           sx_core_point_overlap(&ca, c, b->radius);
+           sx_core_point_overlap(&ca, c, b->radius) && sx_core_values_finite(&ca);
 }
 
 static bool point_mtv(sx_core_builder *fa, const void *a, sx_xform xa, const sx_circle *b,
@@ -377,7 +381,7 @@ static bool point_mtv(sx_core_builder *fa, const void *a, sx_xform xa, const sx_
     sx_core ca;
     sx_vec2 c, local = sx_v2_zero();
     bool hit = circle_in_frame(b, xa, xb, &c) && fa(a, NULL, &ca) &&
-               sx_core_point_mtv(&ca, c, b->radius, &local);
+               sx_core_point_mtv(&ca, c, b->radius, &local) && sx_core_values_finite(&ca);
     return finish_mtv(hit, local, xa, mtv);
 }
 
@@ -387,12 +391,14 @@ static int point_collide(sx_core_builder *fa, const void *a, sx_xform xa, const 
     sx_vec2 c;
     sx_manifold scratch;
     sx_manifold *m = out ? out : &scratch;
+    int local;
     if (!circle_in_frame(b, xa, xb, &c) || !fa(a, NULL, &ca)) {
         clear_manifold(out);
         return 0;
     }
-    return world_manifold(m, sx_core_point_manifold(&ca, c, b->radius, clean_margin(margin), m),
-                          xa);
+    local = sx_core_point_manifold(&ca, c, b->radius, clean_margin(margin), m);
+    if (local > 0 && !sx_core_values_finite(&ca)) local = 0;
+    return world_manifold(m, local, xa);
 }
 
 /* Same-type pairs: overlap and MTV in the canonical order. `order` > 0 means

@@ -49,12 +49,22 @@ typedef struct sx_core {
  * the shape's own frame, as for shape A). Each returns
  * false (and leaves *out unusable) for NULL, a negative or non-finite radius,
  * a polygon count outside 3..SX_MAX_POLYGON_VERTICES or any non-finite value,
- * before or after the transform. A zero-length segment or capsule becomes a
+ * before or after the transform (a polygon's vertices and normals: see
+ * sx_core_values_finite). A zero-length segment or capsule becomes a
  * 1-point core at its end point a. Circles never become cores: the point
  * routines below take their centre. */
 bool sx_core_from_segment(const sx_segment *s, const sx_xform *x, sx_core *out);
 bool sx_core_from_capsule(const sx_capsule *c, const sx_xform *x, sx_core *out);
 bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out);
+
+/* sx_core_from_polygon checks the count and the radius only: the values of
+ * a polygon core (placed or read in place) are checked by this function,
+ * which the caller runs once the answer is not "apart" (a non-finite value
+ * can only make the routines below answer "apart", or answer something that
+ * this check then rejects; they never index out of the core). True for
+ * finite values; segment and capsule cores (checked when built) always
+ * pass. */
+bool sx_core_values_finite(const sx_core *c);
 
 /** True if the rounded cores overlap or touch. Same decisions as
  *  sx_core_mtv, with early outs. */

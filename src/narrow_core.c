@@ -92,17 +92,7 @@ bool sx_core_from_capsule(const sx_capsule *c, const sx_xform *x, sx_core *out) 
     return core_set_segment(c->a, c->b, c->radius, x, out);
 }
 
-/* Places vertex i of p and its normal into out's storage by *q; returns
- * their finite_fold. */
-static inline sx_real place_vertex(const sx_xform *q, const sx_polygon *p, int i, sx_core *out) {
-    sx_vec2 v = sx_xform_point(*q, p->vertices[i]), m = sx_rotate(q->q, p->normals[i]);
-    out->vs[i] = v;
-    out->ns[i] = m;
-    return finite_fold(v, m);
-}
-
 bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) {
-    sx_real acc = SX_R(0.0), acc1 = SX_R(0.0);
     int i, n;
     if (p == NULL || !core_radius_ok(p->radius)) return false;
     n = p->count;
@@ -113,23 +103,29 @@ bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) 
         /* Shape A is read in place: no copy. */
         out->v = p->vertices;
         out->n = p->normals;
-        for (i = 0; i + 1 < n; i += 2) {
-            acc += finite_fold(p->vertices[i], p->normals[i]);
-            acc1 += finite_fold(p->vertices[i + 1], p->normals[i + 1]);
-        }
-        if (i < n) acc += finite_fold(p->vertices[i], p->normals[i]);
     } else {
-        /* One pass places each vertex and normal and checks the result. */
         sx_xform q = *x;
-        /* Two sums (even and odd vertices): half the chain to wait on. */
-        for (i = 0; i + 1 < n; i += 2) {
-            acc += place_vertex(&q, p, i, out);
-            acc1 += place_vertex(&q, p, i + 1, out);
+        for (i = 0; i < n; ++i) {
+            out->vs[i] = sx_xform_point(q, p->vertices[i]);
+            out->ns[i] = sx_rotate(q.q, p->normals[i]);
         }
-        if (i < n) acc += place_vertex(&q, p, i, out);
         out->v = out->vs;
         out->n = out->ns;
     }
+    /* The values are checked by sx_core_values_finite, once the answer is
+     * not "apart" (see narrow.h). */
+    return true;
+}
+
+bool sx_core_values_finite(const sx_core *c) {
+    sx_real acc = SX_R(0.0), acc1 = SX_R(0.0);
+    int i, n = c->count;
+    if (n < 3) return true; /* segments and capsules are checked when built */
+    for (i = 0; i + 1 < n; i += 2) {
+        acc += finite_fold(c->v[i], c->n[i]);
+        acc1 += finite_fold(c->v[i + 1], c->n[i + 1]);
+    }
+    if (i < n) acc += finite_fold(c->v[i], c->n[i]);
     return acc + acc1 == SX_R(0.0);
 }
 
@@ -400,12 +396,50 @@ static void vertex_direction(sx_closest *c) {
     }
 }
 
+/* The face of polygon core p (count >= 3) that separates the point q the
+ * most: the first of largest separation, kept without a branch. */
+static inline int point_best_face(const sx_core *p, sx_vec2 q) {
+    int i, f = 0;
+    sx_real best = sx_dot(p->n[0], sx_sub(q, p->v[0]));
+    for (i = 1; i < p->count; ++i) {
+        sx_real s = sx_dot(p->n[i], sx_sub(q, p->v[i]));
+        f = s > best ? i : f;
+        best = s > best ? s : best;
+    }
+    return f;
+}
+
+/* Offers every vertex of q to the edges of p (p_is_a: p is A), edge-major.
+ * A polygon p needs only one edge per vertex: for a point outside a convex
+ * polygon the closest point lies on the face that separates it the most
+ * (see point_closest below; every vertex of q is outside p, the cores being
+ * disjoint), so the other edges cannot win the sweep, and the sweep visits
+ * the candidates that can in the order of the full sweep, edge-major, so
+ * exact ties resolve as they did. */
+static void offer_vertices(const sx_core *p, const sx_core *q, bool p_is_a, sx_closest *out) {
+    int i, j, edges = p->count >= 3 ? p->count : p->count - 1;
+    if (p->count >= 3) {
+        int face[SX_MAX_POLYGON_VERTICES];
+        for (j = 0; j < q->count; ++j)
+            face[j] = point_best_face(p, q->v[j]);
+        for (i = 0; i < edges; ++i) {
+            for (j = 0; j < q->count; ++j) {
+                if (face[j] == i) offer_edge(p, i, q->v[j], j, p_is_a, out);
+            }
+        }
+        return;
+    }
+    for (i = 0; i < edges; ++i) {
+        for (j = 0; j < q->count; ++j)
+            offer_edge(p, i, q->v[j], j, p_is_a, out);
+    }
+}
+
 /* Distance and closest features of two disjoint cores: every vertex of one
- * against every edge of the other (A's edges first, so ties keep A's face). */
+ * against the edges of the other (A's edges first, so ties keep A's face). */
 static void closest_features(const sx_core *a, const sx_core *b, sx_closest *out) {
     int ea = a->count >= 3 ? a->count : a->count - 1;
     int eb = b->count >= 3 ? b->count : b->count - 1;
-    int i, j;
     out->dist_sq = SX_REAL_MAX;
     out->distance = SX_REAL_MAX;
     out->kind = SX_CLOSEST_VERTICES;
@@ -414,14 +448,8 @@ static void closest_features(const sx_core *a, const sx_core *b, sx_closest *out
     out->pa = a->v[0];
     out->pb = b->v[0];
     out->normal = sx_v2_zero();
-    for (i = 0; i < ea; ++i) {
-        for (j = 0; j < b->count; ++j)
-            offer_edge(a, i, b->v[j], j, true, out);
-    }
-    for (i = 0; i < eb; ++i) {
-        for (j = 0; j < a->count; ++j)
-            offer_edge(b, i, a->v[j], j, false, out);
-    }
+    offer_vertices(a, b, true, out);
+    offer_vertices(b, a, false, out);
     if (ea == 0 && eb == 0) out->dist_sq = sx_distance_sq(a->v[0], b->v[0]);
     vertex_direction(out);
 }

@@ -875,7 +875,7 @@ static void far_from_the_origin_gives_the_same_answers(void **state) {
 }
 
 static void non_finite_input_answers_no_contact(void **state) {
-    sx_shape good[4], bad[6];
+    sx_shape good[4], bad[8];
     sx_xform nan_x = X(0, 0, 0), inf_x = X(0, 0, 0);
     sx_vec2 mtv;
     sx_manifold m;
@@ -898,6 +898,12 @@ static void non_finite_input_answers_no_contact(void **state) {
     bad[4] = circle(0, 0, -1);
     bad[5] = box(1, 1);
     bad[5].u.polygon.count = 0;
+    /* Polygon values are checked only once the answer is not "apart" (a
+     * NaN normal, an infinite vertex on the far side): still no contact. */
+    bad[6] = box(1, 1);
+    bad[6].u.polygon.normals[1].y = (sx_real)NAN;
+    bad[7] = box(1, 1);
+    bad[7].u.polygon.vertices[0].y = -(sx_real)INFINITY;
     for (i = 0; i < 4; ++i) {
         for (j = 0; j < 4; ++j) {
             assert_false(sx_overlap(&good[i], nan_x, &good[j], I()));
@@ -908,7 +914,7 @@ static void non_finite_input_answers_no_contact(void **state) {
             assert_int_equal(sx_collide(&good[i], I(), &good[j], inf_x, &m), 0);
             assert_int_equal(m.count, 0);
         }
-        for (j = 0; j < 6; ++j) {
+        for (j = 0; j < 8; ++j) {
             assert_false(sx_overlap(&good[i], I(), &bad[j], I()));
             assert_false(sx_overlap(&bad[j], I(), &good[i], I()));
             mtv = V(7, 7);
