@@ -37,6 +37,19 @@ static double dec_round(double scale) {
     return 4096.0 * (double)SX_REAL_EPSILON * (scale > 1.0 ? scale : 1.0);
 }
 
+#ifdef SX_DOUBLE
+#define DEC_REAL_MIN DBL_MIN
+#else
+#define DEC_REAL_MIN ((double)FLT_MIN)
+#endif
+
+/* The construction's guarantee is kept only while the rounding at the
+ * points' current extent stays far below the feature size. */
+static void dec_check_rounding(const sx_vec2 *pts, int count, sx_real unit, int *kind) {
+    double extent = (double)fz_extent(pts, count);
+    if (!(extent <= (double)SX_HUGE) || !((double)unit > 64.0 * dec_round(extent))) *kind = DEC_ANY;
+}
+
 /* Distance from p to the segment a-b, in double. */
 static double dec_seg_dist(sx_vec2 a, sx_vec2 b, sx_vec2 p) {
     double ex = (double)b.x - (double)a.x, ey = (double)b.y - (double)a.y;
@@ -91,7 +104,11 @@ static double dec_signed_area(const sx_vec2 *p, int n, double *perimeter) {
 }
 
 /* Builds the outline; *kind says what the construction guarantees and
- * *unit its feature size (0 when unknown). */
+ * *unit its feature size (0 when unknown). The points round at every
+ * extent they pass through, not only at the last one (a bow-tie moved out
+ * to 3e38 and back to the origin comes back as points on a line), so a
+ * translation or scale whose rounding is not far below the feature size
+ * drops the guarantee there and then. */
 static int dec_outline(fz_reader *r, sx_vec2 *pts, int *kind, sx_real *unit, bool *rounded) {
     uint8_t mode = fz_u8(r);
     int count = 0, i;
@@ -185,13 +202,18 @@ static int dec_outline(fz_reader *r, sx_vec2 *pts, int *kind, sx_real *unit, boo
                 pts[i] = sx_v2(pts[i].x * f, pts[i].y * f);
             *unit = *unit * sx_absr(f);
             if (!(f != SX_R(0.0) && sx_is_finite(f))) *kind = DEC_ANY;
+            /* Near the bottom of the range the coordinates lose bits (a
+             * scale into the denormals and back up flattens the shape). */
+            if (!((double)*unit > 1e6 * DEC_REAL_MIN)) *kind = DEC_ANY;
+            dec_check_rounding(pts, count, *unit, kind);
         } else if (op % 8u == 3u) { /* translate by a decoded offset */
             sx_vec2 o = fz_vec2(r);
             for (i = 0; i < count; ++i)
                 pts[i] = sx_add(pts[i], o);
-            /* the translated points round: only the kind survives at scales
-             * where that rounding is far below the feature size (checked by
-             * the caller against the extent) */
+            /* the translated points round at their new extent: the kind
+             * survives only where that rounding is far below the feature
+             * size (the caller checks the final extent the same way) */
+            dec_check_rounding(pts, count, *unit, kind);
         } else if (op % 8u == 4u) { /* replace one point by a decoded one */
             pts[at] = fz_vec2(r);
             *kind = DEC_ANY;

@@ -42,31 +42,41 @@ static bool lower_left(sx_vec2 a, sx_vec2 b) { return a.x < b.x || (a.x == b.x &
 
 static sx_wide wabs(sx_wide x) { return x < SX_W(0.0) ? -x : x; }
 
-/* Per coordinate, the larger magnitude of two points: bounds the rounding of
- * their difference in the wide real (a difference of two reals is not
- * always exact even there: float coordinates 2^30 apart in the float build,
- * double ones near 1e6 and 1e-10 in the double build). */
-static sx_wvec2 wmag2(sx_vec2 a, sx_vec2 b) {
-    sx_wide ax = wabs((sx_wide)a.x), ay = wabs((sx_wide)a.y);
-    sx_wide bx = wabs((sx_wide)b.x), by = wabs((sx_wide)b.y);
-    return sx_wv(ax > bx ? ax : bx, ay > by ? ay : by);
+/* Bound on the rounding of sx_wcross(a, b), where a and b are differences
+ * of input points taken in the wide real. IEEE arithmetic rounds each
+ * operation once, relative to its exact result: a difference is off by at
+ * most half an ulp of the difference itself (never of the points' magnitudes;
+ * a difference that cancels is exact), and so are the two products and their
+ * difference. Within this bound the sign of the cross product is noise and
+ * the two directions count as collinear; outside it the sign is the exact
+ * one. (A bound taken from the points' magnitudes instead made every
+ * direction along a run of points 1e-34 apart at x = 15 pure noise: the wrap
+ * then stopped at the top of the run and lost a hull vertex 7 m away.) */
+static sx_wide cross_noise(sx_wvec2 a, sx_wvec2 b) {
+    return SX_W(4.0) * SX_WIDE_EPSILON * (wabs(a.x * b.y) + wabs(a.y * b.x));
 }
 
-/* Bound on the rounding of sx_wcross(a, b), where a and b are differences of
- * points whose coordinates are bounded per axis by ma and mb: each
- * difference is off by up to an ulp of those magnitudes per coordinate, and
- * the two products round too. Within it, the sign of the cross product is
- * noise and the two directions count as collinear. */
-static sx_wide cross_noise(sx_wvec2 a, sx_wvec2 ma, sx_wvec2 b, sx_wvec2 mb) {
-    sx_wide ax = wabs(a.x), ay = wabs(a.y), bx = wabs(b.x), by = wabs(b.y);
-    return SX_W(4.0) * SX_WIDE_EPSILON *
-           (ma.x * by + ma.y * bx + mb.x * ay + mb.y * ax + ax * by + ay * bx);
+/* The cross product of u with v, where w = v + k u for some k (the
+ * difference of the same input point from another base point on u's line):
+ * cross(u, v) == cross(u, w) exactly, but the computed forms round
+ * differently, and the one with the smaller noise bound is taken. Far from
+ * the points, differences from a distant vertex lose their low bits (1e18 +
+ * 1.75 and 1e18 + 12.375 round to the same double), while the difference of
+ * the two near points is exact: orientations among near points keep their
+ * sign even beside a vertex 1e18 away. */
+static sx_wide cross_best(sx_wvec2 u, sx_wvec2 v, sx_wvec2 w, sx_wide *noise) {
+    sx_wide nv = cross_noise(u, v), nw = cross_noise(u, w);
+    if (nw < nv) {
+        *noise = nw;
+        return sx_wcross(u, w);
+    }
+    *noise = nv;
+    return sx_wcross(u, v);
 }
 
 /* One gift-wrapping step from points[p], where d is the direction of the
- * previous edge, computed from points of magnitudes d_mag (per axis). Returns
- * the next hull point, or -1 when no point lies ahead (the cloud is
- * collinear, or everything left is welded to p). Orientations within their
+ * previous edge. Returns the next hull point, or -1 when no point lies
+ * ahead (the cloud is collinear, or everything left is welded to p). Orientations within their
  * rounding noise of zero (cross_noise) are ties, decided the same way in
  * both tests: a point collinear with the previous edge within the noise is
  * ahead when it lies beyond p, and of two candidates collinear with p within
@@ -74,31 +84,31 @@ static sx_wide cross_noise(sx_wvec2 a, sx_wvec2 ma, sx_wvec2 b, sx_wvec2 mb) {
  * instead can let the wrap jump past a point that lies almost on the
  * previous edge's extension and then exclude it as "behind" that edge,
  * although it lies outside the hull by much more than the noise. */
-static int wrap_step(const sx_vec2 *points, int count, int p, sx_wvec2 d, sx_wvec2 d_mag,
+static int wrap_step(const sx_vec2 *points, int count, int prev, int p, sx_wvec2 d,
                      sx_wide tol2, sx_wvec2 *edge) {
     int q = -1, r;
-    sx_wvec2 qe = sx_wv(SX_W(0.0), SX_W(0.0)), q_mag = qe;
+    sx_wvec2 qe = sx_wv(SX_W(0.0), SX_W(0.0));
     for (r = 0; r < count; ++r) {
         sx_wvec2 e = sx_wdiff(points[r], points[p]);
-        sx_wvec2 e_mag;
         sx_wide side, c, noise;
         bool take;
         if (sx_wdot(e, e) <= tol2) continue; /* welded to p (and p itself) */
-        side = sx_wcross(d, e);
-        e_mag = wmag2(points[r], points[p]);
         /* Only points ahead of the previous edge: this keeps every candidate
          * within a half-turn of each other, so the cross product orders them.
          * A side within the noise counts as 0: ahead only beyond p. */
-        noise = cross_noise(d, d_mag, e, e_mag);
+        if (prev >= 0) {
+            side = cross_best(d, e, sx_wdiff(points[r], points[prev]), &noise);
+        } else {
+            side = sx_wcross(d, e);
+            noise = cross_noise(d, e);
+        }
         if (side < -noise || (side <= noise && sx_wdot(d, e) <= SX_W(0.0))) continue;
         if (q < 0) {
             q = r;
             qe = e;
-            q_mag = e_mag;
             continue;
         }
-        c = sx_wcross(qe, e);
-        noise = cross_noise(qe, q_mag, e, e_mag);
+        c = cross_best(qe, e, sx_wdiff(points[r], points[q]), &noise);
         if (c < -noise) {
             take = true; /* e clockwise of qe */
         } else if (c <= noise) {
@@ -114,7 +124,6 @@ static int wrap_step(const sx_vec2 *points, int count, int p, sx_wvec2 d, sx_wve
         if (take) {
             q = r;
             qe = e;
-            q_mag = e_mag;
         }
     }
     *edge = qe;
@@ -261,9 +270,8 @@ static void prune(hull_work *w) {
 sx_status sx_compute_hull(const sx_vec2 *points, int count, sx_real weld_tolerance, sx_hull *out) {
     hull_work w;
     sx_wvec2 d, edge;
-    sx_wvec2 d_mag = sx_wv(SX_W(0.0), SX_W(0.0));
     sx_wide area2 = SX_W(0.0);
-    int i, start, p, first;
+    int i, start, p, prev = -1, first;
     if (out == NULL) return SX_ERR_INVALID_ARG;
     hull_clear(out);
     if (points == NULL || count < 0 || !sx_is_finite(weld_tolerance) ||
@@ -290,7 +298,7 @@ sx_status sx_compute_hull(const sx_vec2 *points, int count, sx_real weld_toleran
     w.raw_count = 1;
     p = start;
     for (;;) {
-        int q = wrap_step(points, count, p, d, d_mag, w.tol2, &edge);
+        int q = wrap_step(points, count, prev, p, d, w.tol2, &edge);
         sx_wvec2 back;
         if (q < 0) break;
         back = sx_wdiff(points[q], points[start]);
@@ -298,7 +306,7 @@ sx_status sx_compute_hull(const sx_vec2 *points, int count, sx_real weld_toleran
         if (w.raw_count == SX_HULL_MAX_RAW_VERTICES) return SX_ERR_CAPACITY;
         w.raw[w.raw_count++] = q;
         d = edge;
-        d_mag = wmag2(points[p], points[q]);
+        prev = p;
         p = q;
     }
     for (i = 0; i < w.raw_count; ++i)

@@ -563,6 +563,56 @@ static void hull_of_a_near_collinear_run_keeps_its_far_end(void **state) {
     }
 }
 
+/* A vertical run of points 1e-34 apart at x = -15.125 (tolerance 0): the
+ * run's edges are exact (the differences of floats cancel exactly), so
+ * their direction is trustworthy however short they are, and the wrap must
+ * turn from the top of the run to the corner (-22.5, -0.125) 7 m away. A
+ * rounding bound taken from the points' magnitudes (15) instead of the
+ * differences made every direction along the run noise, and the hull lost
+ * that corner (fuzz: hull-short-run-loses-far-corner). */
+static void hull_of_a_run_of_exact_tiny_edges_keeps_the_far_corner(void **state) {
+    static const float ys[] = {1.01583363e-34f, 1.32974355e-34f, 1.61292565e-34f, 1.83766031e-34f,
+                               1.98194891e-34f, 2.03166727e-34f, 1.98194868e-34f, 1.83766019e-34f,
+                               0.0f,            4.97183601e-36f, 1.94006848e-35f, 7.01923837e-35f};
+    sx_vec2 pts[15];
+    sx_hull h;
+    int i, n = 0;
+    bool has_corner = false;
+    (void)state;
+    for (i = 0; i < 12; ++i)
+        pts[n++] = sx_v2(SX_R(-15.125), (sx_real)ys[i]);
+    pts[n++] = sx_v2(SX_R(-19.375), SX_R(-7.75));
+    pts[n++] = sx_v2(SX_R(-22.5), SX_R(-0.125));
+    pts[n++] = sx_v2(SX_R(-28.0), SX_R(-12.875));
+    assert_int_equal(sx_compute_hull(pts, n, SX_R(0.0), &h), SX_OK);
+    assert_true(sx_validate_hull(&h, SX_R(0.0)));
+    for (i = 0; i < h.count; ++i)
+        has_corner = has_corner || (h.points[i].x == SX_R(-22.5) && h.points[i].y == SX_R(-0.125));
+    assert_true(has_corner);
+    assert_true(max_outside(&h, pts, n) <= 1e-6);
+    /* The default tolerance welds the run to one point: the same corner. */
+    assert_int_equal(sx_compute_hull(pts, n, SX_WELD_TOLERANCE, &h), SX_OK);
+    assert_int_equal(h.count, 4);
+    assert_true(max_outside(&h, pts, n) <= (double)SX_WELD_TOLERANCE);
+}
+
+/* Two points 10.6 m apart, both 1.1e18 m from the vertex before them: their
+ * differences from that vertex round to the same double, but their own
+ * difference is exact, and the orientation taken from it orders them (the
+ * lower one is the next hull vertex). */
+static void hull_orders_near_points_seen_from_a_far_vertex(void **state) {
+    sx_vec2 pts[4];
+    sx_hull h;
+    (void)state;
+    pts[0] = sx_v2(SX_R(-128.0), SX_R(1.141e18));
+    pts[1] = sx_v2(SX_R(-16.0), SX_R(-1.75));
+    pts[2] = sx_v2(SX_R(-16.0), SX_R(-12.375));
+    pts[3] = sx_v2(SX_R(8.125), SX_R(-16.0));
+    assert_int_equal(sx_compute_hull(pts, 4, SX_WELD_TOLERANCE, &h), SX_OK);
+    assert_true(max_outside(&h, pts, 4) <= (double)SX_WELD_TOLERANCE);
+    assert_int_equal(h.count, 3);
+}
+
 static void hull_starts_at_lowest_x_then_lowest_y_and_runs_ccw(void **state) {
     sx_vec2 pts[5];
     sx_hull h;
@@ -892,6 +942,8 @@ int main(void) {
             hull_of_millimetre_hexagon_is_welded_by_default_and_kept_with_a_small_tolerance),
         cmocka_unit_test(hull_of_grid_snapped_clouds_with_any_tolerance_is_valid_or_refused),
         cmocka_unit_test(hull_of_a_near_collinear_run_keeps_its_far_end),
+        cmocka_unit_test(hull_of_a_run_of_exact_tiny_edges_keeps_the_far_corner),
+        cmocka_unit_test(hull_orders_near_points_seen_from_a_far_vertex),
         cmocka_unit_test(hull_starts_at_lowest_x_then_lowest_y_and_runs_ccw),
         cmocka_unit_test(hull_welds_duplicates_and_near_duplicates),
         cmocka_unit_test(hull_with_zero_tolerance_keeps_tiny_edges_but_welds_exact_duplicates),
