@@ -263,6 +263,25 @@ static void sx_limit_speed(sx_body_sim *b, sx_real h) {
     }
 }
 
+/* The speed limit for every awake moving body before the solver reads the
+ * velocities: dynamic bodies meet it in sx_world_apply_forces already, but a
+ * kinematic body's velocity is whatever the caller set (an angular velocity
+ * of -FLT_MAX made w x r overflow in the solver and a contact's tangent
+ * impulse NaN), and the stages may be called on their own. A no-op for any
+ * velocity within half the limit, so ordinary scenes are unchanged bit for
+ * bit. */
+static void sx_limit_speeds(sx_world *world, sx_real h) {
+    sx_real wmax = sx_minr(SX_MAX_ROTATION / h, SX_REAL_MAX);
+    sx_real vhalf = SX_R(0.5) * sx_minr(SX_HUGE / h, SX_REAL_MAX);
+    int k;
+    for (k = 0; k < world->active_body_count; ++k) {
+        sx_body_sim *b = &world->sims[world->active_bodies[k]];
+        if (!b->moving || !b->awake) continue;
+        if (sx_absr(b->w) <= wmax && sx_absr(b->v.x) <= vhalf && sx_absr(b->v.y) <= vhalf) continue;
+        sx_limit_speed(b, h);
+    }
+}
+
 /* ---- stage 1: forces ---------------------------------------------------- */
 
 sx_status sx_world_apply_forces(sx_world *world, sx_real h) {
@@ -734,6 +753,7 @@ sx_status sx_world_solve(sx_world *world, sx_real h) {
     /* the impact pass works on the active bodies */
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
+    sx_limit_speeds(world, h);
     sx_contacts_prepare(world);
     /* restitution first, impact by impact in time order (contact_solver.c
      * says why); the iterations then solve what rests and slides */

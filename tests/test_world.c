@@ -1051,6 +1051,67 @@ static void a_finite_torque_that_overflows_the_spin_is_limited(void **state) {
     sx_world_destroy(w);
 }
 
+/* Found by the 10M fuzz campaign (harness world, input
+ * world-kinematic-spin-flt-max-nan): a kinematic box spinning at -FLT_MAX
+ * rad/s (finite, so accepted) touching a big dynamic circle. The speed
+ * limit reached dynamic bodies in sx_world_apply_forces only, so the solver
+ * read the kinematic spin as it was, w x r overflowed and the contact's
+ * tangent impulse came out NaN. The solve stage limits every moving body
+ * now, also when it is called on its own. */
+static void a_kinematic_body_spinning_at_flt_max_gives_finite_contacts(void **state) {
+    const double h = (double)DT / 4.0;
+    int run;
+    (void)state;
+    for (run = 0; run < 2; ++run) {
+        sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+        sx_shape big = sx_circle_shape(sx_v2(SX_R(-0.125), SX_R(15.875)), SX_R(15.84));
+        sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.3));
+        sx_body_id ball = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-14.6875), SX_R(-14.6875)), &big);
+        sx_body_id kin = make_body(w, SX_BODY_KINEMATIC, sx_v2(SX_R(-20.0), SX_R(7.0)), &box);
+        sx_contact_data cd;
+        int i, k, j, contacts = 0;
+        assert_int_equal(sx_body_set_angular_velocity(w, kin, -SX_REAL_MAX), SX_OK);
+        if (run == 1) {
+            /* the stages alone: collide, then solve without apply_forces */
+            assert_int_equal(sx_body_set_linear_velocity(w, ball, sx_v2(SX_REAL_MAX, SX_R(0.0))),
+                             SX_OK);
+            assert_int_equal(sx_world_collide(w), SX_OK);
+            assert_int_equal(sx_world_solve(w, (sx_real)h), SX_OK);
+            assert_true(sx_world_contact_count(w) > 0);
+            assert_int_equal(sx_world_get_contact(w, 0, &cd), SX_OK);
+            for (j = 0; j < cd.count; ++j) {
+                assert_true(sx_is_finite(cd.normal_impulses[j]));
+                assert_true(sx_is_finite(cd.tangent_impulses[j]));
+            }
+            assert_true(fabs((double)sx_body_get_angular_velocity(w, kin)) <=
+                        (double)SX_MAX_ROTATION / h * (1.0 + 1e-5));
+            assert_true(sx_vec2_is_finite(sx_body_get_linear_velocity(w, ball)));
+            assert_true((double)sx_length(sx_body_get_linear_velocity(w, ball)) <=
+                        (double)SX_HUGE / h * (1.0 + 1e-5));
+        }
+        for (i = 0; i < 3; ++i) {
+            assert_int_equal(sx_world_step(w, DT), SX_OK);
+            for (k = 0; k < sx_world_contact_count(w); ++k) {
+                assert_int_equal(sx_world_get_contact(w, k, &cd), SX_OK);
+                ++contacts;
+                assert_true(sx_vec2_is_finite(cd.normal));
+                for (j = 0; j < cd.count; ++j) {
+                    assert_true(sx_is_finite(cd.depths[j]));
+                    assert_true(sx_is_finite(cd.normal_impulses[j]));
+                    assert_true(sx_is_finite(cd.tangent_impulses[j]));
+                    assert_true(sx_vec2_is_finite(cd.points[j]));
+                }
+            }
+            assert_true(fabs((double)sx_body_get_angular_velocity(w, kin)) <=
+                        (double)SX_MAX_ROTATION / h * (1.0 + 1e-5));
+            assert_true(sx_vec2_is_finite(sx_body_get_position(w, ball)));
+            assert_true(sx_vec2_is_finite(sx_body_get_linear_velocity(w, ball)));
+        }
+        if (run == 0) assert_true(contacts > 0); /* the box does touch the circle */
+        sx_world_destroy(w);
+    }
+}
+
 /* Found by make fuzz (harness world, input world-restitution-1e19-nan): a
  * collider of restitution 3.9e19 (finite, so accepted) overlapping another
  * body flung both out with a rebound of 1e20 m/s and a time-of-impact shift
@@ -1252,6 +1313,7 @@ int main(void) {
         cmocka_unit_test(a_finite_torque_that_overflows_the_spin_is_limited),
         cmocka_unit_test(the_speed_limit_keeps_direction_and_spares_ordinary_speeds),
         cmocka_unit_test(a_huge_restitution_rebounds_at_the_speed_limit),
+        cmocka_unit_test(a_kinematic_body_spinning_at_flt_max_gives_finite_contacts),
         cmocka_unit_test(a_needle_small_collider_gives_no_nan),
         cmocka_unit_test(destroying_bodies_mid_run_and_the_world_frees_everything),
     };
