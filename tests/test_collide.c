@@ -1144,6 +1144,44 @@ static void circles_closer_than_square_underflow_compare_exactly(void **state) {
  * sx_collide(B, A) reported 2. Now the rescue falls back to the other
  * order's manifold, mirrored, and both orders agree with sx_overlap at
  * margin 0 and never report fewer points at a speculative margin. */
+/* Found by the 10M fuzz campaign (harness collide, input
+ * collide-sliver-incident-face-tie): two slivers 70 km and 100 km long, a
+ * few centimetres to 16 m wide. The reference face is B's long face, and
+ * two faces of A, a 15 m one and the 70 km one, are anti-parallel to it
+ * within 1e-7: their dot products with its normal round to the same float,
+ * and the first (the short face, far from A's deepest vertex) was clipped,
+ * giving 7 mm of an 8.39 m penetration. The incident face now comes from
+ * the two faces at the deepest vertex, and the manifold's deepest point
+ * carries the MTV. */
+static void sliver_incident_face_is_taken_at_the_deepest_vertex(void **state) {
+    sx_vec2 pa[4], pb[4];
+    sx_shape a, b;
+    sx_xform x = sx_xform_make(V(-16.0, -16.0), SX_R(0.0));
+    sx_manifold m;
+    sx_vec2 mtv;
+    int order;
+    (void)state;
+    pa[0] = V(-15.25, -0.01360000018030405);
+    pa[1] = V(-0.018408283591270447, -0.018408283591270447);
+    pa[2] = V(70000.0, -16.013599395751953);
+    pa[3] = V(-0.011608300358057022, -0.0019916822202503681);
+    pb[0] = V(-16.011608123779297, -16.001991271972656);
+    pb[1] = V(-16.001991271972656, -16.011608123779297);
+    pb[2] = V(100000.0, -10.881799697875977);
+    pb[3] = V(-0.011608299426734447, -0.011608299426734447);
+    assert_int_equal(sx_polygon_shape(pa, 4, SX_R(0.0), &a), SX_OK);
+    assert_int_equal(sx_polygon_shape(pb, 4, SX_R(0.0), &b), SX_OK);
+    assert_true(sx_mtv(&a, x, &b, x, &mtv));
+    /* Exact penetration: 8.39286 m along B's long face normal. */
+    assert_near(sx_length(mtv), 8.39286, 1e-3);
+    for (order = 0; order < 2; ++order) {
+        int n = order ? sx_collide(&b, x, &a, x, &m) : sx_collide(&a, x, &b, x, &m);
+        assert_in_range(n, 1, 2);
+        assert_true(deepest(&m) >= (double)sx_length(mtv) - 1e-2);
+        assert_true(deepest(&m) <= (double)sx_length(mtv) + 1e-2 + HYSTERESIS);
+    }
+}
+
 static void tiny_box_on_a_far_corner_touches_in_both_orders(void **state) {
     sx_shape a = sx_box_shape(SX_R(1e-30), SX_R(1e-30)), b;
     sx_vec2 q[4];
@@ -1324,6 +1362,7 @@ int main(void) {
         cmocka_unit_test(a_speculative_margin_never_reports_fewer_points_than_margin_0),
         cmocka_unit_test(circles_closer_than_square_underflow_compare_exactly),
         cmocka_unit_test(tiny_box_on_a_far_corner_touches_in_both_orders),
+        cmocka_unit_test(sliver_incident_face_is_taken_at_the_deepest_vertex),
         cmocka_unit_test(tiny_octagon_far_from_a_huge_rounded_octagon_is_apart_in_both_orders),
         cmocka_unit_test(speculative_circles_closer_than_square_underflow_get_a_unit_normal),
     };
