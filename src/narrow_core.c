@@ -507,8 +507,32 @@ bool sx_core_mtv(const sx_core *a, const sx_core *b, sx_vec2 *mtv) {
  * contact points (working frame). flip: ref is B. Points deeper than -margin
  * (less a rounding allowance) are kept; if none is, the deepest one is, so an
  * overlapping pair always reports a contact. */
-static int clip_face(const sx_core *ref, int i, const sx_core *inc, sx_real margin, bool flip,
+/* The deepest vertex of c along -n: the first of least projection, kept
+ * without a branch. */
+static inline int support_below(const sx_core *c, sx_vec2 n) {
+    sx_real lo = SX_REAL_MAX;
+    int j, s = 0;
+    for (j = 0; j < c->count; ++j) {
+        sx_real d = sx_dot(c->v[j], n);
+        s = d < lo ? j : s;
+        lo = d < lo ? d : lo;
+    }
+    return s;
+}
+
+/* The face of polygon core ref next to face i on the side where the point
+ * p lies beyond face i's slab, or -1 when p is within the slab. */
+static int slab_neighbour(const sx_core *ref, int i, sx_vec2 p) {
+    sx_vec2 t = sx_perp(ref->n[i]);
+    sx_real tp = sx_dot(t, p);
+    if (tp < sx_dot(t, ref->v[i])) return i > 0 ? i - 1 : ref->count - 1;
+    if (tp > sx_dot(t, ref->v[next_index(ref, i)])) return next_index(ref, i);
+    return -1;
+}
+
+static int clip_face(const sx_core *ref, int *face, const sx_core *inc, sx_real margin, bool flip,
                      const sx_manifold_point *exact, sx_manifold_point out[2]) {
+    int i = *face;
     sx_vec2 nref = ref->n[i];
     sx_vec2 v1 = ref->v[i], v2 = ref->v[next_index(ref, i)];
     sx_vec2 t = sx_perp(nref);
@@ -522,8 +546,31 @@ static int clip_face(const sx_core *ref, int i, const sx_core *inc, sx_real marg
     } else {
         /* The incident face is the one most anti-parallel to the reference
          * normal; its end points are clipped to the reference face's slab. */
-        sx_real lo = SX_REAL_MAX, lower, upper, d0, d1;
-        int f = 0;
+        sx_real lower, upper, d0, d1;
+        int f = 0, s = support_below(inc, nref);
+        if (ref->count >= 3) {
+            /* Two faces of ref bent by 1e-4 rad at a vertex separate inc by
+             * the same amount up to rounding, and the SAT's pick of the two
+             * may leave inc's deepest vertex beyond its slab, where clipping
+             * cuts it off (a 2 mm penetration came out as 1 mm). Of two
+             * such tied faces the one whose slab the deepest
+             * vertex is in, or towards, is the reference. A real corner
+             * (the neighbour separating clearly less) keeps face i. */
+            int nb = slab_neighbour(ref, i, inc->v[s]);
+            if (nb >= 0) {
+                sx_real tie = SX_DIRECTION_EPSILON *
+                              sx_maxr(max_abs_coord(v1, v2), max_abs_coord(inc->v[s], inc->v[s]));
+                if (face_separation(ref, nb, inc) >= face_separation(ref, i, inc) - tie) {
+                    i = nb;
+                    *face = nb;
+                    nref = ref->n[i];
+                    v1 = ref->v[i];
+                    v2 = ref->v[next_index(ref, i)];
+                    t = sx_perp(nref);
+                    s = support_below(inc, nref);
+                }
+            }
+        }
         if (inc->count == 2) {
             f = sx_dot(inc->n[1], nref) < sx_dot(inc->n[0], nref) ? 1 : 0;
         } else {
@@ -534,14 +581,8 @@ static int clip_face(const sx_core *ref, int i, const sx_core *inc, sx_real marg
              * 1e-4 apart) tie in rounding, and the wrong one, a 15 m face
              * away from the deepest vertex 70 km off, reported 7 mm of an
              * 8.4 m penetration. Ties go to the lower index, as before. */
-            int s = 0, prev;
+            int prev;
             sx_real dp, ds;
-            for (j = 0; j < inc->count; ++j) {
-                /* The first of least projection, kept without a branch. */
-                sx_real d = sx_dot(inc->v[j], nref);
-                s = d < lo ? j : s;
-                lo = d < lo ? d : lo;
-            }
             prev = s > 0 ? s - 1 : inc->count - 1;
             dp = sx_dot(inc->n[prev], nref);
             ds = sx_dot(inc->n[s], nref);
@@ -693,11 +734,13 @@ int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_mani
         }
     }
     if (sat.face_b >= 0 && (sat.face_a < 0 || sat.sep_b > sat.sep_a + SX_REFERENCE_HYSTERESIS)) {
-        out->count = clip_face(b, sat.face_b, a, margin, true, exact, out->points);
-        out->normal = sx_neg(b->n[sat.face_b]);
+        int f = sat.face_b;
+        out->count = clip_face(b, &f, a, margin, true, exact, out->points);
+        out->normal = sx_neg(b->n[f]);
     } else if (sat.face_a >= 0) {
-        out->count = clip_face(a, sat.face_a, b, margin, false, exact, out->points);
-        out->normal = a->n[sat.face_a];
+        int f = sat.face_a;
+        out->count = clip_face(a, &f, b, margin, false, exact, out->points);
+        out->normal = a->n[f];
     }
     return out->count;
 }

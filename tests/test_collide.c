@@ -1182,6 +1182,41 @@ static void sliver_incident_face_is_taken_at_the_deepest_vertex(void **state) {
     }
 }
 
+/* Found by the 10M fuzz campaign (harness collide, input
+ * collide-bent-reference-face-tie): B is a strip bent by 6e-5 rad at a
+ * vertex, and A's corner pokes 2 mm into it next to the bend. B's two faces
+ * at the bend separate A by the same amount up to rounding; the SAT took
+ * the one whose slab ends just short of A's corner, clipping cut the corner
+ * off and the manifold said 1 mm. Of two tied faces the one towards the
+ * deepest vertex is the reference now. */
+static void bent_reference_face_tie_keeps_the_deepest_corner(void **state) {
+    sx_vec2 pa[3], pb[4];
+    sx_shape a, b;
+    sx_xform x = sx_xform_make(V(-16.0, -16.0), SX_R(0.0));
+    sx_manifold m;
+    sx_vec2 mtv;
+    int order;
+    (void)state;
+    pa[0] = sx_v2((sx_real)-0x1.ffee38p+3, (sx_real)0x1.80206ap+0);
+    pa[1] = sx_v2((sx_real)-0x1.87f322p+3, (sx_real)-0x1.a1818p-7);
+    pa[2] = sx_v2((sx_real)0x1.3a92a2p-9, (sx_real)0x1.3a92a2p-10);
+    pb[0] = sx_v2((sx_real)-0x1.fffe2p+3, (sx_real)-0x1.fffbf2p+3);
+    pb[1] = sx_v2((sx_real)-0x1.fff322p+3, (sx_real)-0x1.ffff84p+3);
+    pb[2] = sx_v2((sx_real)0x1.fc13aap+3, (sx_real)0x1.fc09d4p+3);
+    pb[3] = sx_v2((sx_real)0x1.e09fdp-13, (sx_real)0x1.f37958p-10);
+    assert_int_equal(sx_polygon_shape(pa, 3, SX_R(0.0), &a), SX_OK);
+    assert_int_equal(sx_polygon_shape(pb, 4, SX_R(0.0), &b), SX_OK);
+    assert_int_equal(b.u.polygon.count, 4);
+    assert_true(sx_mtv(&a, x, &b, x, &mtv));
+    assert_near(sx_length(mtv), 2.034e-3, 2e-5);
+    for (order = 0; order < 2; ++order) {
+        int n = order ? sx_collide(&b, x, &a, x, &m) : sx_collide(&a, x, &b, x, &m);
+        assert_in_range(n, 1, 2);
+        assert_true(deepest(&m) >= (double)sx_length(mtv) - 2e-5);
+        assert_true(deepest(&m) <= (double)sx_length(mtv) + 2e-5 + HYSTERESIS);
+    }
+}
+
 static void tiny_box_on_a_far_corner_touches_in_both_orders(void **state) {
     sx_shape a = sx_box_shape(SX_R(1e-30), SX_R(1e-30)), b;
     sx_vec2 q[4];
@@ -1363,6 +1398,7 @@ int main(void) {
         cmocka_unit_test(circles_closer_than_square_underflow_compare_exactly),
         cmocka_unit_test(tiny_box_on_a_far_corner_touches_in_both_orders),
         cmocka_unit_test(sliver_incident_face_is_taken_at_the_deepest_vertex),
+        cmocka_unit_test(bent_reference_face_tie_keeps_the_deepest_corner),
         cmocka_unit_test(tiny_octagon_far_from_a_huge_rounded_octagon_is_apart_in_both_orders),
         cmocka_unit_test(speculative_circles_closer_than_square_underflow_get_a_unit_normal),
     };
