@@ -297,11 +297,23 @@ static sx_real axis_bound(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_
 }
 
 /* The push along unit d (>= 0) that takes the pair from penetrating to
- * touching. */
+ * touching.
+ *
+ * Never shorter than the pair's own MTV: no push in any direction clears a
+ * pair by less than its minimum translation, so in exact arithmetic the
+ * floor changes nothing. But the support functions here are taken in world
+ * space while sx_mtv works in a part's frame, and far from the origin the
+ * two round differently: a point exactly on the corner of a 2e5-wide box
+ * whose centre lies 1.4e5 from the origin is 2^-7 m (one float ulp there)
+ * inside it for sx_mtv, which decides whether the walk must go on, and on
+ * the box's faces for the supports, which then give a push of 0. Without
+ * the floor the walk stood still on that pair in every direction, and the
+ * compound MTV fell back to the bounding boxes, which round like the
+ * supports and left the pair penetrating. */
 static sx_real pair_exit(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
                          sx_vec2 d) {
     sx_vec2 normals[SX_MAX_POLYGON_VERTICES], m;
-    sx_real hi, lo = SX_R(0.0);
+    sx_real hi, lo = SX_R(0.0), depth = SX_R(0.0);
     int i, n, iter;
     hi = axis_bound(a, xa, b, xb, d, d, SX_REAL_MAX);
     n = world_normals(a, xa, normals);
@@ -310,10 +322,12 @@ static sx_real pair_exit(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_x
     n = world_normals(b, xb, normals);
     for (i = 0; i < n; ++i)
         hi = axis_bound(a, xa, b, xb, d, normals[i], hi);
-    if (sx_mtv(a, xa, b, xb, &m) && sx_length_sq(m) > SX_R(0.0)) {
-        hi = axis_bound(a, xa, b, xb, d, sx_normalize(m), hi);
+    if (sx_mtv(a, xa, b, xb, &m)) {
+        /* depth stays 0 for an MTV too short to normalise or not finite. */
+        sx_vec2 axis = sx_normalize_len(m, &depth);
+        if (depth > SX_R(0.0)) hi = axis_bound(a, xa, b, xb, d, axis, hi);
     }
-    if (!(hi > SX_R(0.0))) return SX_R(0.0);
+    if (!(hi > depth)) return depth;
     if (!is_curved(a) && !is_curved(b)) return hi;
     /* The overlapping shifts form an interval that starts at or before 0
      * and ends at or before hi: bisect for its end. */
@@ -326,12 +340,17 @@ static sx_real pair_exit(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_x
             hi = mid;
         }
     }
-    return hi;
+    return sx_maxr(hi, depth);
 }
 
-/* A pair that overlaps (touching counts) when a is pushed to t along d:
- * returns the pair's indices through *pi, *pj. */
-static bool find_overlap_at(const side *a, const side *b, sx_vec2 d, sx_real t, int *pi, int *pj) {
+/* A pair that penetrates when a is pushed to t along d: returns the pair's
+ * indices through *pi, *pj. Touching is no obstacle (the guarantee allows
+ * it), and far from the origin a pair the walk has just pushed to touching
+ * stays touching within rounding for pushes much longer than the probe
+ * spacing: counting it would creep the walk along by probe steps until its
+ * budget ran out. */
+static bool find_penetration_at(const side *a, const side *b, sx_vec2 d, sx_real t, int *pi,
+                                int *pj) {
     int i, j;
     for (i = 0; i < a->count; ++i) {
         sx_xform xa;
@@ -342,7 +361,7 @@ static bool find_overlap_at(const side *a, const side *b, sx_vec2 d, sx_real t, 
             sx_xform xb;
             const sx_shape *sb = side_part(b, j, &xb);
             if (!boxes_may_touch(ba, sx_shape_aabb(sb, xb))) continue;
-            if (sx_overlap(sa, xt, sb, xb)) {
+            if (penetrates(sa, xt, sb, xb)) {
                 *pi = i;
                 *pj = j;
                 return true;
@@ -380,7 +399,7 @@ static bool clear_along(const side *a, const side *b, sx_vec2 d, sx_real best, s
         }
         for (k = 1; k <= COMPOUND_GAP_PROBES && !moved; ++k) {
             sx_real probe = t + t * COMPOUND_GAP_REL * (sx_real)k / (sx_real)COMPOUND_GAP_PROBES;
-            if (find_overlap_at(a, b, d, probe, &i, &j)) {
+            if (find_penetration_at(a, b, d, probe, &i, &j)) {
                 sx_xform xa, xb;
                 const sx_shape *sa = side_part(a, i, &xa);
                 const sx_shape *sb = side_part(b, j, &xb);

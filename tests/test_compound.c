@@ -605,6 +605,114 @@ static void a_part_too_heavy_for_sx_real_gives_no_nan(void **state) {
     }
 }
 
+/* Every part pair of a (moved by mtv) against b penetrates by at most the
+ * compound MTV's guarantee, as sx_mtv measures it. */
+static void assert_cleared(const sx_compound *a, sx_xform xa, const sx_compound *b, sx_xform xb,
+                           sx_vec2 mtv) {
+    int i, j;
+    xa.p = sx_add(xa.p, mtv);
+    for (i = 0; i < a->count; ++i) {
+        for (j = 0; j < b->count; ++j) {
+            sx_vec2 v;
+            sx_mtv(&a->parts[i].shape, sx_xform_mul(xa, a->parts[i].offset), &b->parts[j].shape,
+                   sx_xform_mul(xb, b->parts[j].offset), &v);
+            assert_true(sx_length(v) <= SX_LINEAR_SLOP * SX_R(1e-3));
+        }
+    }
+}
+
+/* Regression (fuzz: compound-mtv-stalls-on-far-box-corner): a point (a
+ * circle of radius 0) exactly on the corner of a 2e5-wide box part whose
+ * centre lies 1.4e5 from the origin, rotated by 133 degrees. In the float
+ * build sx_mtv, in the box's frame, finds the point one ulp there (2^-7 m)
+ * inside, while the world-frame support functions of the clearing walk put
+ * it on the faces and gave a push of 0: the walk stood still in every
+ * direction, and the bounding-box fallback (rounded like the supports)
+ * returned a push of 3e-33 m that left the 2^-7 m penetration. Now a pair's
+ * step is never shorter than its own MTV, and the answer is about one ulp
+ * long and clears every pair. */
+static void compound_mtv_clears_a_point_on_a_far_box_corner(void **state) {
+    const sx_real tiny = (sx_real)0x1.7413ecp-109, h = SX_R(100000.0);
+    sx_compound_part ap, bp[2];
+    sx_compound a, b, box_only;
+    sx_xform xa, xb;
+    sx_vec2 mtv, v;
+    (void)state;
+    ap = sx_compound_part_make(sx_circle_shape(sx_v2_zero(), SX_R(0.0)), sx_xform_identity());
+    bp[0] = sx_compound_part_make(sx_circle_shape(sx_v2_zero(), tiny), sx_xform_identity());
+    bp[1] = sx_compound_part_make(sx_box_shape(h, h), sx_xform_make(sx_v2(h, h), SX_R(0.0)));
+    a.parts = &ap;
+    a.count = 1;
+    b.parts = bp;
+    b.count = 2;
+    box_only.parts = &bp[1];
+    box_only.count = 1;
+    assert_int_equal(sx_compound_validate(&a), SX_OK);
+    assert_int_equal(sx_compound_validate(&b), SX_OK);
+    xa.p = sx_v2(tiny, tiny);
+    xa.q.c = SX_R(1.0);
+    xa.q.s = tiny;
+    xb.p = xa.p;
+#ifdef SX_DOUBLE
+    /* the float values are not unit to double precision: the same angle */
+    xb.q = sx_rot_make(atan2(0x1.782a64p-1, -0x1.5b567p-1));
+#else
+    xb.q.c = -0x1.5b567p-1f;
+    xb.q.s = 0x1.782a64p-1f;
+    /* The case has teeth: the narrowphase sees the corner one ulp deep. */
+    assert_true(sx_mtv(&ap.shape, xa, &bp[1].shape, sx_xform_mul(xb, bp[1].offset), &v));
+    assert_true(sx_length(v) > SX_LINEAR_SLOP * SX_R(1e-3));
+#endif
+    (void)v;
+    assert_true(sx_compound_mtv_compound(&a, xa, &b, xb, &mtv));
+    assert_true(sx_vec2_is_finite(mtv));
+    assert_true((double)sx_length(mtv) < 0.05); /* a few ulps of 1e5 in float */
+    assert_cleared(&a, xa, &b, xb, mtv);
+    /* The box alone, as a plain shape. */
+    assert_true(sx_compound_mtv(&a, xa, &bp[1].shape, sx_xform_mul(xb, bp[1].offset), &mtv));
+    assert_true(sx_vec2_is_finite(mtv));
+    assert_true((double)sx_length(mtv) < 0.05);
+    assert_cleared(&a, xa, &box_only, xb, mtv);
+}
+
+/* The same rounding along a face (fuzz: compound-mtv-stalls-on-far-box-corner,
+ * generalised): a point 1 to 8 float ulps (2^-7 m each) inside a face of a
+ * 2e5-wide box 1e5 from the origin, at 40 placements. Two things stopped the
+ * walk there, in every direction, so the bounding-box fallback pushed the
+ * point out through the whole box (tens of km): the supports giving a push
+ * of 0 to a pair sx_mtv still sees penetrating (now floored by its MTV), and,
+ * where a push ends with the pair touching within rounding, sx_overlap
+ * answering "touching" for further pushes of about an ulp, which the gap
+ * probes took for an obstacle ahead and crept on by 0.25% steps until the
+ * sweep budget ran out (now only a pair that penetrates at a probe is
+ * stepped over). The answer is now the narrowphase's MTV within a few ulps. */
+static void compound_mtv_of_a_point_just_inside_a_far_box_face_is_its_mtv(void **state) {
+    const sx_real h = SX_R(100000.0);
+    sx_shape box = sx_box_shape(h, h);
+    sx_compound_part ap, bp;
+    sx_compound a, box_only;
+    int k;
+    (void)state;
+    ap = sx_compound_part_make(sx_circle_shape(sx_v2_zero(), SX_R(0.0)), sx_xform_identity());
+    bp = sx_compound_part_make(box, sx_xform_identity());
+    a.parts = &ap;
+    a.count = 1;
+    box_only.parts = &bp;
+    box_only.count = 1;
+    for (k = 0; k < 40; ++k) {
+        sx_xform xb = at(3.0 + 1e5 * cos(0.37 * k), -2.0 + 1e5 * sin(0.37 * k), 0.37 * k), xa;
+        sx_real depth = SX_R(0.0078125) * (sx_real)(1 + k % 8);
+        sx_real along = SX_R(150.0) * (sx_real)((k * 7919) % 1000) - SX_R(80000.0);
+        sx_vec2 m, mtv;
+        xa = sx_xform_make(sx_xform_point(xb, sx_v2(-h + depth, along)), SX_R(0.0));
+        assert_true(sx_mtv(&ap.shape, xa, &box, xb, &m));
+        assert_true(sx_compound_mtv(&a, xa, &box, xb, &mtv));
+        assert_true(sx_vec2_is_finite(mtv));
+        assert_true((double)sx_length(mtv) <= (double)sx_length(m) + 0.05);
+        assert_cleared(&a, xa, &box_only, xb, mtv);
+    }
+}
+
 /* ---- bad input ----------------------------------------------------------- */
 
 static void invalid_compounds_are_reported_and_answered_safely(void **state) {
@@ -667,6 +775,8 @@ int main(void) {
         cmocka_unit_test(aabb_contains_every_part),
         cmocka_unit_test(l_from_two_boxes_has_the_mass_of_the_l),
         cmocka_unit_test(a_part_too_heavy_for_sx_real_gives_no_nan),
+        cmocka_unit_test(compound_mtv_clears_a_point_on_a_far_box_corner),
+        cmocka_unit_test(compound_mtv_of_a_point_just_inside_a_far_box_face_is_its_mtv),
         cmocka_unit_test(invalid_compounds_are_reported_and_answered_safely),
     };
     return cmocka_run_group_tests_name("compound", tests, sx_test_group_setup,

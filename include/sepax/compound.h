@@ -148,10 +148,13 @@ bool sx_compound_overlap_compound(const sx_compound *a, sx_xform xa, const sx_co
  *  end of the interval of whichever pair still penetrates (each pair's exit
  *  is exact for polygon pairs, from the support functions over the normals
  *  of their Minkowski difference, and bisected with sx_overlap to 1e-6
- *  relative for curved pairs), re-checking every pair after each step, since
- *  clearing one pair can run another part into b; a gap between intervals
- *  narrower than 1% of the push (probed at 4 points) is stepped over. The
- *  directions tried: each penetrating pair's MTV direction, both signs of
+ *  relative for curved pairs; never shorter than the pair's own sx_mtv,
+ *  which far from the origin rounds differently from the world-space
+ *  supports), re-checking every pair after each step, since clearing one
+ *  pair can run another part into b; a gap between intervals narrower than
+ *  1% of the push (probed at 4 points for a pair that penetrates there) is
+ *  stepped over. The directions tried: each penetrating pair's MTV
+ *  direction, both signs of
  *  the edge normals of its parts, the corner direction meeting two pairs'
  *  MTVs at once (for the first 16 penetrating pairs), and 32 evenly spaced
  *  directions; the best is then refined by a pattern search over the angle
@@ -166,9 +169,10 @@ bool sx_compound_overlap_compound(const sx_compound *a, sx_xform xa, const sx_co
  *  or box placements, at worst 5% longer). Cost: a few dozen clearing walks
  *  over all part pairs per penetrating query, so the boolean and manifold
  *  functions are the per-step path; this is for resolving deep overlaps.
- *  Should no direction settle (not observed), the fallback pushes along the
- *  deepest pair's MTV until the bounding boxes are apart, which also
- *  separates. */
+ *  Should no direction settle (not observed for valid input), the fallback
+ *  pushes along the deepest pair's MTV until the bounding boxes are apart,
+ *  which also separates, up to the rounding of the boxes at their
+ *  magnitude. */
 bool sx_compound_mtv(const sx_compound *a, sx_xform xa, const sx_shape *b, sx_xform xb,
                      sx_vec2 *mtv);
 
