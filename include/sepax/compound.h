@@ -34,9 +34,12 @@ size_t sx_decompose_scratch_bytes(int count);
  *  The outline may wind either way and may be concave. It is cleaned first:
  *  consecutive points within SX_WELD_TOLERANCE are welded, and points within
  *  SX_WELD_TOLERANCE of the line through their neighbours (collinear runs,
- *  zero-width spikes) are dropped, repeatedly. The cleaned outline is ear
- *  clipped (orientation tests in a wider precision) and the triangles are
- *  merged greedily across their diagonals while the union stays strictly
+ *  zero-width spikes) are dropped, repeatedly, as long as the points dropped
+ *  before between those neighbours stay within SX_WELD_TOLERANCE of that
+ *  line too (so a densely drawn curve is not worn down: the cleaned outline
+ *  keeps within about the tolerance of the raw points). The cleaned outline
+ *  is ear clipped (orientation tests in a wider precision) and the triangles
+ *  are merged greedily across their diagonals while the union stays strictly
  *  convex and within the vertex cap (Hertel-Mehlhorn), so a polygon with r
  *  reflex vertices gives few parts (never more than the triangle count).
  *  Parts are in the outline's coordinates, counter-clockwise, built by
