@@ -36,6 +36,21 @@
  * 2x2 solve amplifies round-off more than it gains). */
 #define SX_BLOCK_MAX_CONDITION SX_R(1000.0)
 
+/* Bound on every accumulated impulse, so that an impulse, and its moment
+ * about an anchor within a few SX_HUGE, stay finite. An effective mass near
+ * the top of the range (a body of mass SX_REAL_MAX against a static one: 1 /
+ * its inverse mass) times any speed overflowed: the impulse became inf, the
+ * static body's velocity 0 x inf = NaN. Far beyond any physical impulse
+ * (5e31 N s in float), so ordinary scenes never meet it. */
+#define SX_IMPULSE_LIMIT (SX_REAL_MAX / (SX_R(64.0) * SX_HUGE))
+
+/* x within [-SX_IMPULSE_LIMIT, SX_IMPULSE_LIMIT]; NaN (inf x 0 of an
+ * overflowed velocity) becomes 0. */
+static inline sx_real sx_bounded_impulse(sx_real x) {
+    if (x >= -SX_IMPULSE_LIMIT) return x <= SX_IMPULSE_LIMIT ? x : SX_IMPULSE_LIMIT;
+    return x < -SX_IMPULSE_LIMIT ? -SX_IMPULSE_LIMIT : SX_R(0.0);
+}
+
 void sx_contacts_prepare(sx_world *world) {
     int i, k;
     for (i = 0; i < world->contact_count; ++i) {
@@ -57,10 +72,14 @@ void sx_contacts_prepare(sx_world *world) {
             p->impact_impulse = SX_R(0.0);
             /* warm start with last sub-step's accumulated impulses */
             impulse = sx_add(sx_scale(n, p->normal_impulse), sx_scale(t, p->tangent_impulse));
-            a->v = sx_mul_sub(a->v, ma, impulse);
-            a->w -= ia * sx_cross(ra, impulse);
-            b->v = sx_mul_add(b->v, mb, impulse);
-            b->w += ib * sx_cross(rb, impulse);
+            if (a->dynamic) {
+                a->v = sx_mul_sub(a->v, ma, impulse);
+                a->w -= ia * sx_cross(ra, impulse);
+            }
+            if (b->dynamic) {
+                b->v = sx_mul_add(b->v, mb, impulse);
+                b->w += ib * sx_cross(rb, impulse);
+            }
         }
         c->block_solve = false;
         if (c->count == 2) {
@@ -170,7 +189,8 @@ void sx_contacts_solve(sx_world *world, sx_real h) {
                 sx_contact_point *p = &c->points[k];
                 sx_real limit = c->friction * p->normal_impulse;
                 sx_real lambda = -p->tangent_mass * sx_point_speed(va, wa, vb, wb, p, t);
-                sx_real total = sx_clampr(p->tangent_impulse + lambda, -limit, limit);
+                sx_real total =
+                    sx_bounded_impulse(sx_clampr(p->tangent_impulse + lambda, -limit, limit));
                 lambda = total - p->tangent_impulse;
                 p->tangent_impulse = total;
                 sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p, sx_scale(t, lambda));
@@ -181,7 +201,10 @@ void sx_contacts_solve(sx_world *world, sx_real h) {
             sx_real x1, x2;
             sx_real vn1 = sx_point_speed(va, wa, vb, wb, p1, n);
             sx_real vn2 = sx_point_speed(va, wa, vb, wb, p2, n);
-            if (sx_block_solve(c, p1, p2, vn1, vn2, inv_h, &x1, &x2)) {
+            /* an overflowed solution (not <= the bound: inf or NaN) is
+             * left to the point-by-point solve below, which bounds it */
+            if (sx_block_solve(c, p1, p2, vn1, vn2, inv_h, &x1, &x2) && x1 <= SX_IMPULSE_LIMIT &&
+                x2 <= SX_IMPULSE_LIMIT) {
                 sx_real d1 = x1 - p1->normal_impulse, d2 = x2 - p2->normal_impulse;
                 sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p1, sx_scale(n, d1));
                 sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p2, sx_scale(n, d2));
@@ -195,16 +218,22 @@ void sx_contacts_solve(sx_world *world, sx_real h) {
                 sx_contact_point *p = &c->points[k];
                 sx_real vn = sx_point_speed(va, wa, vb, wb, p, n);
                 sx_real lambda = -p->normal_mass * sx_normal_error(p, vn, inv_h);
-                sx_real total = sx_maxr(p->normal_impulse + lambda, SX_R(0.0));
+                sx_real total = sx_bounded_impulse(sx_maxr(p->normal_impulse + lambda, SX_R(0.0)));
                 lambda = total - p->normal_impulse;
                 p->normal_impulse = total;
                 sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p, sx_scale(n, lambda));
             }
         }
-        a->v = va;
-        a->w = wa;
-        b->v = vb;
-        b->w = wb;
+        /* static and kinematic bodies keep their velocities (0 x impulse
+         * would only add rounding, or NaN from an overflow) */
+        if (a->dynamic) {
+            a->v = va;
+            a->w = wa;
+        }
+        if (b->dynamic) {
+            b->v = vb;
+            b->w = wb;
+        }
     }
 }
 
@@ -348,7 +377,8 @@ static void sx_resolve_impact(sx_world *world, sx_contact *c, sx_real h, sx_real
         bias[k] = vn - rebound[k];
     }
     if (c->count == 2 && closing[0] && closing[1] && c->block_solve) {
-        if (sx_solve_lcp2(c, bias[0], bias[1], &x[0], &x[1])) {
+        if (sx_solve_lcp2(c, bias[0], bias[1], &x[0], &x[1]) && x[0] <= SX_IMPULSE_LIMIT &&
+            x[1] <= SX_IMPULSE_LIMIT) {
             sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, &c->points[0], sx_scale(n, x[0]));
             sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, &c->points[1], sx_scale(n, x[1]));
             solved = true;
@@ -369,6 +399,7 @@ static void sx_resolve_impact(sx_world *world, sx_contact *c, sx_real h, sx_real
                 x[k] = p->normal_mass * (SX_R(1.0) + (approach >= threshold ? e : SX_R(0.0))) *
                        approach;
             }
+            x[k] = sx_bounded_impulse(x[k]);
             sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p, sx_scale(n, x[k]));
         }
     }
@@ -378,7 +409,7 @@ static void sx_resolve_impact(sx_world *world, sx_contact *c, sx_real h, sx_real
         p->impact_impulse += x[k];
         if (!(limit > SX_R(0.0))) continue;
         lambda = -p->tangent_mass * sx_point_speed(va, wa, vb, wb, p, tangent);
-        lambda = sx_clampr(lambda, -limit, limit);
+        lambda = sx_bounded_impulse(sx_clampr(lambda, -limit, limit));
         sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p, sx_scale(tangent, lambda));
     }
     /* until t the bodies moved with their old velocities */
@@ -386,10 +417,14 @@ static void sx_resolve_impact(sx_world *world, sx_contact *c, sx_real h, sx_real
     sa->turn -= t * (wa - wa0);
     sb->shift = sx_mul_sub(sb->shift, t, sx_sub(vb, vb0));
     sb->turn -= t * (wb - wb0);
-    a->v = va;
-    a->w = wa;
-    b->v = vb;
-    b->w = wb;
+    if (a->dynamic) {
+        a->v = va;
+        a->w = wa;
+    }
+    if (b->dynamic) {
+        b->v = vb;
+        b->w = wb;
+    }
 }
 
 /* The heap of pending impacts, ordered by (time, contact index). */
@@ -585,7 +620,10 @@ void sx_contacts_apply_impact_shifts(sx_world *world) {
         if (i >= world->impact_body_capacity) continue;
         s = &world->impact_bodies[i];
         if (world->infos[i].alive && b->moving && b->awake) {
-            if (s->shift.x != SX_R(0.0) || s->shift.y != SX_R(0.0) || s->turn != SX_R(0.0)) {
+            /* a shift that overflowed (an impulse at the bound on a
+             * light body) is dropped: the speed limit has the velocity */
+            if ((s->shift.x != SX_R(0.0) || s->shift.y != SX_R(0.0) || s->turn != SX_R(0.0)) &&
+                sx_vec2_is_finite(s->shift) && sx_is_finite(s->turn)) {
                 b->center = sx_add(b->center, s->shift);
                 if (s->turn != SX_R(0.0)) b->xf.q = sx_rot_integrate(b->xf.q, s->turn);
                 sx_body_sync_origin(b);

@@ -760,6 +760,9 @@ sx_status sx_world_solve(sx_world *world, sx_real h) {
     impacts = sx_contacts_impacts(world, h);
     for (it = 0; it < world->def.velocity_iterations; ++it)
         sx_contacts_solve(world, h);
+    /* what the impulses did stays within the limit too (an impulse at its
+     * bound on a light body overflows its velocity) */
+    sx_limit_speeds(world, h);
     return impacts ? SX_OK : SX_ERR_NO_MEMORY;
 }
 

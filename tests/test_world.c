@@ -1112,6 +1112,62 @@ static void a_kinematic_body_spinning_at_flt_max_gives_finite_contacts(void **st
     }
 }
 
+/* Found by the 10M fuzz campaign (harness world, input
+ * world-max-mass-against-static-nan): a dynamic body whose sensor of
+ * density 2.1e37 gives it the mass SX_REAL_MAX, resting on a static circle.
+ * The contact's effective mass (1 / the body's inverse mass, 3.4e38) times
+ * its speed overflowed, the impulse was inf and the static body's velocity
+ * 0 x inf = NaN. Impulses are bounded now, static and kinematic bodies never
+ * take the solver's velocities, and what the impulses do to a light body
+ * meets the speed limit. */
+static void an_overflowing_contact_impulse_gives_no_nan(void **state) {
+    int run;
+    (void)state;
+    for (run = 0; run < 2; ++run) {
+        sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+        sx_shape heavy = sx_circle_shape(sx_v2(SX_R(-4.0), SX_R(-16.0)), SX_R(15.125));
+        sx_shape ball = sx_circle_shape(sx_v2(SX_R(-16.0), SX_R(-13.875)), SX_R(4.5));
+        sx_shape rock = sx_circle_shape(sx_v2(SX_R(-16.0), SX_R(-16.0)), SX_R(4.5));
+        sx_body_id a = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(4.5), SX_R(4.5)), &ball);
+        sx_body_id g = make_body(w, SX_BODY_STATIC, sx_v2(SX_R(5.625), SX_R(4.5)), &rock);
+        sx_collider_def cd = sx_default_collider_def();
+        sx_contact_data data;
+        int i, k, j, contacts = 0;
+        cd.shape = heavy;
+        cd.density = SX_R(2.1e37);
+        cd.sensor = true;
+        assert_int_equal(sx_body_add_collider(w, a, &cd, NULL), SX_OK);
+        assert_true((double)sx_body_get_mass(w, a) > 1e38);
+        assert_int_equal(sx_body_set_angular_velocity(w, a, SX_R(19.84375)), SX_OK);
+        for (i = 0; i < 3; ++i) {
+            if (run == 0) {
+                assert_int_equal(sx_world_step(w, DT), SX_OK);
+            } else {
+                /* the stages on their own */
+                assert_int_equal(sx_world_collide(w), SX_OK);
+                assert_int_equal(sx_world_solve(w, DT), SX_OK);
+            }
+            assert_true(sx_vec2_is_finite(sx_body_get_position(w, a)));
+            assert_true(sx_vec2_is_finite(sx_body_get_linear_velocity(w, a)));
+            assert_true(sx_is_finite(sx_body_get_angular_velocity(w, a)));
+            assert_true(sx_body_get_linear_velocity(w, g).x == SX_R(0.0));
+            assert_true(sx_body_get_linear_velocity(w, g).y == SX_R(0.0));
+            assert_true(sx_body_get_angular_velocity(w, g) == SX_R(0.0));
+            for (k = 0; k < sx_world_contact_count(w); ++k) {
+                assert_int_equal(sx_world_get_contact(w, k, &data), SX_OK);
+                ++contacts;
+                for (j = 0; j < data.count; ++j) {
+                    assert_true(sx_is_finite(data.normal_impulses[j]));
+                    assert_true(sx_is_finite(data.tangent_impulses[j]));
+                    assert_true(sx_is_finite(data.impact_impulses[j]));
+                }
+            }
+        }
+        assert_true(contacts > 0);
+        sx_world_destroy(w);
+    }
+}
+
 /* Found by make fuzz (harness world, input world-restitution-1e19-nan): a
  * collider of restitution 3.9e19 (finite, so accepted) overlapping another
  * body flung both out with a rebound of 1e20 m/s and a time-of-impact shift
@@ -1314,6 +1370,7 @@ int main(void) {
         cmocka_unit_test(the_speed_limit_keeps_direction_and_spares_ordinary_speeds),
         cmocka_unit_test(a_huge_restitution_rebounds_at_the_speed_limit),
         cmocka_unit_test(a_kinematic_body_spinning_at_flt_max_gives_finite_contacts),
+        cmocka_unit_test(an_overflowing_contact_impulse_gives_no_nan),
         cmocka_unit_test(a_needle_small_collider_gives_no_nan),
         cmocka_unit_test(destroying_bodies_mid_run_and_the_world_frees_everything),
     };
