@@ -379,10 +379,12 @@ install: lib
 
 FORMAT_FILES = $(wildcard include/sepax/*.h src/*.c src/*.h tests/*.c tests/*.h tests/support/*.c \
                  tests/support/*.h samples/*.c bench/*.c bench/*.h ecs/*.c ecs/*.h)
+# clang-format, or Debian's versioned name when only that is installed
+CLANG_FORMAT ?= $(or $(shell command -v clang-format 2>/dev/null),$(shell command -v clang-format-14 2>/dev/null),clang-format)
 format:
-	clang-format -i $(FORMAT_FILES)
+	$(CLANG_FORMAT) -i $(FORMAT_FILES)
 format-check:
-	clang-format --dry-run --Werror $(FORMAT_FILES)
+	$(CLANG_FORMAT) --dry-run --Werror $(FORMAT_FILES)
 
 clean:
 	rm -rf build

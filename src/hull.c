@@ -84,8 +84,8 @@ static sx_wide cross_best(sx_wvec2 u, sx_wvec2 v, sx_wvec2 w, sx_wide *noise) {
  * instead can let the wrap jump past a point that lies almost on the
  * previous edge's extension and then exclude it as "behind" that edge,
  * although it lies outside the hull by much more than the noise. */
-static int wrap_step(const sx_vec2 *points, int count, int prev, int p, sx_wvec2 d,
-                     sx_wide tol2, sx_wvec2 *edge) {
+static int wrap_step(const sx_vec2 *points, int count, int prev, int p, sx_wvec2 d, sx_wide tol2,
+                     sx_wvec2 *edge) {
     int q = -1, r;
     sx_wvec2 qe = sx_wv(SX_W(0.0), SX_W(0.0));
     for (r = 0; r < count; ++r) {

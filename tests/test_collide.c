@@ -1280,8 +1280,8 @@ static void tiny_box_on_a_far_corner_touches_in_both_orders(void **state) {
  * pair overlaps by about 4 m in both orders. */
 static void tiny_octagon_far_from_a_huge_rounded_octagon_is_apart_in_both_orders(void **state) {
     static const double ka[8][2] = {
-        {-0.0203999989, -0.0135999992}, {-0.0184083246, -0.0184083246},
-        {-0.0135999992, -0.0203999989}, {-0.00879167393, -0.0184083246},
+        {-0.0203999989, -0.0135999992},  {-0.0184083246, -0.0184083246},
+        {-0.0135999992, -0.0203999989},  {-0.00879167393, -0.0184083246},
         {-0.00679999962, -0.0135999992}, {-0.00879167393, -0.00879167207},
         {-0.0135999992, -0.00679999962}, {-0.0184083264, -0.00879167579}};
     sx_vec2 qa[8], qb[8];

@@ -571,9 +571,10 @@ static void hull_of_a_near_collinear_run_keeps_its_far_end(void **state) {
  * differences made every direction along the run noise, and the hull lost
  * that corner (fuzz: hull-short-run-loses-far-corner). */
 static void hull_of_a_run_of_exact_tiny_edges_keeps_the_far_corner(void **state) {
-    static const float ys[] = {1.01583363e-34f, 1.32974355e-34f, 1.61292565e-34f, 1.83766031e-34f,
-                               1.98194891e-34f, 2.03166727e-34f, 1.98194868e-34f, 1.83766019e-34f,
-                               0.0f,            4.97183601e-36f, 1.94006848e-35f, 7.01923837e-35f};
+    static const float ys[] = {1.01583363e-34f, 1.32974355e-34f, 1.61292565e-34f,
+                               1.83766031e-34f, 1.98194891e-34f, 2.03166727e-34f,
+                               1.98194868e-34f, 1.83766019e-34f, 0.0f,
+                               4.97183601e-36f, 1.94006848e-35f, 7.01923837e-35f};
     sx_vec2 pts[15];
     sx_hull h;
     int i, n = 0;

@@ -1066,7 +1066,8 @@ static void a_kinematic_body_spinning_at_flt_max_gives_finite_contacts(void **st
         sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
         sx_shape big = sx_circle_shape(sx_v2(SX_R(-0.125), SX_R(15.875)), SX_R(15.84));
         sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.3));
-        sx_body_id ball = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-14.6875), SX_R(-14.6875)), &big);
+        sx_body_id ball =
+            make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-14.6875), SX_R(-14.6875)), &big);
         sx_body_id kin = make_body(w, SX_BODY_KINEMATIC, sx_v2(SX_R(-20.0), SX_R(7.0)), &box);
         sx_contact_data cd;
         int i, k, j, contacts = 0;
