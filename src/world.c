@@ -801,11 +801,18 @@ sx_status sx_world_separate(sx_world *world, sx_real h) {
 sx_status sx_world_step(sx_world *world, sx_real dt) {
     sx_status s = sx_check_step(world, dt);
     sx_real h;
-    int i;
+    int i, steps;
     if (s != SX_OK) return s;
-    h = dt / (sx_real)world->def.sub_steps;
+    steps = world->def.sub_steps;
+    h = dt / (sx_real)steps;
+    if (!(h > SX_R(0.0))) {
+        /* dt among the few smallest denormals: its sub-step rounds to 0,
+         * which every stage refuses; one sub-step of dt instead */
+        h = dt;
+        steps = 1;
+    }
     sx_world_clear_events(world);
-    for (i = 0; i < world->def.sub_steps; ++i) {
+    for (i = 0; i < steps; ++i) {
         sx_world_apply_forces(world, h);
         s = sx_world_collide(world);
         if (s != SX_OK) return s;

@@ -1169,6 +1169,37 @@ static void an_overflowing_contact_impulse_gives_no_nan(void **state) {
     }
 }
 
+/* Found by the 10M fuzz campaign (harness world, input
+ * world-denormal-dt-substep-zero): dt = the smallest denormal is a valid
+ * time step, but dt / 4 sub-steps rounds to 0, which the stages refuse, and
+ * sx_world_step answered SX_ERR_INVALID_ARG. It is one sub-step of dt now. */
+static void a_denormal_time_step_is_one_sub_step(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_body_id a = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.45)), &box);
+    sx_real tiny[3];
+    int i;
+    (void)state;
+    (void)make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-0.5)), &box);
+#ifdef SX_DOUBLE
+    tiny[0] = 4.9406564584124654e-324;
+#else
+    tiny[0] = 1.40129846e-45f;
+#endif
+    tiny[1] = SX_R(2.0) * tiny[0];
+    tiny[2] = SX_R(3.0) * tiny[0];
+    for (i = 0; i < 3; ++i) {
+        assert_true(tiny[i] > SX_R(0.0));
+        assert_int_equal(sx_world_step(w, tiny[i]), SX_OK);
+        assert_true(sx_vec2_is_finite(sx_body_get_position(w, a)));
+        assert_true(sx_vec2_is_finite(sx_body_get_linear_velocity(w, a)));
+        assert_true(sx_is_finite(sx_body_get_angular_velocity(w, a)));
+    }
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_true(sx_vec2_is_finite(sx_body_get_position(w, a)));
+    sx_world_destroy(w);
+}
+
 /* Found by make fuzz (harness world, input world-restitution-1e19-nan): a
  * collider of restitution 3.9e19 (finite, so accepted) overlapping another
  * body flung both out with a rebound of 1e20 m/s and a time-of-impact shift
@@ -1372,6 +1403,7 @@ int main(void) {
         cmocka_unit_test(a_huge_restitution_rebounds_at_the_speed_limit),
         cmocka_unit_test(a_kinematic_body_spinning_at_flt_max_gives_finite_contacts),
         cmocka_unit_test(an_overflowing_contact_impulse_gives_no_nan),
+        cmocka_unit_test(a_denormal_time_step_is_one_sub_step),
         cmocka_unit_test(a_needle_small_collider_gives_no_nan),
         cmocka_unit_test(destroying_bodies_mid_run_and_the_world_frees_everything),
     };

@@ -168,7 +168,8 @@ sx_real sx_world_linear_slop(const sx_world *world);
 
 /** Advances the world by dt seconds: clears the contact and sensor events,
  *  then for each sub-step runs apply_forces, collide, solve, integrate and
- *  separate with h = dt / sub_steps, then clear_forces and update_sleep(dt).
+ *  separate with h = dt / sub_steps, then clear_forces and update_sleep(dt)
+ *  (a dt so small that dt / sub_steps rounds to 0 is one sub-step of dt).
  *  Errors, with the world left
  *  untouched: SX_ERR_INVALID_ARG (NULL world, dt <= 0), SX_ERR_NONFINITE (dt
  *  NaN or infinite). SX_ERR_NO_MEMORY: the contact list or the impact
