@@ -169,6 +169,21 @@ static sx_real sx_point_speed(sx_vec2 va, sx_real wa, sx_vec2 vb, sx_real wb,
     return sx_dot(dv, dir);
 }
 
+/* Stores the velocities a pass computed for the two bodies of a contact:
+ * static and kinematic bodies keep theirs (for them the pass only added 0 x
+ * impulse, which is rounding at best and NaN from an overflow). */
+static void sx_store_velocities(sx_body_sim *a, sx_vec2 va, sx_real wa, sx_body_sim *b, sx_vec2 vb,
+                                sx_real wb) {
+    if (a->dynamic) {
+        a->v = va;
+        a->w = wa;
+    }
+    if (b->dynamic) {
+        b->v = vb;
+        b->w = wb;
+    }
+}
+
 void sx_contacts_solve(sx_world *world, sx_real h) {
     sx_real inv_h = SX_R(1.0) / h;
     int i, k;
@@ -224,16 +239,7 @@ void sx_contacts_solve(sx_world *world, sx_real h) {
                 sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p, sx_scale(n, lambda));
             }
         }
-        /* static and kinematic bodies keep their velocities (0 x impulse
-         * would only add rounding, or NaN from an overflow) */
-        if (a->dynamic) {
-            a->v = va;
-            a->w = wa;
-        }
-        if (b->dynamic) {
-            b->v = vb;
-            b->w = wb;
-        }
+        sx_store_velocities(a, va, wa, b, vb, wb);
     }
 }
 
@@ -417,14 +423,7 @@ static void sx_resolve_impact(sx_world *world, sx_contact *c, sx_real h, sx_real
     sa->turn -= t * (wa - wa0);
     sb->shift = sx_mul_sub(sb->shift, t, sx_sub(vb, vb0));
     sb->turn -= t * (wb - wb0);
-    if (a->dynamic) {
-        a->v = va;
-        a->w = wa;
-    }
-    if (b->dynamic) {
-        b->v = vb;
-        b->w = wb;
-    }
+    sx_store_velocities(a, va, wa, b, vb, wb);
 }
 
 /* The heap of pending impacts, ordered by (time, contact index). */

@@ -1144,6 +1144,29 @@ static void circles_closer_than_square_underflow_compare_exactly(void **state) {
  * sx_collide(B, A) reported 2. Now the rescue falls back to the other
  * order's manifold, mirrored, and both orders agree with sx_overlap at
  * margin 0 and never report fewer points at a speculative margin. */
+/* Both argument orders of a same-transform pair of polygons (given as
+ * point lists): the MTV has the expected length, and each manifold's
+ * deepest point carries it, up to tol and the reference-face hysteresis. */
+static void assert_polygons_deepest_is_mtv(const sx_vec2 *pa, int na, const sx_vec2 *pb, int nb,
+                                           sx_xform x, double mtv_len, double tol) {
+    sx_shape a, b;
+    sx_manifold m;
+    sx_vec2 mtv;
+    int order;
+    assert_int_equal(sx_polygon_shape(pa, na, SX_R(0.0), &a), SX_OK);
+    assert_int_equal(sx_polygon_shape(pb, nb, SX_R(0.0), &b), SX_OK);
+    assert_int_equal(a.u.polygon.count, na);
+    assert_int_equal(b.u.polygon.count, nb);
+    assert_true(sx_mtv(&a, x, &b, x, &mtv));
+    assert_near(sx_length(mtv), mtv_len, tol);
+    for (order = 0; order < 2; ++order) {
+        int n = order ? sx_collide(&b, x, &a, x, &m) : sx_collide(&a, x, &b, x, &m);
+        assert_in_range(n, 1, 2);
+        assert_true(deepest(&m) >= (double)sx_length(mtv) - tol);
+        assert_true(deepest(&m) <= (double)sx_length(mtv) + tol + HYSTERESIS);
+    }
+}
+
 /* Found by the 10M fuzz campaign (harness collide, input
  * collide-sliver-incident-face-tie): two slivers 70 km and 100 km long, a
  * few centimetres to 16 m wide. The reference face is B's long face, and
@@ -1155,11 +1178,6 @@ static void circles_closer_than_square_underflow_compare_exactly(void **state) {
  * carries the MTV. */
 static void sliver_incident_face_is_taken_at_the_deepest_vertex(void **state) {
     sx_vec2 pa[4], pb[4];
-    sx_shape a, b;
-    sx_xform x = sx_xform_make(V(-16.0, -16.0), SX_R(0.0));
-    sx_manifold m;
-    sx_vec2 mtv;
-    int order;
     (void)state;
     pa[0] = V(-15.25, -0.01360000018030405);
     pa[1] = V(-0.018408283591270447, -0.018408283591270447);
@@ -1169,17 +1187,8 @@ static void sliver_incident_face_is_taken_at_the_deepest_vertex(void **state) {
     pb[1] = V(-16.001991271972656, -16.011608123779297);
     pb[2] = V(100000.0, -10.881799697875977);
     pb[3] = V(-0.011608299426734447, -0.011608299426734447);
-    assert_int_equal(sx_polygon_shape(pa, 4, SX_R(0.0), &a), SX_OK);
-    assert_int_equal(sx_polygon_shape(pb, 4, SX_R(0.0), &b), SX_OK);
-    assert_true(sx_mtv(&a, x, &b, x, &mtv));
-    /* Exact penetration: 8.39286 m along B's long face normal. */
-    assert_near(sx_length(mtv), 8.39286, 1e-3);
-    for (order = 0; order < 2; ++order) {
-        int n = order ? sx_collide(&b, x, &a, x, &m) : sx_collide(&a, x, &b, x, &m);
-        assert_in_range(n, 1, 2);
-        assert_true(deepest(&m) >= (double)sx_length(mtv) - 1e-2);
-        assert_true(deepest(&m) <= (double)sx_length(mtv) + 1e-2 + HYSTERESIS);
-    }
+    /* exact penetration: 8.39286 m along B's long face normal */
+    assert_polygons_deepest_is_mtv(pa, 4, pb, 4, X(-16.0, -16.0, 0.0), 8.39286, 1e-2);
 }
 
 /* Found by the 10M fuzz campaign (harness collide, input
@@ -1191,11 +1200,6 @@ static void sliver_incident_face_is_taken_at_the_deepest_vertex(void **state) {
  * deepest vertex is the reference now. */
 static void bent_reference_face_tie_keeps_the_deepest_corner(void **state) {
     sx_vec2 pa[3], pb[4];
-    sx_shape a, b;
-    sx_xform x = sx_xform_make(V(-16.0, -16.0), SX_R(0.0));
-    sx_manifold m;
-    sx_vec2 mtv;
-    int order;
     (void)state;
     pa[0] = sx_v2((sx_real)-0x1.ffee38p+3, (sx_real)0x1.80206ap+0);
     pa[1] = sx_v2((sx_real)-0x1.87f322p+3, (sx_real)-0x1.a1818p-7);
@@ -1204,17 +1208,7 @@ static void bent_reference_face_tie_keeps_the_deepest_corner(void **state) {
     pb[1] = sx_v2((sx_real)-0x1.fff322p+3, (sx_real)-0x1.ffff84p+3);
     pb[2] = sx_v2((sx_real)0x1.fc13aap+3, (sx_real)0x1.fc09d4p+3);
     pb[3] = sx_v2((sx_real)0x1.e09fdp-13, (sx_real)0x1.f37958p-10);
-    assert_int_equal(sx_polygon_shape(pa, 3, SX_R(0.0), &a), SX_OK);
-    assert_int_equal(sx_polygon_shape(pb, 4, SX_R(0.0), &b), SX_OK);
-    assert_int_equal(b.u.polygon.count, 4);
-    assert_true(sx_mtv(&a, x, &b, x, &mtv));
-    assert_near(sx_length(mtv), 2.034e-3, 2e-5);
-    for (order = 0; order < 2; ++order) {
-        int n = order ? sx_collide(&b, x, &a, x, &m) : sx_collide(&a, x, &b, x, &m);
-        assert_in_range(n, 1, 2);
-        assert_true(deepest(&m) >= (double)sx_length(mtv) - 2e-5);
-        assert_true(deepest(&m) <= (double)sx_length(mtv) + 2e-5 + HYSTERESIS);
-    }
+    assert_polygons_deepest_is_mtv(pa, 3, pb, 4, X(-16.0, -16.0, 0.0), 2.034e-3, 2e-5);
 }
 
 static void tiny_box_on_a_far_corner_touches_in_both_orders(void **state) {
