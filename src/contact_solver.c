@@ -680,6 +680,21 @@ void sx_contacts_separate(sx_world *world, sx_real h) {
                 kn = ma + mb + ia * rna * rna + ib * rnb * rnb;
                 if (!(kn > SX_R(0.0))) continue;
                 lambda = -correction / kn;
+                if (!sx_is_finite(lambda)) {
+                    /* kn below correction / SX_REAL_MAX (a body of mass
+                     * SX_REAL_MAX against a static one): the pseudo-impulse
+                     * overflows, and inf x 1 / mass made the position
+                     * -inf. The same moves, as fractions of kn. */
+                    if (ma > SX_R(0.0) || ia > SX_R(0.0)) {
+                        sx_move_body(a, sx_scale(n, correction * (ma / kn)),
+                                     correction * (ia * rna / kn));
+                    }
+                    if (mb > SX_R(0.0) || ib > SX_R(0.0)) {
+                        sx_move_body(b, sx_scale(n, -correction * (mb / kn)),
+                                     -correction * (ib * rnb / kn));
+                    }
+                    continue;
+                }
                 impulse = sx_scale(n, lambda);
                 if (ma > SX_R(0.0) || ia > SX_R(0.0)) {
                     sx_move_body(a, sx_scale(impulse, -ma), -ia * sx_cross(ra, impulse));

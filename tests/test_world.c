@@ -1170,6 +1170,47 @@ static void an_overflowing_contact_impulse_gives_no_nan(void **state) {
 }
 
 /* Found by the 10M fuzz campaign (harness world, input
+ * world-max-mass-separation-inf): the same heavy body (mass SX_REAL_MAX)
+ * overlapping a static circle, stepped with dt = 1.8e19. The separation
+ * stage's pseudo-impulse, correction / (1 / SX_REAL_MAX), overflowed, and
+ * inf x 1 / mass put the body at -inf. The moves are taken as fractions of
+ * the effective mass then: the body is pushed out by the correction, as a
+ * light body would be. */
+static void separating_a_body_of_the_largest_mass_gives_no_nan(void **state) {
+    int run;
+    (void)state;
+    for (run = 0; run < 2; ++run) {
+        sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+        sx_shape heavy = sx_circle_shape(sx_v2(SX_R(-4.0), SX_R(-16.0)), SX_R(15.125));
+        sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+        sx_shape rock = sx_circle_shape(sx_v2(SX_R(0.0), SX_R(0.0)), SX_R(2.0));
+        sx_body_id a = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(1.5)), &box);
+        sx_collider_def cd = sx_default_collider_def();
+        sx_vec2 p0;
+        (void)make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(0.0)), &rock);
+        cd.shape = heavy;
+        cd.density = SX_R(2.1e37);
+        cd.sensor = true;
+        assert_int_equal(sx_body_add_collider(w, a, &cd, NULL), SX_OK);
+        assert_true((double)sx_body_get_mass(w, a) > 1e38);
+        p0 = sx_body_get_position(w, a);
+        if (run == 0) {
+            /* the box is 1 m deep in the rock: one separation pass */
+            assert_int_equal(sx_world_collide(w), SX_OK);
+            assert_int_equal(sx_world_separate(w, DT / SX_R(4.0)), SX_OK);
+            assert_true(sx_vec2_is_finite(sx_body_get_position(w, a)));
+            assert_true(sx_body_get_position(w, a).y > p0.y); /* pushed up, out */
+        } else {
+            assert_int_equal(sx_world_step(w, SX_R(1.8446744e19)), SX_OK);
+            assert_true(sx_vec2_is_finite(sx_body_get_position(w, a)));
+            assert_true(sx_vec2_is_finite(sx_body_get_linear_velocity(w, a)));
+            assert_true(sx_is_finite(sx_body_get_angle(w, a)));
+        }
+        sx_world_destroy(w);
+    }
+}
+
+/* Found by the 10M fuzz campaign (harness world, input
  * world-denormal-dt-substep-zero): dt = the smallest denormal is a valid
  * time step, but dt / 4 sub-steps rounds to 0, which the stages refuse, and
  * sx_world_step answered SX_ERR_INVALID_ARG. It is one sub-step of dt now. */
@@ -1403,6 +1444,7 @@ int main(void) {
         cmocka_unit_test(a_huge_restitution_rebounds_at_the_speed_limit),
         cmocka_unit_test(a_kinematic_body_spinning_at_flt_max_gives_finite_contacts),
         cmocka_unit_test(an_overflowing_contact_impulse_gives_no_nan),
+        cmocka_unit_test(separating_a_body_of_the_largest_mass_gives_no_nan),
         cmocka_unit_test(a_denormal_time_step_is_one_sub_step),
         cmocka_unit_test(a_needle_small_collider_gives_no_nan),
         cmocka_unit_test(destroying_bodies_mid_run_and_the_world_frees_everything),
