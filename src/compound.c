@@ -567,6 +567,27 @@ static bool sides_mtv(const side *a, const side *b, sx_vec2 *mtv) {
     return true;
 }
 
+/* Far beyond SX_HUGE (16 times) the clearing walk works with B's origin as
+ * the working origin. The MTV does not depend on where the pair is, but the
+ * walk takes its supports in world space: at 1.8e19 m from the origin (an
+ * ulp of 2e12 m) they were noise, every exit fell back to the pair's MTV,
+ * the walks crawled through their whole budget and one call took 2 s (fuzz:
+ * compound-mtv-compound-walk-timeout). Within the promised range the world
+ * frame is kept: there the walk rounds as the caller's world does, which is
+ * what lets an answer one ulp long clear a pair 1.4e5 m out when added to
+ * A's position. */
+static void sides_recentre(side *a, side *b) {
+    sx_real far = SX_R(16.0) * SX_HUGE;
+    sx_vec2 pa = sx_sub(a->x.p, b->x.p);
+    if (!(sx_maxr(sx_maxr(sx_absr(a->x.p.x), sx_absr(a->x.p.y)),
+                  sx_maxr(sx_absr(b->x.p.x), sx_absr(b->x.p.y))) > far) ||
+        !sx_vec2_is_finite(pa)) {
+        return;
+    }
+    a->x.p = pa;
+    b->x.p = sx_v2_zero();
+}
+
 bool sx_compound_mtv(const sx_compound *a, sx_xform xa, const sx_shape *b, sx_xform xb,
                      sx_vec2 *mtv) {
     side sa, sb;
@@ -574,6 +595,7 @@ bool sx_compound_mtv(const sx_compound *a, sx_xform xa, const sx_shape *b, sx_xf
     if (!compound_usable(a) || b == NULL) return false;
     sa = compound_side(a, xa);
     sb = shape_side(b, xb);
+    sides_recentre(&sa, &sb);
     return sides_mtv(&sa, &sb, mtv);
 }
 
@@ -584,6 +606,7 @@ bool sx_compound_mtv_compound(const sx_compound *a, sx_xform xa, const sx_compou
     if (!compound_usable(a) || !compound_usable(b)) return false;
     sa = compound_side(a, xa);
     sb = compound_side(b, xb);
+    sides_recentre(&sa, &sb);
     return sides_mtv(&sa, &sb, mtv);
 }
 

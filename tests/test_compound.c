@@ -713,6 +713,37 @@ static void compound_mtv_of_a_point_just_inside_a_far_box_face_is_its_mtv(void *
     }
 }
 
+/* Regression (fuzz: compound-mtv-compound-walk-timeout): two compounds
+ * placed 1.8e19 m from the origin (far beyond SX_HUGE, an ulp of 2e12 m)
+ * with the same transform. The clearing walk took its supports in world
+ * space, where they were noise; every walk crawled through its budget, one
+ * call took 2 s, and the answer was a zero MTV for a pair 0.3 m deep. Far
+ * out the walk now works from B's origin, so the pair gets the answer it
+ * gets at the origin. */
+static void compound_mtv_far_beyond_huge_is_the_mtv_at_the_origin(void **state) {
+    sx_compound_part ap[3], bp[2];
+    sx_compound a, b;
+    sx_vec2 near, far;
+    sx_xform x0 = sx_xform_make(sx_v2_zero(), SX_R(0.3));
+    sx_xform xf = sx_xform_make(sx_v2(SX_R(1.8e19), SX_R(1.8e19)), SX_R(0.3));
+    (void)state;
+    ap[0] = sx_compound_part_make(sx_box_shape(SX_R(0.5), SX_R(0.5)), sx_xform_identity());
+    ap[1] = sx_compound_part_make(sx_box_shape(SX_R(0.5), SX_R(0.5)), at(1.0, 0.0, 0.0));
+    ap[2] = sx_compound_part_make(sx_box_shape(SX_R(0.5), SX_R(0.5)), at(2.0, 0.0, 0.0));
+    bp[0] = sx_compound_part_make(sx_box_shape(SX_R(1.5), SX_R(0.5)), at(1.0, 0.7, 0.0));
+    bp[1] = sx_compound_part_make(sx_box_shape(SX_R(0.5), SX_R(0.5)), at(4.0, 0.7, 0.0));
+    a.parts = ap;
+    a.count = 3;
+    b.parts = bp;
+    b.count = 2;
+    assert_true(sx_compound_mtv_compound(&a, x0, &b, x0, &near));
+    assert_true((double)sx_length(near) > 0.2); /* 0.3 m deep along B's bottom face */
+    assert_true(sx_compound_mtv_compound(&a, xf, &b, xf, &far));
+    assert_true(sx_vec2_is_finite(far));
+    assert_near(far.x, near.x, 1e-4);
+    assert_near(far.y, near.y, 1e-4);
+}
+
 /* ---- bad input ----------------------------------------------------------- */
 
 static void invalid_compounds_are_reported_and_answered_safely(void **state) {
@@ -777,6 +808,7 @@ int main(void) {
         cmocka_unit_test(a_part_too_heavy_for_sx_real_gives_no_nan),
         cmocka_unit_test(compound_mtv_clears_a_point_on_a_far_box_corner),
         cmocka_unit_test(compound_mtv_of_a_point_just_inside_a_far_box_face_is_its_mtv),
+        cmocka_unit_test(compound_mtv_far_beyond_huge_is_the_mtv_at_the_origin),
         cmocka_unit_test(invalid_compounds_are_reported_and_answered_safely),
     };
     return cmocka_run_group_tests_name("compound", tests, sx_test_group_setup,
