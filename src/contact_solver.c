@@ -51,6 +51,30 @@ static inline sx_real sx_bounded_impulse(sx_real x) {
     return x < -SX_IMPULSE_LIMIT ? -SX_IMPULSE_LIMIT : SX_R(0.0);
 }
 
+/* Applies an impulse along `dir` at the two anchors of a point. */
+static void sx_apply(sx_vec2 *va, sx_real *wa, sx_vec2 *vb, sx_real *wb, sx_real ma, sx_real ia,
+                     sx_real mb, sx_real ib, const sx_contact_point *p, sx_vec2 impulse) {
+    *va = sx_mul_sub(*va, ma, impulse);
+    *wa -= ia * sx_cross(p->anchor_a, impulse);
+    *vb = sx_mul_add(*vb, mb, impulse);
+    *wb += ib * sx_cross(p->anchor_b, impulse);
+}
+
+/* Stores the velocities a pass computed for the two bodies of a contact:
+ * static and kinematic bodies keep theirs (for them the pass only added 0 x
+ * impulse, which is rounding at best and NaN from an overflow). */
+static void sx_store_velocities(sx_body_sim *a, sx_vec2 va, sx_real wa, sx_body_sim *b, sx_vec2 vb,
+                                sx_real wb) {
+    if (a->dynamic) {
+        a->v = va;
+        a->w = wa;
+    }
+    if (b->dynamic) {
+        b->v = vb;
+        b->w = wb;
+    }
+}
+
 void sx_contacts_prepare(sx_world *world) {
     int i, k;
     for (i = 0; i < world->contact_count; ++i) {
@@ -58,6 +82,8 @@ void sx_contacts_prepare(sx_world *world) {
         sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
         sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;
         sx_vec2 n = c->normal, t = sx_cross_vs(n, SX_R(1.0));
+        sx_vec2 va = a->v, vb = b->v;
+        sx_real wa = a->w, wb = b->w;
         if (!sx_contact_is_active(world, c)) continue;
         for (k = 0; k < c->count; ++k) {
             sx_contact_point *p = &c->points[k];
@@ -72,15 +98,9 @@ void sx_contacts_prepare(sx_world *world) {
             p->impact_impulse = SX_R(0.0);
             /* warm start with last sub-step's accumulated impulses */
             impulse = sx_add(sx_scale(n, p->normal_impulse), sx_scale(t, p->tangent_impulse));
-            if (a->dynamic) {
-                a->v = sx_mul_sub(a->v, ma, impulse);
-                a->w -= ia * sx_cross(ra, impulse);
-            }
-            if (b->dynamic) {
-                b->v = sx_mul_add(b->v, mb, impulse);
-                b->w += ib * sx_cross(rb, impulse);
-            }
+            sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p, impulse);
         }
+        sx_store_velocities(a, va, wa, b, vb, wb);
         c->block_solve = false;
         if (c->count == 2) {
             const sx_contact_point *p1 = &c->points[0], *p2 = &c->points[1];
@@ -153,35 +173,11 @@ static bool sx_block_solve(const sx_contact *c, const sx_contact_point *p1,
     return sx_solve_lcp2(c, b1, b2, x1, x2);
 }
 
-/* Applies an impulse along `dir` at the two anchors of a point. */
-static void sx_apply(sx_vec2 *va, sx_real *wa, sx_vec2 *vb, sx_real *wb, sx_real ma, sx_real ia,
-                     sx_real mb, sx_real ib, const sx_contact_point *p, sx_vec2 impulse) {
-    *va = sx_mul_sub(*va, ma, impulse);
-    *wa -= ia * sx_cross(p->anchor_a, impulse);
-    *vb = sx_mul_add(*vb, mb, impulse);
-    *wb += ib * sx_cross(p->anchor_b, impulse);
-}
-
 static sx_real sx_point_speed(sx_vec2 va, sx_real wa, sx_vec2 vb, sx_real wb,
                               const sx_contact_point *p, sx_vec2 dir) {
     sx_vec2 dv =
         sx_sub(sx_add(vb, sx_cross_sv(wb, p->anchor_b)), sx_add(va, sx_cross_sv(wa, p->anchor_a)));
     return sx_dot(dv, dir);
-}
-
-/* Stores the velocities a pass computed for the two bodies of a contact:
- * static and kinematic bodies keep theirs (for them the pass only added 0 x
- * impulse, which is rounding at best and NaN from an overflow). */
-static void sx_store_velocities(sx_body_sim *a, sx_vec2 va, sx_real wa, sx_body_sim *b, sx_vec2 vb,
-                                sx_real wb) {
-    if (a->dynamic) {
-        a->v = va;
-        a->w = wa;
-    }
-    if (b->dynamic) {
-        b->v = vb;
-        b->w = wb;
-    }
 }
 
 void sx_contacts_solve(sx_world *world, sx_real h) {

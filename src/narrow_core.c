@@ -503,10 +503,6 @@ bool sx_core_mtv(const sx_core *a, const sx_core *b, sx_vec2 *mtv) {
 
 /* ---- manifolds ---------------------------------------------------------- */
 
-/* Clips the incident feature of `inc` against face i of `ref` and writes the
- * contact points (working frame). flip: ref is B. Points deeper than -margin
- * (less a rounding allowance) are kept; if none is, the deepest one is, so an
- * overlapping pair always reports a contact. */
 /* The deepest vertex of c along -n: the first of least projection, kept
  * without a branch. */
 static inline int support_below(const sx_core *c, sx_vec2 n) {
@@ -530,6 +526,10 @@ static int slab_neighbour(const sx_core *ref, int i, sx_vec2 p) {
     return -1;
 }
 
+/* Clips the incident feature of `inc` against face *face of `ref` (or a face tied with it, see
+ * below, written back to *face) and writes the contact points (working frame). flip: ref is B.
+ * Points deeper than -margin (less a rounding allowance) are kept; if none is, the deepest one is,
+ * so an overlapping pair always reports a contact. */
 static int clip_face(const sx_core *ref, int *face, const sx_core *inc, sx_real margin, bool flip,
                      const sx_manifold_point *exact, sx_manifold_point out[2]) {
     int i = *face;
@@ -553,8 +553,8 @@ static int clip_face(const sx_core *ref, int *face, const sx_core *inc, sx_real 
              * the same amount up to rounding, and the SAT's pick of the two
              * may leave inc's deepest vertex beyond its slab, where clipping
              * cuts it off (a 2 mm penetration came out as 1 mm). Of two
-             * such tied faces the one whose slab the deepest
-             * vertex is in, or towards, is the reference. A real corner
+             * such tied faces the one whose slab the deepest vertex is in,
+             * or towards, is the reference. A real corner
              * (the neighbour separating clearly less) keeps face i. */
             int nb = slab_neighbour(ref, i, inc->v[s]);
             if (nb >= 0) {

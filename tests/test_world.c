@@ -1113,6 +1113,17 @@ static void a_kinematic_body_spinning_at_flt_max_gives_finite_contacts(void **st
     }
 }
 
+/* Gives body `a` a sensor of density 2.1e37 (the fuzz input's): its mass
+ * overflows and the body gets the mass SX_REAL_MAX. */
+static void add_heavy_sensor(sx_world *w, sx_body_id a) {
+    sx_collider_def cd = sx_default_collider_def();
+    cd.shape = sx_circle_shape(sx_v2(SX_R(-4.0), SX_R(-16.0)), SX_R(15.125));
+    cd.density = SX_R(2.1e37);
+    cd.sensor = true;
+    assert_int_equal(sx_body_add_collider(w, a, &cd, NULL), SX_OK);
+    assert_true((double)sx_body_get_mass(w, a) > 1e38);
+}
+
 /* Found by the 10M fuzz campaign (harness world, input
  * world-max-mass-against-static-nan): a dynamic body whose sensor of
  * density 2.1e37 gives it the mass SX_REAL_MAX, resting on a static circle.
@@ -1126,19 +1137,13 @@ static void an_overflowing_contact_impulse_gives_no_nan(void **state) {
     (void)state;
     for (run = 0; run < 2; ++run) {
         sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
-        sx_shape heavy = sx_circle_shape(sx_v2(SX_R(-4.0), SX_R(-16.0)), SX_R(15.125));
         sx_shape ball = sx_circle_shape(sx_v2(SX_R(-16.0), SX_R(-13.875)), SX_R(4.5));
         sx_shape rock = sx_circle_shape(sx_v2(SX_R(-16.0), SX_R(-16.0)), SX_R(4.5));
         sx_body_id a = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(4.5), SX_R(4.5)), &ball);
         sx_body_id g = make_body(w, SX_BODY_STATIC, sx_v2(SX_R(5.625), SX_R(4.5)), &rock);
-        sx_collider_def cd = sx_default_collider_def();
         sx_contact_data data;
         int i, k, j, contacts = 0;
-        cd.shape = heavy;
-        cd.density = SX_R(2.1e37);
-        cd.sensor = true;
-        assert_int_equal(sx_body_add_collider(w, a, &cd, NULL), SX_OK);
-        assert_true((double)sx_body_get_mass(w, a) > 1e38);
+        add_heavy_sensor(w, a);
         assert_int_equal(sx_body_set_angular_velocity(w, a, SX_R(19.84375)), SX_OK);
         for (i = 0; i < 3; ++i) {
             if (run == 0) {
@@ -1181,18 +1186,12 @@ static void separating_a_body_of_the_largest_mass_gives_no_nan(void **state) {
     (void)state;
     for (run = 0; run < 2; ++run) {
         sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
-        sx_shape heavy = sx_circle_shape(sx_v2(SX_R(-4.0), SX_R(-16.0)), SX_R(15.125));
         sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5));
         sx_shape rock = sx_circle_shape(sx_v2(SX_R(0.0), SX_R(0.0)), SX_R(2.0));
         sx_body_id a = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(1.5)), &box);
-        sx_collider_def cd = sx_default_collider_def();
         sx_vec2 p0;
         (void)make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(0.0)), &rock);
-        cd.shape = heavy;
-        cd.density = SX_R(2.1e37);
-        cd.sensor = true;
-        assert_int_equal(sx_body_add_collider(w, a, &cd, NULL), SX_OK);
-        assert_true((double)sx_body_get_mass(w, a) > 1e38);
+        add_heavy_sensor(w, a);
         p0 = sx_body_get_position(w, a);
         if (run == 0) {
             /* the box is 1 m deep in the rock: one separation pass */
