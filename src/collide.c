@@ -263,15 +263,33 @@ bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xfor
  * can inline it (an exported function of a shared library cannot be). */
 static inline int collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                                   sx_real margin, sx_manifold *m) {
-    sx_vec2 d, n, ca;
-    sx_real r, limit, dist;
+    sx_vec2 d, n = sx_v2_zero(), ca;
+    sx_real r, limit, dist = SX_R(0.0), dsq;
+    bool touch;
     margin = clean_margin(margin);
     if (a != NULL && b != NULL) {
         d = circle_offset(a, xa, b, xb);
         r = a->radius + b->radius;
         limit = r + margin;
-        if (within_reach(d, limit) && circles_valid(a, xa, b, xb)) {
-            n = circles_direction(a, xa, b, xb, d, &dist);
+        dsq = sx_length_sq(d);
+        if (dsq >= SX_SQUARE_SAFE * SX_SQUARE_SAFE) {
+            /* The common case, written out: the square keeps full precision
+             * (within_reach's plain test), and the direction is d over its
+             * length unless the centres coincide within rounding
+             * (circles_direction's test, which for a square this large reads
+             * dist > 64 epsilon r). */
+            touch = dsq <= limit * limit && circles_valid(a, xa, b, xb);
+            if (touch) {
+                dist = sx_sqrt(dsq);
+                n = dist > SX_R(64.0) * SX_REAL_EPSILON * r
+                        ? sx_scale(d, SX_R(1.0) / dist)
+                        : circles_direction(a, xa, b, xb, d, &dist);
+            }
+        } else {
+            touch = within_reach(d, limit) && circles_valid(a, xa, b, xb);
+            if (touch) n = circles_direction(a, xa, b, xb, d, &dist);
+        }
+        if (touch) {
             ca = sx_xform_point(xa, a->center);
             /* Midway between A's surface (ra along n) and B's (dist - rb). */
             m->points[0].point = sx_mul_add(ca, SX_R(0.5) * (a->radius + dist - b->radius), n);
@@ -353,35 +371,45 @@ static int pair_collide(sx_core_builder *fa, const void *a, sx_xform xa, sx_core
 
 /* A core against a circle B (segment, capsule or polygon first): B's centre
  * is placed in A's frame, and the point routines of narrow_core.c answer
- * without a core for B. */
-static bool circle_in_frame(const sx_circle *b, sx_xform xa, sx_xform xb, sx_vec2 *c) {
-    if (b == NULL || !(b->radius >= SX_R(0.0)) || !sx_is_finite(b->radius) ||
-        !sx_vec2_is_finite(b->center) || !xform_finite(xb)) {
-        return false;
-    }
-    /* xa needs no check of its own: a NaN or infinity in it makes *c
-     * non-finite (both components of the inverse rotation take in both
-     * rotation components and both coordinates of the offset). */
-    /* The world offset of the positions first (exact for nearby bodies far
-     * from the origin), then B's rotated centre, then into A's frame. */
-    *c = sx_inv_rotate(xa.q, sx_add(sx_sub(xb.p, xa.p), sx_rotate(xb.q, b->center)));
-    return sx_vec2_is_finite(*c);
+ * without a core for B. The world offset of the positions comes first (exact
+ * for nearby bodies far from the origin), then B's rotated centre, then the
+ * rotation into A's frame. */
+static inline sx_vec2 circle_in_frame(const sx_circle *b, sx_xform xa, sx_xform xb) {
+    return sx_inv_rotate(xa.q, sx_add(sx_sub(xb.p, xa.p), sx_rotate(xb.q, b->center)));
+}
+
+/* The checks of B and of its placed centre c, run only once the answer is
+ * not "apart": a NaN or infinity anywhere in B, xb or xa makes c (or the
+ * limit a + rb) non-finite, and the point routines answer "apart" for a
+ * non-finite c unless the limit is infinite, which an invalid radius is
+ * needed for. xa needs no check of its own: both components of the inverse
+ * rotation take in both rotation components and both coordinates of the
+ * offset. */
+static inline bool circle_valid(const sx_circle *b, sx_xform xb, sx_vec2 c) {
+    return b->radius >= SX_R(0.0) && sx_is_finite(b->radius) && sx_vec2_is_finite(b->center) &&
+           xform_finite(xb) && sx_vec2_is_finite(c);
 }
 
 static bool point_overlap(sx_core_builder *fa, const void *a, sx_xform xa, const sx_circle *b,
                           sx_xform xb) {
     sx_core ca;
     sx_vec2 c;
-    return circle_in_frame(b, xa, xb, &c) && fa(a, NULL, &ca) &&
-           sx_core_point_overlap(&ca, c, b->radius) && sx_core_values_finite(&ca);
+    if (b == NULL || !fa(a, NULL, &ca)) return false;
+    c = circle_in_frame(b, xa, xb);
+    return sx_core_point_overlap(&ca, c, b->radius) && circle_valid(b, xb, c) &&
+           sx_core_values_finite(&ca);
 }
 
 static bool point_mtv(sx_core_builder *fa, const void *a, sx_xform xa, const sx_circle *b,
                       sx_xform xb, sx_vec2 *mtv) {
     sx_core ca;
     sx_vec2 c, local = sx_v2_zero();
-    bool hit = circle_in_frame(b, xa, xb, &c) && fa(a, NULL, &ca) &&
-               sx_core_point_mtv(&ca, c, b->radius, &local) && sx_core_values_finite(&ca);
+    bool hit = false;
+    if (b != NULL && fa(a, NULL, &ca)) {
+        c = circle_in_frame(b, xa, xb);
+        hit = sx_core_point_mtv(&ca, c, b->radius, &local) && circle_valid(b, xb, c) &&
+              sx_core_values_finite(&ca);
+    }
     return finish_mtv(hit, local, xa, mtv);
 }
 
@@ -392,12 +420,13 @@ static int point_collide(sx_core_builder *fa, const void *a, sx_xform xa, const 
     sx_manifold scratch;
     sx_manifold *m = out ? out : &scratch;
     int local;
-    if (!circle_in_frame(b, xa, xb, &c) || !fa(a, NULL, &ca)) {
+    if (b == NULL || !fa(a, NULL, &ca)) {
         clear_manifold(out);
         return 0;
     }
+    c = circle_in_frame(b, xa, xb);
     local = sx_core_point_manifold(&ca, c, b->radius, clean_margin(margin), m);
-    if (local > 0 && !sx_core_values_finite(&ca)) local = 0;
+    if (local > 0 && !(circle_valid(b, xb, c) && sx_core_values_finite(&ca))) local = 0;
     return world_manifold(m, local, xa);
 }
 

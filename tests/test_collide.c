@@ -700,6 +700,39 @@ static void coincident_cores_push_along_a_documented_axis(void **state) {
     assert_near(sx_length(m.normal), 1.0, TOL);
 }
 
+/* Two circles whose centres are a rounding error apart but whose squared
+ * offset is a normal number (the fast path of sx_collide_circles): the
+ * offset has no direction, so the normal is the documented axis (A's local
+ * +x or B's local -x, by the canonical order), a unit vector, exactly
+ * reversed in the other argument order and in line with the MTV. */
+static void nearly_coincident_circles_take_the_documented_axis(void **state) {
+#ifdef SX_DOUBLE
+    const double tiny = 1e-16;
+#else
+    const double tiny = 1e-7;
+#endif
+    sx_shape a = circle(0, 0, 1), b = circle(0, 0, 0.5);
+    sx_xform xa = X(3, 4, PI / 2), xb = X(3 + tiny, 4, 0.25);
+    sx_manifold m, r;
+    sx_vec2 mtv;
+    (void)state;
+    assert_int_equal(sx_collide(&a, xa, &b, xb, &m), 1);
+    assert_int_equal(sx_collide(&b, xb, &a, xa, &r), 1);
+    assert_near(sx_length(m.normal), 1.0, TOL);
+    assert_true(m.normal.x == -r.normal.x && m.normal.y == -r.normal.y);
+    assert_true((m.normal.x == xa.q.c && m.normal.y == xa.q.s) ||
+                (m.normal.x == -xb.q.c && m.normal.y == -xb.q.s));
+    assert_near(m.points[0].depth, 1.5, TOL);
+    assert_near(r.points[0].depth, 1.5, TOL);
+    assert_true(sx_mtv(&a, xa, &b, xb, &mtv));
+    assert_vec2_near(mtv, sx_scale(m.normal, SX_R(-1.5)), TOL);
+    /* Just beyond the rounding band the offset gives the direction. */
+    xb = X(3 + 1e-3, 4, 0.25);
+    assert_int_equal(sx_collide(&a, xa, &b, xb, &m), 1);
+    assert_vec2_near(m.normal, V(1, 0), TOL);
+    assert_near(m.points[0].depth, 1.5 - 1e-3, TOL);
+}
+
 /* ---- every pair: both orders through the table and the pair functions --- */
 
 static void pair_functions_agree_with_the_dispatch_table(void **state) {
@@ -1379,6 +1412,7 @@ int main(void) {
         cmocka_unit_test(wide_box_on_narrow_box_is_clipped_at_both_ends),
         cmocka_unit_test(rounded_corners_nearly_aligned_give_the_exact_corner_contact),
         cmocka_unit_test(coincident_cores_push_along_a_documented_axis),
+        cmocka_unit_test(nearly_coincident_circles_take_the_documented_axis),
         cmocka_unit_test(pair_functions_agree_with_the_dispatch_table),
         cmocka_unit_test(every_ordered_pair_is_consistent),
         cmocka_unit_test(random_pairs_are_self_consistent),
