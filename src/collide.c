@@ -234,10 +234,41 @@ static sx_vec2 circles_direction(const sx_circle *a, sx_xform xa, const sx_circl
     return sx_v2(xa.q.c, xa.q.s);
 }
 
+/* Whether the circles, their offset d and reach `limit` known, touch; if so
+ * *n and *dist get the direction and the centre distance. The common case is
+ * written out: a square in full precision (within_reach's plain test) and a
+ * direction d over its length unless the centres coincide within rounding
+ * (circles_direction's test, which for a square this large reads
+ * dist > 64 epsilon r). collide_circles writes the same steps out itself:
+ * calling this helper from it made GCC 12 spill the by-value transforms and
+ * reload them across a store-forwarding stall (11 ns per pair became 16-20). */
+static inline bool circles_touch(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                                 sx_vec2 d, sx_real limit, sx_vec2 *n, sx_real *dist) {
+    sx_real dsq = sx_length_sq(d), r = a->radius + b->radius;
+    if (dsq >= SX_SQUARE_SAFE * SX_SQUARE_SAFE) {
+        if (!(dsq <= limit * limit && circles_valid(a, xa, b, xb))) return false;
+        *dist = sx_sqrt(dsq);
+        if (*dist > SX_R(64.0) * SX_REAL_EPSILON * r) {
+            *n = sx_scale(d, SX_R(1.0) / *dist);
+        } else {
+            *n = circles_direction(a, xa, b, xb, d, dist);
+        }
+        return true;
+    }
+    if (!(within_reach(d, limit) && circles_valid(a, xa, b, xb))) return false;
+    *n = circles_direction(a, xa, b, xb, d, dist);
+    return true;
+}
+
 bool sx_overlap_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
+    sx_vec2 d;
+    sx_real r, dsq;
     if (a == NULL || b == NULL) return false;
-    return within_reach(circle_offset(a, xa, b, xb), a->radius + b->radius) &&
-           circles_valid(a, xa, b, xb);
+    d = circle_offset(a, xa, b, xb);
+    r = a->radius + b->radius;
+    dsq = sx_length_sq(d);
+    if (dsq >= SX_SQUARE_SAFE * SX_SQUARE_SAFE) return dsq <= r * r && circles_valid(a, xa, b, xb);
+    return within_reach(d, r) && circles_valid(a, xa, b, xb);
 }
 
 bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
@@ -248,8 +279,7 @@ bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xfor
     if (a != NULL && b != NULL) {
         d = circle_offset(a, xa, b, xb);
         r = a->radius + b->radius;
-        if (within_reach(d, r) && circles_valid(a, xa, b, xb)) {
-            n = circles_direction(a, xa, b, xb, d, &dist);
+        if (circles_touch(a, xa, b, xb, d, r, &n, &dist)) {
             v = sx_scale(n, sx_minr(dist - r, SX_R(0.0)));
             hit = sx_vec2_is_finite(v);
             if (!hit) v = sx_v2_zero();
