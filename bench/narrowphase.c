@@ -285,6 +285,63 @@ static void measure_speed(const sepax_pair *sp, const bench_box2d_set *b2,
     free(times);
 }
 
+/* ---- the floor of a circle-circle manifold ------------------------------
+ * What any function that answers a unit normal, a contact point and a depth
+ * for two placed circles must do at least: place both centres, compare the
+ * squared distance, and for a touching pair take a square root and a
+ * division. No validation, no care for coincident centres or underflow. It
+ * is called out of line, as sx_collide and Box2D's functions are, and timed
+ * like the table's cells, to show how far below Box2D's b2CollideCircles
+ * (which computes neither normal nor depth) such an answer can go. */
+static int floor_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                         sx_manifold *m) {
+    sx_vec2 ca = sx_xform_point(xa, a->center), cb = sx_xform_point(xb, b->center);
+    sx_vec2 d = sx_sub(cb, ca);
+    sx_real r = a->radius + b->radius, dsq = sx_dot(d, d), dist;
+    if (dsq > r * r) {
+        m->count = 0;
+        return 0;
+    }
+    dist = sx_sqrt(dsq);
+    m->normal = dist > SX_R(0.0) ? sx_scale(d, SX_R(1.0) / dist) : sx_v2(SX_R(1.0), SX_R(0.0));
+    m->points[0].point = sx_mul_add(ca, SX_R(0.5) * (a->radius + dist - b->radius), m->normal);
+    m->points[0].depth = r - dist;
+    m->points[0].id = 0;
+    m->count = 1;
+    return 1;
+}
+
+static int (*volatile floor_circles_fn)(const sx_circle *, sx_xform, const sx_circle *, sx_xform,
+                                        sx_manifold *) = floor_circles;
+
+/* Best-of-reps ns per pair of the floor and of sx_collide on the same
+ * circle pairs, interleaved rep by rep. */
+static void measure_floor(const sepax_pair *sp, int n, const options *opt, double *floor_ns,
+                          double *sx_ns) {
+    int passes = opt->smoke ? 1 : 200;
+    *floor_ns = *sx_ns = 1e300;
+    for (int rep = 0; rep < opt->reps; ++rep) {
+        double t0 = now_ns(), sum = 0.0;
+        for (int pass = 0; pass < passes; ++pass) {
+            for (int i = 0; i < n; ++i) {
+                sx_manifold m;
+                sum +=
+                    floor_circles_fn(&sp[i].a.u.circle, sp[i].xa, &sp[i].b.u.circle, sp[i].xb, &m);
+            }
+        }
+        double t1 = now_ns();
+        double t = (t1 - t0) / ((double)passes * (double)n);
+        if (t < *floor_ns) *floor_ns = t;
+        bench_sink = bench_sink + sum;
+        t0 = now_ns();
+        sum = sepax_run(sp, n, ROW_SX_COLLIDE, passes);
+        t1 = now_ns();
+        t = (t1 - t0) / ((double)passes * (double)n);
+        if (t < *sx_ns) *sx_ns = t;
+        bench_sink = bench_sink + sum;
+    }
+}
+
 static int make_dirs(const char *path) {
     char buf[1024];
     size_t len = strlen(path);
@@ -461,6 +518,7 @@ int main(int argc, char **argv) {
            "b2 max", "b2 p99", "wrong: sx o/m/c b2 o/c");
 
     int failures = 0, ntypes = 0;
+    double floor_ns = 0.0, floor_sx_ns = 0.0, floor_b2_ns = 0.0, floor_b2wm_ns = 0.0;
     static result all[BENCH_KIND_COUNT * (BENCH_KIND_COUNT + 1) / 2][ROW_COUNT];
     static char names[BENCH_KIND_COUNT * (BENCH_KIND_COUNT + 1) / 2][40];
     for (int ka = 0; ka < BENCH_KIND_COUNT; ++ka) {
@@ -509,6 +567,12 @@ int main(int argc, char **argv) {
 
             measure_accuracy(ref, sp, b2, cp, ka, kb, n, res);
             measure_speed(sp, b2, cp, n, &opt, res);
+            if (ka == BENCH_CIRCLE && kb == BENCH_CIRCLE) {
+                measure_floor(sp, n, &opt, &floor_ns, &floor_sx_ns);
+                floor_b2_ns = res[ROW_B2_COLLIDE].available ? res[ROW_B2_COLLIDE].ns : 0.0;
+                floor_b2wm_ns =
+                    res[ROW_B2_COLLIDE_WORLD].available ? res[ROW_B2_COLLIDE_WORLD].ns : 0.0;
+            }
 
             const result *sc = &res[ROW_SX_COLLIDE], *bc = &res[ROW_B2_COLLIDE];
             printf("%-17s", name);
@@ -575,6 +639,14 @@ int main(int argc, char **argv) {
            "shapes' own radii (0 for sharp polygons and segments) instead of "
            "b2_polygonRadius: see bench/peer_box2d.cpp.\n",
            csv_path, worst_path);
+    if (floor_ns > 0.0 && floor_b2_ns > 0.0) {
+        printf("floor of a circle-circle manifold (place, compare, sqrt, divide, store; no "
+               "validation; bench/narrowphase.c floor_circles): %.1f ns = %.2f x b2CollideCircles "
+               "(%.1f ns, no normal or depth), %.2f x b2CollideCircles + b2WorldManifold "
+               "(%.1f ns); sx_collide %.1f ns = %.2f x the floor (interleaved with it)\n",
+               floor_ns, floor_ns / floor_b2_ns, floor_b2_ns, floor_ns / floor_b2wm_ns,
+               floor_b2wm_ns, floor_sx_ns, floor_sx_ns / floor_ns);
+    }
     {
         double gauge[BENCH_KIND_COUNT * (BENCH_KIND_COUNT + 1) / 2 * ROW_COUNT];
         int g = 0;
