@@ -123,9 +123,9 @@ static void cmp_check_cleared(const sx_compound *a, sx_xform xa, const sx_compou
     int i, j;
     xa.p = sx_add(xa.p, mtv);
     for (i = 0; i < a->count; ++i) {
-        sx_xform pa = sx_xform_mul(xa, a->parts[i].offset);
+        sx_xform pa = sx_compound_part_placement(xa, &a->parts[i]);
         for (j = 0; j < b->count; ++j) {
-            sx_xform pb = sx_xform_mul(xb, b->parts[j].offset);
+            sx_xform pb = sx_compound_part_placement(xb, &b->parts[j]);
             sx_vec2 v;
             sx_mtv(&a->parts[i].shape, pa, &b->parts[j].shape, pb, &v);
             FZ_CHECK(sx_length(v) <=
@@ -218,7 +218,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (valid) {
         bool any = false;
         for (i = 0; i < n; ++i)
-            any = any || sx_overlap(&cparts[i].shape, sx_xform_mul(xa, cparts[i].offset), &b, xb);
+            any = any || sx_overlap(&cparts[i].shape, sx_compound_part_placement(xa, &cparts[i]), &b, xb);
         FZ_CHECK(any == overlap);
     }
     hit = sx_compound_mtv(&ca, xa, &b, xb, &mtv);
@@ -263,7 +263,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         bool in = sx_compound_contains_point(&ca, xa, p, &part), any = false;
         FZ_CHECK(in ? part >= 0 && part < n : part == -1);
         for (i = 0; i < n; ++i)
-            any = any || sx_contains_point(&cparts[i].shape, sx_xform_mul(xa, cparts[i].offset), p);
+            any = any || sx_contains_point(&cparts[i].shape, sx_compound_part_placement(xa, &cparts[i]), p);
         if (valid) FZ_CHECK(any == in);
     }
 

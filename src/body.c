@@ -539,7 +539,7 @@ sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collid
 
 sx_status sx_body_add_compound(sx_world *world, sx_body_id body, const sx_compound *compound,
                                const sx_collider_def *def, sx_collider_id *out) {
-    int bslot = -1;
+    int bslot = -1, i;
     sx_compound_part *parts;
     sx_status s = sx_attach_prologue(world, body, def, out, &bslot);
     if (s != SX_OK) return s;
@@ -555,6 +555,10 @@ sx_status sx_body_add_compound(sx_world *world, sx_body_id body, const sx_compou
     parts = (sx_compound_part *)sx_alloc((size_t)compound->count * sizeof(sx_compound_part));
     if (parts == NULL) return SX_ERR_NO_MEMORY;
     memcpy(parts, compound->parts, (size_t)compound->count * sizeof(sx_compound_part));
+    /* Stored with the rotations the compound functions place them by, so
+     * the world's own placements (contacts, AABBs, queries, drawing) agree. */
+    for (i = 0; i < compound->count; ++i)
+        parts[i].offset = sx_compound_part_placement(sx_xform_identity(), &compound->parts[i]);
     return sx_attach_collider(world, bslot, def, parts, compound->count, out);
 }
 

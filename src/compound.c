@@ -59,6 +59,24 @@ sx_compound_part sx_compound_part_make(sx_shape shape, sx_xform offset) {
     return p;
 }
 
+/* A rotation this close to unit length (squared length within 16 epsilon
+ * of 1: sx_rot_make's are within a few ulps) is used as it is. */
+#define COMPOUND_ROT_EXACT (SX_R(16.0) * SX_REAL_EPSILON)
+
+sx_xform sx_compound_part_placement(sx_xform x, const sx_compound_part *p) {
+    sx_xform o;
+    sx_real len2;
+    if (p == NULL) return x;
+    o = p->offset;
+    len2 = o.q.c * o.q.c + o.q.s * o.q.s;
+    if (sx_absr(len2 - SX_R(1.0)) > COMPOUND_ROT_EXACT && len2 > SX_R(0.0) && sx_is_finite(len2)) {
+        sx_real k = SX_R(1.0) / sx_sqrt(len2);
+        o.q.c *= k;
+        o.q.s *= k;
+    }
+    return sx_xform_mul(x, o);
+}
+
 sx_status sx_compound_validate(const sx_compound *c) {
     int i;
     if (c == NULL || c->count < 1 || c->parts == NULL) return SX_ERR_INVALID_ARG;
@@ -107,7 +125,7 @@ static const sx_shape *side_part(const side *s, int i, sx_xform *world) {
         *world = s->x;
         return s->single;
     }
-    *world = sx_xform_mul(s->x, s->parts[i].offset);
+    *world = sx_compound_part_placement(s->x, &s->parts[i]);
     return &s->parts[i].shape;
 }
 
@@ -138,10 +156,10 @@ sx_aabb sx_compound_aabb(const sx_compound *c, sx_xform x) {
  * the compound's frame. */
 static sx_wvec2 part_mass(const sx_compound_part *p, sx_wide *area, sx_wide *inertia) {
     sx_wvec2 local;
-    sx_rot q = p->offset.q;
+    sx_xform o = sx_compound_part_placement(sx_xform_identity(), p);
     sx_shape_wide_mass(&p->shape, area, &local, inertia);
-    return sx_wv((sx_wide)p->offset.p.x + ((sx_wide)q.c * local.x - (sx_wide)q.s * local.y),
-                 (sx_wide)p->offset.p.y + ((sx_wide)q.s * local.x + (sx_wide)q.c * local.y));
+    return sx_wv((sx_wide)o.p.x + ((sx_wide)o.q.c * local.x - (sx_wide)o.q.s * local.y),
+                 (sx_wide)o.p.y + ((sx_wide)o.q.s * local.x + (sx_wide)o.q.c * local.y));
 }
 
 sx_mass_data sx_compound_mass(const sx_compound *c, sx_real density) {
@@ -685,7 +703,7 @@ bool sx_compound_contains_point(const sx_compound *c, sx_xform x, sx_vec2 p, int
     if (part != NULL) *part = -1;
     if (!compound_usable(c)) return false;
     for (i = 0; i < c->count; ++i) {
-        if (sx_contains_point(&c->parts[i].shape, sx_xform_mul(x, c->parts[i].offset), p)) {
+        if (sx_contains_point(&c->parts[i].shape, sx_compound_part_placement(x, &c->parts[i]), p)) {
             if (part != NULL) *part = i;
             return true;
         }

@@ -744,6 +744,50 @@ static void compound_mtv_far_beyond_huge_is_the_mtv_at_the_origin(void **state) 
     assert_near(far.y, near.y, 1e-4);
 }
 
+/* Regression (make fuzz, compound-part-rotation-off-unit-long-normal): a
+ * part whose offset rotation is 8.2e-5 longer than unit, which
+ * sx_compound_validate accepts (1e-3), was placed as given, and its
+ * manifold against a segment came back with a normal of length 1.0000819.
+ * The part is placed with its rotation made unit: the normal is unit, the
+ * manifold is that of the unit placement, and a world holding the compound
+ * stores that placement. */
+static void part_rotation_off_unit_is_placed_unit(void **state) {
+    sx_compound_part part;
+    sx_compound c;
+    sx_compound_manifold m[2];
+    sx_manifold ref;
+    sx_shape seg =
+        sx_segment_shape(sx_v2(SX_R(-16.0), SX_R(-14.125)), sx_v2(SX_R(-16.0), SX_R(-128.0)));
+    sx_xform x = sx_xform_make(sx_v2(SX_R(-128.0), SX_R(-128.0)), SX_R(-2.3356));
+    sx_xform off, placed;
+    double len;
+    (void)state;
+    off.p = sx_v2(SX_R(-16.0), SX_R(-128.0));
+    off.q.c = SX_R(-0.0128);
+    off.q.s = SX_R(-1.0);
+    part = sx_compound_part_make(
+        sx_segment_shape(sx_v2(SX_R(-16.0), SX_R(15.875)), sx_v2(SX_R(-8.125), SX_R(-15.625))),
+        off);
+    c.parts = &part;
+    c.count = 1;
+    assert_int_equal(sx_compound_validate(&c), SX_OK);
+    placed = sx_compound_part_placement(sx_xform_identity(), &part);
+    assert_near(sx_length(sx_v2(placed.q.c, placed.q.s)), 1.0, 4.0 * (double)SX_REAL_EPSILON);
+    assert_near(placed.q.s / placed.q.c, off.q.s / off.q.c,
+                1e-6 * fabs((double)(off.q.s / off.q.c)));
+    assert_int_equal(sx_compound_collide(&c, x, &seg, x, SX_R(0.0), m, 2), 1);
+    len = (double)sx_length(m[0].manifold.normal);
+    assert_true(fabs(len - 1.0) <= 64.0 * (double)SX_REAL_EPSILON);
+    assert_int_equal(sx_collide(&part.shape, sx_compound_part_placement(x, &part), &seg, x, &ref),
+                     m[0].manifold.count);
+    assert_true(ref.normal.x == m[0].manifold.normal.x && ref.normal.y == m[0].manifold.normal.y);
+    /* A rotation from sx_rot_make is used bit for bit as given. */
+    part.offset = sx_xform_make(off.p, SX_R(0.7));
+    placed = sx_compound_part_placement(sx_xform_identity(), &part);
+    assert_true(placed.q.c == part.offset.q.c && placed.q.s == part.offset.q.s);
+    assert_true(placed.p.x == part.offset.p.x && placed.p.y == part.offset.p.y);
+}
+
 /* ---- bad input ----------------------------------------------------------- */
 
 static void invalid_compounds_are_reported_and_answered_safely(void **state) {
@@ -809,6 +853,7 @@ int main(void) {
         cmocka_unit_test(compound_mtv_clears_a_point_on_a_far_box_corner),
         cmocka_unit_test(compound_mtv_of_a_point_just_inside_a_far_box_face_is_its_mtv),
         cmocka_unit_test(compound_mtv_far_beyond_huge_is_the_mtv_at_the_origin),
+        cmocka_unit_test(part_rotation_off_unit_is_placed_unit),
         cmocka_unit_test(invalid_compounds_are_reported_and_answered_safely),
     };
     return cmocka_run_group_tests_name("compound", tests, sx_test_group_setup,

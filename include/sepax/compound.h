@@ -111,8 +111,18 @@ typedef struct sx_compound {
 /** A part with the given shape and offset. */
 sx_compound_part sx_compound_part_make(sx_shape shape, sx_xform offset);
 
+/** Where the compound functions (and a world holding the compound as a
+ *  collider) place part `p` of a compound placed by x: x times the part's
+ *  offset, the offset's rotation scaled to unit length first when it is off
+ *  by more than rounding (sx_compound_validate accepts rotations up to 1e-3
+ *  off; placed as given they would scale the part and make normals up to
+ *  1e-3 too long). Rotations from sx_rot_make are used as they are. */
+sx_xform sx_compound_part_placement(sx_xform x, const sx_compound_part *p);
+
 /** SX_OK, or: SX_ERR_INVALID_ARG (NULL compound, count < 1, parts NULL, a
- *  part's rotation not unit length within 1e-3); SX_ERR_NONFINITE (a
+ *  part's rotation not unit length within 1e-3: within it, the part is
+ *  placed with the rotation made unit, see sx_compound_part_placement);
+ *  SX_ERR_NONFINITE (a
  *  non-finite offset); otherwise the first failing part's
  *  sx_shape_validate status. The functions below assume a valid compound
  *  (they never crash or produce NaN on a NULL or empty one: they answer
