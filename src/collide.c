@@ -169,13 +169,16 @@ static sx_vec2 circle_offset(const sx_circle *a, sx_xform xa, const sx_circle *b
                   sx_sub(sx_rotate(xb.q, b->center), sx_rotate(xa.q, a->center)));
 }
 
-/* |d| <= r. Below SX_SQUARE_SAFE (narrow.h) the squares underflow, and two
- * points 1e-265 apart would compare as touching: there the test runs on d
- * and r scaled by d's largest component, which keeps it exact up to
- * rounding and still antisymmetric (d and -d scale alike). */
+/* |d| <= r. A square of at least SX_SQUARE_SAFE^2 (narrow.h) keeps full
+ * precision, and the plain test holds (the common case). Below it the
+ * squares underflow, and two points 1e-265 apart would compare as touching:
+ * there the test runs on d and r scaled by d's largest component, which
+ * keeps it exact up to rounding and still antisymmetric (d and -d scale
+ * alike). */
 static inline bool within_reach(sx_vec2 d, sx_real r) {
-    sx_real m = sx_maxr(sx_magnitude(d.x), sx_magnitude(d.y)), k;
-    if (!(m < SX_SQUARE_SAFE)) return sx_length_sq(d) <= r * r;
+    sx_real dsq = sx_length_sq(d), m, k;
+    if (dsq >= SX_SQUARE_SAFE * SX_SQUARE_SAFE) return dsq <= r * r;
+    m = sx_maxr(sx_magnitude(d.x), sx_magnitude(d.y));
     if (m == SX_R(0.0)) return r >= SX_R(0.0);
     k = r / m;
     return sx_length_sq(sx_v2(d.x / m, d.y / m)) <= k * k;
@@ -236,7 +239,7 @@ static sx_vec2 circles_direction(const sx_circle *a, sx_xform xa, const sx_circl
 
 /* Whether the circles, their offset d and reach `limit` known, touch; if so
  * *n and *dist get the direction and the centre distance. The common case is
- * written out: a square in full precision (within_reach's plain test) and a
+ * written out: a square in full precision (within_reach's first test) and a
  * direction d over its length unless the centres coincide within rounding
  * (circles_direction's test, which for a square this large reads
  * dist > 64 epsilon r). collide_circles writes the same steps out itself:
@@ -261,14 +264,9 @@ static inline bool circles_touch(const sx_circle *a, sx_xform xa, const sx_circl
 }
 
 bool sx_overlap_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
-    sx_vec2 d;
-    sx_real r, dsq;
     if (a == NULL || b == NULL) return false;
-    d = circle_offset(a, xa, b, xb);
-    r = a->radius + b->radius;
-    dsq = sx_length_sq(d);
-    if (dsq >= SX_SQUARE_SAFE * SX_SQUARE_SAFE) return dsq <= r * r && circles_valid(a, xa, b, xb);
-    return within_reach(d, r) && circles_valid(a, xa, b, xb);
+    return within_reach(circle_offset(a, xa, b, xb), a->radius + b->radius) &&
+           circles_valid(a, xa, b, xb);
 }
 
 bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
@@ -304,7 +302,7 @@ static inline int collide_circles(const sx_circle *a, sx_xform xa, const sx_circ
         dsq = sx_length_sq(d);
         if (dsq >= SX_SQUARE_SAFE * SX_SQUARE_SAFE) {
             /* The common case, written out: the square keeps full precision
-             * (within_reach's plain test), and the direction is d over its
+             * (within_reach's first test), and the direction is d over its
              * length unless the centres coincide within rounding
              * (circles_direction's test, which for a square this large reads
              * dist > 64 epsilon r). */
