@@ -4,6 +4,7 @@
 #   make test                 build and run every cmocka test (float build)
 #   make test SX_REAL=double  the same with sx_real = double
 #   make test SAN=1           the tests under AddressSanitizer + UBSan
+#   make test SIMD=0          the float build without its SSE loops (portable C)
 #   make stress               the hostile scenes with the 100,000-step long run
 #   make determinism          the determinism hash at -O0, -O2 and -O3 must agree
 #   make bench                benchmarks (installs the peers it compares with)
@@ -17,6 +18,7 @@
 
 SX_REAL ?= float
 SAN ?= 0
+SIMD ?= 1
 PREFIX ?= /usr/local
 
 CC ?= cc
@@ -29,6 +31,10 @@ ifeq ($(SX_REAL),double)
   DEFS += -DSX_DOUBLE
 else ifneq ($(SX_REAL),float)
   $(error SX_REAL must be float or double)
+endif
+ifeq ($(SIMD),0)
+  VARIANT := $(if $(VARIANT),$(VARIANT)-nosimd,nosimd)
+  DEFS += -DSX_NO_SIMD
 endif
 SANFLAGS :=
 ifeq ($(SAN),1)
@@ -148,9 +154,11 @@ stress: $(OUT)/tests/test_hostile
 # make determinism: tests/test_determinism.c hashes the state after a scripted
 # scene; here it is built with the library at -O0, -O2 and -O3 (same compiler,
 # same flags otherwise: -ffp-contract=off, no -ffast-math) into
-# build/determinism[-double]/O<n>/, and the three hashes must be equal.
+# build/determinism[-double][-nosimd]/O<n>/, and the three hashes must be
+# equal. A second hash covers the narrowphase answers over random pairs;
+# .ci/run also checks that SIMD=0 prints the same pair of hashes.
 DET_LEVELS := O0 O2 O3
-DET_OUT := build/determinism$(if $(filter double,$(SX_REAL)),-double)
+DET_OUT := build/determinism$(if $(filter double,$(SX_REAL)),-double)$(if $(filter 0,$(SIMD)),-nosimd)
 DET_SRCS := $(SRCS) tests/test_determinism.c $(TEST_SUPPORT)
 .PHONY: determinism
 $(DET_OUT)/%/test_determinism: $(DET_SRCS) $(wildcard include/sepax/*.h src/*.h tests/support/*.h) | deps-test
@@ -161,7 +169,8 @@ determinism: $(DET_LEVELS:%=$(DET_OUT)/%/test_determinism)
 	@for o in $(DET_LEVELS); do \
 	  ./$(DET_OUT)/$$o/test_determinism > $(DET_OUT)/$$o/out.txt 2>&1 || { cat $(DET_OUT)/$$o/out.txt; exit 1; }; \
 	  h=$$(sed -n 's/^sepax determinism hash: //p' $(DET_OUT)/$$o/out.txt); \
-	  echo "sepax determinism [$(SX_REAL)] -$$o: $$h"; echo "$$h" >> $(DET_OUT)/hashes.tmp; \
+	  h="$$h narrowphase $$(sed -n 's/^sepax narrowphase hash: //p' $(DET_OUT)/$$o/out.txt)"; \
+	  echo "sepax determinism [$(SX_REAL)$(if $(filter 0,$(SIMD)), SIMD=0)] -$$o: $$h"; echo "$$h" >> $(DET_OUT)/hashes.tmp; \
 	done; \
 	n=$$(sort -u $(DET_OUT)/hashes.tmp | wc -l); rm -f $(DET_OUT)/hashes.tmp; \
 	if [ "$$n" -ne 1 ]; then echo "sepax determinism: the hashes differ between optimisation levels"; exit 1; fi; \

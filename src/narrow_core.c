@@ -20,6 +20,15 @@
  * point whenever clipping would report less than the exact depth. */
 #include "narrow.h"
 
+/* SSE for the float build's inner loop of polygon pairs (x86-64 always has
+ * SSE2); -DSX_NO_SIMD or the double build keep the portable loop. */
+#if !defined(SX_DOUBLE) && !defined(SX_NO_SIMD) && defined(__SSE2__)
+#define SX_NARROW_SSE 1
+#include <emmintrin.h>
+#else
+#define SX_NARROW_SSE 0
+#endif
+
 /* B's face becomes the reference only when its separation beats A's by this
  * much (Box2D's choice): two nearly equal faces then do not make the
  * manifold flip from frame to frame. Part of the public contract. */
@@ -92,6 +101,37 @@ bool sx_core_from_capsule(const sx_capsule *c, const sx_xform *x, sx_core *out) 
     return core_set_segment(c->a, c->b, c->radius, x, out);
 }
 
+#if SX_NARROW_SSE
+/* sx_xform_point and sx_rotate of two vertices (and normals) at a time, each
+ * lane computed as those compute it (c x - s y as c x + (-s) y, which IEEE
+ * arithmetic makes the same number), so the placed values are bit for bit
+ * the portable loop's. Stored 16 bytes at a time, the pairs best_face_sse
+ * loads back, so the loads are forwarded from the stores. */
+static void place_polygon_sse(const sx_polygon *p, sx_xform x, sx_core *out) {
+    int i, n = p->count;
+    __m128 c = _mm_set1_ps(x.q.c), s = _mm_setr_ps(-x.q.s, x.q.s, -x.q.s, x.q.s);
+    __m128 t = _mm_setr_ps(x.p.x, x.p.y, x.p.x, x.p.y);
+    for (i = 0; i + 1 < n; i += 2) {
+        __m128 v = _mm_loadu_ps(&p->vertices[i].x), m = _mm_loadu_ps(&p->normals[i].x);
+        __m128 vs = _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1));
+        __m128 ms = _mm_shuffle_ps(m, m, _MM_SHUFFLE(2, 3, 0, 1));
+        _mm_storeu_ps(&out->vs[i].x,
+                      _mm_add_ps(_mm_add_ps(_mm_mul_ps(c, v), _mm_mul_ps(s, vs)), t));
+        _mm_storeu_ps(&out->ns[i].x, _mm_add_ps(_mm_mul_ps(c, m), _mm_mul_ps(s, ms)));
+    }
+    if (i < n) {
+        __m128 v = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&p->vertices[i]);
+        __m128 m = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&p->normals[i]);
+        __m128 vs = _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1));
+        __m128 ms = _mm_shuffle_ps(m, m, _MM_SHUFFLE(2, 3, 0, 1));
+        _mm_storel_pi((__m64 *)(void *)&out->vs[i],
+                      _mm_add_ps(_mm_add_ps(_mm_mul_ps(c, v), _mm_mul_ps(s, vs)), t));
+        _mm_storel_pi((__m64 *)(void *)&out->ns[i],
+                      _mm_add_ps(_mm_mul_ps(c, m), _mm_mul_ps(s, ms)));
+    }
+}
+#endif
+
 bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) {
     int i, n;
     if (p == NULL || !core_radius_ok(p->radius)) return false;
@@ -104,11 +144,16 @@ bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) 
         out->v = p->vertices;
         out->n = p->normals;
     } else {
+#if SX_NARROW_SSE
+        place_polygon_sse(p, *x, out);
+        (void)i;
+#else
         sx_xform q = *x;
         for (i = 0; i < n; ++i) {
             out->vs[i] = sx_xform_point(q, p->vertices[i]);
             out->ns[i] = sx_rotate(q.q, p->normals[i]);
         }
+#endif
         out->v = out->vs;
         out->n = out->ns;
     }
@@ -118,8 +163,24 @@ bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) 
 }
 
 bool sx_core_values_finite(const sx_core *c) {
-    sx_real acc = SX_R(0.0), acc1 = SX_R(0.0);
     int i, n = c->count;
+#if SX_NARROW_SSE
+    /* finite_fold two vertices at a time: lanes of 0 or NaN. */
+    __m128 sum = _mm_setzero_ps(), v, m;
+    if (n < 3) return true; /* segments and capsules are checked when built */
+    for (i = 0; i + 1 < n; i += 2) {
+        v = _mm_loadu_ps(&c->v[i].x);
+        m = _mm_loadu_ps(&c->n[i].x);
+        sum = _mm_add_ps(sum, _mm_add_ps(_mm_sub_ps(v, v), _mm_sub_ps(m, m)));
+    }
+    if (i < n) {
+        v = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&c->v[i]);
+        m = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&c->n[i]);
+        sum = _mm_add_ps(sum, _mm_add_ps(_mm_sub_ps(v, v), _mm_sub_ps(m, m)));
+    }
+    return _mm_movemask_ps(_mm_cmpunord_ps(sum, sum)) == 0;
+#else
+    sx_real acc = SX_R(0.0), acc1 = SX_R(0.0);
     if (n < 3) return true; /* segments and capsules are checked when built */
     for (i = 0; i + 1 < n; i += 2) {
         acc += finite_fold(c->v[i], c->n[i]);
@@ -127,6 +188,7 @@ bool sx_core_values_finite(const sx_core *c) {
     }
     if (i < n) acc += finite_fold(c->v[i], c->n[i]);
     return acc + acc1 == SX_R(0.0);
+#endif
 }
 
 /* ---- separating axes ---------------------------------------------------- */
@@ -210,10 +272,68 @@ typedef struct sx_sat {
  * false as soon as a face separates by more than limit (or by NaN), with
  * that separation in *stop. The running maximum is kept without a branch
  * (its comparisons go either way at random); the face index follows it. */
+#if SX_NARROW_SSE
+/* best_face with q's vertices four to a register (structure of arrays): the
+ * same separations, each computed as face_separation computes it (no fused
+ * operations, the same operand order), so the answers agree bit for bit up
+ * to the sign of a zero minimum, which no caller can tell apart. q has 3 or
+ * more vertices; lanes past its count repeat vertex 0, which cannot change a
+ * minimum. */
+static inline __m128 sse_vertex_pair(const sx_vec2 *v, int j, int m, __m128 v00) {
+    if (j + 1 < m) return _mm_loadu_ps(&v[j].x);
+    if (j < m) return _mm_loadl_pi(v00, (const __m64 *)(const void *)&v[j]);
+    return v00;
+}
+
+static inline bool best_face_sse(const sx_core *p, const sx_core *q, sx_real limit, sx_real *sep,
+                                 int *face, sx_real *stop) {
+    int i, n = p->count, m = q->count, f = 0;
+    __m128 v0 = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&q->v[0]);
+    __m128 v00 = _mm_movelh_ps(v0, v0);
+    __m128 p0 = sse_vertex_pair(q->v, 0, m, v00), p1 = sse_vertex_pair(q->v, 2, m, v00);
+    __m128 x0 = _mm_shuffle_ps(p0, p1, _MM_SHUFFLE(2, 0, 2, 0));
+    __m128 y0 = _mm_shuffle_ps(p0, p1, _MM_SHUFFLE(3, 1, 3, 1));
+    __m128 x1 = x0, y1 = y0;
+    sx_real best = SX_NO_SEPARATION;
+    if (m > 4) {
+        __m128 p2 = sse_vertex_pair(q->v, 4, m, v00), p3 = sse_vertex_pair(q->v, 6, m, v00);
+        x1 = _mm_shuffle_ps(p2, p3, _MM_SHUFFLE(2, 0, 2, 0));
+        y1 = _mm_shuffle_ps(p2, p3, _MM_SHUFFLE(3, 1, 3, 1));
+    }
+    for (i = 0; i < n; ++i) {
+        __m128 nx = _mm_set1_ps(p->n[i].x), ny = _mm_set1_ps(p->n[i].y);
+        __m128 vx = _mm_set1_ps(p->v[i].x), vy = _mm_set1_ps(p->v[i].y);
+        __m128 d0 =
+            _mm_add_ps(_mm_mul_ps(nx, _mm_sub_ps(x0, vx)), _mm_mul_ps(ny, _mm_sub_ps(y0, vy)));
+        __m128 d1 =
+            _mm_add_ps(_mm_mul_ps(nx, _mm_sub_ps(x1, vx)), _mm_mul_ps(ny, _mm_sub_ps(y1, vy)));
+        __m128 lo = _mm_min_ps(d0, d1);
+        __m128 bad = _mm_cmpunord_ps(d0, d1);
+        sx_real s;
+        lo = _mm_min_ps(lo, _mm_shuffle_ps(lo, lo, _MM_SHUFFLE(1, 0, 3, 2)));
+        lo = _mm_min_ps(lo, _mm_shuffle_ps(lo, lo, _MM_SHUFFLE(2, 3, 0, 1)));
+        s = _mm_cvtss_f32(lo);
+        if (_mm_movemask_ps(bad) != 0) s = (sx_real)NAN;
+        if (!(s <= limit)) {
+            *stop = s;
+            return false;
+        }
+        f = s > best ? i : f;
+        best = s > best ? s : best;
+    }
+    *sep = best;
+    *face = f;
+    return true;
+}
+#endif
+
 static inline bool best_face(const sx_core *p, const sx_core *q, sx_real limit, sx_real *sep,
                              int *face, sx_real *stop) {
     int i, n = face_count(p), f = 0;
     sx_real best;
+#if SX_NARROW_SSE
+    if (n >= 3 && q->count >= 3) return best_face_sse(p, q, limit, sep, face, stop);
+#endif
     if (n == 0) {
         *sep = SX_NO_SEPARATION;
         *face = -1;
