@@ -285,6 +285,21 @@ static inline __m128 sse_vertex_pair(const sx_vec2 *v, int j, int m, __m128 v00)
     return v00;
 }
 
+/* The separations of q's vertices (x, y: four lanes each) from face i of p,
+ * as face_separation computes them; *bad gets a lane set for a NaN. */
+static inline __m128 sse_face_lanes(const sx_core *p, int i, __m128 x, __m128 y) {
+    __m128 nx = _mm_set1_ps(p->n[i].x), ny = _mm_set1_ps(p->n[i].y);
+    __m128 vx = _mm_set1_ps(p->v[i].x), vy = _mm_set1_ps(p->v[i].y);
+    return _mm_add_ps(_mm_mul_ps(nx, _mm_sub_ps(x, vx)), _mm_mul_ps(ny, _mm_sub_ps(y, vy)));
+}
+
+/* The least of four lanes (in lane 0), or NaN when a lane of `bad` is set. */
+static inline sx_real sse_lane_min(__m128 lo, __m128 bad) {
+    lo = _mm_min_ps(lo, _mm_shuffle_ps(lo, lo, _MM_SHUFFLE(1, 0, 3, 2)));
+    lo = _mm_min_ps(lo, _mm_shuffle_ps(lo, lo, _MM_SHUFFLE(2, 3, 0, 1)));
+    return _mm_movemask_ps(bad) != 0 ? (sx_real)NAN : _mm_cvtss_f32(lo);
+}
+
 static inline bool best_face_sse(const sx_core *p, const sx_core *q, sx_real limit, sx_real *sep,
                                  int *face, sx_real *stop) {
     int i, n = p->count, m = q->count, f = 0;
@@ -293,33 +308,32 @@ static inline bool best_face_sse(const sx_core *p, const sx_core *q, sx_real lim
     __m128 p0 = sse_vertex_pair(q->v, 0, m, v00), p1 = sse_vertex_pair(q->v, 2, m, v00);
     __m128 x0 = _mm_shuffle_ps(p0, p1, _MM_SHUFFLE(2, 0, 2, 0));
     __m128 y0 = _mm_shuffle_ps(p0, p1, _MM_SHUFFLE(3, 1, 3, 1));
-    __m128 x1 = x0, y1 = y0;
-    sx_real best = SX_NO_SEPARATION;
-    if (m > 4) {
-        __m128 p2 = sse_vertex_pair(q->v, 4, m, v00), p3 = sse_vertex_pair(q->v, 6, m, v00);
-        x1 = _mm_shuffle_ps(p2, p3, _MM_SHUFFLE(2, 0, 2, 0));
-        y1 = _mm_shuffle_ps(p2, p3, _MM_SHUFFLE(3, 1, 3, 1));
-    }
-    for (i = 0; i < n; ++i) {
-        __m128 nx = _mm_set1_ps(p->n[i].x), ny = _mm_set1_ps(p->n[i].y);
-        __m128 vx = _mm_set1_ps(p->v[i].x), vy = _mm_set1_ps(p->v[i].y);
-        __m128 d0 =
-            _mm_add_ps(_mm_mul_ps(nx, _mm_sub_ps(x0, vx)), _mm_mul_ps(ny, _mm_sub_ps(y0, vy)));
-        __m128 d1 =
-            _mm_add_ps(_mm_mul_ps(nx, _mm_sub_ps(x1, vx)), _mm_mul_ps(ny, _mm_sub_ps(y1, vy)));
-        __m128 lo = _mm_min_ps(d0, d1);
-        __m128 bad = _mm_cmpunord_ps(d0, d1);
-        sx_real s;
-        lo = _mm_min_ps(lo, _mm_shuffle_ps(lo, lo, _MM_SHUFFLE(1, 0, 3, 2)));
-        lo = _mm_min_ps(lo, _mm_shuffle_ps(lo, lo, _MM_SHUFFLE(2, 3, 0, 1)));
-        s = _mm_cvtss_f32(lo);
-        if (_mm_movemask_ps(bad) != 0) s = (sx_real)NAN;
-        if (!(s <= limit)) {
-            *stop = s;
-            return false;
+    sx_real best = SX_NO_SEPARATION, s;
+    if (m <= 4) {
+        for (i = 0; i < n; ++i) {
+            __m128 d = sse_face_lanes(p, i, x0, y0);
+            s = sse_lane_min(d, _mm_cmpunord_ps(d, d));
+            if (!(s <= limit)) {
+                *stop = s;
+                return false;
+            }
+            f = s > best ? i : f;
+            best = s > best ? s : best;
         }
-        f = s > best ? i : f;
-        best = s > best ? s : best;
+    } else {
+        __m128 p2 = sse_vertex_pair(q->v, 4, m, v00), p3 = sse_vertex_pair(q->v, 6, m, v00);
+        __m128 x1 = _mm_shuffle_ps(p2, p3, _MM_SHUFFLE(2, 0, 2, 0));
+        __m128 y1 = _mm_shuffle_ps(p2, p3, _MM_SHUFFLE(3, 1, 3, 1));
+        for (i = 0; i < n; ++i) {
+            __m128 d0 = sse_face_lanes(p, i, x0, y0), d1 = sse_face_lanes(p, i, x1, y1);
+            s = sse_lane_min(_mm_min_ps(d0, d1), _mm_cmpunord_ps(d0, d1));
+            if (!(s <= limit)) {
+                *stop = s;
+                return false;
+            }
+            f = s > best ? i : f;
+            best = s > best ? s : best;
+        }
     }
     *sep = best;
     *face = f;
