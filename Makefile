@@ -138,7 +138,7 @@ test: lib check-headers readme-example sample-pyramid $(TEST_BINS)
 	  echo "== $$t"; \
 	  if ! ./$$t; then failed=$$((failed + 1)); echo "FAILED: $$t"; fi; \
 	done; \
-	echo "sepax [$(SX_REAL)$(if $(filter 1,$(SAN)), san)]: $$((total - failed)) of $$total test programs passed"; \
+	echo "sepax [$(SX_REAL)$(if $(filter 1,$(SAN)), san)$(if $(filter 0,$(SIMD)), SIMD=0)]: $$((total - failed)) of $$total test programs passed"; \
 	test $$failed -eq 0
 
 # make stress: the hostile scenes (tests/test_hostile.c) with the long run of
@@ -174,7 +174,7 @@ determinism: $(DET_LEVELS:%=$(DET_OUT)/%/test_determinism)
 	done; \
 	n=$$(sort -u $(DET_OUT)/hashes.tmp | wc -l); rm -f $(DET_OUT)/hashes.tmp; \
 	if [ "$$n" -ne 1 ]; then echo "sepax determinism: the hashes differ between optimisation levels"; exit 1; fi; \
-	echo "sepax determinism [$(SX_REAL)]: -O0, -O2 and -O3 agree"
+	echo "sepax determinism [$(SX_REAL)$(if $(filter 0,$(SIMD)), SIMD=0)]: -O0, -O2 and -O3 agree"
 
 # ---- benchmarks --------------------------------------------------------------
 #

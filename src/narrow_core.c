@@ -57,6 +57,7 @@ static sx_vec2 place_vector(const sx_xform *x, sx_vec2 v) { return x ? sx_rotate
 
 static bool core_radius_ok(sx_real r) { return sx_is_finite(r) && r >= SX_R(0.0); }
 
+#if !SX_NARROW_SSE
 /* (x - x) summed over the coordinates of a vertex and its normal: exactly 0
  * when all are finite, NaN otherwise. Summed over a polygon, one branch
  * checks it whole. */
@@ -65,6 +66,7 @@ static inline sx_real finite_fold(sx_vec2 v, sx_vec2 m) {
      * a chain of dependent additions is what this loop would wait on. */
     return ((v.x - v.x) + (v.y - v.y)) + ((m.x - m.x) + (m.y - m.y));
 }
+#endif
 
 /* Builds the 2-point core a-b (or a 1-point core when a-b has no direction).
  * The normal is taken in the shape's frame and rotated, like polygon normals,
