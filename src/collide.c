@@ -516,9 +516,12 @@ typedef bool sx_sym_overlap(const void *a, sx_xform xa, const void *b, sx_xform 
  * margin would miss a pair that margin 0 rescues as touching (its exact gap
  * lies between the margin and the rounding tolerance), so such a pair is
  * rescued the same way. Larger margins include the rescue margin's points
- * already, unless they found none at all and the gap is within rounding of
- * zero (not clear-cut): margin 0 may then have used the other order's
- * manifold (collide_rescue), and so does this call. */
+ * already when the gap is clear of rounding (clear-cut). When it is not,
+ * margin 0 may have used the other order's manifold (collide_rescue), which
+ * can have more points than this order's: a one-point answer is then
+ * compared with it too (a speck touching a long triangle's edge 1e5 m from
+ * the triangle's origin: this order saw a vertex 1 cm off, rounding, the
+ * other order the edge with two points). */
 static int collide_gated(sx_core_builder *f, const void *a, sx_xform xa, const void *b, sx_xform xb,
                          sx_real margin, sx_sym_overlap *overlap, sx_manifold *out) {
     sx_manifold m;
@@ -527,7 +530,7 @@ static int collide_gated(sx_core_builder *f, const void *a, sx_xform xa, const v
         int rescued;
         bool clear_cut = false;
         count = pair_collide_checked(f, a, xa, f, b, xb, margin, out, &clear_cut);
-        if (count == 2 || (margin >= SX_TOUCH_RESCUE_MARGIN && (count > 0 || clear_cut)) ||
+        if (count == 2 || (margin >= SX_TOUCH_RESCUE_MARGIN && clear_cut) ||
             !overlap(a, xa, b, xb)) {
             return count;
         }

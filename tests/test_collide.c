@@ -1108,6 +1108,54 @@ static void a_speculative_margin_never_reports_fewer_points_than_margin_0(void *
     }
 }
 
+/* Regression (fuzz: collide-speck-on-far-edge-speculative-fewer-points): a
+ * 1e-30 box touching the edge of a triangle whose far corner lies 1e5 m from
+ * its origin. In float, B's vertices placed in A's frame carry ~1 cm of
+ * rounding; sx_collide (margin 0) rescues the touch through the other order
+ * (its edge: 2 points of depth 0), while a 4 cm speculative margin in this
+ * order saw a vertex 1 cm off and stopped at 1 point. A speculative margin
+ * must never report fewer points than margin 0, in either order. */
+static void a_speck_on_a_far_edge_gets_no_fewer_speculative_points(void **state) {
+    sx_vec2 q[3];
+    sx_shape a = sx_box_shape(SX_R(0x1.4484cp-100), SX_R(0x1.4484cp-100)), b;
+    sx_xform xa, xb;
+    const double margins[] = {1e-5, 0x1.451eb8p-5, 0.5};
+    sx_manifold m0, m;
+    int n0, n, i, order, rot;
+    (void)state;
+    q[0] = sx_v2(SX_R(-0x1.86ap+16), SX_R(-0x1.86ap+16));
+    q[1] = sx_v2(SX_R(0x1.de69acp-8), SX_R(0x1.de69acp-8));
+    q[2] = sx_v2(SX_R(-16.0), SX_R(0x1.24p+3));
+    assert_int_equal(sx_polygon_shape(q, 3, SX_R(0.0), &b), SX_OK);
+    xa.p = sx_v2(SX_R(0x1.24bae2p+3), SX_R(0x1.24bae2p+3));
+    xa.q.c = SX_R(-0x1.ec7cdp-1);
+    xa.q.s = SX_R(0x1.18000cp-2);
+#ifdef SX_DOUBLE
+    xa.q = sx_rot_normalize(xa.q); /* unit in float only */
+#endif
+    for (rot = 0; rot < 2; ++rot) {
+        xb.p = xa.p;
+        xb.q.c = SX_R(1.0);
+        xb.q.s = rot ? SX_R(0.0) : (sx_real)0x1.0628p-136; /* the fuzzer's: a denormal */
+        for (order = 0; order < 2; ++order) {
+            const sx_shape *p = order ? &b : &a, *r = order ? &a : &b;
+            sx_xform xp = order ? xb : xa, xr = order ? xa : xb;
+            n0 = sx_collide(p, xp, r, xr, &m0);
+            /* A's centre is on B's edge y = x: the pair touches. */
+            assert_true(sx_overlap(p, xp, r, xr));
+            assert_in_range(n0, 1, 2);
+            for (i = 0; i < (int)(sizeof margins / sizeof margins[0]); ++i) {
+                n = sx_collide_ex(p, xp, r, xr, (sx_real)margins[i], &m);
+                assert_true(n >= n0);
+                assert_near(sx_length(m.normal), 1.0, 64.0 * (double)SX_REAL_EPSILON);
+                /* the pair touches: no point may claim a gap beyond the
+                 * float rounding at 1e5 m */
+                assert_true((double)deepest(&m) >= -0.02);
+            }
+        }
+    }
+}
+
 /* Regression (make fuzz, double build: sx_compound_overlap disagreed with
  * sx_overlap): two circles whose centres are closer than the square root of
  * the smallest normal real compared squares that underflowed to 0, so two
@@ -1423,6 +1471,7 @@ int main(void) {
         cmocka_unit_test(reference_face_does_not_flip_between_nearly_equal_faces),
         cmocka_unit_test(separations_at_the_top_of_the_range_still_choose_a_face),
         cmocka_unit_test(a_speculative_margin_never_reports_fewer_points_than_margin_0),
+        cmocka_unit_test(a_speck_on_a_far_edge_gets_no_fewer_speculative_points),
         cmocka_unit_test(circles_closer_than_square_underflow_compare_exactly),
         cmocka_unit_test(tiny_box_on_a_far_corner_touches_in_both_orders),
         cmocka_unit_test(sliver_incident_face_is_taken_at_the_deepest_vertex),
