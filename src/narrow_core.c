@@ -691,11 +691,18 @@ static int clip_face(const sx_core *ref, int *face, const sx_core *inc, sx_real 
              * cuts it off (a 2 mm penetration came out as 1 mm). Of two
              * such tied faces the one whose slab the deepest vertex is in,
              * or towards, is the reference. A real corner
-             * (the neighbour separating clearly less) keeps face i. */
+             * (the neighbour separating clearly less) keeps face i. The
+             * rounding allowance takes in the point the neighbour's
+             * separation is measured from: a neighbour running 1e5 m to a
+             * far corner is placed with ~1 cm of rounding, and a 2 mm
+             * difference between the two faces then says nothing (an
+             * 8.76 m penetration came out as 1.3 cm). */
             int nb = slab_neighbour(ref, i, inc->v[s]);
             if (nb >= 0) {
-                sx_real tie = SX_DIRECTION_EPSILON *
-                              sx_maxr(max_abs_coord(v1, v2), max_abs_coord(inc->v[s], inc->v[s]));
+                sx_real tie =
+                    SX_DIRECTION_EPSILON *
+                    sx_maxr(sx_maxr(max_abs_coord(v1, v2), max_abs_coord(ref->v[nb], ref->v[nb])),
+                            max_abs_coord(inc->v[s], inc->v[s]));
                 if (face_separation(ref, nb, inc) >= face_separation(ref, i, inc) - tie) {
                     i = nb;
                     *face = nb;

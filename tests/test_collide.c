@@ -1156,6 +1156,52 @@ static void a_speck_on_a_far_edge_gets_no_fewer_speculative_points(void **state)
     }
 }
 
+/* Regression (fuzz: collide-far-neighbour-face-tie-clips-deep-vertex): a
+ * 12 m sliver 8.76 m deep in a quadrilateral whose face 0 runs 1e5 m to a far
+ * corner and meets face 1 at a bend of 2.2e-4 rad. Placed in A's frame, the
+ * far corner carries ~1 cm of float rounding, so the SAT took face 1 (2 mm
+ * less separation, within that noise) and clipping against its slab cut off
+ * the sliver's deep end: 1.3 cm reported of 8.76 m. The tie between the two
+ * faces now allows for the rounding of the neighbour's far corner. */
+static void a_far_neighbour_face_ties_within_its_rounding(void **state) {
+    sx_vec2 pa[3], pb[4];
+    sx_shape a, b;
+    sx_xform xa, xb;
+    sx_manifold m;
+    sx_vec2 mtv;
+    int order, n;
+    (void)state;
+    pa[0] = sx_v2(SX_R(-0x1.87f322p+3), SX_R(-0x1.a1818p-7));
+    pa[1] = sx_v2(SX_R(0x1.1c88a4p-9), SX_R(0x1.0357d2p-11));
+    pa[2] = sx_v2(SX_R(0x1.1c88a4p-9), SX_R(0x1.f3795ap-10));
+    pb[0] = sx_v2(SX_R(-0x1.86ap+16), SX_R(-0x1.86ap+16));
+    pb[1] = sx_v2(SX_R(0x1.de69acp-8), SX_R(0x1.de69acp-8));
+    pb[2] = sx_v2(SX_R(0x1.251ebap+3), SX_R(0x1.254002p+3));
+    pb[3] = sx_v2(SX_R(-16.0), SX_R(0x1.24p+3));
+    assert_int_equal(sx_polygon_shape(pa, 3, SX_R(0.0), &a), SX_OK);
+    assert_int_equal(sx_polygon_shape(pb, 4, SX_R(0.0), &b), SX_OK);
+    xa.p = sx_v2(SX_R(0x1.25614ap+3), SX_R(0x1.258292p+3));
+    xa.q.c = SX_R(-0x1.f044eep-1);
+    xa.q.s = SX_R(0x1.f7c24ap-3);
+    xb.p = sx_v2(SX_R(0x1.25c522p+3), SX_R(0x1.25e66ap+3));
+    xb.q.c = SX_R(-0x1.f1c46ep-1);
+    xb.q.s = SX_R(0x1.df8732p-3);
+#ifdef SX_DOUBLE
+    xa.q = sx_rot_normalize(xa.q); /* unit in float only */
+    xb.q = sx_rot_normalize(xb.q);
+#endif
+    /* Long-double reference (tests/support/reference.c): 8.76100 m along
+     * (-0.52189, 0.85302); float rounds coordinates of 1e5 m by ~8 mm. */
+    assert_true(sx_mtv(&a, xa, &b, xb, &mtv));
+    assert_near(sx_length(mtv), 8.76100, 0.01);
+    for (order = 0; order < 2; ++order) {
+        n = order ? sx_collide(&b, xb, &a, xa, &m) : sx_collide(&a, xa, &b, xb, &m);
+        assert_in_range(n, 1, 2);
+        assert_near(deepest(&m), 8.76100, 0.01 + HYSTERESIS);
+        assert_near(sx_length(m.normal), 1.0, 64.0 * (double)SX_REAL_EPSILON);
+    }
+}
+
 /* Regression (make fuzz, double build: sx_compound_overlap disagreed with
  * sx_overlap): two circles whose centres are closer than the square root of
  * the smallest normal real compared squares that underflowed to 0, so two
@@ -1472,6 +1518,7 @@ int main(void) {
         cmocka_unit_test(separations_at_the_top_of_the_range_still_choose_a_face),
         cmocka_unit_test(a_speculative_margin_never_reports_fewer_points_than_margin_0),
         cmocka_unit_test(a_speck_on_a_far_edge_gets_no_fewer_speculative_points),
+        cmocka_unit_test(a_far_neighbour_face_ties_within_its_rounding),
         cmocka_unit_test(circles_closer_than_square_underflow_compare_exactly),
         cmocka_unit_test(tiny_box_on_a_far_corner_touches_in_both_orders),
         cmocka_unit_test(sliver_incident_face_is_taken_at_the_deepest_vertex),
