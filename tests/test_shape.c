@@ -151,6 +151,27 @@ static void validate_accepts_built_polygons_and_refuses_tampered_ones(void **sta
     for (i = 0; i < 4; ++i)
         s.u.polygon.vertices[i] = sx_v2(1, 1); /* zero area */
     assert_int_equal(sx_shape_validate(&s), SX_ERR_DEGENERATE);
+    /* A normal leaning 0.3 degrees (inside the angular slop) from the 2 m
+     * edge puts the edge's far end 1 cm off the normal's line, far beyond
+     * rounding: refused (fuzz: collide-leaning-normal-22m-edge-depth-off;
+     * the narrowphase takes the face as that line and the clipping takes
+     * the vertices, so its answers disagreed). */
+    s = good;
+    s.u.polygon.normals[0] = sx_rotate(sx_rot_make(SX_R(0.005)), good.u.polygon.normals[0]);
+    assert_int_equal(sx_shape_validate(&s), SX_ERR_INVALID_ARG);
+    /* The same lean on the far offset box's 1 m edges (5 mm at the far end)
+     * is within 64 ulps of its 1e5 m coordinates in float (0.76 m), not in
+     * double (1.4e-9 m). */
+    s = sx_offset_box_shape(SX_R(0.5), SX_R(0.5), sx_v2(SX_R(9.9e4), SX_R(-9.7e4)), SX_R(2.1));
+    s.u.polygon.normals[2] = sx_rotate(sx_rot_make(SX_R(0.005)), s.u.polygon.normals[2]);
+#ifdef SX_DOUBLE
+    assert_int_equal(sx_shape_validate(&s), SX_ERR_INVALID_ARG);
+#else
+    assert_int_equal(sx_shape_validate(&s), SX_OK);
+#endif
+    /* Box edges at the top of the range: the check does not overflow. */
+    s = sx_box_shape(SX_REAL_MAX, SX_REAL_MAX);
+    assert_int_equal(sx_shape_validate(&s), SX_OK);
 }
 
 /* ---- mass: closed forms ----------------------------------------------------- */

@@ -151,8 +151,12 @@ sx_status sx_polygon_from_hull(const sx_hull *hull, sx_real radius, sx_shape *ou
 
 /** Checks a shape value. SX_OK, or: SX_ERR_INVALID_ARG (NULL, unknown type,
  *  negative radius, polygon count outside 3..SX_MAX_POLYGON_VERTICES, polygon
- *  not strictly convex and CCW, or a normal not unit or more than
- *  SX_ANGULAR_SLOP away from its edge's outward direction); SX_ERR_NONFINITE
+ *  not strictly convex and CCW, or a normal not unit, more than
+ *  SX_ANGULAR_SLOP away from its edge's outward direction, or leaning so
+ *  that the edge's far end lies off the line through its near end by more
+ *  than 64 x SX_REAL_EPSILON x the edge's largest coordinate: what rounding
+ *  of the vertices explains, as for an offset box far from the origin);
+ *  SX_ERR_NONFINITE
  *  (NaN/Inf in any used field); SX_ERR_DEGENERATE (a segment no longer than
  *  SX_REAL_EPSILON, a polygon of exactly zero area, or one whose area and
  *  centroid rounding cannot resolve, as sx_polygon_from_hull refuses).
