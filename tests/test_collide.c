@@ -1262,15 +1262,6 @@ static void circles_closer_than_square_underflow_compare_exactly(void **state) {
     }
 }
 
-/* Regression (fuzz: collide-tiny-box-touching-no-points): a 1e-30 box on the
- * corner (1e-30, 1e-30) of a quadrilateral whose other corners lie 1e5 away.
- * sx_overlap says the pair touches (in B's frame, the canonical order, the
- * corner is exact), but in A's frame B's faces are placed from 1e5
- * coordinates and carry a rounding error of ~1e-2 m, far above the touch
- * rescue margin, so sx_collide(A, B) used to report 0 points while
- * sx_collide(B, A) reported 2. Now the rescue falls back to the other
- * order's manifold, mirrored, and both orders agree with sx_overlap at
- * margin 0 and never report fewer points at a speculative margin. */
 /* Both argument orders of a same-transform pair of polygons (given as
  * point lists): the MTV has the expected length, and each manifold's
  * deepest point carries it, up to tol and the reference-face hysteresis. */
@@ -1338,6 +1329,15 @@ static void bent_reference_face_tie_keeps_the_deepest_corner(void **state) {
     assert_polygons_deepest_is_mtv(pa, 3, pb, 4, X(-16.0, -16.0, 0.0), 2.034e-3, 2e-5);
 }
 
+/* Regression (fuzz: collide-tiny-box-touching-no-points): a 1e-30 box on the
+ * corner (1e-30, 1e-30) of a quadrilateral whose other corners lie 1e5 away.
+ * sx_overlap says the pair touches (in B's frame, the canonical order, the
+ * corner is exact), but in A's frame B's faces are placed from 1e5
+ * coordinates and carry a rounding error of ~1e-2 m, far above the touch
+ * rescue margin, so sx_collide(A, B) used to report 0 points while
+ * sx_collide(B, A) reported 2. Now the rescue falls back to the other
+ * order's manifold, mirrored, and both orders agree with sx_overlap at
+ * margin 0 and never report fewer points at a speculative margin. */
 static void tiny_box_on_a_far_corner_touches_in_both_orders(void **state) {
     sx_shape a = sx_box_shape(SX_R(1e-30), SX_R(1e-30)), b;
     sx_vec2 q[4];
