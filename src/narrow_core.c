@@ -109,33 +109,31 @@ bool sx_core_from_capsule(const sx_capsule *c, const sx_xform *x, sx_core *out) 
  * arithmetic makes the same number), so the placed values are bit for bit
  * the portable loop's. Stored 16 bytes at a time, the pairs best_face_sse
  * loads back, so the loads are forwarded from the stores. */
+static inline __m128 sse_turn(__m128 c, __m128 s, __m128 v) {
+    return _mm_add_ps(_mm_mul_ps(c, v),
+                      _mm_mul_ps(s, _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1))));
+}
+
 static void place_polygon_sse(const sx_polygon *p, sx_xform x, sx_core *out) {
     int i, n = p->count;
     __m128 c = _mm_set1_ps(x.q.c), s = _mm_setr_ps(-x.q.s, x.q.s, -x.q.s, x.q.s);
     __m128 t = _mm_setr_ps(x.p.x, x.p.y, x.p.x, x.p.y);
     for (i = 0; i + 1 < n; i += 2) {
         __m128 v = _mm_loadu_ps(&p->vertices[i].x), m = _mm_loadu_ps(&p->normals[i].x);
-        __m128 vs = _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1));
-        __m128 ms = _mm_shuffle_ps(m, m, _MM_SHUFFLE(2, 3, 0, 1));
-        _mm_storeu_ps(&out->vs[i].x,
-                      _mm_add_ps(_mm_add_ps(_mm_mul_ps(c, v), _mm_mul_ps(s, vs)), t));
-        _mm_storeu_ps(&out->ns[i].x, _mm_add_ps(_mm_mul_ps(c, m), _mm_mul_ps(s, ms)));
+        _mm_storeu_ps(&out->vs[i].x, _mm_add_ps(sse_turn(c, s, v), t));
+        _mm_storeu_ps(&out->ns[i].x, sse_turn(c, s, m));
     }
     if (i < n) {
         __m128 v = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&p->vertices[i]);
         __m128 m = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&p->normals[i]);
-        __m128 vs = _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1));
-        __m128 ms = _mm_shuffle_ps(m, m, _MM_SHUFFLE(2, 3, 0, 1));
-        _mm_storel_pi((__m64 *)(void *)&out->vs[i],
-                      _mm_add_ps(_mm_add_ps(_mm_mul_ps(c, v), _mm_mul_ps(s, vs)), t));
-        _mm_storel_pi((__m64 *)(void *)&out->ns[i],
-                      _mm_add_ps(_mm_mul_ps(c, m), _mm_mul_ps(s, ms)));
+        _mm_storel_pi((__m64 *)(void *)&out->vs[i], _mm_add_ps(sse_turn(c, s, v), t));
+        _mm_storel_pi((__m64 *)(void *)&out->ns[i], sse_turn(c, s, m));
     }
 }
 #endif
 
 bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) {
-    int i, n;
+    int n;
     if (p == NULL || !core_radius_ok(p->radius)) return false;
     n = p->count;
     if (n < 3 || n > SX_MAX_POLYGON_VERTICES) return false;
@@ -148,9 +146,9 @@ bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) 
     } else {
 #if SX_NARROW_SSE
         place_polygon_sse(p, *x, out);
-        (void)i;
 #else
         sx_xform q = *x;
+        int i;
         for (i = 0; i < n; ++i) {
             out->vs[i] = sx_xform_point(q, p->vertices[i]);
             out->ns[i] = sx_rotate(q.q, p->normals[i]);
@@ -262,18 +260,6 @@ typedef struct sx_sat {
     bool has_axes;
 } sx_sat;
 
-/* Runs SAT over the faces of both cores (and the caps when both have zero
- * area). Returns false as soon as an axis separates by more than `limit`
- * (the cores then lie farther apart than limit), and also when a separation
- * is NaN: coordinates near the top of the range overflowed (0 x inf), no
- * answer can be trusted, and "apart" is the one that needs no face. When it
- * returns true with has_axes, face_a or face_b is a valid face: every
- * separation is then a number (-inf included) and the first face is always
- * taken. */
-/* The best face of p against q: the first of largest separation. Returns
- * false as soon as a face separates by more than limit (or by NaN), with
- * that separation in *stop. The running maximum is kept without a branch
- * (its comparisons go either way at random); the face index follows it. */
 #if SX_NARROW_SSE
 /* best_face with q's vertices four to a register (structure of arrays): the
  * same separations, each computed as face_separation computes it (no fused
@@ -288,7 +274,7 @@ static inline __m128 sse_vertex_pair(const sx_vec2 *v, int j, int m, __m128 v00)
 }
 
 /* The separations of q's vertices (x, y: four lanes each) from face i of p,
- * as face_separation computes them; *bad gets a lane set for a NaN. */
+ * as face_separation computes them. */
 static inline __m128 sse_face_lanes(const sx_core *p, int i, __m128 x, __m128 y) {
     __m128 nx = _mm_set1_ps(p->n[i].x), ny = _mm_set1_ps(p->n[i].y);
     __m128 vx = _mm_set1_ps(p->v[i].x), vy = _mm_set1_ps(p->v[i].y);
@@ -343,6 +329,10 @@ static inline bool best_face_sse(const sx_core *p, const sx_core *q, sx_real lim
 }
 #endif
 
+/* The best face of p against q: the first of largest separation. Returns
+ * false as soon as a face separates by more than limit (or by NaN), with
+ * that separation in *stop. The running maximum is kept without a branch
+ * (its comparisons go either way at random); the face index follows it. */
 static inline bool best_face(const sx_core *p, const sx_core *q, sx_real limit, sx_real *sep,
                              int *face, sx_real *stop) {
     int i, n = face_count(p), f = 0;
@@ -374,6 +364,14 @@ static inline bool best_face(const sx_core *p, const sx_core *q, sx_real limit, 
     return true;
 }
 
+/* Runs SAT over the faces of both cores (and the caps when both have zero
+ * area). Returns false as soon as an axis separates by more than `limit`
+ * (the cores then lie farther apart than limit), and also when a separation
+ * is NaN: coordinates near the top of the range overflowed (0 x inf), no
+ * answer can be trusted, and "apart" is the one that needs no face. When it
+ * returns true with has_axes, face_a or face_b is a valid face: every
+ * separation is then a number (-inf included) and the first face is always
+ * taken. */
 static bool sat_run(const sx_core *a, const sx_core *b, sx_real limit, sx_sat *out) {
     int na = face_count(a), nb = face_count(b);
     if (!best_face(a, b, limit, &out->sep_a, &out->face_a, &out->sep)) return false;
