@@ -402,8 +402,8 @@ static int pair_collide(sx_core_builder *fa, const void *a, sx_xform xa, sx_core
  * without a core for B. The world offset of the positions comes first (exact
  * for nearby bodies far from the origin), then B's rotated centre, then the
  * rotation into A's frame. */
-static inline sx_vec2 circle_in_frame(const sx_circle *b, sx_xform xa, sx_xform xb) {
-    return sx_inv_rotate(xa.q, sx_add(sx_sub(xb.p, xa.p), sx_rotate(xb.q, b->center)));
+static inline sx_vec2 circle_in_frame(const sx_circle *b, const sx_xform *xa, const sx_xform *xb) {
+    return sx_inv_rotate(xa->q, sx_add(sx_sub(xb->p, xa->p), sx_rotate(xb->q, b->center)));
 }
 
 /* The checks of B and of its placed centre c, run only once the answer is
@@ -423,7 +423,7 @@ static bool point_overlap(sx_core_builder *fa, const void *a, sx_xform xa, const
     sx_core ca;
     sx_vec2 c;
     if (b == NULL || !fa(a, NULL, &ca)) return false;
-    c = circle_in_frame(b, xa, xb);
+    c = circle_in_frame(b, &xa, &xb);
     return sx_core_point_overlap(&ca, c, b->radius) && circle_valid(b, xb, c) &&
            sx_core_values_finite(&ca);
 }
@@ -434,7 +434,7 @@ static bool point_mtv(sx_core_builder *fa, const void *a, sx_xform xa, const sx_
     sx_vec2 c, local = sx_v2_zero();
     bool hit = false;
     if (b != NULL && fa(a, NULL, &ca)) {
-        c = circle_in_frame(b, xa, xb);
+        c = circle_in_frame(b, &xa, &xb);
         hit = sx_core_point_mtv(&ca, c, b->radius, &local) && circle_valid(b, xb, c) &&
               sx_core_values_finite(&ca);
     }
@@ -452,10 +452,68 @@ static int point_collide(sx_core_builder *fa, const void *a, sx_xform xa, const 
         clear_manifold(out);
         return 0;
     }
-    c = circle_in_frame(b, xa, xb);
+    c = circle_in_frame(b, &xa, &xb);
     local = sx_core_point_manifold(&ca, c, b->radius, clean_margin(margin), m);
     if (local > 0 && !(circle_valid(b, xb, c) && sx_core_values_finite(&ca))) local = 0;
     return world_manifold(m, local, xa);
+}
+
+/* The point routines for a segment or capsule A with ends a0-a1 and radius
+ * ra (valid, as its builder checks): its core is never built (see
+ * sx_core_segment_point_overlap in narrow.h), and the cases those leave to
+ * the general route take point_overlap, point_mtv or point_collide. They
+ * stay out of line (SX_NOINLINE): inlined into the dispatch entries, GCC 12
+ * spilled the by-value transform as two 8-byte halves and read it back as
+ * one 16-byte vector, a failed store forward that cost the overlap test a
+ * third of its time (segment-circle 21 ns out of line, 31 ns inlined). */
+SX_NOINLINE static bool segment_point_overlap(sx_vec2 a0, sx_vec2 a1, sx_real ra,
+                                              sx_core_builder *fa, const void *a, sx_xform xa,
+                                              const sx_circle *b, sx_xform xb) {
+    sx_vec2 c;
+    int hit;
+    if (b == NULL) return false;
+    c = circle_in_frame(b, &xa, &xb);
+    hit = sx_core_segment_point_overlap(a0, a1, ra, c, b->radius);
+    if (hit < 0) return point_overlap(fa, a, xa, b, xb);
+    return hit > 0 && circle_valid(b, xb, c);
+}
+
+SX_NOINLINE static bool segment_point_mtv(sx_vec2 a0, sx_vec2 a1, sx_real ra, sx_core_builder *fa,
+                                          const void *a, sx_xform xa, const sx_circle *b,
+                                          sx_xform xb, sx_vec2 *mtv) {
+    sx_vec2 c, local = sx_v2_zero();
+    int hit = 0;
+    if (b != NULL) {
+        c = circle_in_frame(b, &xa, &xb);
+        hit = sx_core_segment_point_mtv(a0, a1, ra, c, b->radius, &local);
+        if (hit < 0) return point_mtv(fa, a, xa, b, xb, mtv);
+        hit = hit > 0 && circle_valid(b, xb, c);
+    }
+    return finish_mtv(hit, local, xa, mtv);
+}
+
+SX_NOINLINE static int segment_point_collide(sx_vec2 a0, sx_vec2 a1, sx_real ra,
+                                             sx_core_builder *fa, const void *a, sx_xform xa,
+                                             const sx_circle *b, sx_xform xb, sx_real margin,
+                                             sx_manifold *out) {
+    sx_manifold scratch;
+    sx_manifold *m = out ? out : &scratch;
+    sx_vec2 c;
+    int local;
+    if (b == NULL) {
+        clear_manifold(out);
+        return 0;
+    }
+    c = circle_in_frame(b, &xa, &xb);
+    local = sx_core_segment_point_manifold(a0, a1, ra, c, b->radius, clean_margin(margin), m);
+    if (local < 0) return point_collide(fa, a, xa, b, xb, margin, out);
+    if (local > 0 && !circle_valid(b, xb, c)) local = 0;
+    return world_manifold(m, local, xa);
+}
+
+/* A capsule's radius as its builder accepts it. */
+static bool capsule_radius_ok(const sx_capsule *a) {
+    return a != NULL && sx_is_finite(a->radius) && a->radius >= SX_R(0.0);
 }
 
 /* Same-type pairs: overlap and MTV in the canonical order. `order` > 0 means
@@ -552,15 +610,18 @@ static int collide_gated(sx_core_builder *f, const void *a, sx_xform xa, const v
 /* ---- segment - circle --------------------------------------------------- */
 
 bool sx_overlap_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
-    return point_overlap(build_segment, a, xa, b, xb);
+    if (a == NULL) return false;
+    return segment_point_overlap(a->a, a->b, SX_R(0.0), build_segment, a, xa, b, xb);
 }
 bool sx_mtv_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                            sx_vec2 *mtv) {
-    return point_mtv(build_segment, a, xa, b, xb, mtv);
+    if (a == NULL) return point_mtv(build_segment, a, xa, b, xb, mtv);
+    return segment_point_mtv(a->a, a->b, SX_R(0.0), build_segment, a, xa, b, xb, mtv);
 }
 int sx_collide_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
-    return point_collide(build_segment, a, xa, b, xb, margin, out);
+    if (a == NULL) return point_collide(build_segment, a, xa, b, xb, margin, out);
+    return segment_point_collide(a->a, a->b, SX_R(0.0), build_segment, a, xa, b, xb, margin, out);
 }
 
 /* ---- segment - segment -------------------------------------------------- */
@@ -605,15 +666,18 @@ int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, s
 /* ---- capsule - circle / segment / capsule ------------------------------- */
 
 bool sx_overlap_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
-    return point_overlap(build_capsule, a, xa, b, xb);
+    if (!capsule_radius_ok(a)) return false;
+    return segment_point_overlap(a->a, a->b, a->radius, build_capsule, a, xa, b, xb);
 }
 bool sx_mtv_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                            sx_vec2 *mtv) {
-    return point_mtv(build_capsule, a, xa, b, xb, mtv);
+    if (!capsule_radius_ok(a)) return point_mtv(build_capsule, a, xa, b, xb, mtv);
+    return segment_point_mtv(a->a, a->b, a->radius, build_capsule, a, xa, b, xb, mtv);
 }
 int sx_collide_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
-    return point_collide(build_capsule, a, xa, b, xb, margin, out);
+    if (!capsule_radius_ok(a)) return point_collide(build_capsule, a, xa, b, xb, margin, out);
+    return segment_point_collide(a->a, a->b, a->radius, build_capsule, a, xa, b, xb, margin, out);
 }
 
 bool sx_overlap_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b,
@@ -674,16 +738,71 @@ int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, s
 
 /* ---- polygon - circle / segment / capsule ------------------------------- */
 
+/* The point routines for a polygon A read in place, without a core (see
+ * sx_core_polygon_point_overlap in narrow.h); what sx_core_from_polygon
+ * refuses, and the cases those hand back, take the general route. Out of
+ * line for the reason given at segment_point_overlap. */
+static bool polygon_shape_ok(const sx_polygon *a) {
+    return a != NULL && sx_is_finite(a->radius) && a->radius >= SX_R(0.0) && a->count >= 3 &&
+           a->count <= SX_MAX_POLYGON_VERTICES;
+}
+
+SX_NOINLINE static bool polygon_point_overlap(const sx_polygon *a, sx_xform xa, const sx_circle *b,
+                                              sx_xform xb) {
+    sx_vec2 c;
+    int hit;
+    if (!polygon_shape_ok(a) || b == NULL) return false;
+    c = circle_in_frame(b, &xa, &xb);
+    hit = sx_core_polygon_point_overlap(a, c, b->radius);
+    if (hit < 0) return point_overlap(build_polygon, a, xa, b, xb);
+    return hit > 0 && circle_valid(b, xb, c) &&
+           sx_polygon_values_finite(a->vertices, a->normals, a->count);
+}
+
+SX_NOINLINE static bool polygon_point_mtv(const sx_polygon *a, sx_xform xa, const sx_circle *b,
+                                          sx_xform xb, sx_vec2 *mtv) {
+    sx_vec2 c, local = sx_v2_zero();
+    int hit = 0;
+    if (polygon_shape_ok(a) && b != NULL) {
+        c = circle_in_frame(b, &xa, &xb);
+        hit = sx_core_polygon_point_mtv(a, c, b->radius, &local);
+        if (hit < 0) return point_mtv(build_polygon, a, xa, b, xb, mtv);
+        hit = hit > 0 && circle_valid(b, xb, c) &&
+              sx_polygon_values_finite(a->vertices, a->normals, a->count);
+    }
+    return finish_mtv(hit, local, xa, mtv);
+}
+
+SX_NOINLINE static int polygon_point_collide(const sx_polygon *a, sx_xform xa, const sx_circle *b,
+                                             sx_xform xb, sx_real margin, sx_manifold *out) {
+    sx_manifold scratch;
+    sx_manifold *m = out ? out : &scratch;
+    sx_vec2 c;
+    int local;
+    if (!polygon_shape_ok(a) || b == NULL) {
+        clear_manifold(out);
+        return 0;
+    }
+    c = circle_in_frame(b, &xa, &xb);
+    local = sx_core_polygon_point_manifold(a, c, b->radius, clean_margin(margin), m);
+    if (local < 0) return point_collide(build_polygon, a, xa, b, xb, margin, out);
+    if (local > 0 &&
+        !(circle_valid(b, xb, c) && sx_polygon_values_finite(a->vertices, a->normals, a->count))) {
+        local = 0;
+    }
+    return world_manifold(m, local, xa);
+}
+
 bool sx_overlap_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
-    return point_overlap(build_polygon, a, xa, b, xb);
+    return polygon_point_overlap(a, xa, b, xb);
 }
 bool sx_mtv_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                            sx_vec2 *mtv) {
-    return point_mtv(build_polygon, a, xa, b, xb, mtv);
+    return polygon_point_mtv(a, xa, b, xb, mtv);
 }
 int sx_collide_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
-    return point_collide(build_polygon, a, xa, b, xb, margin, out);
+    return polygon_point_collide(a, xa, b, xb, margin, out);
 }
 
 bool sx_overlap_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b,

@@ -11,4 +11,12 @@
 /* Number of elements of a fixed array. */
 #define SX_ARRAY_COUNT(a) ((int)(sizeof(a) / sizeof((a)[0])))
 
+/* Keeps a function out of line where inlining it measurably hurts (see its
+ * use); a no-op for compilers without the GNU attribute. */
+#if defined(__GNUC__) || defined(__clang__)
+#define SX_NOINLINE __attribute__((noinline))
+#else
+#define SX_NOINLINE
+#endif
+
 #endif /* SEPAX_CORE_H */

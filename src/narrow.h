@@ -65,6 +65,8 @@ bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out);
  * finite values; segment and capsule cores (checked when built) always
  * pass. */
 bool sx_core_values_finite(const sx_core *c);
+/* The same check for n >= 3 vertices and normals. */
+bool sx_polygon_values_finite(const sx_vec2 *v, const sx_vec2 *n, int count);
 
 /** True if the rounded cores overlap or touch. Same decisions as
  *  sx_core_mtv, with early outs. */
@@ -89,5 +91,30 @@ bool sx_core_point_overlap(const sx_core *a, sx_vec2 c, sx_real rb);
 bool sx_core_point_mtv(const sx_core *a, sx_vec2 c, sx_real rb, sx_vec2 *mtv);
 int sx_core_point_manifold(const sx_core *a, sx_vec2 c, sx_real rb, sx_real margin,
                            sx_manifold *out);
+
+/* The same three for a the 2-point core of the segment or capsule a0-a1 of
+ * radius ra (>= 0, finite) in its own frame, without building the core:
+ * the same decisions up to rounding where c lies level with an end. Each
+ * answers -1 (and leaves its output untouched) where the general route must
+ * answer: a0 or a1 not finite, a0-a1 shorter than a direction can be taken
+ * from, c not finite, c on the segment or within rounding noise of an end.
+ * Otherwise the overlap answers 1 or 0, the MTV 1 or 0 with *mtv set, the
+ * manifold the point count with *out filled. */
+int sx_core_segment_point_overlap(sx_vec2 a0, sx_vec2 a1, sx_real ra, sx_vec2 c, sx_real rb);
+int sx_core_segment_point_mtv(sx_vec2 a0, sx_vec2 a1, sx_real ra, sx_vec2 c, sx_real rb,
+                              sx_vec2 *mtv);
+int sx_core_segment_point_manifold(sx_vec2 a0, sx_vec2 a1, sx_real ra, sx_vec2 c, sx_real rb,
+                                   sx_real margin, sx_manifold *out);
+
+/* The same three for a the polygon (count 3..SX_MAX_POLYGON_VERTICES,
+ * radius >= 0 and finite: the caller checks, as sx_core_from_polygon does)
+ * in its own frame, read in place: no core, the same answers bit for bit
+ * (the polygon's values are checked by the caller, as for a core). -1 (and
+ * the output untouched) where the general route must answer: a square that
+ * overflows or underflows, or c within rounding noise of a vertex. */
+int sx_core_polygon_point_overlap(const sx_polygon *a, sx_vec2 c, sx_real rb);
+int sx_core_polygon_point_mtv(const sx_polygon *a, sx_vec2 c, sx_real rb, sx_vec2 *mtv);
+int sx_core_polygon_point_manifold(const sx_polygon *a, sx_vec2 c, sx_real rb, sx_real margin,
+                                   sx_manifold *out);
 
 #endif /* SEPAX_NARROW_H */

@@ -163,30 +163,32 @@ bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) 
 }
 
 bool sx_core_values_finite(const sx_core *c) {
-    int i, n = c->count;
+    return c->count < 3 || sx_polygon_values_finite(c->v, c->n, c->count);
+}
+
+bool sx_polygon_values_finite(const sx_vec2 *v0, const sx_vec2 *n0, int n) {
+    int i;
 #if SX_NARROW_SSE
     /* finite_fold two vertices at a time: lanes of 0 or NaN. */
     __m128 sum = _mm_setzero_ps(), v, m;
-    if (n < 3) return true; /* segments and capsules are checked when built */
     for (i = 0; i + 1 < n; i += 2) {
-        v = _mm_loadu_ps(&c->v[i].x);
-        m = _mm_loadu_ps(&c->n[i].x);
+        v = _mm_loadu_ps(&v0[i].x);
+        m = _mm_loadu_ps(&n0[i].x);
         sum = _mm_add_ps(sum, _mm_add_ps(_mm_sub_ps(v, v), _mm_sub_ps(m, m)));
     }
     if (i < n) {
-        v = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&c->v[i]);
-        m = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&c->n[i]);
+        v = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&v0[i]);
+        m = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&n0[i]);
         sum = _mm_add_ps(sum, _mm_add_ps(_mm_sub_ps(v, v), _mm_sub_ps(m, m)));
     }
     return _mm_movemask_ps(_mm_cmpunord_ps(sum, sum)) == 0;
 #else
     sx_real acc = SX_R(0.0), acc1 = SX_R(0.0);
-    if (n < 3) return true; /* segments and capsules are checked when built */
     for (i = 0; i + 1 < n; i += 2) {
-        acc += finite_fold(c->v[i], c->n[i]);
-        acc1 += finite_fold(c->v[i + 1], c->n[i + 1]);
+        acc += finite_fold(v0[i], n0[i]);
+        acc1 += finite_fold(v0[i + 1], n0[i + 1]);
     }
-    if (i < n) acc += finite_fold(c->v[i], c->n[i]);
+    if (i < n) acc += finite_fold(v0[i], n0[i]);
     return acc + acc1 == SX_R(0.0);
 #endif
 }
@@ -988,40 +990,280 @@ bool sx_core_point_mtv(const sx_core *a, sx_vec2 c, sx_real rb, sx_vec2 *mtv) {
     return true;
 }
 
-int sx_core_point_manifold(const sx_core *a, sx_vec2 c, sx_real rb, sx_real margin,
-                           sx_manifold *out) {
+/* sx_core_point_manifold once the SAT has not found a separating axis. */
+static inline int point_manifold_rest(const sx_core *a, sx_vec2 c, sx_real rb, sx_real margin,
+                                      const sx_sat *sat, sx_manifold *out) {
     sx_real r = a->radius + rb;
-    sx_sat sat;
     sx_closest cl;
     sx_vec2 n;
     sx_manifold_point *p = &out->points[0];
-    out->count = 0;
-    out->normal = sx_v2_zero();
-    if (!point_sat(a, c, r + margin, &sat)) return 0;
-    if (sat.has_axes && sat.sep <= SX_R(0.0)) {
+    if (sat->has_axes && sat->sep <= SX_R(0.0)) {
         /* The centre is on the core: clip_face's single incident point. */
-        n = a->n[sat.face_a];
-        p->point = sx_mul_add(c, SX_R(0.5) * (a->radius - rb - sat.sep_a), n);
-        p->depth = sx_maxr(r - sat.sep_a, -margin);
-        p->id = SX_FEATURE_ID(sat.face_a, 0, 0);
+        n = a->n[sat->face_a];
+        p->point = sx_mul_add(c, SX_R(0.5) * (a->radius - rb - sat->sep_a), n);
+        p->depth = sx_maxr(r - sat->sep_a, -margin);
+        p->id = SX_FEATURE_ID(sat->face_a, 0, 0);
         out->normal = n;
         out->count = 1;
         return 1;
     }
-    point_closest(a, c, &sat, &cl);
+    point_closest(a, c, sat, &cl);
     if (!(cl.distance <= r + margin)) return 0;
     n = cl.normal;
-    if (n.x == SX_R(0.0) && n.y == SX_R(0.0)) n = fallback_normal(&sat);
+    if (n.x == SX_R(0.0) && n.y == SX_R(0.0)) n = fallback_normal(sat);
     p->point = sx_mul_add(sx_lerp(cl.pa, cl.pb, SX_R(0.5)), SX_R(0.5) * (a->radius - rb), n);
     p->depth = sx_maxr(r - cl.distance, -margin);
-    if (sat.face_a >= 0 &&
-        (cl.kind != SX_CLOSEST_VERTICES || cl.distance <= sat.sep_a + SX_FACE_CONTACT_TOLERANCE)) {
+    if (sat->face_a >= 0 &&
+        (cl.kind != SX_CLOSEST_VERTICES || cl.distance <= sat->sep_a + SX_FACE_CONTACT_TOLERANCE)) {
         /* A face contact: the exact point, labelled and oriented by the face. */
-        p->id = SX_FEATURE_ID(sat.face_a, 0, 0);
-        out->normal = a->n[sat.face_a];
+        p->id = SX_FEATURE_ID(sat->face_a, 0, 0);
+        out->normal = a->n[sat->face_a];
     } else {
         p->id = SX_FEATURE_ID(cl.ia, cl.ib, 0);
         out->normal = n;
+    }
+    out->count = 1;
+    return 1;
+}
+
+int sx_core_point_manifold(const sx_core *a, sx_vec2 c, sx_real rb, sx_real margin,
+                           sx_manifold *out) {
+    sx_sat sat;
+    out->count = 0;
+    out->normal = sx_v2_zero();
+    if (!point_sat(a, c, a->radius + rb + margin, &sat)) return 0;
+    return point_manifold_rest(a, c, rb, margin, &sat, out);
+}
+
+/* A segment or capsule core a-b (in its own frame) against the point c:
+ * what point_sat and point_closest find for that 2-point core, with the
+ * closest feature found from the unnormalised edge a-b, so that the square
+ * root of an end's distance does not wait for the one of the normal (the
+ * two run side by side). Same decisions as the general route up to
+ * rounding where c lies level with an end. */
+typedef struct sx_segment_point {
+    sx_vec2 n;        /* unit normal of face 0 (face 1 has -n) */
+    int face;         /* the face of largest separation, as point_sat's */
+    sx_real sep_a;    /* its separation */
+    int vertex;       /* the closest end (0, 1), or -1: a point inside */
+    sx_vec2 on;       /* the closest point of a-b */
+    sx_vec2 d;        /* c - on for an end, the unit direction to c inside */
+    sx_real distance; /* |c - on| */
+} sx_segment_point;
+
+/* 1: within `limit` (filled in), 0: apart, -1: the general route answers
+ * (ends not finite or closer than normalize_len takes a direction from, a
+ * non-finite c or a sum that overflowed, c on the segment, where the
+ * SAT's axes decide, or c so close to an end that the square underflows,
+ * where vertex_direction measures the distance scaled). */
+static inline int segment_point(sx_vec2 a, sx_vec2 b, sx_vec2 c, sx_real limit,
+                                sx_segment_point *out) {
+    sx_vec2 e = sx_sub(b, a), w = sx_sub(c, a), wb = sx_sub(c, b), t;
+    sx_real ee = sx_dot(e, e), along = sx_dot(w, e), len = sx_sqrt(ee), inv, s0, s1, cap;
+    inv = SX_R(1.0) / len;
+    t = sx_v2(e.x * inv, e.y * inv);
+    out->n = sx_v2(t.y, -t.x);
+    s0 = sx_dot(out->n, w);
+    s1 = sx_dot(sx_neg(out->n), wb);
+    out->face = s1 > s0 ? 1 : 0;
+    out->sep_a = s1 > s0 ? s1 : s0;
+    cap = sx_maxr(sx_dot(t, wb), sx_dot(t, sx_sub(a, c)));
+    if (!sx_vec2_is_finite(a) || !sx_vec2_is_finite(b) || !(len > SX_REAL_EPSILON) ||
+        !(ee <= SX_REAL_MAX) || !(sx_absr(s0) <= SX_REAL_MAX) || !(sx_absr(s1) <= SX_REAL_MAX)) {
+        return -1;
+    }
+    if (!(out->sep_a <= limit) || !(cap <= limit)) return 0;
+    if (!(sx_maxr(out->sep_a, cap) > SX_R(0.0))) return -1;
+    /* The end's distance depends on e, not on the normal: past a branch
+     * predicted "not apart" it runs beside the normal's root. */
+    if (along <= SX_R(0.0) || along >= ee) {
+        out->vertex = along <= SX_R(0.0) ? 0 : 1;
+        out->on = along <= SX_R(0.0) ? a : b;
+        out->d = along <= SX_R(0.0) ? w : wb;
+        out->distance = sx_sqrt(sx_dot(out->d, out->d));
+        /* Below SX_SQUARE_SAFE vertex_direction measures the distance
+         * scaled, which may decide differently. */
+        if (!(out->distance >= SX_SQUARE_SAFE)) return -1;
+    } else {
+        /* Inside: offer_edge's face case. */
+        out->vertex = -1;
+        out->on = sx_mul_sub(c, s0, out->n);
+        out->distance = sx_absr(s0);
+        out->d = s0 < SX_R(0.0) ? sx_neg(out->n) : out->n;
+    }
+    return out->distance <= limit;
+}
+
+/* The unit direction from the closest point to c; false where
+ * vertex_direction would find none (c within rounding noise of an end). */
+static inline bool segment_point_dir(const sx_segment_point *sp, sx_vec2 c, sx_vec2 *dir) {
+    if (sp->vertex < 0) {
+        *dir = sp->d;
+        return true;
+    }
+    if (!(sp->distance > SX_DIRECTION_EPSILON * max_abs_coord(sp->on, c))) return false;
+    *dir = sx_scale(sp->d, SX_R(1.0) / sp->distance);
+    return true;
+}
+
+int sx_core_segment_point_overlap(sx_vec2 a, sx_vec2 b, sx_real ra, sx_vec2 c, sx_real rb) {
+    sx_segment_point sp;
+    return segment_point(a, b, c, ra + rb, &sp);
+}
+
+int sx_core_segment_point_mtv(sx_vec2 a, sx_vec2 b, sx_real ra, sx_vec2 c, sx_real rb,
+                              sx_vec2 *mtv) {
+    sx_segment_point sp;
+    sx_real r = ra + rb;
+    sx_vec2 dir;
+    int hit = segment_point(a, b, c, r, &sp);
+    if (hit < 0 || (hit > 0 && !segment_point_dir(&sp, c, &dir))) return -1;
+    *mtv = hit > 0 ? sx_scale(dir, sp.distance - r) : sx_v2_zero();
+    return hit;
+}
+
+int sx_core_segment_point_manifold(sx_vec2 a, sx_vec2 b, sx_real ra, sx_vec2 c, sx_real rb,
+                                   sx_real margin, sx_manifold *out) {
+    sx_segment_point sp;
+    sx_real r = ra + rb;
+    sx_vec2 dir;
+    sx_manifold_point *p = &out->points[0];
+    int hit = segment_point(a, b, c, r + margin, &sp);
+    if (hit < 0 || (hit > 0 && !segment_point_dir(&sp, c, &dir))) return -1;
+    out->count = 0;
+    out->normal = sx_v2_zero();
+    if (hit == 0) return 0;
+    p->point = sx_mul_add(sx_lerp(sp.on, c, SX_R(0.5)), SX_R(0.5) * (ra - rb), dir);
+    p->depth = sx_maxr(r - sp.distance, -margin);
+    if (sp.vertex < 0 || sp.distance <= sp.sep_a + SX_FACE_CONTACT_TOLERANCE) {
+        /* A face contact: the exact point, labelled and oriented by the face. */
+        p->id = SX_FEATURE_ID(sp.face, 0, 0);
+        out->normal = sp.face ? sx_neg(sp.n) : sp.n;
+    } else {
+        p->id = SX_FEATURE_ID(sp.vertex, 0, 0);
+        out->normal = dir;
+    }
+    out->count = 1;
+    return 1;
+}
+
+/* ---- a polygon against a point, without a core -------------------------- */
+
+/* point_sat and point_closest for the polygon (v, nn, count >= 3) read in
+ * place against the point c, without the core and the sweep's records: the
+ * same operations in the same order, so the answers are the general
+ * route's bit for bit. */
+typedef struct sx_polygon_point {
+    int face;         /* the face of largest separation (point_sat's) */
+    sx_real sep;      /* its separation; <= 0: c is inside */
+    int vertex;       /* the closest vertex, or -1: the closest point is on the face */
+    sx_vec2 on;       /* the closest point of the polygon (c outside) */
+    sx_vec2 dir;      /* unit direction from on to c (c outside) */
+    sx_real distance; /* |c - on| (c outside) */
+} sx_polygon_point;
+
+/* 1: within `limit` (filled in), 0: apart (or NaN, as point_sat answers),
+ * -1: the general route answers (a square that overflows or underflows,
+ * or c within rounding noise of a vertex, where the SAT's axis or
+ * vertex_direction's scaling gives the direction). */
+static inline int polygon_point(const sx_vec2 *v, const sx_vec2 *nn, int count, sx_vec2 c,
+                                sx_real limit, sx_polygon_point *out) {
+    int i, face = 0, i2, vertex = -1;
+    sx_real best = sx_dot(nn[0], sx_sub(c, v[0])), t, dsq;
+    bool bad = best != best;
+    sx_vec2 w, n, dir;
+    for (i = 1; i < count; ++i) {
+        sx_real s = sx_dot(nn[i], sx_sub(c, v[i]));
+        bad |= s != s;
+        face = s > best ? i : face;
+        best = s > best ? s : best;
+    }
+    if (bad || !(best <= limit)) return 0;
+    out->face = face;
+    out->sep = best;
+    if (best <= SX_R(0.0)) return 1;
+    /* offer_edge for the face of largest separation. */
+    i2 = face + 1 < count ? face + 1 : 0;
+    w = sx_sub(c, v[face]);
+    n = nn[face];
+    dir = sx_v2(-n.y, n.x);
+    t = sx_dot(w, dir);
+    if (t <= SX_R(0.0)) {
+        vertex = face;
+    } else if (t >= sx_dot(sx_sub(v[i2], v[face]), dir)) {
+        vertex = i2;
+    }
+    out->vertex = vertex;
+    if (vertex >= 0) {
+        out->on = v[vertex];
+        dsq = sx_distance_sq(out->on, c);
+        if (!(dsq < SX_REAL_MAX)) return -1;
+        out->distance = sx_sqrt(dsq);
+        /* Below SX_SQUARE_SAFE vertex_direction measures the distance
+         * scaled, which may decide differently. */
+        if (!(out->distance >= SX_SQUARE_SAFE)) return -1;
+        if (!(out->distance <= limit)) return 0;
+        if (!(out->distance > SX_DIRECTION_EPSILON * max_abs_coord(out->on, c))) return -1;
+        out->dir = sx_scale(sx_sub(c, out->on), SX_R(1.0) / out->distance);
+        return 1;
+    }
+    t = sx_dot(w, n);
+    if (!(t * t <= SX_REAL_MAX)) return -1;
+    out->on = sx_mul_sub(c, t, n);
+    out->distance = sx_absr(t);
+    out->dir = n;
+    return out->distance <= limit;
+}
+
+int sx_core_polygon_point_overlap(const sx_polygon *a, sx_vec2 c, sx_real rb) {
+    sx_polygon_point pp;
+    return polygon_point(a->vertices, a->normals, a->count, c, a->radius + rb, &pp);
+}
+
+int sx_core_polygon_point_mtv(const sx_polygon *a, sx_vec2 c, sx_real rb, sx_vec2 *mtv) {
+    sx_polygon_point pp;
+    sx_real r = a->radius + rb;
+    int hit = polygon_point(a->vertices, a->normals, a->count, c, r, &pp);
+    if (hit <= 0) {
+        if (hit == 0) *mtv = sx_v2_zero();
+        return hit;
+    }
+    if (pp.sep <= SX_R(0.0)) {
+        *mtv = sx_scale(a->normals[pp.face], -(r - pp.sep));
+    } else {
+        *mtv = sx_scale(pp.dir, pp.distance - r);
+    }
+    return 1;
+}
+
+int sx_core_polygon_point_manifold(const sx_polygon *a, sx_vec2 c, sx_real rb, sx_real margin,
+                                   sx_manifold *out) {
+    sx_polygon_point pp;
+    sx_real r = a->radius + rb;
+    sx_manifold_point *p = &out->points[0];
+    int hit = polygon_point(a->vertices, a->normals, a->count, c, r + margin, &pp);
+    if (hit < 0) return -1;
+    out->count = 0;
+    out->normal = sx_v2_zero();
+    if (hit == 0) return 0;
+    if (pp.sep <= SX_R(0.0)) {
+        /* The centre is inside: clip_face's single incident point. */
+        sx_vec2 n = a->normals[pp.face];
+        p->point = sx_mul_add(c, SX_R(0.5) * (a->radius - rb - pp.sep), n);
+        p->depth = sx_maxr(r - pp.sep, -margin);
+        p->id = SX_FEATURE_ID(pp.face, 0, 0);
+        out->normal = n;
+    } else {
+        p->point = sx_mul_add(sx_lerp(pp.on, c, SX_R(0.5)), SX_R(0.5) * (a->radius - rb), pp.dir);
+        p->depth = sx_maxr(r - pp.distance, -margin);
+        if (pp.vertex < 0 || pp.distance <= pp.sep + SX_FACE_CONTACT_TOLERANCE) {
+            /* A face contact: the exact point, labelled and oriented by the face. */
+            p->id = SX_FEATURE_ID(pp.face, 0, 0);
+            out->normal = a->normals[pp.face];
+        } else {
+            p->id = SX_FEATURE_ID(pp.vertex, 0, 0);
+            out->normal = pp.dir;
+        }
     }
     out->count = 1;
     return 1;

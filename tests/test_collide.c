@@ -8,6 +8,7 @@
 #include <float.h>
 #include <string.h>
 
+#include "../src/narrow.h"
 #include "test_support.h"
 
 #ifdef SX_DOUBLE
@@ -1467,6 +1468,166 @@ static void speculative_circles_closer_than_square_underflow_get_a_unit_normal(v
     }
 }
 
+/* The segment and capsule point routines that build no core
+ * (sx_core_segment_point_*, narrow.h) against the general route (the
+ * 2-point core through sx_core_point_*). Random points must get the same
+ * answers bit for bit; points placed level with an end (where the two find
+ * the closest feature from differently rounded directions) the same
+ * decisions except within rounding of touching, and values within rounding.
+ * The cases the fast routines hand back (-1) are the documented ones. */
+static bool same_bits(sx_real x, sx_real y) { return memcmp(&x, &y, sizeof x) == 0; }
+
+static void segment_point_routines_match_the_core_route(void **state) {
+    sx_test_rng rng = sx_test_rng_make(4141u);
+    int i, level_cases = 0, handed_back = 0, level_decisions_differ = 0;
+    (void)state;
+    for (i = 0; i < 200000; ++i) {
+        sx_vec2 a = V(sx_test_rng_range(&rng, -2, 2), sx_test_rng_range(&rng, -2, 2));
+        sx_vec2 b = sx_add(a, V(sx_test_rng_range(&rng, -2, 2), sx_test_rng_range(&rng, -2, 2)));
+        sx_real ra = i % 2 ? sx_test_rng_range(&rng, 0, 0.5) : SX_R(0.0);
+        sx_real rb = sx_test_rng_range(&rng, 0, 0.5);
+        sx_real margin = i % 3 == 0 ? SX_R(0.05) : SX_R(0.0);
+        sx_capsule cap = {a, b, ra};
+        int kind = i % 4, fo, fm, fc, go, gm, gc;
+        sx_vec2 c, e = sx_sub(b, a), fmtv = V(7, 7), gmtv;
+        sx_manifold fman, gman;
+        sx_core core;
+        if (kind == 0) {
+            /* Level with an end, at a random height. */
+            sx_vec2 end = i % 8 ? a : b;
+            c = sx_mul_add(end, sx_test_rng_range(&rng, -1, 1) / sx_length(e), sx_perp(e));
+            level_cases++;
+        } else if (kind == 1) {
+            /* On the segment, or a hair off it. */
+            c = sx_lerp(a, b, sx_test_rng_range(&rng, -0.1, 1.1));
+            if (i % 8 == 1) c = sx_mul_add(c, SX_R(1e-6), sx_perp(e));
+        } else {
+            c = sx_add(a, V(sx_test_rng_range(&rng, -3, 3), sx_test_rng_range(&rng, -3, 3)));
+        }
+        assert_true(sx_core_from_capsule(&cap, NULL, &core));
+        go = sx_core_point_overlap(&core, c, rb);
+        gm = sx_core_point_mtv(&core, c, rb, &gmtv);
+        gc = sx_core_point_manifold(&core, c, rb, margin, &gman);
+        fo = sx_core_segment_point_overlap(a, b, ra, c, rb);
+        fm = sx_core_segment_point_mtv(a, b, ra, c, rb, &fmtv);
+        fc = sx_core_segment_point_manifold(a, b, ra, c, rb, margin, &fman);
+        assert_int_equal(go, gm);
+        if (fo < 0 || fm < 0 || fc < 0) {
+            /* Handed back: only for c on the segment or within rounding of
+             * an end (the segments here are long and finite). */
+            sx_real d = sx_sqrt(sx_minr(sx_distance_sq(c, a), sx_distance_sq(c, b)));
+            sx_real line = sx_absr(sx_cross(e, sx_sub(c, a))) / sx_length(e);
+            assert_true(line <= SX_R(1e-5) || d <= SX_R(1e-5));
+            handed_back++;
+            continue;
+        }
+        if (kind != 0) {
+            assert_int_equal(fo, go);
+            assert_int_equal(fm, gm);
+            assert_true(same_bits(fmtv.x, gmtv.x) && same_bits(fmtv.y, gmtv.y));
+            assert_int_equal(fc, gc);
+            assert_int_equal(fman.count, gman.count);
+            assert_true(same_bits(fman.normal.x, gman.normal.x) &&
+                        same_bits(fman.normal.y, gman.normal.y));
+            if (fc > 0) {
+                assert_true(same_bits(fman.points[0].point.x, gman.points[0].point.x));
+                assert_true(same_bits(fman.points[0].point.y, gman.points[0].point.y));
+                assert_true(same_bits(fman.points[0].depth, gman.points[0].depth));
+                assert_int_equal(fman.points[0].id, gman.points[0].id);
+            }
+            continue;
+        }
+        if (fo != go || fm != gm || fc != gc) {
+            /* Level with an end and within rounding of touching. */
+            sx_real d = sx_distance(c, i % 8 ? a : b);
+            assert_near(d, ra + rb + (fc != gc ? margin : SX_R(0.0)), 1e-5);
+            level_decisions_differ++;
+            continue;
+        }
+        assert_int_equal(fo, fm);
+        {
+            /* An end's direction is c minus the end, rounded: near the end
+             * it turns by up to a few ulps of the coordinates over the
+             * distance, as it does on the general route's side of the
+             * boundary too. */
+            double d = (double)sx_distance(c, i % 8 ? a : b);
+            double turn = 32.0 * (double)SX_REAL_EPSILON * 4.0 / d;
+            if (fm > 0) assert_vec2_near(fmtv, gmtv, TOL + turn * (double)sx_length(gmtv));
+            if (fc > 0) {
+                assert_vec2_near(fman.normal, gman.normal, TOL + turn);
+                assert_vec2_near(fman.points[0].point, gman.points[0].point,
+                                 TOL + turn * (double)rb);
+                assert_near(fman.points[0].depth, gman.points[0].depth, TOL);
+            }
+        }
+    }
+    assert_true(level_cases == 50000);
+    /* The hand-backs are the rare points on the segment or at an end. */
+    assert_true(handed_back > 0 && handed_back < 8000);
+    assert_true(level_decisions_differ < 10);
+}
+
+/* The polygon point routines that build no core (sx_core_polygon_point_*,
+ * narrow.h) against the general route (the polygon's core through
+ * sx_core_point_*): bit for bit wherever they answer, on random polygons,
+ * rounded or not, and points inside, outside, on edges and near vertices. */
+static void polygon_point_routines_match_the_core_route(void **state) {
+    sx_test_rng rng = sx_test_rng_make(4242u);
+    int i, handed_back = 0;
+    (void)state;
+    for (i = 0; i < 100000; ++i) {
+        sx_shape shape = sx_test_random_ngon(&rng, 3 + i % 6, 0.3, 1.5);
+        sx_polygon *p = &shape.u.polygon;
+        sx_real rb = sx_test_rng_range(&rng, 0, 0.5);
+        sx_real margin = i % 3 == 0 ? SX_R(0.05) : SX_R(0.0);
+        int k = (int)(sx_test_rng_next(&rng) % (uint64_t)p->count), fo, fm, fc, go, gm, gc;
+        sx_vec2 c, fmtv = V(7, 7), gmtv;
+        sx_manifold fman, gman;
+        sx_core core;
+        p->radius = i % 2 ? sx_test_rng_range(&rng, 0, 0.3) : SX_R(0.0);
+        switch (i % 4) {
+        case 0: c = V(sx_test_rng_range(&rng, -3, 3), sx_test_rng_range(&rng, -3, 3)); break;
+        case 1: /* on an edge */
+            c = sx_lerp(p->vertices[k], p->vertices[(k + 1) % p->count],
+                        sx_test_rng_range(&rng, 0, 1));
+            break;
+        case 2: /* near a vertex */
+            c = sx_add(p->vertices[k], V(sx_test_rng_range(&rng, -1e-3, 1e-3),
+                                         sx_test_rng_range(&rng, -1e-3, 1e-3)));
+            break;
+        default: /* level with a vertex, outside its face */
+            c = sx_mul_add(p->vertices[k], sx_test_rng_range(&rng, 0, 0.6), p->normals[k]);
+            break;
+        }
+        assert_true(sx_core_from_polygon(p, NULL, &core));
+        go = sx_core_point_overlap(&core, c, rb);
+        gm = sx_core_point_mtv(&core, c, rb, &gmtv);
+        gc = sx_core_point_manifold(&core, c, rb, margin, &gman);
+        fo = sx_core_polygon_point_overlap(p, c, rb);
+        fm = sx_core_polygon_point_mtv(p, c, rb, &fmtv);
+        fc = sx_core_polygon_point_manifold(p, c, rb, margin, &fman);
+        if (fo < 0 || fm < 0 || fc < 0) {
+            handed_back++;
+            continue;
+        }
+        assert_int_equal(fo, go);
+        assert_int_equal(fm, gm);
+        assert_true(same_bits(fmtv.x, gmtv.x) && same_bits(fmtv.y, gmtv.y));
+        assert_int_equal(fc, gc);
+        assert_int_equal(fman.count, gman.count);
+        assert_true(same_bits(fman.normal.x, gman.normal.x) &&
+                    same_bits(fman.normal.y, gman.normal.y));
+        if (fc > 0) {
+            assert_true(same_bits(fman.points[0].point.x, gman.points[0].point.x));
+            assert_true(same_bits(fman.points[0].point.y, gman.points[0].point.y));
+            assert_true(same_bits(fman.points[0].depth, gman.points[0].depth));
+            assert_int_equal(fman.points[0].id, gman.points[0].id);
+        }
+    }
+    /* Only points within rounding noise of a vertex are handed back. */
+    assert_true(handed_back < 100);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(circles_separated_touching_and_overlapping),
@@ -1525,6 +1686,8 @@ int main(void) {
         cmocka_unit_test(bent_reference_face_tie_keeps_the_deepest_corner),
         cmocka_unit_test(tiny_octagon_far_from_a_huge_rounded_octagon_is_apart_in_both_orders),
         cmocka_unit_test(speculative_circles_closer_than_square_underflow_get_a_unit_normal),
+        cmocka_unit_test(segment_point_routines_match_the_core_route),
+        cmocka_unit_test(polygon_point_routines_match_the_core_route),
     };
     return cmocka_run_group_tests_name("collide", tests, sx_test_group_setup,
                                        sx_test_group_teardown);
