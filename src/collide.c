@@ -22,14 +22,6 @@
 
 #include "narrow.h"
 
-/* SSE for the float build, as in narrow_core.c. */
-#if !defined(SX_DOUBLE) && !defined(SX_NO_SIMD) && defined(__SSE2__)
-#define SX_COLLIDE_SSE 1
-#include <emmintrin.h>
-#else
-#define SX_COLLIDE_SSE 0
-#endif
-
 /* ---- shared plumbing ---------------------------------------------------- */
 
 /* (x - x) is 0 for finite x and NaN otherwise: one comparison checks a
@@ -45,33 +37,13 @@ static inline bool xform_finite(sx_xform x) {
  * of A), so a NaN or infinity in xa or xb makes some component NaN or
  * infinite (inf x 0 is NaN, inf x nonzero is infinite). */
 SX_NOINLINE static bool relative_xform(sx_xform xa, sx_xform xb, sx_xform *rel) {
-#if SX_COLLIDE_SSE
-    /* The four components in one register, each computed as
-     * sx_xform_inv_mul computes it (a - b as a + (-b), which IEEE
-     * arithmetic makes the same number), so the answer is the portable
-     * one's bit for bit: [p.x, p.y, q.c, q.s] = [ac, -as, ac, ac] x
-     * [dx, dx, bc, bs] + [as, ac, as, -as] x [dy, dy, bs, bc]. The halves
-     * are loaded 8 bytes at a time, as the by-value transforms were
-     * stored: read as scalars, GCC takes each through a general register.
-     * Out of line: inlined, GCC 12 copied xb through a 16-byte reload of
+#if SX_NARROW_SSE
+    /* Out of line: inlined, GCC 12 copied xb through a 16-byte reload of
      * its two stored halves, a failed store forward (the overlap of two
      * boxes went from 38 to 47 ns; out of line it is 38). */
-    __m128 z0 = _mm_setzero_ps();
-    __m128 ap = _mm_loadl_pi(z0, (const __m64 *)(const void *)&xa.p);
-    __m128 aq = _mm_loadl_pi(z0, (const __m64 *)(const void *)&xa.q);
-    __m128 bp = _mm_loadl_pi(z0, (const __m64 *)(const void *)&xb.p);
-    __m128 bq = _mm_loadl_pi(z0, (const __m64 *)(const void *)&xb.q);
-    __m128 d = _mm_sub_ps(bp, ap); /* dx dy 0 0 */
-    __m128 neg = _mm_setr_ps(SX_R(1.0), SX_R(-1.0), SX_R(1.0), SX_R(1.0));
-    __m128 neg2 = _mm_setr_ps(SX_R(1.0), SX_R(1.0), SX_R(1.0), SX_R(-1.0));
-    __m128 lhs1 = _mm_mul_ps(_mm_shuffle_ps(aq, aq, _MM_SHUFFLE(0, 0, 1, 0)), neg);
-    __m128 lhs2 = _mm_mul_ps(_mm_shuffle_ps(aq, aq, _MM_SHUFFLE(1, 1, 0, 1)), neg2);
-    __m128 rhs1 = _mm_shuffle_ps(d, bq, _MM_SHUFFLE(1, 0, 0, 0));
-    __m128 rhs2 = _mm_shuffle_ps(d, bq, _MM_SHUFFLE(0, 1, 1, 1));
-    __m128 r = _mm_add_ps(_mm_mul_ps(lhs1, rhs1), _mm_mul_ps(lhs2, rhs2));
-    __m128 z = _mm_sub_ps(r, r);
+    __m128 r = sx_sse_relative_xform(&xa, &xb);
     _mm_storeu_ps(&rel->p.x, r);
-    return _mm_movemask_ps(_mm_cmpunord_ps(z, z)) == 0;
+    return sx_sse_finite(r);
 #else
     *rel = sx_xform_inv_mul(xa, xb);
     return xform_finite(*rel);
@@ -90,28 +62,8 @@ static bool finish_mtv(bool hit, sx_vec2 local, sx_xform xa, sx_vec2 *mtv) {
     return true;
 }
 
-/* Moves a local manifold of `count` points to world space in place; a
- * non-finite result (overflow of huge inputs) becomes 0 points. */
 static int world_manifold(sx_manifold *m, int count, sx_xform xa) {
-    int i;
-    m->normal = sx_xform_vector(xa, m->normal);
-    for (i = 0; i < count; ++i) {
-        m->points[i].point = sx_xform_point(xa, m->points[i].point);
-        if (!sx_vec2_is_finite(m->points[i].point) || !sx_is_finite(m->points[i].depth)) {
-            count = 0;
-        }
-    }
-    if (count == 0 || !sx_vec2_is_finite(m->normal)) {
-        count = 0;
-        m->normal = sx_v2_zero();
-    }
-    m->count = count;
-    for (i = count; i < 2; ++i) {
-        m->points[i].point = sx_v2_zero();
-        m->points[i].depth = SX_R(0.0);
-        m->points[i].id = 0;
-    }
-    return count;
+    return sx_world_manifold(m, count, &xa);
 }
 
 static sx_real clean_margin(sx_real margin) {
@@ -421,6 +373,11 @@ static int pair_collide_checked(sx_core_builder *fa, const void *a, sx_xform xa,
                                 sx_core_builder *fb, const void *b, sx_xform xb, sx_real margin,
                                 sx_manifold *out, bool *clear_cut) {
     sx_core ca, cb;
+    if (fa == build_polygon && fb == build_polygon) {
+        sx_manifold scratch;
+        return sx_polygons_collide((const sx_polygon *)a, &xa, (const sx_polygon *)b, &xb, margin,
+                                   out ? out : &scratch, clear_cut);
+    }
     if (clear_cut) *clear_cut = false;
     if (!build_pair(fa, a, xa, fb, b, xb, &ca, &cb)) {
         clear_manifold(out);
@@ -1016,8 +973,9 @@ int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, s
      * toss that mispredicts half the time. */
     if (touch_test) {
         bool clear_cut = false;
-        int count = pair_collide_checked(build_polygon, a, xa, build_polygon, b, xb, SX_R(0.0), out,
-                                         &clear_cut);
+        sx_manifold scratch;
+        int count =
+            sx_polygons_collide(a, &xa, b, &xb, SX_R(0.0), out ? out : &scratch, &clear_cut);
         if (clear_cut || (order_polygons(a, xa, b, xb) <= 0 && !box_pair_aligned(a, xa, b, xb)))
             return count;
     }

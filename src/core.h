@@ -19,4 +19,12 @@
 #define SX_NOINLINE
 #endif
 
+/* Forces a small helper into its one hot caller, where GCC's own judgement
+ * leaves it out of line (see its use). */
+#if defined(__GNUC__) || defined(__clang__)
+#define SX_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define SX_ALWAYS_INLINE inline
+#endif
+
 #endif /* SEPAX_CORE_H */

@@ -11,7 +11,20 @@
 #ifndef SEPAX_NARROW_H
 #define SEPAX_NARROW_H
 
+#include <string.h>
+
 #include "core.h"
+
+/* SSE for the float build's inner loops (x86-64 always has SSE2); the
+ * double build and -DSX_NO_SIMD keep the portable loops. Every SSE loop
+ * computes each lane as the portable code computes it (no fused operations,
+ * the same operands in the same order), so both answer bit for bit alike. */
+#if !defined(SX_DOUBLE) && !defined(SX_NO_SIMD) && defined(__SSE2__)
+#define SX_NARROW_SSE 1
+#include <emmintrin.h>
+#else
+#define SX_NARROW_SSE 0
+#endif
 
 /* Coordinate differences down to this magnitude have squares that keep
  * full precision (d.x^2 stays above the smallest normal real over epsilon);
@@ -84,6 +97,16 @@ bool sx_core_mtv(const sx_core *a, const sx_core *b, sx_vec2 *mtv);
 int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_manifold *out,
                      bool *clear_cut);
 
+/* The manifold of the polygons a and b placed by *xa and *xb, in world
+ * space: what sx_core_from_polygon for both (b placed in a's frame),
+ * sx_core_manifold, the value checks and the move to world space answer
+ * together, in one function. Invalid input (a NULL or bad polygon, a
+ * non-finite transform) gives 0 points and a zeroed *out. out is not NULL;
+ * clear_cut as sx_core_manifold's, false when overflow in world space lost
+ * the points. */
+int sx_polygons_collide(const sx_polygon *a, const sx_xform *xa, const sx_polygon *b,
+                        const sx_xform *xb, sx_real margin, sx_manifold *out, bool *clear_cut);
+
 /* The same three answers for b the 1-point core (c, rb), b a circle: no
  * core is built for it, and the SAT, vertex sweep and contact are written
  * out for a single point (see narrow_core.c). */
@@ -116,5 +139,115 @@ int sx_core_polygon_point_overlap(const sx_polygon *a, sx_vec2 c, sx_real rb);
 int sx_core_polygon_point_mtv(const sx_polygon *a, sx_vec2 c, sx_real rb, sx_vec2 *mtv);
 int sx_core_polygon_point_manifold(const sx_polygon *a, sx_vec2 c, sx_real rb, sx_real margin,
                                    sx_manifold *out);
+
+/* ---- shared plumbing of the pair functions ------------------------------ */
+
+#if SX_NARROW_SSE
+/* A transform in one register: [p.x, p.y, q.c, q.s], loaded 8 bytes at a
+ * time, as a by-value transform is stored (a 16-byte load of two 8-byte
+ * stores cannot be forwarded). */
+static inline __m128 sx_sse_xform(const sx_xform *x) {
+    return _mm_loadh_pi(_mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&x->p),
+                        (const __m64 *)(const void *)&x->q);
+}
+
+/* sx_rotate by the rotation in lanes 2, 3 of x of the two vectors in v,
+ * each lane computed as sx_rotate computes it (c x - s y as c x + (-s) y,
+ * which IEEE arithmetic makes the same number). */
+static inline __m128 sx_sse_rotate(__m128 x, __m128 v) {
+    __m128 c = _mm_shuffle_ps(x, x, _MM_SHUFFLE(2, 2, 2, 2));
+    __m128 s = _mm_shuffle_ps(x, x, _MM_SHUFFLE(3, 3, 3, 3));
+    s = _mm_xor_ps(s, _mm_setr_ps(SX_R(-0.0), SX_R(0.0), SX_R(-0.0), SX_R(0.0)));
+    return _mm_add_ps(_mm_mul_ps(c, v),
+                      _mm_mul_ps(s, _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1))));
+}
+
+/* B's placement in A's frame, [p.x, p.y, q.c, q.s], each component computed
+ * as sx_xform_inv_mul computes it (a - b as a + (-b), which IEEE arithmetic
+ * makes the same number), so the answer is the portable one's bit for bit:
+ * [ac, -as, ac, ac] x [dx, dx, bc, bs] + [as, ac, as, -as] x [dy, dy, bs, bc]. */
+static inline __m128 sx_sse_relative_xform(const sx_xform *xa, const sx_xform *xb) {
+    __m128 z0 = _mm_setzero_ps();
+    __m128 ap = _mm_loadl_pi(z0, (const __m64 *)(const void *)&xa->p);
+    __m128 aq = _mm_loadl_pi(z0, (const __m64 *)(const void *)&xa->q);
+    __m128 bp = _mm_loadl_pi(z0, (const __m64 *)(const void *)&xb->p);
+    __m128 bq = _mm_loadl_pi(z0, (const __m64 *)(const void *)&xb->q);
+    __m128 d = _mm_sub_ps(bp, ap); /* dx dy 0 0 */
+    __m128 neg = _mm_setr_ps(SX_R(1.0), SX_R(-1.0), SX_R(1.0), SX_R(1.0));
+    __m128 neg2 = _mm_setr_ps(SX_R(1.0), SX_R(1.0), SX_R(1.0), SX_R(-1.0));
+    __m128 lhs1 = _mm_mul_ps(_mm_shuffle_ps(aq, aq, _MM_SHUFFLE(0, 0, 1, 0)), neg);
+    __m128 lhs2 = _mm_mul_ps(_mm_shuffle_ps(aq, aq, _MM_SHUFFLE(1, 1, 0, 1)), neg2);
+    __m128 rhs1 = _mm_shuffle_ps(d, bq, _MM_SHUFFLE(1, 0, 0, 0));
+    __m128 rhs2 = _mm_shuffle_ps(d, bq, _MM_SHUFFLE(0, 1, 1, 1));
+    return _mm_add_ps(_mm_mul_ps(lhs1, rhs1), _mm_mul_ps(lhs2, rhs2));
+}
+
+/* True when no lane of v is NaN or infinite. */
+static inline bool sx_sse_finite(__m128 v) {
+    __m128 z = _mm_sub_ps(v, v);
+    return _mm_movemask_ps(_mm_cmpunord_ps(z, z)) == 0;
+}
+#endif
+
+/* Moves a local manifold of `count` points (A's frame) to world space in
+ * place and completes it (count set, unused points zeroed); a non-finite
+ * result (overflow of huge inputs) becomes 0 points with a zero normal.
+ * Returns the count. */
+static inline int sx_world_manifold(sx_manifold *m, int count, const sx_xform *xa) {
+#if SX_NARROW_SSE
+    /* The normal and the first point are adjacent in sx_manifold: both are
+     * turned in one register, each lane computed as sx_xform_vector and
+     * sx_xform_point compute it; one test checks every output. */
+    if (count > 0) {
+        __m128 x = sx_sse_xform(xa), z = _mm_setzero_ps();
+        __m128 np = _mm_loadu_ps(&m->normal.x);
+        /* -0 is the identity of addition (+0 would turn a -0 normal
+         * component into +0). */
+        __m128 w = _mm_add_ps(sx_sse_rotate(x, np), _mm_movelh_ps(_mm_set1_ps(SX_R(-0.0)), x));
+        __m128 depth = _mm_set_ss(m->points[0].depth), p1 = z;
+        if (count > 1) {
+            p1 = _mm_loadl_pi(z, (const __m64 *)(const void *)&m->points[1].point);
+            p1 = _mm_add_ps(sx_sse_rotate(x, p1), x);
+            depth = _mm_setr_ps(m->points[0].depth, m->points[1].depth, SX_R(0.0), SX_R(0.0));
+        }
+        __m128 rest = _mm_movelh_ps(p1, depth);
+        __m128 bad = _mm_add_ps(_mm_sub_ps(w, w), _mm_sub_ps(rest, rest));
+        if (_mm_movemask_ps(_mm_cmpunord_ps(bad, bad)) == 0) {
+            _mm_storeu_ps(&m->normal.x, w);
+            if (count > 1) {
+                _mm_storel_pi((__m64 *)(void *)&m->points[1].point, p1);
+            } else {
+                m->points[1].point = sx_v2_zero();
+                m->points[1].depth = SX_R(0.0);
+                m->points[1].id = 0;
+            }
+            m->count = count;
+            return count;
+        }
+    }
+    memset(m, 0, sizeof(*m));
+    return 0;
+#else
+    int i;
+    m->normal = sx_xform_vector(*xa, m->normal);
+    for (i = 0; i < count; ++i) {
+        m->points[i].point = sx_xform_point(*xa, m->points[i].point);
+        if (!sx_vec2_is_finite(m->points[i].point) || !sx_is_finite(m->points[i].depth)) {
+            count = 0;
+        }
+    }
+    if (count == 0 || !sx_vec2_is_finite(m->normal)) {
+        count = 0;
+        m->normal = sx_v2_zero();
+    }
+    m->count = count;
+    for (i = count; i < 2; ++i) {
+        m->points[i].point = sx_v2_zero();
+        m->points[i].depth = SX_R(0.0);
+        m->points[i].id = 0;
+    }
+    return count;
+#endif
+}
 
 #endif /* SEPAX_NARROW_H */

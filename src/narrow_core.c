@@ -20,15 +20,6 @@
  * point whenever clipping would report less than the exact depth. */
 #include "narrow.h"
 
-/* SSE for the float build's inner loop of polygon pairs (x86-64 always has
- * SSE2); -DSX_NO_SIMD or the double build keep the portable loop. */
-#if !defined(SX_DOUBLE) && !defined(SX_NO_SIMD) && defined(__SSE2__)
-#define SX_NARROW_SSE 1
-#include <emmintrin.h>
-#else
-#define SX_NARROW_SSE 0
-#endif
-
 /* B's face becomes the reference only when its separation beats A's by this
  * much (Box2D's choice): two nearly equal faces then do not make the
  * manifold flip from frame to frame. Part of the public contract. */
@@ -114,10 +105,18 @@ static inline __m128 sse_turn(__m128 c, __m128 s, __m128 v) {
                       _mm_mul_ps(s, _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1))));
 }
 
-static void place_polygon_sse(const sx_polygon *p, sx_xform x, sx_core *out) {
+/* Places p by the transform x = [p.x, p.y, q.c, q.s] into out (count,
+ * radius, storage and pointers). */
+static inline void place_polygon_rel(const sx_polygon *p, __m128 x, sx_core *out) {
     int i, n = p->count;
-    __m128 c = _mm_set1_ps(x.q.c), s = _mm_setr_ps(-x.q.s, x.q.s, -x.q.s, x.q.s);
-    __m128 t = _mm_setr_ps(x.p.x, x.p.y, x.p.x, x.p.y);
+    __m128 c = _mm_shuffle_ps(x, x, _MM_SHUFFLE(2, 2, 2, 2));
+    __m128 s = _mm_xor_ps(_mm_shuffle_ps(x, x, _MM_SHUFFLE(3, 3, 3, 3)),
+                          _mm_setr_ps(SX_R(-0.0), SX_R(0.0), SX_R(-0.0), SX_R(0.0)));
+    __m128 t = _mm_movelh_ps(x, x);
+    out->radius = p->radius;
+    out->count = n;
+    out->v = out->vs;
+    out->n = out->ns;
     for (i = 0; i + 1 < n; i += 2) {
         __m128 v = _mm_loadu_ps(&p->vertices[i].x), m = _mm_loadu_ps(&p->normals[i].x);
         _mm_storeu_ps(&out->vs[i].x, _mm_add_ps(sse_turn(c, s, v), t));
@@ -145,7 +144,7 @@ bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) 
         out->n = p->normals;
     } else {
 #if SX_NARROW_SSE
-        place_polygon_sse(p, *x, out);
+        place_polygon_rel(p, _mm_loadu_ps(&x->p.x), out);
 #else
         sx_xform q = *x;
         int i;
@@ -290,8 +289,8 @@ static inline sx_real sse_lane_min(__m128 lo, __m128 bad) {
     return _mm_movemask_ps(bad) != 0 ? (sx_real)NAN : _mm_cvtss_f32(lo);
 }
 
-static inline bool best_face_sse(const sx_core *p, const sx_core *q, sx_real limit, sx_real *sep,
-                                 int *face, sx_real *stop) {
+static SX_ALWAYS_INLINE bool best_face_sse(const sx_core *p, const sx_core *q, sx_real limit,
+                                           sx_real *sep, int *face, sx_real *stop) {
     int i, n = p->count, m = q->count, f = 0;
     __m128 v0 = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&q->v[0]);
     __m128 v00 = _mm_movelh_ps(v0, v0);
@@ -335,8 +334,8 @@ static inline bool best_face_sse(const sx_core *p, const sx_core *q, sx_real lim
  * false as soon as a face separates by more than limit (or by NaN), with
  * that separation in *stop. The running maximum is kept without a branch
  * (its comparisons go either way at random); the face index follows it. */
-static inline bool best_face(const sx_core *p, const sx_core *q, sx_real limit, sx_real *sep,
-                             int *face, sx_real *stop) {
+static SX_ALWAYS_INLINE bool best_face(const sx_core *p, const sx_core *q, sx_real limit,
+                                       sx_real *sep, int *face, sx_real *stop) {
     int i, n = face_count(p), f = 0;
     sx_real best;
 #if SX_NARROW_SSE
@@ -374,7 +373,8 @@ static inline bool best_face(const sx_core *p, const sx_core *q, sx_real limit, 
  * returns true with has_axes, face_a or face_b is a valid face: every
  * separation is then a number (-inf included) and the first face is always
  * taken. */
-static bool sat_run(const sx_core *a, const sx_core *b, sx_real limit, sx_sat *out) {
+static SX_ALWAYS_INLINE bool sat_run(const sx_core *a, const sx_core *b, sx_real limit,
+                                     sx_sat *out) {
     int na = face_count(a), nb = face_count(b);
     if (!best_face(a, b, limit, &out->sep_a, &out->face_a, &out->sep)) return false;
     if (!best_face(b, a, limit, &out->sep_b, &out->face_b, &out->sep)) return false;
@@ -672,9 +672,9 @@ static int clip_face(const sx_core *ref, int *face, const sx_core *inc, sx_real 
     sx_vec2 nref = ref->n[i];
     sx_vec2 v1 = ref->v[i], v2 = ref->v[next_index(ref, i)];
     sx_vec2 t = sx_perp(nref);
-    sx_vec2 w[2], pos[2];
-    int k[2], nw, j, m, count = 0, deepest = 0;
-    sx_real depth[2], sc[2], scale, slack;
+    sx_vec2 w[2] = {{SX_R(0.0), SX_R(0.0)}, {SX_R(0.0), SX_R(0.0)}};
+    int k[2] = {0, 0}, nw, count = 0;
+    sx_real scale, slack;
     if (inc->count == 1) {
         w[0] = inc->v[0];
         k[0] = 0;
@@ -770,48 +770,91 @@ static int clip_face(const sx_core *ref, int *face, const sx_core *inc, sx_real 
             w[0] = inc->v[k[0]];
         }
     }
-    scale = sx_maxr(max_abs_coord(v1, v2), ref->radius + inc->radius);
-    for (j = 0; j < nw; ++j) {
-        sc[j] = sx_dot(nref, sx_sub(w[j], v1));
-        depth[j] = ref->radius + inc->radius - sc[j];
-        scale = sx_maxr(scale, max_abs_coord(w[j], w[j]));
-        if (depth[j] > depth[deepest]) deepest = j;
-    }
-    slack = SX_DIRECTION_EPSILON * scale;
-    for (j = 0; j < nw; ++j) {
-        pos[j] = sx_mul_add(w[j], SX_R(0.5) * (ref->radius - inc->radius - sc[j]), nref);
-    }
-    if (exact != NULL && (nw == 1 || exact->depth > depth[deepest] + slack)) {
-        /* Cores apart: the exact contact is the closest-feature point. A
-         * single incident point is that contact seen along the face normal,
-         * so take the exact one. With two, clipping can slide the deepest
-         * incident vertex (a corner or capsule end just past the end of the
-         * reference face) along a steep incident face and lose depth: the
-         * point that came from that vertex becomes the exact contact. */
-        int from = 0;
+    /* The one or two points as scalars, not arrays: indexed by the
+     * deepest point, GCC kept them in memory and the loop waited on
+     * reloading what it had just stored. */
+    {
+        sx_real rr = ref->radius + inc->radius, half = ref->radius - inc->radius;
+        sx_real sc0, sc1 = SX_R(0.0), d0, d1 = SX_R(0.0), lim;
+        sx_vec2 p0, p1 = w[0];
+        int deepest = 0;
+        bool keep0, keep1;
+        scale = sx_maxr(max_abs_coord(v1, v2), rr);
+        sc0 = sx_dot(nref, sx_sub(w[0], v1));
+        d0 = rr - sc0;
+        scale = sx_maxr(scale, max_abs_coord(w[0], w[0]));
         if (nw == 2) {
-            sx_real s0 = sx_dot(nref, sx_sub(inc->v[k[0]], v1));
-            sx_real s1 = sx_dot(nref, sx_sub(inc->v[k[1]], v1));
-            from = s1 < s0 ? 1 : 0;
+            sc1 = sx_dot(nref, sx_sub(w[1], v1));
+            d1 = rr - sc1;
+            scale = sx_maxr(scale, max_abs_coord(w[1], w[1]));
+            deepest = d1 > d0 ? 1 : 0;
         }
-        pos[from] = exact->point;
-        depth[from] = exact->depth;
-        deepest = from;
-    }
-    for (m = 0; m < 2; ++m) {
-        for (j = 0; j < nw; ++j) {
-            bool keep = m == 0 ? depth[j] >= -margin - slack : j == deepest;
-            if (!keep) continue;
-            out[count].point = pos[j];
-            out[count].depth = sx_maxr(depth[j], -margin);
-            out[count].id = SX_FEATURE_ID(i, k[j], flip);
+        slack = SX_DIRECTION_EPSILON * scale;
+        p0 = sx_mul_add(w[0], SX_R(0.5) * (half - sc0), nref);
+        if (nw == 2) p1 = sx_mul_add(w[1], SX_R(0.5) * (half - sc1), nref);
+        if (exact != NULL && (nw == 1 || exact->depth > (deepest ? d1 : d0) + slack)) {
+            /* Cores apart: the exact contact is the closest-feature point.
+             * A single incident point is that contact seen along the face
+             * normal, so take the exact one. With two, clipping can slide
+             * the deepest incident vertex (a corner or capsule end just past
+             * the end of the reference face) along a steep incident face
+             * and lose depth: the point that came from that vertex becomes
+             * the exact contact. */
+            int from = 0;
+            if (nw == 2) {
+                sx_real s0 = sx_dot(nref, sx_sub(inc->v[k[0]], v1));
+                sx_real s1 = sx_dot(nref, sx_sub(inc->v[k[1]], v1));
+                from = s1 < s0 ? 1 : 0;
+            }
+            if (from) {
+                p1 = exact->point;
+                d1 = exact->depth;
+            } else {
+                p0 = exact->point;
+                d0 = exact->depth;
+            }
+            deepest = from;
+        }
+        /* Points deeper than -margin (less the rounding allowance); if none
+         * is, the deepest one. */
+        lim = -margin - slack;
+        keep0 = d0 >= lim;
+        keep1 = nw == 2 && d1 >= lim;
+        if (!keep0 && !keep1) {
+            keep0 = deepest == 0;
+            keep1 = deepest == 1;
+        }
+        if (keep0) {
+            out[count].point = p0;
+            out[count].depth = sx_maxr(d0, -margin);
+            out[count].id = SX_FEATURE_ID(i, k[0], flip);
             ++count;
         }
-        if (count > 0) break;
+        if (keep1) {
+            out[count].point = p1;
+            out[count].depth = sx_maxr(d1, -margin);
+            out[count].id = SX_FEATURE_ID(i, k[1], flip);
+            ++count;
+        }
     }
     return count;
 }
 
+#if SX_NARROW_SSE
+/* The lane-wise largest magnitudes of a core's points, two points a
+ * register (unreduced: the caller folds the lanes once). */
+static SX_ALWAYS_INLINE __m128 sse_core_magnitudes(const sx_core *c, __m128 m) {
+    int i, n = c->count;
+    __m128 sign = _mm_set1_ps(SX_R(-0.0));
+    for (i = 0; i + 1 < n; i += 2)
+        m = _mm_max_ps(m, _mm_andnot_ps(sign, _mm_loadu_ps(&c->v[i].x)));
+    if (i < n) {
+        m = _mm_max_ps(m, _mm_andnot_ps(sign, _mm_loadl_pi(_mm_setzero_ps(),
+                                                           (const __m64 *)(const void *)&c->v[i])));
+    }
+    return m;
+}
+#else
 /* Largest coordinate magnitude of a core's points. */
 static sx_real core_scale(const sx_core *c) {
     sx_real m = SX_R(0.0);
@@ -820,6 +863,7 @@ static sx_real core_scale(const sx_core *c) {
         m = sx_maxr(m, sx_maxr(sx_magnitude(c->v[i].x), sx_magnitude(c->v[i].y)));
     return m;
 }
+#endif
 
 /* The two argument orders of a same-type pair compute the same separations
  * up to rounding, a few ulps of the coordinates: a signed gap farther from
@@ -829,12 +873,24 @@ static sx_real core_scale(const sx_core *c) {
 #define SX_ORDER_ROUNDING (SX_R(1024.0) * SX_REAL_EPSILON)
 
 static bool gap_is_clear(const sx_core *a, const sx_core *b, sx_real gap) {
+#if SX_NARROW_SSE
+    /* The largest magnitude of finite values does not depend on the order
+     * it is taken in, so this is the portable loop's scale; with a NaN or
+     * an infinity in a core the two may differ, but such a core never gets
+     * a manifold point or an overlap, whatever this test says. */
+    __m128 m = sse_core_magnitudes(b, sse_core_magnitudes(a, _mm_setzero_ps()));
+    sx_real scale;
+    m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(1, 0, 3, 2)));
+    m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(2, 3, 0, 1)));
+    scale = sx_maxr(_mm_cvtss_f32(m), a->radius + b->radius);
+#else
     sx_real scale = sx_maxr(sx_maxr(core_scale(a), core_scale(b)), a->radius + b->radius);
+#endif
     return sx_magnitude(gap) > SX_ORDER_RESCUE + SX_ORDER_ROUNDING * scale;
 }
 
-int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_manifold *out,
-                     bool *clear_cut) {
+static SX_ALWAYS_INLINE int core_manifold(const sx_core *a, const sx_core *b, sx_real margin,
+                                          sx_manifold *out, bool *clear_cut) {
     sx_real r = a->radius + b->radius;
     sx_real limit = r + margin;
     sx_sat sat;
@@ -886,6 +942,51 @@ int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_mani
         out->normal = a->n[f];
     }
     return out->count;
+}
+
+int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_manifold *out,
+                     bool *clear_cut) {
+    return core_manifold(a, b, margin, out, clear_cut);
+}
+
+/* The whole pair in one function: the cores, the manifold, the checks of
+ * the values and world space, with nothing passed between them through
+ * memory that registers can hold. */
+int sx_polygons_collide(const sx_polygon *a, const sx_xform *xa, const sx_polygon *b,
+                        const sx_xform *xb, sx_real margin, sx_manifold *out, bool *clear_cut) {
+    sx_core ca, cb;
+    int local, count;
+    if (clear_cut) *clear_cut = false;
+#if SX_NARROW_SSE
+    {
+        __m128 rel = sx_sse_relative_xform(xa, xb);
+        if (!sx_sse_finite(rel) || !sx_core_from_polygon(a, NULL, &ca) || b == NULL ||
+            !core_radius_ok(b->radius) || b->count < 3 || b->count > SX_MAX_POLYGON_VERTICES) {
+            memset(out, 0, sizeof(*out));
+            return 0;
+        }
+        place_polygon_rel(b, rel, &cb);
+    }
+#else
+    {
+        sx_xform rel = sx_xform_inv_mul(*xa, *xb);
+        if (!sx_is_finite(((rel.p.x - rel.p.x) + (rel.p.y - rel.p.y)) +
+                          ((rel.q.c - rel.q.c) + (rel.q.s - rel.q.s))) ||
+            !sx_core_from_polygon(a, NULL, &ca) || !sx_core_from_polygon(b, &rel, &cb)) {
+            memset(out, 0, sizeof(*out));
+            return 0;
+        }
+    }
+#endif
+    if (!(sx_is_finite(margin) && margin > SX_R(0.0))) margin = SX_R(0.0);
+    local = core_manifold(&ca, &cb, margin, out, clear_cut);
+    if (local > 0 && !(sx_polygon_values_finite(ca.v, ca.n, ca.count) &&
+                       sx_polygon_values_finite(cb.v, cb.n, cb.count))) {
+        local = 0;
+    }
+    count = sx_world_manifold(out, local, xa);
+    if (clear_cut && count != local) *clear_cut = false;
+    return count;
 }
 
 /* ---- a core against a point --------------------------------------------- */
