@@ -41,7 +41,7 @@ SX_NOINLINE static bool relative_xform(sx_xform xa, sx_xform xb, sx_xform *rel) 
     /* Out of line: inlined, GCC 12 copied xb through a 16-byte reload of
      * its two stored halves, a failed store forward (the overlap of two
      * boxes went from 38 to 47 ns; out of line it is 38). */
-    __m128 r = sx_sse_relative_xform(&xa, &xb);
+    __m128 r = sx_sse_relative_xform(sx_xf_of(&xa), sx_xf_of(&xb));
     _mm_storeu_ps(&rel->p.x, r);
     return sx_sse_finite(r);
 #else
@@ -63,27 +63,11 @@ static bool finish_mtv(bool hit, sx_vec2 local, sx_xform xa, sx_vec2 *mtv) {
 }
 
 static int world_manifold(sx_manifold *m, int count, sx_xform xa) {
-    return sx_world_manifold(m, count, &xa);
+    return sx_world_manifold(m, count, sx_xf_of(&xa));
 }
 
 static sx_real clean_margin(sx_real margin) {
     return sx_is_finite(margin) && margin > SX_R(0.0) ? margin : SX_R(0.0);
-}
-
-/* Runs the core manifold and moves it to world space: the manifold is
- * written once, straight into *out (a local when out is NULL). clear_cut as
- * sx_core_manifold's (may be NULL); a manifold lost to overflow in world
- * space is never clear-cut. */
-static int finish_collide(const sx_core *ca, const sx_core *cb, sx_xform xa, sx_real margin,
-                          sx_manifold *out, bool *clear_cut) {
-    sx_manifold scratch;
-    sx_manifold *m = out ? out : &scratch;
-    int local = sx_core_manifold(ca, cb, clean_margin(margin), m, clear_cut);
-    int count;
-    if (local > 0 && !(sx_core_values_finite(ca) && sx_core_values_finite(cb))) local = 0;
-    count = world_manifold(m, local, xa);
-    if (clear_cut && count != local) *clear_cut = false;
-    return count;
 }
 
 static void clear_manifold(sx_manifold *out) {
@@ -326,6 +310,11 @@ static inline int collide_circles(const sx_circle *a, sx_xform xa, const sx_circ
     return 0;
 }
 
+static int coll_circles(const sx_circle *a, sx_xf xa, const sx_circle *b, sx_xf xb, sx_real margin,
+                        sx_manifold *out) {
+    return collide_circles(a, sx_xform_of_xf(xa), b, sx_xform_of_xf(xb), margin, out);
+}
+
 int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                        sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
@@ -369,21 +358,18 @@ static bool pair_mtv(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_bu
     return finish_mtv(hit, local, xa, mtv);
 }
 
+/* The shape type a builder builds cores of. */
+static int builder_kind(sx_core_builder *f) {
+    if (f == build_polygon) return SX_SHAPE_POLYGON;
+    return f == build_capsule ? SX_SHAPE_CAPSULE : SX_SHAPE_SEGMENT;
+}
+
 static int pair_collide_checked(sx_core_builder *fa, const void *a, sx_xform xa,
                                 sx_core_builder *fb, const void *b, sx_xform xb, sx_real margin,
                                 sx_manifold *out, bool *clear_cut) {
-    sx_core ca, cb;
-    if (fa == build_polygon && fb == build_polygon) {
-        sx_manifold scratch;
-        return sx_polygons_collide((const sx_polygon *)a, &xa, (const sx_polygon *)b, &xb, margin,
-                                   out ? out : &scratch, clear_cut);
-    }
-    if (clear_cut) *clear_cut = false;
-    if (!build_pair(fa, a, xa, fb, b, xb, &ca, &cb)) {
-        clear_manifold(out);
-        return 0;
-    }
-    return finish_collide(&ca, &cb, xa, margin, out, clear_cut);
+    sx_manifold scratch;
+    return sx_cores_collide(builder_kind(fa), a, sx_xf_of(&xa), builder_kind(fb), b, sx_xf_of(&xb),
+                            margin, out ? out : &scratch, clear_cut);
 }
 
 static int pair_collide(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
@@ -392,24 +378,14 @@ static int pair_collide(sx_core_builder *fa, const void *a, sx_xform xa, sx_core
 }
 
 /* A core against a circle B (segment, capsule or polygon first): B's centre
- * is placed in A's frame, and the point routines of narrow_core.c answer
- * without a core for B. The world offset of the positions comes first (exact
- * for nearby bodies far from the origin), then B's rotated centre, then the
- * rotation into A's frame. */
+ * is placed in A's frame (sx_circle_in_frame), and the point routines of
+ * narrow_core.c answer without a core for B. */
 static inline sx_vec2 circle_in_frame(const sx_circle *b, const sx_xform *xa, const sx_xform *xb) {
-    return sx_inv_rotate(xa->q, sx_add(sx_sub(xb->p, xa->p), sx_rotate(xb->q, b->center)));
+    return sx_circle_in_frame(b, sx_xf_of(xa), sx_xf_of(xb));
 }
 
-/* The checks of B and of its placed centre c, run only once the answer is
- * not "apart": a NaN or infinity anywhere in B, xb or xa makes c (or the
- * limit a + rb) non-finite, and the point routines answer "apart" for a
- * non-finite c unless the limit is infinite, which an invalid radius is
- * needed for. xa needs no check of its own: both components of the inverse
- * rotation take in both rotation components and both coordinates of the
- * offset. */
 static inline bool circle_valid(const sx_circle *b, sx_xform xb, sx_vec2 c) {
-    return b->radius >= SX_R(0.0) && sx_is_finite(b->radius) && sx_vec2_is_finite(b->center) &&
-           xform_finite(xb) && sx_vec2_is_finite(c);
+    return sx_circle_valid(b, sx_xf_of(&xb), c);
 }
 
 static bool point_overlap(sx_core_builder *fa, const void *a, sx_xform xa, const sx_circle *b,
@@ -486,23 +462,21 @@ SX_NOINLINE static bool segment_point_mtv(sx_vec2 a0, sx_vec2 a1, sx_real ra, sx
     return finish_mtv(hit, local, xa, mtv);
 }
 
-SX_NOINLINE static int segment_point_collide(sx_vec2 a0, sx_vec2 a1, sx_real ra,
-                                             sx_core_builder *fa, const void *a, sx_xform xa,
-                                             const sx_circle *b, sx_xform xb, sx_real margin,
-                                             sx_manifold *out) {
-    sx_manifold scratch;
-    sx_manifold *m = out ? out : &scratch;
-    sx_vec2 c;
-    int local;
-    if (b == NULL) {
-        clear_manifold(out);
-        return 0;
-    }
-    c = circle_in_frame(b, &xa, &xb);
-    local = sx_core_segment_point_manifold(a0, a1, ra, c, b->radius, clean_margin(margin), m);
-    if (local < 0) return point_collide(fa, a, xa, b, xb, margin, out);
-    if (local > 0 && !circle_valid(b, xb, c)) local = 0;
-    return world_manifold(m, local, xa);
+/* The general route after the fused one handed the pair back; the
+ * transforms arrive as registers and are rebuilt here, so that the hot
+ * caller holds them only in registers (see sx_xf). */
+SX_NOINLINE static int point_collide_xf(sx_core_builder *fa, const void *a, sx_xf xa,
+                                        const sx_circle *b, sx_xf xb, sx_real margin,
+                                        sx_manifold *out) {
+    return point_collide(fa, a, sx_xform_of_xf(xa), b, sx_xform_of_xf(xb), margin, out);
+}
+
+static int segment_point_collide(sx_vec2 a0, sx_vec2 a1, sx_real ra, sx_core_builder *fa,
+                                 const void *a, sx_xf xa, const sx_circle *b, sx_xf xb,
+                                 sx_real margin, sx_manifold *out) {
+    int count = sx_segment_circle_collide(a0, a1, ra, xa, b, xb, margin, out);
+    if (count < 0) return point_collide_xf(fa, a, xa, b, xb, margin, out);
+    return count;
 }
 
 /* A capsule's radius as its builder accepts it. */
@@ -612,10 +586,15 @@ bool sx_mtv_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b,
     if (a == NULL) return point_mtv(build_segment, a, xa, b, xb, mtv);
     return segment_point_mtv(a->a, a->b, SX_R(0.0), build_segment, a, xa, b, xb, mtv);
 }
+static int coll_segment_circle(const sx_segment *a, sx_xf xa, const sx_circle *b, sx_xf xb,
+                               sx_real margin, sx_manifold *out) {
+    if (a == NULL) return point_collide_xf(build_segment, a, xa, b, xb, margin, out);
+    return segment_point_collide(a->a, a->b, SX_R(0.0), build_segment, a, xa, b, xb, margin, out);
+}
 int sx_collide_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
-    if (a == NULL) return point_collide(build_segment, a, xa, b, xb, margin, out);
-    return segment_point_collide(a->a, a->b, SX_R(0.0), build_segment, a, xa, b, xb, margin, out);
+    sx_manifold scratch;
+    return coll_segment_circle(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, out ? out : &scratch);
 }
 
 /* ---- segment - segment -------------------------------------------------- */
@@ -641,9 +620,20 @@ bool sx_mtv_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_x
                      sx_vec2 *mtv) {
     return pair_mtv_sym(build_segment, a, xa, b, xb, order_segments(a, xa, b, xb), mtv);
 }
-int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
-                        sx_real margin, sx_manifold *out) {
+/* sx_collide_segments past the fused manifold: a pair that is not clear-cut,
+ * or a speculative call (margin > 0). */
+SX_NOINLINE static int collide_segments_gated(const sx_segment *a, sx_xf ta, const sx_segment *b,
+                                              sx_xf tb, sx_real margin, int count, bool touch_test,
+                                              sx_manifold *out) {
+    sx_xform xa = sx_xform_of_xf(ta), xb = sx_xform_of_xf(tb);
+    if (touch_test && order_segments(a, xa, b, xb) <= 0) return count;
+    return collide_gated(build_segment, a, xa, b, xb, margin, overlap_segments_any, out);
+}
+
+static int coll_segments(const sx_segment *a, sx_xf xa, const sx_segment *b, sx_xf xb,
+                         sx_real margin, sx_manifold *out) {
     bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
+    int count = 0;
     /* In the canonical order the manifold at margin 0 makes exactly the
      * decisions of the overlap test, and in the other order too unless the
      * pair is within rounding of touching: no second pass needed. The
@@ -652,11 +642,16 @@ int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, s
      * toss that mispredicts half the time. */
     if (touch_test) {
         bool clear_cut = false;
-        int count = pair_collide_checked(build_segment, a, xa, build_segment, b, xb, SX_R(0.0), out,
-                                         &clear_cut);
-        if (clear_cut || (order_segments(a, xa, b, xb) <= 0)) return count;
+        count = sx_cores_collide(SX_SHAPE_SEGMENT, a, xa, SX_SHAPE_SEGMENT, b, xb, SX_R(0.0), out,
+                                 &clear_cut);
+        if (clear_cut) return count;
     }
-    return collide_gated(build_segment, a, xa, b, xb, margin, overlap_segments_any, out);
+    return collide_segments_gated(a, xa, b, xb, margin, count, touch_test, out);
+}
+int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
+                        sx_real margin, sx_manifold *out) {
+    sx_manifold scratch;
+    return coll_segments(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, out ? out : &scratch);
 }
 
 /* ---- capsule - circle / segment / capsule ------------------------------- */
@@ -670,10 +665,15 @@ bool sx_mtv_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b,
     if (!capsule_radius_ok(a)) return point_mtv(build_capsule, a, xa, b, xb, mtv);
     return segment_point_mtv(a->a, a->b, a->radius, build_capsule, a, xa, b, xb, mtv);
 }
+static int coll_capsule_circle(const sx_capsule *a, sx_xf xa, const sx_circle *b, sx_xf xb,
+                               sx_real margin, sx_manifold *out) {
+    if (!capsule_radius_ok(a)) return point_collide_xf(build_capsule, a, xa, b, xb, margin, out);
+    return segment_point_collide(a->a, a->b, a->radius, build_capsule, a, xa, b, xb, margin, out);
+}
 int sx_collide_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
-    if (!capsule_radius_ok(a)) return point_collide(build_capsule, a, xa, b, xb, margin, out);
-    return segment_point_collide(a->a, a->b, a->radius, build_capsule, a, xa, b, xb, margin, out);
+    sx_manifold scratch;
+    return coll_capsule_circle(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, out ? out : &scratch);
 }
 
 bool sx_overlap_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b,
@@ -684,9 +684,14 @@ bool sx_mtv_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *
                             sx_vec2 *mtv) {
     return pair_mtv(build_capsule, a, xa, build_segment, b, xb, mtv);
 }
+static int coll_capsule_segment(const sx_capsule *a, sx_xf xa, const sx_segment *b, sx_xf xb,
+                                sx_real margin, sx_manifold *out) {
+    return sx_cores_collide(SX_SHAPE_CAPSULE, a, xa, SX_SHAPE_SEGMENT, b, xb, margin, out, NULL);
+}
 int sx_collide_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                                sx_real margin, sx_manifold *out) {
-    return pair_collide(build_capsule, a, xa, build_segment, b, xb, margin, out);
+    sx_manifold scratch;
+    return coll_capsule_segment(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, out ? out : &scratch);
 }
 
 static int order_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb) {
@@ -716,9 +721,20 @@ bool sx_mtv_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_x
                      sx_vec2 *mtv) {
     return pair_mtv_sym(build_capsule, a, xa, b, xb, order_capsules(a, xa, b, xb), mtv);
 }
-int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
-                        sx_real margin, sx_manifold *out) {
+/* sx_collide_capsules past the fused manifold: a pair that is not clear-cut,
+ * or a speculative call (margin > 0). */
+SX_NOINLINE static int collide_capsules_gated(const sx_capsule *a, sx_xf ta, const sx_capsule *b,
+                                              sx_xf tb, sx_real margin, int count, bool touch_test,
+                                              sx_manifold *out) {
+    sx_xform xa = sx_xform_of_xf(ta), xb = sx_xform_of_xf(tb);
+    if (touch_test && order_capsules(a, xa, b, xb) <= 0) return count;
+    return collide_gated(build_capsule, a, xa, b, xb, margin, overlap_capsules_any, out);
+}
+
+static int coll_capsules(const sx_capsule *a, sx_xf xa, const sx_capsule *b, sx_xf xb,
+                         sx_real margin, sx_manifold *out) {
     bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
+    int count = 0;
     /* In the canonical order the manifold at margin 0 makes exactly the
      * decisions of the overlap test, and in the other order too unless the
      * pair is within rounding of touching: no second pass needed. The
@@ -727,11 +743,16 @@ int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, s
      * toss that mispredicts half the time. */
     if (touch_test) {
         bool clear_cut = false;
-        int count = pair_collide_checked(build_capsule, a, xa, build_capsule, b, xb, SX_R(0.0), out,
-                                         &clear_cut);
-        if (clear_cut || (order_capsules(a, xa, b, xb) <= 0)) return count;
+        count = sx_cores_collide(SX_SHAPE_CAPSULE, a, xa, SX_SHAPE_CAPSULE, b, xb, SX_R(0.0), out,
+                                 &clear_cut);
+        if (clear_cut) return count;
     }
-    return collide_gated(build_capsule, a, xa, b, xb, margin, overlap_capsules_any, out);
+    return collide_capsules_gated(a, xa, b, xb, margin, count, touch_test, out);
+}
+int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
+                        sx_real margin, sx_manifold *out) {
+    sx_manifold scratch;
+    return coll_capsules(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, out ? out : &scratch);
 }
 
 /* ---- polygon - circle / segment / capsule ------------------------------- */
@@ -771,26 +792,6 @@ SX_NOINLINE static bool polygon_point_mtv(const sx_polygon *a, sx_xform xa, cons
     return finish_mtv(hit, local, xa, mtv);
 }
 
-SX_NOINLINE static int polygon_point_collide(const sx_polygon *a, sx_xform xa, const sx_circle *b,
-                                             sx_xform xb, sx_real margin, sx_manifold *out) {
-    sx_manifold scratch;
-    sx_manifold *m = out ? out : &scratch;
-    sx_vec2 c;
-    int local;
-    if (!polygon_shape_ok(a) || b == NULL) {
-        clear_manifold(out);
-        return 0;
-    }
-    c = circle_in_frame(b, &xa, &xb);
-    local = sx_core_polygon_point_manifold(a, c, b->radius, clean_margin(margin), m);
-    if (local < 0) return point_collide(build_polygon, a, xa, b, xb, margin, out);
-    if (local > 0 &&
-        !(circle_valid(b, xb, c) && sx_polygon_values_finite(a->vertices, a->normals, a->count))) {
-        local = 0;
-    }
-    return world_manifold(m, local, xa);
-}
-
 bool sx_overlap_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb) {
     return polygon_point_overlap(a, xa, b, xb);
 }
@@ -798,9 +799,16 @@ bool sx_mtv_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b,
                            sx_vec2 *mtv) {
     return polygon_point_mtv(a, xa, b, xb, mtv);
 }
+static int coll_polygon_circle(const sx_polygon *a, sx_xf xa, const sx_circle *b, sx_xf xb,
+                               sx_real margin, sx_manifold *out) {
+    int count = sx_polygon_circle_collide(a, xa, b, xb, margin, out);
+    if (count < 0) return point_collide_xf(build_polygon, a, xa, b, xb, margin, out);
+    return count;
+}
 int sx_collide_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
-    return polygon_point_collide(a, xa, b, xb, margin, out);
+    sx_manifold scratch;
+    return coll_polygon_circle(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, out ? out : &scratch);
 }
 
 bool sx_overlap_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b,
@@ -811,9 +819,14 @@ bool sx_mtv_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *
                             sx_vec2 *mtv) {
     return pair_mtv(build_polygon, a, xa, build_segment, b, xb, mtv);
 }
+static int coll_polygon_segment(const sx_polygon *a, sx_xf xa, const sx_segment *b, sx_xf xb,
+                                sx_real margin, sx_manifold *out) {
+    return sx_cores_collide(SX_SHAPE_POLYGON, a, xa, SX_SHAPE_SEGMENT, b, xb, margin, out, NULL);
+}
 int sx_collide_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                                sx_real margin, sx_manifold *out) {
-    return pair_collide(build_polygon, a, xa, build_segment, b, xb, margin, out);
+    sx_manifold scratch;
+    return coll_polygon_segment(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, out ? out : &scratch);
 }
 
 bool sx_overlap_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b,
@@ -824,9 +837,14 @@ bool sx_mtv_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *
                             sx_vec2 *mtv) {
     return pair_mtv(build_polygon, a, xa, build_capsule, b, xb, mtv);
 }
+static int coll_polygon_capsule(const sx_polygon *a, sx_xf xa, const sx_capsule *b, sx_xf xb,
+                                sx_real margin, sx_manifold *out) {
+    return sx_cores_collide(SX_SHAPE_POLYGON, a, xa, SX_SHAPE_CAPSULE, b, xb, margin, out, NULL);
+}
 int sx_collide_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                                sx_real margin, sx_manifold *out) {
-    return pair_collide(build_polygon, a, xa, build_capsule, b, xb, margin, out);
+    sx_manifold scratch;
+    return coll_polygon_capsule(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, out ? out : &scratch);
 }
 
 /* ---- polygon - polygon -------------------------------------------------- */
@@ -962,24 +980,34 @@ bool sx_mtv_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_x
     if (mtv) *mtv = v;
     return hit;
 }
-int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
-                        sx_real margin, sx_manifold *out) {
+/* sx_collide_polygons past the fused manifold: a pair that is not
+ * clear-cut, or a speculative call (margin > 0). */
+SX_NOINLINE static int collide_polygons_gated(const sx_polygon *a, sx_xf ta, const sx_polygon *b,
+                                              sx_xf tb, sx_real margin, int count, bool touch_test,
+                                              sx_manifold *out) {
+    sx_xform xa = sx_xform_of_xf(ta), xb = sx_xform_of_xf(tb);
+    if (touch_test && order_polygons(a, xa, b, xb) <= 0 && !box_pair_aligned(a, xa, b, xb))
+        return count;
+    return collide_gated(build_polygon, a, xa, b, xb, margin, overlap_polygons_any, out);
+}
+
+static int coll_polygons(const sx_polygon *a, sx_xf xa, const sx_polygon *b, sx_xf xb,
+                         sx_real margin, sx_manifold *out) {
     bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
-    /* In the canonical order the manifold at margin 0 makes exactly the
-     * decisions of the overlap test, and in the other order too unless the
-     * pair is within rounding of touching: no second pass needed. The
-     * clear-cut test comes first: nearly every pair passes it, so the
-     * branch predicts, where the order of two random transforms is a coin
-     * toss that mispredicts half the time. */
+    int count = 0;
+    /* As in coll_segments. */
     if (touch_test) {
         bool clear_cut = false;
-        sx_manifold scratch;
-        int count =
-            sx_polygons_collide(a, &xa, b, &xb, SX_R(0.0), out ? out : &scratch, &clear_cut);
-        if (clear_cut || (order_polygons(a, xa, b, xb) <= 0 && !box_pair_aligned(a, xa, b, xb)))
-            return count;
+        count = sx_cores_collide(SX_SHAPE_POLYGON, a, xa, SX_SHAPE_POLYGON, b, xb, SX_R(0.0), out,
+                                 &clear_cut);
+        if (clear_cut) return count;
     }
-    return collide_gated(build_polygon, a, xa, b, xb, margin, overlap_polygons_any, out);
+    return collide_polygons_gated(a, xa, b, xb, margin, count, touch_test, out);
+}
+int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
+                        sx_real margin, sx_manifold *out) {
+    sx_manifold scratch;
+    return coll_polygons(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, out ? out : &scratch);
 }
 
 /* ---- the dispatch table ------------------------------------------------- */
@@ -987,7 +1015,9 @@ int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, s
 typedef bool sx_overlap_entry(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb);
 typedef bool sx_mtv_entry(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
                           sx_vec2 *mtv);
-typedef int sx_collide_entry(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+/* Manifold entries take the transforms in registers (sx_xf) and an out
+ * that is not NULL. */
+typedef int sx_collide_entry(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
                              sx_real margin, sx_manifold *out);
 
 typedef struct sx_pair_entry {
@@ -1008,9 +1038,9 @@ typedef struct sx_pair_entry {
                            sx_vec2 *mtv) {                                                         \
         return sx_mtv_##NAME(&a->u.MA, xa, &b->u.MB, xb, mtv);                                     \
     }                                                                                              \
-    static int col_##NAME(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,          \
+    static int col_##NAME(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,                \
                           sx_real margin, sx_manifold *out) {                                      \
-        return sx_collide_##NAME(&a->u.MA, xa, &b->u.MB, xb, margin, out);                         \
+        return coll_##NAME(&a->u.MA, xa, &b->u.MB, xb, margin, out);                               \
     }                                                                                              \
     static bool ov_##NAME##_rev(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {  \
         return sx_overlap_##NAME(&b->u.MA, xb, &a->u.MB, xa);                                      \
@@ -1022,9 +1052,9 @@ typedef struct sx_pair_entry {
         if (mtv) *mtv = hit ? sx_neg(v) : sx_v2_zero();                                            \
         return hit;                                                                                \
     }                                                                                              \
-    static int col_##NAME##_rev(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,    \
+    static int col_##NAME##_rev(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,          \
                                 sx_real margin, sx_manifold *out) {                                \
-        sx_collide_##NAME(&b->u.MA, xb, &a->u.MB, xa, margin, out);                                \
+        coll_##NAME(&b->u.MA, xb, &a->u.MB, xa, margin, out);                                      \
         mirror_manifold(out);                                                                      \
         return out->count;                                                                         \
     }
@@ -1047,9 +1077,9 @@ static bool mtv_circles(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xf
                         sx_vec2 *mtv) {
     return sx_mtv_circles(&a->u.circle, xa, &b->u.circle, xb, mtv);
 }
-static int col_circles(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                       sx_real margin, sx_manifold *out) {
-    return collide_circles(&a->u.circle, xa, &b->u.circle, xb, margin, out);
+static int col_circles(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb, sx_real margin,
+                       sx_manifold *out) {
+    return coll_circles(&a->u.circle, xa, &b->u.circle, xb, margin, out);
 }
 static bool ov_segments(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
     return sx_overlap_segments(&a->u.segment, xa, &b->u.segment, xb);
@@ -1058,9 +1088,9 @@ static bool mtv_segments(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_x
                          sx_vec2 *mtv) {
     return sx_mtv_segments(&a->u.segment, xa, &b->u.segment, xb, mtv);
 }
-static int col_segments(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                        sx_real margin, sx_manifold *out) {
-    return sx_collide_segments(&a->u.segment, xa, &b->u.segment, xb, margin, out);
+static int col_segments(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb, sx_real margin,
+                        sx_manifold *out) {
+    return coll_segments(&a->u.segment, xa, &b->u.segment, xb, margin, out);
 }
 static bool ov_capsules(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
     return sx_overlap_capsules(&a->u.capsule, xa, &b->u.capsule, xb);
@@ -1069,9 +1099,9 @@ static bool mtv_capsules(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_x
                          sx_vec2 *mtv) {
     return sx_mtv_capsules(&a->u.capsule, xa, &b->u.capsule, xb, mtv);
 }
-static int col_capsules(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                        sx_real margin, sx_manifold *out) {
-    return sx_collide_capsules(&a->u.capsule, xa, &b->u.capsule, xb, margin, out);
+static int col_capsules(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb, sx_real margin,
+                        sx_manifold *out) {
+    return coll_capsules(&a->u.capsule, xa, &b->u.capsule, xb, margin, out);
 }
 static bool ov_polygons(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
     return sx_overlap_polygons(&a->u.polygon, xa, &b->u.polygon, xb);
@@ -1080,9 +1110,9 @@ static bool mtv_polygons(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_x
                          sx_vec2 *mtv) {
     return sx_mtv_polygons(&a->u.polygon, xa, &b->u.polygon, xb, mtv);
 }
-static int col_polygons(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                        sx_real margin, sx_manifold *out) {
-    return sx_collide_polygons(&a->u.polygon, xa, &b->u.polygon, xb, margin, out);
+static int col_polygons(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb, sx_real margin,
+                        sx_manifold *out) {
+    return coll_polygons(&a->u.polygon, xa, &b->u.polygon, xb, margin, out);
 }
 
 static const sx_pair_entry sx_pair_table[SX_SHAPE_TYPE_COUNT][SX_SHAPE_TYPE_COUNT] = {
@@ -1143,7 +1173,7 @@ static inline int collide_dispatch(const sx_shape *a, sx_xform xa, const sx_shap
         clear_manifold(out);
         return 0;
     }
-    return e->collide(a, xa, b, xb, margin, out ? out : &scratch);
+    return e->collide(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, out ? out : &scratch);
 }
 
 int sx_collide_ex(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_real margin,

@@ -97,16 +97,6 @@ bool sx_core_mtv(const sx_core *a, const sx_core *b, sx_vec2 *mtv);
 int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_manifold *out,
                      bool *clear_cut);
 
-/* The manifold of the polygons a and b placed by *xa and *xb, in world
- * space: what sx_core_from_polygon for both (b placed in a's frame),
- * sx_core_manifold, the value checks and the move to world space answer
- * together, in one function. Invalid input (a NULL or bad polygon, a
- * non-finite transform) gives 0 points and a zeroed *out. out is not NULL;
- * clear_cut as sx_core_manifold's, false when overflow in world space lost
- * the points. */
-int sx_polygons_collide(const sx_polygon *a, const sx_xform *xa, const sx_polygon *b,
-                        const sx_xform *xb, sx_real margin, sx_manifold *out, bool *clear_cut);
-
 /* The same three answers for b the 1-point core (c, rb), b a circle: no
  * core is built for it, and the SAT, vertex sweep and contact are written
  * out for a single point (see narrow_core.c). */
@@ -151,6 +141,23 @@ static inline __m128 sx_sse_xform(const sx_xform *x) {
                         (const __m64 *)(const void *)&x->q);
 }
 
+/* A transform handed between the narrowphase's functions: one register,
+ * [p.x, p.y, q.c, q.s]. Passed in a register, not by address: where a
+ * function took the address of its by-value transform, GCC 12 copied it
+ * through a 16-byte reload of its two stored 8-byte halves, a failed store
+ * forward that cost a polygon against a circle a third of its time. Made
+ * with sx_xf_of in the function that holds the transform by value (the two
+ * halves arrive in two registers and become one without memory). */
+typedef __m128 sx_xf;
+static inline sx_xf sx_xf_of(const sx_xform *x) { return sx_sse_xform(x); }
+/* The transform back as a value, for the rare calls into code that takes
+ * transforms by value. */
+static inline sx_xform sx_xform_of_xf(sx_xf x) {
+    sx_xform t;
+    _mm_storeu_ps(&t.p.x, x);
+    return t;
+}
+
 /* sx_rotate by the rotation in lanes 2, 3 of x of the two vectors in v,
  * each lane computed as sx_rotate computes it (c x - s y as c x + (-s) y,
  * which IEEE arithmetic makes the same number). */
@@ -166,13 +173,9 @@ static inline __m128 sx_sse_rotate(__m128 x, __m128 v) {
  * as sx_xform_inv_mul computes it (a - b as a + (-b), which IEEE arithmetic
  * makes the same number), so the answer is the portable one's bit for bit:
  * [ac, -as, ac, ac] x [dx, dx, bc, bs] + [as, ac, as, -as] x [dy, dy, bs, bc]. */
-static inline __m128 sx_sse_relative_xform(const sx_xform *xa, const sx_xform *xb) {
-    __m128 z0 = _mm_setzero_ps();
-    __m128 ap = _mm_loadl_pi(z0, (const __m64 *)(const void *)&xa->p);
-    __m128 aq = _mm_loadl_pi(z0, (const __m64 *)(const void *)&xa->q);
-    __m128 bp = _mm_loadl_pi(z0, (const __m64 *)(const void *)&xb->p);
-    __m128 bq = _mm_loadl_pi(z0, (const __m64 *)(const void *)&xb->q);
-    __m128 d = _mm_sub_ps(bp, ap); /* dx dy 0 0 */
+static inline __m128 sx_sse_relative_xform(sx_xf xa, sx_xf xb) {
+    __m128 aq = _mm_movehl_ps(xa, xa), bq = _mm_movehl_ps(xb, xb); /* c s c s */
+    __m128 d = _mm_sub_ps(xb, xa);                                 /* dx dy - - */
     __m128 neg = _mm_setr_ps(SX_R(1.0), SX_R(-1.0), SX_R(1.0), SX_R(1.0));
     __m128 neg2 = _mm_setr_ps(SX_R(1.0), SX_R(1.0), SX_R(1.0), SX_R(-1.0));
     __m128 lhs1 = _mm_mul_ps(_mm_shuffle_ps(aq, aq, _MM_SHUFFLE(0, 0, 1, 0)), neg);
@@ -187,19 +190,66 @@ static inline bool sx_sse_finite(__m128 v) {
     __m128 z = _mm_sub_ps(v, v);
     return _mm_movemask_ps(_mm_cmpunord_ps(z, z)) == 0;
 }
+#else
+/* The portable build hands transforms by address. */
+typedef const sx_xform *sx_xf;
+static inline sx_xf sx_xf_of(const sx_xform *x) { return x; }
+static inline sx_xform sx_xform_of_xf(sx_xf x) { return *x; }
 #endif
+
+/* A circle B's centre in A's frame: the world offset of the positions first
+ * (exact for nearby bodies far from the origin), then B's rotated centre,
+ * then the rotation into A's frame. */
+static inline sx_vec2 sx_circle_in_frame(const sx_circle *b, sx_xf xa, sx_xf xb) {
+#if SX_NARROW_SSE
+    /* Each lane as the portable expression computes it: the inverse
+     * rotation is c x + s y and c y + (-s) x. */
+    __m128 a = xa, x = xb, sn, w;
+    __m128 ctr = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&b->center);
+    sx_vec2 c;
+    w = _mm_add_ps(_mm_sub_ps(x, a), sx_sse_rotate(x, ctr));
+    sn = _mm_xor_ps(_mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 3, 3, 3)),
+                    _mm_setr_ps(SX_R(0.0), SX_R(-0.0), SX_R(0.0), SX_R(-0.0)));
+    w = _mm_add_ps(_mm_mul_ps(_mm_shuffle_ps(a, a, _MM_SHUFFLE(2, 2, 2, 2)), w),
+                   _mm_mul_ps(sn, _mm_shuffle_ps(w, w, _MM_SHUFFLE(2, 3, 0, 1))));
+    _mm_storel_pi((__m64 *)(void *)&c, w);
+    return c;
+#else
+    return sx_inv_rotate(xa->q, sx_add(sx_sub(xb->p, xa->p), sx_rotate(xb->q, b->center)));
+#endif
+}
+
+/* The checks of a circle B and of its placed centre c, run only once the
+ * answer is not "apart": a NaN or infinity anywhere in B, xb or xa makes c
+ * (or the limit a + rb) non-finite, and the point routines answer "apart"
+ * for a non-finite c unless the limit is infinite, which an invalid radius
+ * is needed for. xa needs no check of its own: both components of the
+ * inverse rotation take in both rotation components and both coordinates
+ * of the offset. */
+static inline bool sx_circle_valid(const sx_circle *b, sx_xf xb, sx_vec2 c) {
+#if SX_NARROW_SSE
+    __m128 x = xb, v = _mm_setr_ps(b->center.x, b->center.y, c.x, c.y);
+    return b->radius >= SX_R(0.0) && sx_is_finite(b->radius) &&
+           sx_sse_finite(_mm_add_ps(_mm_sub_ps(x, x), _mm_sub_ps(v, v)));
+#else
+    return b->radius >= SX_R(0.0) && sx_is_finite(b->radius) && sx_vec2_is_finite(b->center) &&
+           sx_is_finite(((xb->p.x - xb->p.x) + (xb->p.y - xb->p.y)) +
+                        ((xb->q.c - xb->q.c) + (xb->q.s - xb->q.s))) &&
+           sx_vec2_is_finite(c);
+#endif
+}
 
 /* Moves a local manifold of `count` points (A's frame) to world space in
  * place and completes it (count set, unused points zeroed); a non-finite
  * result (overflow of huge inputs) becomes 0 points with a zero normal.
  * Returns the count. */
-static inline int sx_world_manifold(sx_manifold *m, int count, const sx_xform *xa) {
+static inline int sx_world_manifold(sx_manifold *m, int count, sx_xf xa) {
 #if SX_NARROW_SSE
     /* The normal and the first point are adjacent in sx_manifold: both are
      * turned in one register, each lane computed as sx_xform_vector and
      * sx_xform_point compute it; one test checks every output. */
     if (count > 0) {
-        __m128 x = sx_sse_xform(xa), z = _mm_setzero_ps();
+        __m128 x = xa, z = _mm_setzero_ps();
         __m128 np = _mm_loadu_ps(&m->normal.x);
         /* -0 is the identity of addition (+0 would turn a -0 normal
          * component into +0). */
@@ -249,5 +299,28 @@ static inline int sx_world_manifold(sx_manifold *m, int count, const sx_xform *x
     return count;
 #endif
 }
+
+/* ---- fused pair functions (narrow_core.c) ------------------------------- */
+
+/* The manifold of a and b (kinds ka, kb: SX_SHAPE_SEGMENT, CAPSULE or
+ * POLYGON, the shapes as those structs) placed by *xa and *xb, in world
+ * space: the cores (b placed in a's frame), sx_core_manifold, the value
+ * checks and the move to world space together, in one function. Invalid
+ * input (a NULL or bad shape, a non-finite transform) gives 0 points and a
+ * zeroed *out. out is not NULL; clear_cut as sx_core_manifold's, false
+ * when overflow in world space lost the points. */
+int sx_cores_collide(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_xf xb,
+                     sx_real margin, sx_manifold *out, bool *clear_cut);
+
+/* sx_collide for a polygon A against a circle B placed by *xa and *xb, in
+ * one function: -1 (and *out unusable) where the general route must answer
+ * (sx_core_polygon_point_manifold's -1), otherwise the point count with *out
+ * complete in world space. out is not NULL. */
+int sx_polygon_circle_collide(const sx_polygon *a, sx_xf xa, const sx_circle *b, sx_xf xb,
+                              sx_real margin, sx_manifold *out);
+/* The same for the segment or capsule a0-a1 of radius ra (>= 0 and finite)
+ * against a circle (sx_core_segment_point_manifold's -1). */
+int sx_segment_circle_collide(sx_vec2 a0, sx_vec2 a1, sx_real ra, sx_xf xa, const sx_circle *b,
+                              sx_xf xb, sx_real margin, sx_manifold *out);
 
 #endif /* SEPAX_NARROW_H */

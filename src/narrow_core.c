@@ -949,44 +949,74 @@ int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_mani
     return core_manifold(a, b, margin, out, clear_cut);
 }
 
+/* The core of a segment, capsule or polygon (kind: its sx_shape_type),
+ * placed by *x (NULL: in its own frame). */
+static SX_ALWAYS_INLINE bool core_of(int kind, const void *shape, const sx_xform *x, sx_core *out) {
+    switch (kind) {
+    case SX_SHAPE_SEGMENT: return sx_core_from_segment((const sx_segment *)shape, x, out);
+    case SX_SHAPE_CAPSULE: return sx_core_from_capsule((const sx_capsule *)shape, x, out);
+    default: return sx_core_from_polygon((const sx_polygon *)shape, x, out);
+    }
+}
+
 /* The whole pair in one function: the cores, the manifold, the checks of
  * the values and world space, with nothing passed between them through
- * memory that registers can hold. */
-int sx_polygons_collide(const sx_polygon *a, const sx_xform *xa, const sx_polygon *b,
-                        const sx_xform *xb, sx_real margin, sx_manifold *out, bool *clear_cut) {
+ * memory that registers can hold. Specialised for each pair of kinds by
+ * sx_cores_collide. */
+static SX_ALWAYS_INLINE int cores_collide(int ka, const void *a, sx_xf xa, int kb, const void *b,
+                                          sx_xf xb, sx_real margin, sx_manifold *out,
+                                          bool *clear_cut) {
     sx_core ca, cb;
     int local, count;
+    bool ok;
     if (clear_cut) *clear_cut = false;
 #if SX_NARROW_SSE
     {
-        __m128 rel = sx_sse_relative_xform(xa, xb);
-        if (!sx_sse_finite(rel) || !sx_core_from_polygon(a, NULL, &ca) || b == NULL ||
-            !core_radius_ok(b->radius) || b->count < 3 || b->count > SX_MAX_POLYGON_VERTICES) {
-            memset(out, 0, sizeof(*out));
-            return 0;
+        __m128 r = sx_sse_relative_xform(xa, xb);
+        ok = sx_sse_finite(r);
+        if (ok && kb == SX_SHAPE_POLYGON) {
+            const sx_polygon *pb = (const sx_polygon *)b;
+            ok = pb != NULL && core_radius_ok(pb->radius) && pb->count >= 3 &&
+                 pb->count <= SX_MAX_POLYGON_VERTICES;
+            if (ok) place_polygon_rel(pb, r, &cb);
+        } else if (ok) {
+            sx_xform rel;
+            _mm_storeu_ps(&rel.p.x, r);
+            ok = core_of(kb, b, &rel, &cb);
         }
-        place_polygon_rel(b, rel, &cb);
     }
 #else
     {
         sx_xform rel = sx_xform_inv_mul(*xa, *xb);
-        if (!sx_is_finite(((rel.p.x - rel.p.x) + (rel.p.y - rel.p.y)) +
-                          ((rel.q.c - rel.q.c) + (rel.q.s - rel.q.s))) ||
-            !sx_core_from_polygon(a, NULL, &ca) || !sx_core_from_polygon(b, &rel, &cb)) {
-            memset(out, 0, sizeof(*out));
-            return 0;
-        }
+        ok = sx_is_finite(((rel.p.x - rel.p.x) + (rel.p.y - rel.p.y)) +
+                          ((rel.q.c - rel.q.c) + (rel.q.s - rel.q.s))) &&
+             core_of(kb, b, &rel, &cb);
     }
 #endif
+    if (!ok || !core_of(ka, a, NULL, &ca)) {
+        memset(out, 0, sizeof(*out));
+        return 0;
+    }
     if (!(sx_is_finite(margin) && margin > SX_R(0.0))) margin = SX_R(0.0);
     local = core_manifold(&ca, &cb, margin, out, clear_cut);
-    if (local > 0 && !(sx_polygon_values_finite(ca.v, ca.n, ca.count) &&
-                       sx_polygon_values_finite(cb.v, cb.n, cb.count))) {
-        local = 0;
-    }
+    if (local > 0 && !(sx_core_values_finite(&ca) && sx_core_values_finite(&cb))) local = 0;
     count = sx_world_manifold(out, local, xa);
     if (clear_cut && count != local) *clear_cut = false;
     return count;
+}
+
+int sx_cores_collide(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_xf xb,
+                     sx_real margin, sx_manifold *out, bool *clear_cut) {
+#define SX_CORES_CASE(KA, KB)                                                                      \
+    if (ka == KA && kb == KB) return cores_collide(KA, a, xa, KB, b, xb, margin, out, clear_cut)
+    SX_CORES_CASE(SX_SHAPE_POLYGON, SX_SHAPE_POLYGON);
+    SX_CORES_CASE(SX_SHAPE_POLYGON, SX_SHAPE_SEGMENT);
+    SX_CORES_CASE(SX_SHAPE_POLYGON, SX_SHAPE_CAPSULE);
+    SX_CORES_CASE(SX_SHAPE_CAPSULE, SX_SHAPE_SEGMENT);
+    SX_CORES_CASE(SX_SHAPE_CAPSULE, SX_SHAPE_CAPSULE);
+    SX_CORES_CASE(SX_SHAPE_SEGMENT, SX_SHAPE_SEGMENT);
+#undef SX_CORES_CASE
+    return cores_collide(ka, a, xa, kb, b, xb, margin, out, clear_cut);
 }
 
 /* ---- a core against a point --------------------------------------------- */
@@ -1223,8 +1253,8 @@ int sx_core_segment_point_mtv(sx_vec2 a, sx_vec2 b, sx_real ra, sx_vec2 c, sx_re
     return hit;
 }
 
-int sx_core_segment_point_manifold(sx_vec2 a, sx_vec2 b, sx_real ra, sx_vec2 c, sx_real rb,
-                                   sx_real margin, sx_manifold *out) {
+static SX_ALWAYS_INLINE int segment_point_manifold(sx_vec2 a, sx_vec2 b, sx_real ra, sx_vec2 c,
+                                                   sx_real rb, sx_real margin, sx_manifold *out) {
     sx_segment_point sp;
     sx_real r = ra + rb;
     sx_vec2 dir;
@@ -1267,22 +1297,89 @@ typedef struct sx_polygon_point {
  * -1: the general route answers (a square that overflows or underflows,
  * or c within rounding noise of a vertex, where the SAT's axis or
  * vertex_direction's scaling gives the direction). */
-static inline int polygon_point(const sx_vec2 *v, const sx_vec2 *nn, int count, sx_vec2 c,
-                                sx_real limit, sx_polygon_point *out) {
-    int i, face = 0, i2, vertex = -1;
-    sx_real best = sx_dot(nn[0], sx_sub(c, v[0])), t, dsq;
-    bool bad = best != best;
+#if SX_NARROW_SSE
+/* The separations sx_dot(nn[i], sx_sub(c, v[i])) of the point cc = [c.x,
+ * c.y, c.x, c.y] from faces i..i+3, each computed as that expression
+ * computes it; faces past count repeat face 0 (v00, n00: its vertex and
+ * normal in both halves), which cannot change a first maximum. */
+static SX_ALWAYS_INLINE __m128 sse_point_faces(const sx_vec2 *v, const sx_vec2 *nn, int count,
+                                               int i, __m128 cc, __m128 v00, __m128 n00) {
+    __m128 v0 = sse_vertex_pair(v, i, count, v00), v1 = sse_vertex_pair(v, i + 2, count, v00);
+    __m128 m0 = sse_vertex_pair(nn, i, count, n00), m1 = sse_vertex_pair(nn, i + 2, count, n00);
+    __m128 p0 = _mm_mul_ps(m0, _mm_sub_ps(cc, v0)), p1 = _mm_mul_ps(m1, _mm_sub_ps(cc, v1));
+    return _mm_add_ps(_mm_shuffle_ps(p0, p1, _MM_SHUFFLE(2, 0, 2, 0)),
+                      _mm_shuffle_ps(p0, p1, _MM_SHUFFLE(3, 1, 3, 1)));
+}
+
+/* The largest of four lanes, in every lane. */
+static SX_ALWAYS_INLINE __m128 sse_lane_max(__m128 s) {
+    s = _mm_max_ps(s, _mm_shuffle_ps(s, s, _MM_SHUFFLE(1, 0, 3, 2)));
+    return _mm_max_ps(s, _mm_shuffle_ps(s, s, _MM_SHUFFLE(2, 3, 0, 1)));
+}
+#endif
+
+static SX_ALWAYS_INLINE int polygon_point(const sx_vec2 *v, const sx_vec2 *nn, int count, sx_vec2 c,
+                                          sx_real limit, sx_polygon_point *out) {
+    int face = 0, i2, vertex = -1;
+    sx_real best, t, dsq;
     sx_vec2 w, n, dir;
-    for (i = 1; i < count; ++i) {
-        sx_real s = sx_dot(nn[i], sx_sub(c, v[i]));
-        bad |= s != s;
-        face = s > best ? i : face;
-        best = s > best ? s : best;
+#if SX_NARROW_SSE
+    {
+        /* Every face's separation four to a register; the first of the
+         * largest is the lowest lane equal to the maximum (the scalar loop
+         * keeps the first with a strict comparison). Its separation is
+         * then taken once more by the scalar expression: the maximum of
+         * the lanes may differ from it in the sign of a zero. */
+        __m128 cc = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&c);
+        __m128 v00 = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&v[0]);
+        __m128 n00 = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&nn[0]);
+        __m128 s0, mx, bad;
+        int mask;
+        cc = _mm_movelh_ps(cc, cc);
+        v00 = _mm_movelh_ps(v00, v00);
+        n00 = _mm_movelh_ps(n00, n00);
+        s0 = sse_point_faces(v, nn, count, 0, cc, v00, n00);
+        bad = _mm_cmpunord_ps(s0, s0);
+        if (count > 4) {
+            __m128 s1 = sse_point_faces(v, nn, count, 4, cc, v00, n00);
+            bad = _mm_or_ps(bad, _mm_cmpunord_ps(s1, s1));
+            mx = sse_lane_max(_mm_max_ps(s0, s1));
+            mask = _mm_movemask_ps(_mm_cmpeq_ps(s0, mx)) |
+                   (_mm_movemask_ps(_mm_cmpeq_ps(s1, mx)) << 4);
+        } else {
+            mx = sse_lane_max(s0);
+            mask = _mm_movemask_ps(_mm_cmpeq_ps(s0, mx));
+        }
+        best = _mm_cvtss_f32(mx);
+        if (_mm_movemask_ps(bad) != 0 || !(best <= limit)) return 0;
+        face = __builtin_ctz((unsigned)mask);
+        best = sx_dot(nn[face], sx_sub(c, v[face]));
     }
-    if (bad || !(best <= limit)) return 0;
+#else
+    {
+        int i;
+        bool bad;
+        best = sx_dot(nn[0], sx_sub(c, v[0]));
+        bad = best != best;
+        for (i = 1; i < count; ++i) {
+            sx_real s = sx_dot(nn[i], sx_sub(c, v[i]));
+            bad |= s != s;
+            face = s > best ? i : face;
+            best = s > best ? s : best;
+        }
+        if (bad || !(best <= limit)) return 0;
+    }
+#endif
     out->face = face;
     out->sep = best;
-    if (best <= SX_R(0.0)) return 1;
+    if (best <= SX_R(0.0)) {
+        /* Inside: the caller reads face and sep only (set for tidiness). */
+        out->vertex = -1;
+        out->on = c;
+        out->dir = nn[face];
+        out->distance = SX_R(0.0);
+        return 1;
+    }
     /* offer_edge for the face of largest separation. */
     i2 = face + 1 < count ? face + 1 : 0;
     w = sx_sub(c, v[face]);
@@ -1337,8 +1434,8 @@ int sx_core_polygon_point_mtv(const sx_polygon *a, sx_vec2 c, sx_real rb, sx_vec
     return 1;
 }
 
-int sx_core_polygon_point_manifold(const sx_polygon *a, sx_vec2 c, sx_real rb, sx_real margin,
-                                   sx_manifold *out) {
+static SX_ALWAYS_INLINE int polygon_point_manifold(const sx_polygon *a, sx_vec2 c, sx_real rb,
+                                                   sx_real margin, sx_manifold *out) {
     sx_polygon_point pp;
     sx_real r = a->radius + rb;
     sx_manifold_point *p = &out->points[0];
@@ -1368,4 +1465,52 @@ int sx_core_polygon_point_manifold(const sx_polygon *a, sx_vec2 c, sx_real rb, s
     }
     out->count = 1;
     return 1;
+}
+
+int sx_core_segment_point_manifold(sx_vec2 a, sx_vec2 b, sx_real ra, sx_vec2 c, sx_real rb,
+                                   sx_real margin, sx_manifold *out) {
+    return segment_point_manifold(a, b, ra, c, rb, margin, out);
+}
+
+int sx_core_polygon_point_manifold(const sx_polygon *a, sx_vec2 c, sx_real rb, sx_real margin,
+                                   sx_manifold *out) {
+    return polygon_point_manifold(a, c, rb, margin, out);
+}
+
+/* ---- fused entries: a core against a circle ----------------------------- */
+
+int sx_polygon_circle_collide(const sx_polygon *a, sx_xf xa, const sx_circle *b, sx_xf xb,
+                              sx_real margin, sx_manifold *out) {
+    sx_vec2 c;
+    int local;
+    if (a == NULL || !core_radius_ok(a->radius) || a->count < 3 ||
+        a->count > SX_MAX_POLYGON_VERTICES || b == NULL) {
+        memset(out, 0, sizeof(*out));
+        return 0;
+    }
+    c = sx_circle_in_frame(b, xa, xb);
+    if (!(sx_is_finite(margin) && margin > SX_R(0.0))) margin = SX_R(0.0);
+    local = polygon_point_manifold(a, c, b->radius, margin, out);
+    if (local < 0) return -1;
+    if (local > 0 && !(sx_circle_valid(b, xb, c) &&
+                       sx_polygon_values_finite(a->vertices, a->normals, a->count))) {
+        local = 0;
+    }
+    return sx_world_manifold(out, local, xa);
+}
+
+int sx_segment_circle_collide(sx_vec2 a0, sx_vec2 a1, sx_real ra, sx_xf xa, const sx_circle *b,
+                              sx_xf xb, sx_real margin, sx_manifold *out) {
+    sx_vec2 c;
+    int local;
+    if (b == NULL) {
+        memset(out, 0, sizeof(*out));
+        return 0;
+    }
+    c = sx_circle_in_frame(b, xa, xb);
+    if (!(sx_is_finite(margin) && margin > SX_R(0.0))) margin = SX_R(0.0);
+    local = segment_point_manifold(a0, a1, ra, c, b->radius, margin, out);
+    if (local < 0) return -1;
+    if (local > 0 && !sx_circle_valid(b, xb, c)) local = 0;
+    return sx_world_manifold(out, local, xa);
 }
