@@ -253,12 +253,23 @@ static sx_real cap_separation(const sx_core *p, const sx_core *q, sx_vec2 *axis)
  * examined is always taken (the choice tests face < 0 first). */
 #define SX_NO_SEPARATION (-(sx_real)INFINITY)
 
+/* Per-vertex slots of the SAT's records: the SSE loops store eight lanes. */
+#define SX_VERTEX_SLOTS (SX_MAX_POLYGON_VERTICES > 8 ? SX_MAX_POLYGON_VERTICES : 8)
+
 typedef struct sx_sat {
     sx_real sep_a, sep_b; /* best separation over A's / B's faces (-inf: none) */
     int face_a, face_b;   /* their faces (-1: none) */
     sx_real sep;          /* best over every axis, caps included */
     sx_vec2 axis;         /* unit axis of sep, from A towards B */
     bool has_axes;
+#if SX_NARROW_SSE
+    /* When rows is set (two polygon cores, limit > 0): the separation of
+     * each vertex of B from each face of A (rows_b, best_face_sse's rows)
+     * and of A's vertices from B's faces (rows_a), for the closest-feature
+     * sweep. */
+    bool rows;
+    __m128 rows_b[2 * SX_VERTEX_SLOTS], rows_a[2 * SX_VERTEX_SLOTS];
+#endif
 } sx_sat;
 
 #if SX_NARROW_SSE
@@ -289,8 +300,14 @@ static inline sx_real sse_lane_min(__m128 lo, __m128 bad) {
     return _mm_movemask_ps(bad) != 0 ? (sx_real)NAN : _mm_cvtss_f32(lo);
 }
 
+/* best_face with q's vertices four to a register. With track != 0, the
+ * separations of q's vertices from each face i of p (the lanes, as
+ * face_separation computes them) are also kept, in rows[2 i] (vertices
+ * 0..3) and rows[2 i + 1] (4..7), for the closest-feature sweep; they are
+ * complete when the call returns true. */
 static SX_ALWAYS_INLINE bool best_face_sse(const sx_core *p, const sx_core *q, sx_real limit,
-                                           sx_real *sep, int *face, sx_real *stop) {
+                                           sx_real *sep, int *face, sx_real *stop, int track,
+                                           __m128 *rows) {
     int i, n = p->count, m = q->count, f = 0;
     __m128 v0 = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&q->v[0]);
     __m128 v00 = _mm_movelh_ps(v0, v0);
@@ -308,6 +325,7 @@ static SX_ALWAYS_INLINE bool best_face_sse(const sx_core *p, const sx_core *q, s
             }
             f = s > best ? i : f;
             best = s > best ? s : best;
+            if (track) rows[2 * i] = d;
         }
     } else {
         __m128 p2 = sse_vertex_pair(q->v, 4, m, v00), p3 = sse_vertex_pair(q->v, 6, m, v00);
@@ -322,11 +340,43 @@ static SX_ALWAYS_INLINE bool best_face_sse(const sx_core *p, const sx_core *q, s
             }
             f = s > best ? i : f;
             best = s > best ? s : best;
+            if (track) {
+                rows[2 * i] = d0;
+                rows[2 * i + 1] = d1;
+            }
         }
     }
     *sep = best;
     *face = f;
     return true;
+}
+
+/* For each vertex j of q (count m) the face of p (n faces) that separates
+ * it the most, the first of largest separation, and that separation, from
+ * the rows best_face_sse kept: point_best_face's answer bit for bit (its
+ * separations are these lanes; d > m ? d : m is _mm_max_ps(d, m)). */
+static void sse_vertex_faces(const __m128 *rows, int n, int m, int *vface, sx_real *vsep) {
+    int i;
+    __m128 m0 = rows[0], m1 = rows[1];
+    __m128i f0 = _mm_setzero_si128(), f1 = f0;
+    for (i = 1; i < n; ++i) {
+        __m128 d0 = rows[2 * i];
+        __m128i g0 = _mm_castps_si128(_mm_cmpgt_ps(d0, m0)), fi = _mm_set1_epi32(i);
+        m0 = _mm_max_ps(d0, m0);
+        f0 = _mm_or_si128(_mm_and_si128(g0, fi), _mm_andnot_si128(g0, f0));
+        if (m > 4) {
+            __m128 d1 = rows[2 * i + 1];
+            __m128i g1 = _mm_castps_si128(_mm_cmpgt_ps(d1, m1));
+            m1 = _mm_max_ps(d1, m1);
+            f1 = _mm_or_si128(_mm_and_si128(g1, fi), _mm_andnot_si128(g1, f1));
+        }
+    }
+    _mm_storeu_ps(&vsep[0], m0);
+    _mm_storeu_si128((__m128i *)(void *)&vface[0], f0);
+    if (m > 4) {
+        _mm_storeu_ps(&vsep[4], m1);
+        _mm_storeu_si128((__m128i *)(void *)&vface[4], f1);
+    }
 }
 #endif
 
@@ -339,7 +389,7 @@ static SX_ALWAYS_INLINE bool best_face(const sx_core *p, const sx_core *q, sx_re
     int i, n = face_count(p), f = 0;
     sx_real best;
 #if SX_NARROW_SSE
-    if (n >= 3 && q->count >= 3) return best_face_sse(p, q, limit, sep, face, stop);
+    if (n >= 3 && q->count >= 3) return best_face_sse(p, q, limit, sep, face, stop, 0, NULL);
 #endif
     if (n == 0) {
         *sep = SX_NO_SEPARATION;
@@ -376,8 +426,23 @@ static SX_ALWAYS_INLINE bool best_face(const sx_core *p, const sx_core *q, sx_re
 static SX_ALWAYS_INLINE bool sat_run(const sx_core *a, const sx_core *b, sx_real limit,
                                      sx_sat *out) {
     int na = face_count(a), nb = face_count(b);
-    if (!best_face(a, b, limit, &out->sep_a, &out->face_a, &out->sep)) return false;
-    if (!best_face(b, a, limit, &out->sep_b, &out->face_b, &out->sep)) return false;
+#if SX_NARROW_SSE
+    out->rows = false;
+    if (limit > SX_R(0.0) && na >= 3 && nb >= 3) {
+        /* Cores apart by less than limit need their closest features,
+         * whose sweep starts from each vertex's face of largest
+         * separation: the SAT's lanes have what it needs. */
+        if (!best_face_sse(a, b, limit, &out->sep_a, &out->face_a, &out->sep, 1, out->rows_b) ||
+            !best_face_sse(b, a, limit, &out->sep_b, &out->face_b, &out->sep, 1, out->rows_a)) {
+            return false;
+        }
+        out->rows = true;
+    } else
+#endif
+    {
+        if (!best_face(a, b, limit, &out->sep_a, &out->face_a, &out->sep)) return false;
+        if (!best_face(b, a, limit, &out->sep_b, &out->face_b, &out->sep)) return false;
+    }
     out->has_axes = na + nb > 0;
     out->axis = sx_v2_zero();
     if (out->face_a >= 0 && out->sep_a >= out->sep_b) {
@@ -437,6 +502,53 @@ typedef struct sx_closest {
     int kind;         /* SX_CLOSEST_* */
     int ia, ib;       /* vertex indices (VERTICES), or the face index */
 } sx_closest;
+
+#if SX_NARROW_SSE
+/* The lane-wise largest magnitudes of a core's points, two points a
+ * register (unreduced: the caller folds the lanes once). */
+static SX_ALWAYS_INLINE __m128 sse_core_magnitudes(const sx_core *c, __m128 m) {
+    int i, n = c->count;
+    __m128 sign = _mm_set1_ps(SX_R(-0.0));
+    for (i = 0; i + 1 < n; i += 2)
+        m = _mm_max_ps(m, _mm_andnot_ps(sign, _mm_loadu_ps(&c->v[i].x)));
+    if (i < n) {
+        m = _mm_max_ps(m, _mm_andnot_ps(sign, _mm_loadl_pi(_mm_setzero_ps(),
+                                                           (const __m64 *)(const void *)&c->v[i])));
+    }
+    return m;
+}
+#else
+/* Largest coordinate magnitude of a core's points. */
+static sx_real core_scale(const sx_core *c) {
+    sx_real m = SX_R(0.0);
+    int i;
+    for (i = 0; i < c->count; ++i)
+        m = sx_maxr(m, sx_maxr(sx_magnitude(c->v[i].x), sx_magnitude(c->v[i].y)));
+    return m;
+}
+#endif
+
+/* Largest coordinate magnitude of the points of two cores. The largest
+ * magnitude of finite values does not depend on the order it is taken in,
+ * so the SSE loop's is the portable loop's; with a NaN or an infinity in a
+ * core the two may differ, but such a core never gets a manifold point or
+ * an overlap, whatever the tests that use this scale say. */
+static SX_ALWAYS_INLINE sx_real core_pair_scale(const sx_core *a, const sx_core *b) {
+#if SX_NARROW_SSE
+    __m128 m = sse_core_magnitudes(b, sse_core_magnitudes(a, _mm_setzero_ps()));
+    m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(1, 0, 3, 2)));
+    m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(2, 3, 0, 1)));
+    return _mm_cvtss_f32(m);
+#else
+    return sx_maxr(core_scale(a), core_scale(b));
+#endif
+}
+
+/* The slack of cannot_win: the rounding of a separation computed from
+ * coordinates of magnitude `scale` (a few ulps of scale), of the placement
+ * of B's points (a few more), and the lean a valid polygon's normals may
+ * have (64 ulps of the edge's coordinates), with room to spare. */
+#define SX_PRUNE_SLACK (SX_R(256.0) * SX_REAL_EPSILON)
 
 /* Offers the pair (vertex q of one core, edge i of core p) to the sweep.
  * p_is_a says which core owns the edge. Where q projects on the edge is
@@ -545,22 +657,50 @@ static inline int point_best_face(const sx_core *p, sx_vec2 q) {
     return f;
 }
 
+/* True when the vertex q_j, separated by s from the face of p it is offered
+ * to (its face of largest separation), cannot be accepted by the sweep as
+ * it stands: every candidate offer_edge can make of it is at least s - slack
+ * away, slack covering the rounding of s and of the placed vertices and the
+ * lean of a valid polygon's normals (sx_shape_validate), and its square, less
+ * its own rounding, is already no better than what the sweep would take.
+ * Only with a finite best, so that no square near overflow is involved. */
+static inline bool cannot_win(sx_real s, sx_real slack, const sx_closest *best) {
+    sx_real lb = s - slack, lb2, thr;
+    if (!(lb > SX_R(0.0)) || !(best->dist_sq < SX_REAL_MAX)) return false;
+    lb2 = lb * lb;
+    thr = best->kind == SX_CLOSEST_VERTICES ? best->dist_sq * (SX_R(1.0) + SX_CLOSEST_TIE)
+                                            : best->dist_sq;
+    return lb2 < SX_REAL_MAX && lb2 * (SX_R(1.0) - SX_R(16.0) * SX_REAL_EPSILON) >= thr;
+}
+
 /* Offers every vertex of q to the edges of p (p_is_a: p is A), edge-major.
  * A polygon p needs only one edge per vertex: for a point outside a convex
  * polygon the closest point lies on the face that separates it the most
  * (see point_closest below; every vertex of q is outside p, the cores being
  * disjoint), so the other edges cannot win the sweep, and the sweep visits
  * the candidates that can in the order of the full sweep, edge-major, so
- * exact ties resolve as they did. */
-static void offer_vertices(const sx_core *p, const sx_core *q, bool p_is_a, sx_closest *out) {
+ * exact ties resolve as they did. vface and vsep (may be NULL) are each
+ * vertex's face of largest separation and that separation, from the SAT;
+ * with them, offers that cannot win the sweep (cannot_win) are skipped,
+ * which changes nothing of its answer: an offer the sweep would not take
+ * leaves it as it was. */
+static void offer_vertices(const sx_core *p, const sx_core *q, bool p_is_a, sx_closest *out,
+                           const int *vface, const sx_real *vsep, sx_real slack) {
     int i, j, edges = p->count >= 3 ? p->count : p->count - 1;
     if (p->count >= 3) {
-        int face[SX_MAX_POLYGON_VERTICES];
+        /* The vertices of each face as a bit mask, so that the sweep visits
+         * them edge-major without testing every (edge, vertex) pair. */
+        unsigned mask[SX_MAX_POLYGON_VERTICES];
+        for (i = 0; i < p->count; ++i)
+            mask[i] = 0u;
         for (j = 0; j < q->count; ++j)
-            face[j] = point_best_face(p, q->v[j]);
+            mask[vface ? vface[j] : point_best_face(p, q->v[j])] |= 1u << j;
         for (i = 0; i < edges; ++i) {
-            for (j = 0; j < q->count; ++j) {
-                if (face[j] == i) offer_edge(p, i, q->v[j], j, p_is_a, out);
+            unsigned bits = mask[i];
+            for (j = 0; bits != 0u; ++j, bits >>= 1) {
+                if (!(bits & 1u)) continue;
+                if (vsep != NULL && cannot_win(vsep[j], slack, out)) continue;
+                offer_edge(p, i, q->v[j], j, p_is_a, out);
             }
         }
         return;
@@ -572,8 +712,11 @@ static void offer_vertices(const sx_core *p, const sx_core *q, bool p_is_a, sx_c
 }
 
 /* Distance and closest features of two disjoint cores: every vertex of one
- * against the edges of the other (A's edges first, so ties keep A's face). */
-static void closest_features(const sx_core *a, const sx_core *b, sx_closest *out) {
+ * against the edges of the other (A's edges first, so ties keep A's face).
+ * sat (may be NULL): the SAT's records, whose per-vertex faces (when it has
+ * them) spare the sweep its own search and let it skip hopeless offers. */
+static void closest_features(const sx_core *a, const sx_core *b, const sx_sat *sat,
+                             sx_closest *out) {
     int ea = a->count >= 3 ? a->count : a->count - 1;
     int eb = b->count >= 3 ? b->count : b->count - 1;
     out->dist_sq = SX_REAL_MAX;
@@ -584,8 +727,22 @@ static void closest_features(const sx_core *a, const sx_core *b, sx_closest *out
     out->pa = a->v[0];
     out->pb = b->v[0];
     out->normal = sx_v2_zero();
-    offer_vertices(a, b, true, out);
-    offer_vertices(b, a, false, out);
+    SX_UNUSED(sat);
+#if SX_NARROW_SSE
+    if (sat != NULL && sat->rows) {
+        sx_real slack = SX_PRUNE_SLACK * core_pair_scale(a, b);
+        int vface[SX_VERTEX_SLOTS];
+        sx_real vsep[SX_VERTEX_SLOTS];
+        sse_vertex_faces(sat->rows_b, a->count, b->count, vface, vsep);
+        offer_vertices(a, b, true, out, vface, vsep, slack);
+        sse_vertex_faces(sat->rows_a, b->count, a->count, vface, vsep);
+        offer_vertices(b, a, false, out, vface, vsep, slack);
+    } else
+#endif
+    {
+        offer_vertices(a, b, true, out, NULL, NULL, SX_R(0.0));
+        offer_vertices(b, a, false, out, NULL, NULL, SX_R(0.0));
+    }
     if (ea == 0 && eb == 0) out->dist_sq = sx_distance_sq(a->v[0], b->v[0]);
     vertex_direction(out);
 }
@@ -605,7 +762,7 @@ bool sx_core_overlap(const sx_core *a, const sx_core *b) {
     sx_closest cl;
     if (!sat_run(a, b, r, &sat)) return false;
     if (sat.has_axes && sat.sep <= SX_R(0.0)) return true;
-    closest_features(a, b, &cl);
+    closest_features(a, b, &sat, &cl);
     return cl.distance <= r;
 }
 
@@ -629,7 +786,7 @@ bool sx_core_mtv(const sx_core *a, const sx_core *b, sx_vec2 *mtv) {
         *mtv = sx_scale(n, -depth);
         return true;
     }
-    closest_features(a, b, &cl);
+    closest_features(a, b, &sat, &cl);
     if (!(cl.distance <= r)) return false;
     n = cl.normal;
     if (n.x == SX_R(0.0) && n.y == SX_R(0.0)) n = fallback_normal(&sat);
@@ -840,31 +997,6 @@ static int clip_face(const sx_core *ref, int *face, const sx_core *inc, sx_real 
     return count;
 }
 
-#if SX_NARROW_SSE
-/* The lane-wise largest magnitudes of a core's points, two points a
- * register (unreduced: the caller folds the lanes once). */
-static SX_ALWAYS_INLINE __m128 sse_core_magnitudes(const sx_core *c, __m128 m) {
-    int i, n = c->count;
-    __m128 sign = _mm_set1_ps(SX_R(-0.0));
-    for (i = 0; i + 1 < n; i += 2)
-        m = _mm_max_ps(m, _mm_andnot_ps(sign, _mm_loadu_ps(&c->v[i].x)));
-    if (i < n) {
-        m = _mm_max_ps(m, _mm_andnot_ps(sign, _mm_loadl_pi(_mm_setzero_ps(),
-                                                           (const __m64 *)(const void *)&c->v[i])));
-    }
-    return m;
-}
-#else
-/* Largest coordinate magnitude of a core's points. */
-static sx_real core_scale(const sx_core *c) {
-    sx_real m = SX_R(0.0);
-    int i;
-    for (i = 0; i < c->count; ++i)
-        m = sx_maxr(m, sx_maxr(sx_magnitude(c->v[i].x), sx_magnitude(c->v[i].y)));
-    return m;
-}
-#endif
-
 /* The two argument orders of a same-type pair compute the same separations
  * up to rounding, a few ulps of the coordinates: a signed gap farther from
  * zero than this (the touch rescue margin of collide.c plus a wide rounding
@@ -873,19 +1005,7 @@ static sx_real core_scale(const sx_core *c) {
 #define SX_ORDER_ROUNDING (SX_R(1024.0) * SX_REAL_EPSILON)
 
 static bool gap_is_clear(const sx_core *a, const sx_core *b, sx_real gap) {
-#if SX_NARROW_SSE
-    /* The largest magnitude of finite values does not depend on the order
-     * it is taken in, so this is the portable loop's scale; with a NaN or
-     * an infinity in a core the two may differ, but such a core never gets
-     * a manifold point or an overlap, whatever this test says. */
-    __m128 m = sse_core_magnitudes(b, sse_core_magnitudes(a, _mm_setzero_ps()));
-    sx_real scale;
-    m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(1, 0, 3, 2)));
-    m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(2, 3, 0, 1)));
-    scale = sx_maxr(_mm_cvtss_f32(m), a->radius + b->radius);
-#else
-    sx_real scale = sx_maxr(sx_maxr(core_scale(a), core_scale(b)), a->radius + b->radius);
-#endif
+    sx_real scale = sx_maxr(core_pair_scale(a, b), a->radius + b->radius);
     return sx_magnitude(gap) > SX_ORDER_RESCUE + SX_ORDER_ROUNDING * scale;
 }
 
@@ -909,7 +1029,7 @@ static SX_ALWAYS_INLINE int core_manifold(const sx_core *a, const sx_core *b, sx
         if (clear_cut) *clear_cut = gap_is_clear(a, b, sat.sep - r);
     } else {
         sx_vec2 n;
-        closest_features(a, b, &cl);
+        closest_features(a, b, &sat, &cl);
         if (clear_cut) *clear_cut = gap_is_clear(a, b, cl.distance - r);
         if (!(cl.distance <= limit)) return 0;
         /* The exact contact of cores apart: on the line between the closest
