@@ -1423,10 +1423,15 @@ typedef struct sx_polygon_point {
  * computes it; faces past count repeat face 0 (v00, n00: its vertex and
  * normal in both halves), which cannot change a first maximum. */
 static SX_ALWAYS_INLINE __m128 sse_point_faces(const sx_vec2 *v, const sx_vec2 *nn, int count,
-                                               int i, __m128 cc, __m128 v00, __m128 n00) {
+                                               int i, __m128 cc, __m128 v00, __m128 n00,
+                                               __m128 *fold) {
     __m128 v0 = sse_vertex_pair(v, i, count, v00), v1 = sse_vertex_pair(v, i + 2, count, v00);
     __m128 m0 = sse_vertex_pair(nn, i, count, n00), m1 = sse_vertex_pair(nn, i + 2, count, n00);
     __m128 p0 = _mm_mul_ps(m0, _mm_sub_ps(cc, v0)), p1 = _mm_mul_ps(m1, _mm_sub_ps(cc, v1));
+    /* (x - x): 0 for finite x, NaN otherwise (sx_polygon_values_finite's
+     * test, on the values loaded anyway). */
+    *fold = _mm_add_ps(*fold, _mm_add_ps(_mm_add_ps(_mm_sub_ps(v0, v0), _mm_sub_ps(v1, v1)),
+                                         _mm_add_ps(_mm_sub_ps(m0, m0), _mm_sub_ps(m1, m1))));
     return _mm_add_ps(_mm_shuffle_ps(p0, p1, _MM_SHUFFLE(2, 0, 2, 0)),
                       _mm_shuffle_ps(p0, p1, _MM_SHUFFLE(3, 1, 3, 1)));
 }
@@ -1438,8 +1443,11 @@ static SX_ALWAYS_INLINE __m128 sse_lane_max(__m128 s) {
 }
 #endif
 
+/* values_finite (may be NULL): whether every vertex and normal is finite,
+ * set when the answer is 1 (sx_polygon_values_finite's answer). */
 static SX_ALWAYS_INLINE int polygon_point(const sx_vec2 *v, const sx_vec2 *nn, int count, sx_vec2 c,
-                                          sx_real limit, sx_polygon_point *out) {
+                                          sx_real limit, sx_polygon_point *out,
+                                          bool *values_finite) {
     int face = 0, i2, vertex = -1;
     sx_real best, t, dsq;
     sx_vec2 w, n, dir;
@@ -1453,15 +1461,15 @@ static SX_ALWAYS_INLINE int polygon_point(const sx_vec2 *v, const sx_vec2 *nn, i
         __m128 cc = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&c);
         __m128 v00 = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&v[0]);
         __m128 n00 = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&nn[0]);
-        __m128 s0, mx, bad;
+        __m128 s0, mx, bad, fold = _mm_setzero_ps();
         int mask;
         cc = _mm_movelh_ps(cc, cc);
         v00 = _mm_movelh_ps(v00, v00);
         n00 = _mm_movelh_ps(n00, n00);
-        s0 = sse_point_faces(v, nn, count, 0, cc, v00, n00);
+        s0 = sse_point_faces(v, nn, count, 0, cc, v00, n00, &fold);
         bad = _mm_cmpunord_ps(s0, s0);
         if (count > 4) {
-            __m128 s1 = sse_point_faces(v, nn, count, 4, cc, v00, n00);
+            __m128 s1 = sse_point_faces(v, nn, count, 4, cc, v00, n00, &fold);
             bad = _mm_or_ps(bad, _mm_cmpunord_ps(s1, s1));
             mx = sse_lane_max(_mm_max_ps(s0, s1));
             mask = _mm_movemask_ps(_mm_cmpeq_ps(s0, mx)) |
@@ -1474,6 +1482,7 @@ static SX_ALWAYS_INLINE int polygon_point(const sx_vec2 *v, const sx_vec2 *nn, i
         if (_mm_movemask_ps(bad) != 0 || !(best <= limit)) return 0;
         face = __builtin_ctz((unsigned)mask);
         best = sx_dot(nn[face], sx_sub(c, v[face]));
+        if (values_finite) *values_finite = _mm_movemask_ps(_mm_cmpunord_ps(fold, fold)) == 0;
     }
 #else
     {
@@ -1488,6 +1497,7 @@ static SX_ALWAYS_INLINE int polygon_point(const sx_vec2 *v, const sx_vec2 *nn, i
             best = s > best ? s : best;
         }
         if (bad || !(best <= limit)) return 0;
+        if (values_finite) *values_finite = sx_polygon_values_finite(v, nn, count);
     }
 #endif
     out->face = face;
@@ -1535,13 +1545,13 @@ static SX_ALWAYS_INLINE int polygon_point(const sx_vec2 *v, const sx_vec2 *nn, i
 
 int sx_core_polygon_point_overlap(const sx_polygon *a, sx_vec2 c, sx_real rb) {
     sx_polygon_point pp;
-    return polygon_point(a->vertices, a->normals, a->count, c, a->radius + rb, &pp);
+    return polygon_point(a->vertices, a->normals, a->count, c, a->radius + rb, &pp, NULL);
 }
 
 int sx_core_polygon_point_mtv(const sx_polygon *a, sx_vec2 c, sx_real rb, sx_vec2 *mtv) {
     sx_polygon_point pp;
     sx_real r = a->radius + rb;
-    int hit = polygon_point(a->vertices, a->normals, a->count, c, r, &pp);
+    int hit = polygon_point(a->vertices, a->normals, a->count, c, r, &pp, NULL);
     if (hit <= 0) {
         if (hit == 0) *mtv = sx_v2_zero();
         return hit;
@@ -1555,11 +1565,12 @@ int sx_core_polygon_point_mtv(const sx_polygon *a, sx_vec2 c, sx_real rb, sx_vec
 }
 
 static SX_ALWAYS_INLINE int polygon_point_manifold(const sx_polygon *a, sx_vec2 c, sx_real rb,
-                                                   sx_real margin, sx_manifold *out) {
+                                                   sx_real margin, sx_manifold *out,
+                                                   bool *values_finite) {
     sx_polygon_point pp;
     sx_real r = a->radius + rb;
     sx_manifold_point *p = &out->points[0];
-    int hit = polygon_point(a->vertices, a->normals, a->count, c, r + margin, &pp);
+    int hit = polygon_point(a->vertices, a->normals, a->count, c, r + margin, &pp, values_finite);
     if (hit < 0) return -1;
     out->count = 0;
     out->normal = sx_v2_zero();
@@ -1594,7 +1605,7 @@ int sx_core_segment_point_manifold(sx_vec2 a, sx_vec2 b, sx_real ra, sx_vec2 c, 
 
 int sx_core_polygon_point_manifold(const sx_polygon *a, sx_vec2 c, sx_real rb, sx_real margin,
                                    sx_manifold *out) {
-    return polygon_point_manifold(a, c, rb, margin, out);
+    return polygon_point_manifold(a, c, rb, margin, out, NULL);
 }
 
 /* ---- fused entries: a core against a circle ----------------------------- */
@@ -1603,6 +1614,7 @@ int sx_polygon_circle_collide(const sx_polygon *a, sx_xf xa, const sx_circle *b,
                               sx_real margin, sx_manifold *out) {
     sx_vec2 c;
     int local;
+    bool finite = false;
     if (a == NULL || !core_radius_ok(a->radius) || a->count < 3 ||
         a->count > SX_MAX_POLYGON_VERTICES || b == NULL) {
         memset(out, 0, sizeof(*out));
@@ -1610,12 +1622,9 @@ int sx_polygon_circle_collide(const sx_polygon *a, sx_xf xa, const sx_circle *b,
     }
     c = sx_circle_in_frame(b, xa, xb);
     if (!(sx_is_finite(margin) && margin > SX_R(0.0))) margin = SX_R(0.0);
-    local = polygon_point_manifold(a, c, b->radius, margin, out);
+    local = polygon_point_manifold(a, c, b->radius, margin, out, &finite);
     if (local < 0) return -1;
-    if (local > 0 && !(sx_circle_valid(b, xb, c) &&
-                       sx_polygon_values_finite(a->vertices, a->normals, a->count))) {
-        local = 0;
-    }
+    if (local > 0 && !(sx_circle_valid(b, xb, c) && finite)) local = 0;
     return sx_world_manifold(out, local, xa);
 }
 
