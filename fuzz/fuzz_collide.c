@@ -152,10 +152,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         }
     }
     /* The deepest point against the MTV: equal up to the reference-face
-     * hysteresis (0.1 x SX_LINEAR_SLOP) and rounding at this scale. */
+     * hysteresis (0.02 x SX_LINEAR_SLOP) and rounding at this scale. */
     if (valid && hit_ab && n0 > 0) {
         sx_real d = col_max_depth(&m0), len = sx_length(mtv_ab);
-        FZ_CHECK(sx_absr(d - len) <= SX_R(0.1) * SX_LINEAR_SLOP + col_round(scale));
+        FZ_CHECK(sx_absr(d - len) <= SX_R(0.02) * SX_LINEAR_SLOP + col_round(scale));
     }
 
     col_check_pair_function(&a, xa, &b, xb, margin);

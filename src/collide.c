@@ -315,7 +315,8 @@ static inline int collide_circles(const sx_circle *a, sx_xform xa, const sx_circ
  * written out on the registers, each lane computed as collide_circles
  * computes it; collide_circles answers the rest. */
 static int coll_circles(const sx_circle *a, sx_xf xa, const sx_circle *b, sx_xf xb, sx_real margin,
-                        sx_manifold *out) {
+                        sx_real hyst, sx_manifold *out) {
+    SX_UNUSED(hyst); /* circles have no reference face */
 #if SX_NARROW_SSE
     if (a != NULL && b != NULL) {
         __m128 z = _mm_setzero_ps();
@@ -413,15 +414,16 @@ static int builder_kind(sx_core_builder *f) {
 
 static int pair_collide_checked(sx_core_builder *fa, const void *a, sx_xform xa,
                                 sx_core_builder *fb, const void *b, sx_xform xb, sx_real margin,
-                                sx_manifold *out, bool *clear_cut) {
+                                sx_real hyst, sx_manifold *out, bool *clear_cut) {
     sx_manifold scratch;
     return sx_cores_collide(builder_kind(fa), a, sx_xf_of(&xa), builder_kind(fb), b, sx_xf_of(&xb),
-                            margin, out ? out : &scratch, clear_cut);
+                            margin, hyst, out ? out : &scratch, clear_cut);
 }
 
 static int pair_collide(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
-                        const void *b, sx_xform xb, sx_real margin, sx_manifold *out) {
-    return pair_collide_checked(fa, a, xa, fb, b, xb, margin, out, NULL);
+                        const void *b, sx_xform xb, sx_real margin, sx_real hyst,
+                        sx_manifold *out) {
+    return pair_collide_checked(fa, a, xa, fb, b, xb, margin, hyst, out, NULL);
 }
 
 /* A core against a circle B (segment, capsule or polygon first): B's centre
@@ -567,10 +569,10 @@ static bool pair_mtv_sym(sx_core_builder *f, const void *a, sx_xform xa, const v
  * margin; the canonical order, which decided the overlap, is then the other
  * one, so its manifold, mirrored, is the answer. */
 static int collide_rescue(sx_core_builder *f, const void *a, sx_xform xa, const void *b,
-                          sx_xform xb, sx_manifold *m) {
-    int count = pair_collide(f, a, xa, f, b, xb, SX_TOUCH_RESCUE_MARGIN, m), i;
+                          sx_xform xb, sx_real hyst, sx_manifold *m) {
+    int count = pair_collide(f, a, xa, f, b, xb, SX_TOUCH_RESCUE_MARGIN, hyst, m), i;
     if (count == 0) {
-        count = pair_collide(f, b, xb, f, a, xa, SX_TOUCH_RESCUE_MARGIN, m);
+        count = pair_collide(f, b, xb, f, a, xa, SX_TOUCH_RESCUE_MARGIN, hyst, m);
         if (count > 0) mirror_manifold(m);
     }
     for (i = 0; i < count; ++i)
@@ -596,18 +598,18 @@ typedef bool sx_sym_overlap(const void *a, sx_xform xa, const void *b, sx_xform 
  * the triangle's origin: this order saw a vertex 1 cm off, rounding, the
  * other order the edge with two points). */
 static int collide_gated(sx_core_builder *f, const void *a, sx_xform xa, const void *b, sx_xform xb,
-                         sx_real margin, sx_sym_overlap *overlap, sx_manifold *out) {
+                         sx_real margin, sx_real hyst, sx_sym_overlap *overlap, sx_manifold *out) {
     sx_manifold m;
     int count;
     if (sx_is_finite(margin) && margin > SX_R(0.0)) {
         int rescued;
         bool clear_cut = false;
-        count = pair_collide_checked(f, a, xa, f, b, xb, margin, out, &clear_cut);
+        count = pair_collide_checked(f, a, xa, f, b, xb, margin, hyst, out, &clear_cut);
         if (count == 2 || (margin >= SX_TOUCH_RESCUE_MARGIN && clear_cut) ||
             !overlap(a, xa, b, xb)) {
             return count;
         }
-        rescued = collide_rescue(f, a, xa, b, xb, &m);
+        rescued = collide_rescue(f, a, xa, b, xb, hyst, &m);
         if (rescued <= count) return count;
         if (out) *out = m;
         return rescued;
@@ -616,8 +618,8 @@ static int collide_gated(sx_core_builder *f, const void *a, sx_xform xa, const v
         clear_manifold(out);
         return 0;
     }
-    count = pair_collide(f, a, xa, f, b, xb, SX_R(0.0), &m);
-    if (count == 0) count = collide_rescue(f, a, xa, b, xb, &m);
+    count = pair_collide(f, a, xa, f, b, xb, SX_R(0.0), hyst, &m);
+    if (count == 0) count = collide_rescue(f, a, xa, b, xb, hyst, &m);
     if (out) *out = m;
     return count;
 }
@@ -634,14 +636,16 @@ bool sx_mtv_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b,
     return segment_point_mtv(a->a, a->b, SX_R(0.0), build_segment, a, xa, b, xb, mtv);
 }
 static int coll_segment_circle(const sx_segment *a, sx_xf xa, const sx_circle *b, sx_xf xb,
-                               sx_real margin, sx_manifold *out) {
+                               sx_real margin, sx_real hyst, sx_manifold *out) {
+    SX_UNUSED(hyst); /* circles have no reference face */
     if (a == NULL) return point_collide_xf(build_segment, a, xa, b, xb, margin, out);
     return segment_point_collide(a->a, a->b, SX_R(0.0), build_segment, a, xa, b, xb, margin, out);
 }
 int sx_collide_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return coll_segment_circle(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, out ? out : &scratch);
+    return coll_segment_circle(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
+                               out ? out : &scratch);
 }
 
 /* ---- segment - segment -------------------------------------------------- */
@@ -670,15 +674,15 @@ bool sx_mtv_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_x
 /* sx_collide_segments past the fused manifold: a pair that is not clear-cut,
  * or a speculative call (margin > 0). */
 SX_NOINLINE static int collide_segments_gated(const sx_segment *a, sx_xf ta, const sx_segment *b,
-                                              sx_xf tb, sx_real margin, int count, bool touch_test,
-                                              sx_manifold *out) {
+                                              sx_xf tb, sx_real margin, sx_real hyst, int count,
+                                              bool touch_test, sx_manifold *out) {
     sx_xform xa = sx_xform_of_xf(ta), xb = sx_xform_of_xf(tb);
     if (touch_test && order_segments(a, xa, b, xb) <= 0) return count;
-    return collide_gated(build_segment, a, xa, b, xb, margin, overlap_segments_any, out);
+    return collide_gated(build_segment, a, xa, b, xb, margin, hyst, overlap_segments_any, out);
 }
 
 static int coll_segments(const sx_segment *a, sx_xf xa, const sx_segment *b, sx_xf xb,
-                         sx_real margin, sx_manifold *out) {
+                         sx_real margin, sx_real hyst, sx_manifold *out) {
     bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
     int count = 0;
     /* In the canonical order the manifold at margin 0 makes exactly the
@@ -689,16 +693,17 @@ static int coll_segments(const sx_segment *a, sx_xf xa, const sx_segment *b, sx_
      * toss that mispredicts half the time. */
     if (touch_test) {
         bool clear_cut = false;
-        count = sx_cores_collide(SX_SHAPE_SEGMENT, a, xa, SX_SHAPE_SEGMENT, b, xb, SX_R(0.0), out,
-                                 &clear_cut);
+        count = sx_cores_collide(SX_SHAPE_SEGMENT, a, xa, SX_SHAPE_SEGMENT, b, xb, SX_R(0.0), hyst,
+                                 out, &clear_cut);
         if (clear_cut) return count;
     }
-    return collide_segments_gated(a, xa, b, xb, margin, count, touch_test, out);
+    return collide_segments_gated(a, xa, b, xb, margin, hyst, count, touch_test, out);
 }
 int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return coll_segments(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, out ? out : &scratch);
+    return coll_segments(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
+                         out ? out : &scratch);
 }
 
 /* ---- capsule - circle / segment / capsule ------------------------------- */
@@ -713,14 +718,16 @@ bool sx_mtv_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b,
     return segment_point_mtv(a->a, a->b, a->radius, build_capsule, a, xa, b, xb, mtv);
 }
 static int coll_capsule_circle(const sx_capsule *a, sx_xf xa, const sx_circle *b, sx_xf xb,
-                               sx_real margin, sx_manifold *out) {
+                               sx_real margin, sx_real hyst, sx_manifold *out) {
+    SX_UNUSED(hyst); /* circles have no reference face */
     if (!capsule_radius_ok(a)) return point_collide_xf(build_capsule, a, xa, b, xb, margin, out);
     return segment_point_collide(a->a, a->b, a->radius, build_capsule, a, xa, b, xb, margin, out);
 }
 int sx_collide_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return coll_capsule_circle(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, out ? out : &scratch);
+    return coll_capsule_circle(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
+                               out ? out : &scratch);
 }
 
 bool sx_overlap_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b,
@@ -732,13 +739,15 @@ bool sx_mtv_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *
     return pair_mtv(build_capsule, a, xa, build_segment, b, xb, mtv);
 }
 static int coll_capsule_segment(const sx_capsule *a, sx_xf xa, const sx_segment *b, sx_xf xb,
-                                sx_real margin, sx_manifold *out) {
-    return sx_cores_collide(SX_SHAPE_CAPSULE, a, xa, SX_SHAPE_SEGMENT, b, xb, margin, out, NULL);
+                                sx_real margin, sx_real hyst, sx_manifold *out) {
+    return sx_cores_collide(SX_SHAPE_CAPSULE, a, xa, SX_SHAPE_SEGMENT, b, xb, margin, hyst, out,
+                            NULL);
 }
 int sx_collide_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                                sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return coll_capsule_segment(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, out ? out : &scratch);
+    return coll_capsule_segment(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
+                                out ? out : &scratch);
 }
 
 static int order_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb) {
@@ -771,15 +780,15 @@ bool sx_mtv_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_x
 /* sx_collide_capsules past the fused manifold: a pair that is not clear-cut,
  * or a speculative call (margin > 0). */
 SX_NOINLINE static int collide_capsules_gated(const sx_capsule *a, sx_xf ta, const sx_capsule *b,
-                                              sx_xf tb, sx_real margin, int count, bool touch_test,
-                                              sx_manifold *out) {
+                                              sx_xf tb, sx_real margin, sx_real hyst, int count,
+                                              bool touch_test, sx_manifold *out) {
     sx_xform xa = sx_xform_of_xf(ta), xb = sx_xform_of_xf(tb);
     if (touch_test && order_capsules(a, xa, b, xb) <= 0) return count;
-    return collide_gated(build_capsule, a, xa, b, xb, margin, overlap_capsules_any, out);
+    return collide_gated(build_capsule, a, xa, b, xb, margin, hyst, overlap_capsules_any, out);
 }
 
 static int coll_capsules(const sx_capsule *a, sx_xf xa, const sx_capsule *b, sx_xf xb,
-                         sx_real margin, sx_manifold *out) {
+                         sx_real margin, sx_real hyst, sx_manifold *out) {
     bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
     int count = 0;
     /* In the canonical order the manifold at margin 0 makes exactly the
@@ -790,16 +799,17 @@ static int coll_capsules(const sx_capsule *a, sx_xf xa, const sx_capsule *b, sx_
      * toss that mispredicts half the time. */
     if (touch_test) {
         bool clear_cut = false;
-        count = sx_cores_collide(SX_SHAPE_CAPSULE, a, xa, SX_SHAPE_CAPSULE, b, xb, SX_R(0.0), out,
-                                 &clear_cut);
+        count = sx_cores_collide(SX_SHAPE_CAPSULE, a, xa, SX_SHAPE_CAPSULE, b, xb, SX_R(0.0), hyst,
+                                 out, &clear_cut);
         if (clear_cut) return count;
     }
-    return collide_capsules_gated(a, xa, b, xb, margin, count, touch_test, out);
+    return collide_capsules_gated(a, xa, b, xb, margin, hyst, count, touch_test, out);
 }
 int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return coll_capsules(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, out ? out : &scratch);
+    return coll_capsules(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
+                         out ? out : &scratch);
 }
 
 /* ---- polygon - circle / segment / capsule ------------------------------- */
@@ -847,7 +857,8 @@ bool sx_mtv_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b,
     return polygon_point_mtv(a, xa, b, xb, mtv);
 }
 static int coll_polygon_circle(const sx_polygon *a, sx_xf xa, const sx_circle *b, sx_xf xb,
-                               sx_real margin, sx_manifold *out) {
+                               sx_real margin, sx_real hyst, sx_manifold *out) {
+    SX_UNUSED(hyst); /* circles have no reference face */
     int count = sx_polygon_circle_collide(a, xa, b, xb, margin, out);
     if (count < 0) return point_collide_xf(build_polygon, a, xa, b, xb, margin, out);
     return count;
@@ -855,7 +866,8 @@ static int coll_polygon_circle(const sx_polygon *a, sx_xf xa, const sx_circle *b
 int sx_collide_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return coll_polygon_circle(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, out ? out : &scratch);
+    return coll_polygon_circle(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
+                               out ? out : &scratch);
 }
 
 bool sx_overlap_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b,
@@ -867,13 +879,15 @@ bool sx_mtv_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *
     return pair_mtv(build_polygon, a, xa, build_segment, b, xb, mtv);
 }
 static int coll_polygon_segment(const sx_polygon *a, sx_xf xa, const sx_segment *b, sx_xf xb,
-                                sx_real margin, sx_manifold *out) {
-    return sx_cores_collide(SX_SHAPE_POLYGON, a, xa, SX_SHAPE_SEGMENT, b, xb, margin, out, NULL);
+                                sx_real margin, sx_real hyst, sx_manifold *out) {
+    return sx_cores_collide(SX_SHAPE_POLYGON, a, xa, SX_SHAPE_SEGMENT, b, xb, margin, hyst, out,
+                            NULL);
 }
 int sx_collide_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                                sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return coll_polygon_segment(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, out ? out : &scratch);
+    return coll_polygon_segment(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
+                                out ? out : &scratch);
 }
 
 bool sx_overlap_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b,
@@ -885,13 +899,15 @@ bool sx_mtv_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *
     return pair_mtv(build_polygon, a, xa, build_capsule, b, xb, mtv);
 }
 static int coll_polygon_capsule(const sx_polygon *a, sx_xf xa, const sx_capsule *b, sx_xf xb,
-                                sx_real margin, sx_manifold *out) {
-    return sx_cores_collide(SX_SHAPE_POLYGON, a, xa, SX_SHAPE_CAPSULE, b, xb, margin, out, NULL);
+                                sx_real margin, sx_real hyst, sx_manifold *out) {
+    return sx_cores_collide(SX_SHAPE_POLYGON, a, xa, SX_SHAPE_CAPSULE, b, xb, margin, hyst, out,
+                            NULL);
 }
 int sx_collide_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                                sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return coll_polygon_capsule(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, out ? out : &scratch);
+    return coll_polygon_capsule(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
+                                out ? out : &scratch);
 }
 
 /* ---- polygon - polygon -------------------------------------------------- */
@@ -1030,31 +1046,32 @@ bool sx_mtv_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_x
 /* sx_collide_polygons past the fused manifold: a pair that is not
  * clear-cut, or a speculative call (margin > 0). */
 SX_NOINLINE static int collide_polygons_gated(const sx_polygon *a, sx_xf ta, const sx_polygon *b,
-                                              sx_xf tb, sx_real margin, int count, bool touch_test,
-                                              sx_manifold *out) {
+                                              sx_xf tb, sx_real margin, sx_real hyst, int count,
+                                              bool touch_test, sx_manifold *out) {
     sx_xform xa = sx_xform_of_xf(ta), xb = sx_xform_of_xf(tb);
     if (touch_test && order_polygons(a, xa, b, xb) <= 0 && !box_pair_aligned(a, xa, b, xb))
         return count;
-    return collide_gated(build_polygon, a, xa, b, xb, margin, overlap_polygons_any, out);
+    return collide_gated(build_polygon, a, xa, b, xb, margin, hyst, overlap_polygons_any, out);
 }
 
 static int coll_polygons(const sx_polygon *a, sx_xf xa, const sx_polygon *b, sx_xf xb,
-                         sx_real margin, sx_manifold *out) {
+                         sx_real margin, sx_real hyst, sx_manifold *out) {
     bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
     int count = 0;
     /* As in coll_segments. */
     if (touch_test) {
         bool clear_cut = false;
-        count = sx_cores_collide(SX_SHAPE_POLYGON, a, xa, SX_SHAPE_POLYGON, b, xb, SX_R(0.0), out,
-                                 &clear_cut);
+        count = sx_cores_collide(SX_SHAPE_POLYGON, a, xa, SX_SHAPE_POLYGON, b, xb, SX_R(0.0), hyst,
+                                 out, &clear_cut);
         if (clear_cut) return count;
     }
-    return collide_polygons_gated(a, xa, b, xb, margin, count, touch_test, out);
+    return collide_polygons_gated(a, xa, b, xb, margin, hyst, count, touch_test, out);
 }
 int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return coll_polygons(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, out ? out : &scratch);
+    return coll_polygons(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
+                         out ? out : &scratch);
 }
 
 /* ---- the dispatch table ------------------------------------------------- */
@@ -1065,7 +1082,7 @@ typedef bool sx_mtv_entry(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_
 /* Manifold entries take the transforms in registers (sx_xf) and an out
  * that is not NULL. */
 typedef int sx_collide_entry(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
-                             sx_real margin, sx_manifold *out);
+                             sx_real margin, sx_real hyst, sx_manifold *out);
 
 typedef struct sx_pair_entry {
     sx_overlap_entry *overlap;
@@ -1086,8 +1103,8 @@ typedef struct sx_pair_entry {
         return sx_mtv_##NAME(&a->u.MA, xa, &b->u.MB, xb, mtv);                                     \
     }                                                                                              \
     static int col_##NAME(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,                \
-                          sx_real margin, sx_manifold *out) {                                      \
-        return coll_##NAME(&a->u.MA, xa, &b->u.MB, xb, margin, out);                               \
+                          sx_real margin, sx_real hyst, sx_manifold *out) {                        \
+        return coll_##NAME(&a->u.MA, xa, &b->u.MB, xb, margin, hyst, out);                         \
     }                                                                                              \
     static bool ov_##NAME##_rev(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {  \
         return sx_overlap_##NAME(&b->u.MA, xb, &a->u.MB, xa);                                      \
@@ -1100,8 +1117,8 @@ typedef struct sx_pair_entry {
         return hit;                                                                                \
     }                                                                                              \
     static int col_##NAME##_rev(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,          \
-                                sx_real margin, sx_manifold *out) {                                \
-        coll_##NAME(&b->u.MA, xb, &a->u.MB, xa, margin, out);                                      \
+                                sx_real margin, sx_real hyst, sx_manifold *out) {                  \
+        coll_##NAME(&b->u.MA, xb, &a->u.MB, xa, margin, hyst, out);                                \
         mirror_manifold(out);                                                                      \
         return out->count;                                                                         \
     }
@@ -1125,8 +1142,8 @@ static bool mtv_circles(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xf
     return sx_mtv_circles(&a->u.circle, xa, &b->u.circle, xb, mtv);
 }
 static int col_circles(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb, sx_real margin,
-                       sx_manifold *out) {
-    return coll_circles(&a->u.circle, xa, &b->u.circle, xb, margin, out);
+                       sx_real hyst, sx_manifold *out) {
+    return coll_circles(&a->u.circle, xa, &b->u.circle, xb, margin, hyst, out);
 }
 static bool ov_segments(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
     return sx_overlap_segments(&a->u.segment, xa, &b->u.segment, xb);
@@ -1136,8 +1153,8 @@ static bool mtv_segments(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_x
     return sx_mtv_segments(&a->u.segment, xa, &b->u.segment, xb, mtv);
 }
 static int col_segments(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb, sx_real margin,
-                        sx_manifold *out) {
-    return coll_segments(&a->u.segment, xa, &b->u.segment, xb, margin, out);
+                        sx_real hyst, sx_manifold *out) {
+    return coll_segments(&a->u.segment, xa, &b->u.segment, xb, margin, hyst, out);
 }
 static bool ov_capsules(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
     return sx_overlap_capsules(&a->u.capsule, xa, &b->u.capsule, xb);
@@ -1147,8 +1164,8 @@ static bool mtv_capsules(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_x
     return sx_mtv_capsules(&a->u.capsule, xa, &b->u.capsule, xb, mtv);
 }
 static int col_capsules(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb, sx_real margin,
-                        sx_manifold *out) {
-    return coll_capsules(&a->u.capsule, xa, &b->u.capsule, xb, margin, out);
+                        sx_real hyst, sx_manifold *out) {
+    return coll_capsules(&a->u.capsule, xa, &b->u.capsule, xb, margin, hyst, out);
 }
 static bool ov_polygons(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
     return sx_overlap_polygons(&a->u.polygon, xa, &b->u.polygon, xb);
@@ -1158,8 +1175,8 @@ static bool mtv_polygons(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_x
     return sx_mtv_polygons(&a->u.polygon, xa, &b->u.polygon, xb, mtv);
 }
 static int col_polygons(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb, sx_real margin,
-                        sx_manifold *out) {
-    return coll_polygons(&a->u.polygon, xa, &b->u.polygon, xb, margin, out);
+                        sx_real hyst, sx_manifold *out) {
+    return coll_polygons(&a->u.polygon, xa, &b->u.polygon, xb, margin, hyst, out);
 }
 
 static const sx_pair_entry sx_pair_table[SX_SHAPE_TYPE_COUNT][SX_SHAPE_TYPE_COUNT] = {
@@ -1213,21 +1230,26 @@ bool sx_mtv(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_v
 /* Both manifold entry points dispatch here directly (one call layer less
  * for the cheap pairs). */
 static inline int collide_dispatch(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                                   sx_real margin, sx_manifold *out) {
+                                   sx_real margin, sx_real hyst, sx_manifold *out) {
     const sx_pair_entry *e = pair_entry(a, b);
     sx_manifold scratch;
     if (e == NULL) {
         clear_manifold(out);
         return 0;
     }
-    return e->collide(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, out ? out : &scratch);
+    return e->collide(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, hyst, out ? out : &scratch);
 }
 
 int sx_collide_ex(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_real margin,
                   sx_manifold *out) {
-    return collide_dispatch(a, xa, b, xb, margin, out);
+    return collide_dispatch(a, xa, b, xb, margin, SX_REFERENCE_HYSTERESIS, out);
 }
 
 int sx_collide(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_manifold *out) {
-    return collide_dispatch(a, xa, b, xb, SX_R(0.0), out);
+    return collide_dispatch(a, xa, b, xb, SX_R(0.0), SX_REFERENCE_HYSTERESIS, out);
+}
+
+int sx_collide_world(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_real margin,
+                     sx_manifold *out) {
+    return collide_dispatch(a, xa, b, xb, margin, SX_WORLD_REFERENCE_HYSTERESIS, out);
 }

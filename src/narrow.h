@@ -26,6 +26,16 @@
 #define SX_NARROW_SSE 0
 #endif
 
+/* Reference-face hysteresis (see collide.h): B's face becomes the reference
+ * only when its separation beats A's by more than this. sx_collide and the
+ * pair functions, which know nothing of earlier frames, keep it small, so
+ * that the depth they report is within it of the least penetration; the
+ * world, which asks again every step, takes Box2D's 0.1 x the slop so that
+ * a contact between two nearly equal faces does not change faces (and
+ * feature ids) from step to step. */
+#define SX_REFERENCE_HYSTERESIS (SX_R(0.02) * SX_LINEAR_SLOP)
+#define SX_WORLD_REFERENCE_HYSTERESIS (SX_R(0.1) * SX_LINEAR_SLOP)
+
 /* Coordinate differences down to this magnitude have squares that keep
  * full precision (d.x^2 stays above the smallest normal real over epsilon);
  * below it squared distances underflow and need scaling first. */
@@ -300,6 +310,11 @@ static inline int sx_world_manifold(sx_manifold *m, int count, sx_xf xa) {
 #endif
 }
 
+/* sx_collide_ex with the world's reference-face hysteresis
+ * (SX_WORLD_REFERENCE_HYSTERESIS): what the world's contacts use. */
+int sx_collide_world(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_real margin,
+                     sx_manifold *out);
+
 /* ---- fused pair functions (narrow_core.c) ------------------------------- */
 
 /* The manifold of a and b (kinds ka, kb: SX_SHAPE_SEGMENT, CAPSULE or
@@ -310,7 +325,7 @@ static inline int sx_world_manifold(sx_manifold *m, int count, sx_xf xa) {
  * zeroed *out. out is not NULL; clear_cut as sx_core_manifold's, false
  * when overflow in world space lost the points. */
 int sx_cores_collide(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_xf xb,
-                     sx_real margin, sx_manifold *out, bool *clear_cut);
+                     sx_real margin, sx_real hysteresis, sx_manifold *out, bool *clear_cut);
 
 /* sx_collide for a polygon A against a circle B placed by *xa and *xb, in
  * one function: -1 (and *out unusable) where the general route must answer

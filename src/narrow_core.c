@@ -20,11 +20,6 @@
  * point whenever clipping would report less than the exact depth. */
 #include "narrow.h"
 
-/* B's face becomes the reference only when its separation beats A's by this
- * much (Box2D's choice): two nearly equal faces then do not make the
- * manifold flip from frame to frame. Part of the public contract. */
-#define SX_REFERENCE_HYSTERESIS (SX_R(0.1) * SX_LINEAR_SLOP)
-
 /* Disjoint rounded cores whose distance exceeds their best face separation
  * by no more than this are treated as a face contact (clipped, up to two
  * points) rather than a vertex contact. Aligned edges (a box resting exactly
@@ -1010,7 +1005,7 @@ static bool gap_is_clear(const sx_core *a, const sx_core *b, sx_real gap) {
 }
 
 static SX_ALWAYS_INLINE int core_manifold(const sx_core *a, const sx_core *b, sx_real margin,
-                                          sx_manifold *out, bool *clear_cut) {
+                                          sx_real hysteresis, sx_manifold *out, bool *clear_cut) {
     sx_real r = a->radius + b->radius;
     sx_real limit = r + margin;
     sx_sat sat;
@@ -1052,7 +1047,7 @@ static SX_ALWAYS_INLINE int core_manifold(const sx_core *a, const sx_core *b, sx
             return 1;
         }
     }
-    if (sat.face_b >= 0 && (sat.face_a < 0 || sat.sep_b > sat.sep_a + SX_REFERENCE_HYSTERESIS)) {
+    if (sat.face_b >= 0 && (sat.face_a < 0 || sat.sep_b > sat.sep_a + hysteresis)) {
         int f = sat.face_b;
         out->count = clip_face(b, &f, a, margin, true, exact, out->points);
         out->normal = sx_neg(b->n[f]);
@@ -1066,7 +1061,7 @@ static SX_ALWAYS_INLINE int core_manifold(const sx_core *a, const sx_core *b, sx
 
 int sx_core_manifold(const sx_core *a, const sx_core *b, sx_real margin, sx_manifold *out,
                      bool *clear_cut) {
-    return core_manifold(a, b, margin, out, clear_cut);
+    return core_manifold(a, b, margin, SX_REFERENCE_HYSTERESIS, out, clear_cut);
 }
 
 /* The core of a segment, capsule or polygon (kind: its sx_shape_type),
@@ -1084,8 +1079,8 @@ static SX_ALWAYS_INLINE bool core_of(int kind, const void *shape, const sx_xform
  * memory that registers can hold. Specialised for each pair of kinds by
  * sx_cores_collide. */
 static SX_ALWAYS_INLINE int cores_collide(int ka, const void *a, sx_xf xa, int kb, const void *b,
-                                          sx_xf xb, sx_real margin, sx_manifold *out,
-                                          bool *clear_cut) {
+                                          sx_xf xb, sx_real margin, sx_real hysteresis,
+                                          sx_manifold *out, bool *clear_cut) {
     sx_core ca, cb;
     int local, count;
     bool ok;
@@ -1118,7 +1113,7 @@ static SX_ALWAYS_INLINE int cores_collide(int ka, const void *a, sx_xf xa, int k
         return 0;
     }
     if (!(sx_is_finite(margin) && margin > SX_R(0.0))) margin = SX_R(0.0);
-    local = core_manifold(&ca, &cb, margin, out, clear_cut);
+    local = core_manifold(&ca, &cb, margin, hysteresis, out, clear_cut);
     if (local > 0 && !(sx_core_values_finite(&ca) && sx_core_values_finite(&cb))) local = 0;
     count = sx_world_manifold(out, local, xa);
     if (clear_cut && count != local) *clear_cut = false;
@@ -1126,9 +1121,10 @@ static SX_ALWAYS_INLINE int cores_collide(int ka, const void *a, sx_xf xa, int k
 }
 
 int sx_cores_collide(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_xf xb,
-                     sx_real margin, sx_manifold *out, bool *clear_cut) {
+                     sx_real margin, sx_real hysteresis, sx_manifold *out, bool *clear_cut) {
 #define SX_CORES_CASE(KA, KB)                                                                      \
-    if (ka == KA && kb == KB) return cores_collide(KA, a, xa, KB, b, xb, margin, out, clear_cut)
+    if (ka == KA && kb == KB)                                                                      \
+    return cores_collide(KA, a, xa, KB, b, xb, margin, hysteresis, out, clear_cut)
     SX_CORES_CASE(SX_SHAPE_POLYGON, SX_SHAPE_POLYGON);
     SX_CORES_CASE(SX_SHAPE_POLYGON, SX_SHAPE_SEGMENT);
     SX_CORES_CASE(SX_SHAPE_POLYGON, SX_SHAPE_CAPSULE);
@@ -1136,7 +1132,7 @@ int sx_cores_collide(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_
     SX_CORES_CASE(SX_SHAPE_CAPSULE, SX_SHAPE_CAPSULE);
     SX_CORES_CASE(SX_SHAPE_SEGMENT, SX_SHAPE_SEGMENT);
 #undef SX_CORES_CASE
-    return cores_collide(ka, a, xa, kb, b, xb, margin, out, clear_cut);
+    return cores_collide(ka, a, xa, kb, b, xb, margin, hysteresis, out, clear_cut);
 }
 
 /* ---- a core against a point --------------------------------------------- */

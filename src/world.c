@@ -12,6 +12,7 @@
  * Buffers only grow; a warmed-up world allocates nothing per step. */
 #include <stdlib.h>
 
+#include "narrow.h"
 #include "world_internal.h"
 
 sx_world_def sx_default_world_def(void) {
@@ -624,8 +625,8 @@ static sx_status sx_collide_parts(sx_world *world, uint64_t key, int old_begin, 
             sx_manifold m;
             sx_status s;
             if (!sx_aabb_overlaps(boxes_a[i], boxes_b[j])) continue;
-            if (sx_collide_ex(&va.parts[i].shape, xi, &vb.parts[j].shape,
-                              sx_xform_mul(xb, vb.parts[j].offset), world->margin, &m) <= 0) {
+            if (sx_collide_world(&va.parts[i].shape, xi, &vb.parts[j].shape,
+                                 sx_xform_mul(xb, vb.parts[j].offset), world->margin, &m) <= 0) {
                 continue;
             }
             s = sx_add_contact(world, key, i, j, &m, old_begin, old_end);
@@ -686,8 +687,8 @@ sx_status sx_world_collide(sx_world *world) {
             if (s != SX_OK) return s;
             continue;
         }
-        n = sx_collide_ex(&ca->shape, world->sims[ca->body].xf, &cb->shape,
-                          world->sims[cb->body].xf, world->margin, &m);
+        n = sx_collide_world(&ca->shape, world->sims[ca->body].xf, &cb->shape,
+                             world->sims[cb->body].xf, world->margin, &m);
         if (n <= 0) continue;
         s = sx_add_contact(world, key, 0, 0, &m, old_begin, old_index);
         if (s != SX_OK) return s;

@@ -22,7 +22,7 @@
 /* pi in double: angles are passed to X() as doubles. */
 #define PI 3.14159265358979323846
 
-#define HYSTERESIS (0.1 * (double)SX_LINEAR_SLOP)
+#define HYSTERESIS (0.02 * (double)SX_LINEAR_SLOP)
 
 static sx_vec2 V(double x, double y) { return sx_v2((sx_real)x, (sx_real)y); }
 static sx_xform X(double x, double y, double angle) {
@@ -1009,16 +1009,29 @@ static void reference_face_does_not_flip_between_nearly_equal_faces(void **state
     assert_int_equal(sx_collide(&a, I(), &b, X(1.9, 0.5, 0), &m), 2);
     assert_int_equal(m.points[0].id >> 16, 0);
     assert_int_equal(m.points[1].id >> 16, 0);
-    /* B turned by t: B's face beats A's by about t / 2. With t = 5e-4 that
-     * is half the hysteresis: still A's face. */
-    assert_true(sx_collide(&a, I(), &b, X(1.9, 0.5, 5e-4), &m) >= 1);
+    /* B turned by t: B's face beats A's by about t / 2. With t = 1e-4 that
+     * is half of sx_collide's hysteresis (0.02 x the slop, 1e-4 m): still
+     * A's face. */
+    assert_true(sx_collide(&a, I(), &b, X(1.9, 0.5, 1e-4), &m) >= 1);
     assert_int_equal(m.points[0].id >> 16, 0);
     assert_vec2_near(m.normal, V(1, 0), TOL);
-    /* With t = 0.2 B's face is clearly better and becomes the reference;
-     * the normal still points from A to B, along B's face normal. */
+    /* With t = 5e-4 B's face is better by 2.5e-4 m, beyond sx_collide's
+     * hysteresis: B's face is the reference, and the depth is the least
+     * penetration's. The world's hysteresis (0.1 x the slop, 5e-4 m) still
+     * keeps A's face there, so that a contact in a stack does not change
+     * faces from step to step. */
+    assert_true(sx_collide(&a, I(), &b, X(1.9, 0.5, 5e-4), &m) >= 1);
+    assert_int_equal(m.points[0].id >> 16, 1);
+    assert_true(sx_collide_world(&a, I(), &b, X(1.9, 0.5, 5e-4), SX_R(0.0), &m) >= 1);
+    assert_int_equal(m.points[0].id >> 16, 0);
+    assert_vec2_near(m.normal, V(1, 0), TOL);
+    /* With t = 0.2 B's face is clearly better and becomes the reference
+     * for both; the normal still points from A to B, along B's face normal. */
     assert_true(sx_collide(&a, I(), &b, X(1.9, 0.5, 0.2), &m) >= 1);
     assert_int_equal(m.points[0].id >> 16, 1);
     assert_vec2_near(m.normal, V(cos(0.2), sin(0.2)), 1e-4);
+    assert_true(sx_collide_world(&a, I(), &b, X(1.9, 0.5, 0.2), SX_R(0.0), &m) >= 1);
+    assert_int_equal(m.points[0].id >> 16, 1);
 }
 
 /* Checks a manifold of inputs beyond SX_HUGE: 0 points and a zero normal, or
