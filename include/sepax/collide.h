@@ -89,9 +89,14 @@ bool sx_mtv(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_v
  *  unit, from A to B; each point carries its depth (>= 0 here) and a feature
  *  id stable across frames. For polygon faces the reference face is the one
  *  of least penetration, with hysteresis: B's face is preferred over A's only
- *  when it is better by more than 0.1 x SX_LINEAR_SLOP, so the manifold does
- *  not flip between two near-equal faces. The deepest point's depth equals
- *  the MTV's length up to that hysteresis. Swapped arguments give the
+ *  when it is better by more than 0.02 x SX_LINEAR_SLOP (1e-4 m), so the
+ *  manifold does not flip between two faces equal up to rounding. The
+ *  deepest point's depth equals the MTV's length up to that hysteresis. (A
+ *  world's contacts use 0.1 x SX_LINEAR_SLOP, Box2D's value: asked every
+ *  step, a contact between two nearly equal faces then keeps its face and
+ *  feature ids.) For rounded shapes whose cores are apart, a face normal
+ *  within 0.01 x SX_LINEAR_SLOP of the exact direction's gap stands in for
+ *  it (the points keep their exact depths). Swapped arguments give the
  *  mirrored manifold (same points and depths, normal negated, flipped bit of
  *  each id toggled): exactly so for two different types; two shapes of the
  *  same type are solved in the caller's order (A's face wins near-ties), and
