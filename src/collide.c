@@ -511,21 +511,15 @@ SX_NOINLINE static bool segment_point_mtv(sx_vec2 a0, sx_vec2 a1, sx_real ra, sx
     return finish_mtv(hit, local, xa, mtv);
 }
 
-/* The general route after the fused one handed the pair back; the
- * transforms arrive as registers and are rebuilt here, so that the hot
+/* The general route after the fused one handed the pair back (narrow.h);
+ * the transforms arrive as registers and are rebuilt here, so that the hot
  * caller holds them only in registers (see sx_xf). */
-SX_NOINLINE static int point_collide_xf(sx_core_builder *fa, const void *a, sx_xf xa,
-                                        const sx_circle *b, sx_xf xb, sx_real margin,
-                                        sx_manifold *out) {
+SX_NOINLINE int sx_point_collide_general(int kind, const void *a, sx_xf xa, const sx_circle *b,
+                                         sx_xf xb, sx_real margin, sx_manifold *out) {
+    sx_core_builder *fa = kind == SX_SHAPE_POLYGON   ? build_polygon
+                          : kind == SX_SHAPE_CAPSULE ? build_capsule
+                                                     : build_segment;
     return point_collide(fa, a, sx_xform_of_xf(xa), b, sx_xform_of_xf(xb), margin, out);
-}
-
-static int segment_point_collide(sx_vec2 a0, sx_vec2 a1, sx_real ra, sx_core_builder *fa,
-                                 const void *a, sx_xf xa, const sx_circle *b, sx_xf xb,
-                                 sx_real margin, sx_manifold *out) {
-    int count = sx_segment_circle_collide(a0, a1, ra, xa, b, xb, margin, out);
-    if (count < 0) return point_collide_xf(fa, a, xa, b, xb, margin, out);
-    return count;
 }
 
 /* A capsule's radius as its builder accepts it. */
@@ -635,17 +629,11 @@ bool sx_mtv_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b,
     if (a == NULL) return point_mtv(build_segment, a, xa, b, xb, mtv);
     return segment_point_mtv(a->a, a->b, SX_R(0.0), build_segment, a, xa, b, xb, mtv);
 }
-static int coll_segment_circle(const sx_segment *a, sx_xf xa, const sx_circle *b, sx_xf xb,
-                               sx_real margin, sx_real hyst, sx_manifold *out) {
-    SX_UNUSED(hyst); /* circles have no reference face */
-    if (a == NULL) return point_collide_xf(build_segment, a, xa, b, xb, margin, out);
-    return segment_point_collide(a->a, a->b, SX_R(0.0), build_segment, a, xa, b, xb, margin, out);
-}
 int sx_collide_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return coll_segment_circle(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
-                               out ? out : &scratch);
+    return sx_coll_segment_circle(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                  SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 /* ---- segment - segment -------------------------------------------------- */
@@ -673,37 +661,19 @@ bool sx_mtv_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_x
 }
 /* sx_collide_segments past the fused manifold: a pair that is not clear-cut,
  * or a speculative call (margin > 0). */
-SX_NOINLINE static int collide_segments_gated(const sx_segment *a, sx_xf ta, const sx_segment *b,
-                                              sx_xf tb, sx_real margin, sx_real hyst, int count,
-                                              bool touch_test, sx_manifold *out) {
+SX_NOINLINE int sx_collide_segments_gated(const sx_segment *a, sx_xf ta, const sx_segment *b,
+                                          sx_xf tb, sx_real margin, sx_real hyst, int count,
+                                          bool touch_test, sx_manifold *out) {
     sx_xform xa = sx_xform_of_xf(ta), xb = sx_xform_of_xf(tb);
     if (touch_test && order_segments(a, xa, b, xb) <= 0) return count;
     return collide_gated(build_segment, a, xa, b, xb, margin, hyst, overlap_segments_any, out);
 }
 
-static int coll_segments(const sx_segment *a, sx_xf xa, const sx_segment *b, sx_xf xb,
-                         sx_real margin, sx_real hyst, sx_manifold *out) {
-    bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
-    int count = 0;
-    /* In the canonical order the manifold at margin 0 makes exactly the
-     * decisions of the overlap test, and in the other order too unless the
-     * pair is within rounding of touching: no second pass needed. The
-     * clear-cut test comes first: nearly every pair passes it, so the
-     * branch predicts, where the order of two random transforms is a coin
-     * toss that mispredicts half the time. */
-    if (touch_test) {
-        bool clear_cut = false;
-        count = sx_cores_collide(SX_SHAPE_SEGMENT, a, xa, SX_SHAPE_SEGMENT, b, xb, SX_R(0.0), hyst,
-                                 out, &clear_cut);
-        if (clear_cut) return count;
-    }
-    return collide_segments_gated(a, xa, b, xb, margin, hyst, count, touch_test, out);
-}
 int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return coll_segments(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
-                         out ? out : &scratch);
+    return sx_coll_segments(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
+                            out ? out : &scratch);
 }
 
 /* ---- capsule - circle / segment / capsule ------------------------------- */
@@ -717,17 +687,11 @@ bool sx_mtv_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b,
     if (!capsule_radius_ok(a)) return point_mtv(build_capsule, a, xa, b, xb, mtv);
     return segment_point_mtv(a->a, a->b, a->radius, build_capsule, a, xa, b, xb, mtv);
 }
-static int coll_capsule_circle(const sx_capsule *a, sx_xf xa, const sx_circle *b, sx_xf xb,
-                               sx_real margin, sx_real hyst, sx_manifold *out) {
-    SX_UNUSED(hyst); /* circles have no reference face */
-    if (!capsule_radius_ok(a)) return point_collide_xf(build_capsule, a, xa, b, xb, margin, out);
-    return segment_point_collide(a->a, a->b, a->radius, build_capsule, a, xa, b, xb, margin, out);
-}
 int sx_collide_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return coll_capsule_circle(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
-                               out ? out : &scratch);
+    return sx_coll_capsule_circle(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                  SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 bool sx_overlap_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b,
@@ -738,16 +702,11 @@ bool sx_mtv_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *
                             sx_vec2 *mtv) {
     return pair_mtv(build_capsule, a, xa, build_segment, b, xb, mtv);
 }
-static int coll_capsule_segment(const sx_capsule *a, sx_xf xa, const sx_segment *b, sx_xf xb,
-                                sx_real margin, sx_real hyst, sx_manifold *out) {
-    return sx_cores_collide(SX_SHAPE_CAPSULE, a, xa, SX_SHAPE_SEGMENT, b, xb, margin, hyst, out,
-                            NULL);
-}
 int sx_collide_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                                sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return coll_capsule_segment(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
-                                out ? out : &scratch);
+    return sx_coll_capsule_segment(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                   SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 static int order_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb) {
@@ -779,37 +738,19 @@ bool sx_mtv_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_x
 }
 /* sx_collide_capsules past the fused manifold: a pair that is not clear-cut,
  * or a speculative call (margin > 0). */
-SX_NOINLINE static int collide_capsules_gated(const sx_capsule *a, sx_xf ta, const sx_capsule *b,
-                                              sx_xf tb, sx_real margin, sx_real hyst, int count,
-                                              bool touch_test, sx_manifold *out) {
+SX_NOINLINE int sx_collide_capsules_gated(const sx_capsule *a, sx_xf ta, const sx_capsule *b,
+                                          sx_xf tb, sx_real margin, sx_real hyst, int count,
+                                          bool touch_test, sx_manifold *out) {
     sx_xform xa = sx_xform_of_xf(ta), xb = sx_xform_of_xf(tb);
     if (touch_test && order_capsules(a, xa, b, xb) <= 0) return count;
     return collide_gated(build_capsule, a, xa, b, xb, margin, hyst, overlap_capsules_any, out);
 }
 
-static int coll_capsules(const sx_capsule *a, sx_xf xa, const sx_capsule *b, sx_xf xb,
-                         sx_real margin, sx_real hyst, sx_manifold *out) {
-    bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
-    int count = 0;
-    /* In the canonical order the manifold at margin 0 makes exactly the
-     * decisions of the overlap test, and in the other order too unless the
-     * pair is within rounding of touching: no second pass needed. The
-     * clear-cut test comes first: nearly every pair passes it, so the
-     * branch predicts, where the order of two random transforms is a coin
-     * toss that mispredicts half the time. */
-    if (touch_test) {
-        bool clear_cut = false;
-        count = sx_cores_collide(SX_SHAPE_CAPSULE, a, xa, SX_SHAPE_CAPSULE, b, xb, SX_R(0.0), hyst,
-                                 out, &clear_cut);
-        if (clear_cut) return count;
-    }
-    return collide_capsules_gated(a, xa, b, xb, margin, hyst, count, touch_test, out);
-}
 int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return coll_capsules(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
-                         out ? out : &scratch);
+    return sx_coll_capsules(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
+                            out ? out : &scratch);
 }
 
 /* ---- polygon - circle / segment / capsule ------------------------------- */
@@ -856,18 +797,11 @@ bool sx_mtv_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b,
                            sx_vec2 *mtv) {
     return polygon_point_mtv(a, xa, b, xb, mtv);
 }
-static int coll_polygon_circle(const sx_polygon *a, sx_xf xa, const sx_circle *b, sx_xf xb,
-                               sx_real margin, sx_real hyst, sx_manifold *out) {
-    SX_UNUSED(hyst); /* circles have no reference face */
-    int count = sx_polygon_circle_collide(a, xa, b, xb, margin, out);
-    if (count < 0) return point_collide_xf(build_polygon, a, xa, b, xb, margin, out);
-    return count;
-}
 int sx_collide_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return coll_polygon_circle(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
-                               out ? out : &scratch);
+    return sx_coll_polygon_circle(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                  SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 bool sx_overlap_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b,
@@ -878,16 +812,11 @@ bool sx_mtv_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *
                             sx_vec2 *mtv) {
     return pair_mtv(build_polygon, a, xa, build_segment, b, xb, mtv);
 }
-static int coll_polygon_segment(const sx_polygon *a, sx_xf xa, const sx_segment *b, sx_xf xb,
-                                sx_real margin, sx_real hyst, sx_manifold *out) {
-    return sx_cores_collide(SX_SHAPE_POLYGON, a, xa, SX_SHAPE_SEGMENT, b, xb, margin, hyst, out,
-                            NULL);
-}
 int sx_collide_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                                sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return coll_polygon_segment(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
-                                out ? out : &scratch);
+    return sx_coll_polygon_segment(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                   SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 bool sx_overlap_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b,
@@ -898,16 +827,11 @@ bool sx_mtv_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *
                             sx_vec2 *mtv) {
     return pair_mtv(build_polygon, a, xa, build_capsule, b, xb, mtv);
 }
-static int coll_polygon_capsule(const sx_polygon *a, sx_xf xa, const sx_capsule *b, sx_xf xb,
-                                sx_real margin, sx_real hyst, sx_manifold *out) {
-    return sx_cores_collide(SX_SHAPE_POLYGON, a, xa, SX_SHAPE_CAPSULE, b, xb, margin, hyst, out,
-                            NULL);
-}
 int sx_collide_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                                sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return coll_polygon_capsule(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
-                                out ? out : &scratch);
+    return sx_coll_polygon_capsule(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                   SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 /* ---- polygon - polygon -------------------------------------------------- */
@@ -1045,33 +969,20 @@ bool sx_mtv_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_x
 }
 /* sx_collide_polygons past the fused manifold: a pair that is not
  * clear-cut, or a speculative call (margin > 0). */
-SX_NOINLINE static int collide_polygons_gated(const sx_polygon *a, sx_xf ta, const sx_polygon *b,
-                                              sx_xf tb, sx_real margin, sx_real hyst, int count,
-                                              bool touch_test, sx_manifold *out) {
+SX_NOINLINE int sx_collide_polygons_gated(const sx_polygon *a, sx_xf ta, const sx_polygon *b,
+                                          sx_xf tb, sx_real margin, sx_real hyst, int count,
+                                          bool touch_test, sx_manifold *out) {
     sx_xform xa = sx_xform_of_xf(ta), xb = sx_xform_of_xf(tb);
     if (touch_test && order_polygons(a, xa, b, xb) <= 0 && !box_pair_aligned(a, xa, b, xb))
         return count;
     return collide_gated(build_polygon, a, xa, b, xb, margin, hyst, overlap_polygons_any, out);
 }
 
-static int coll_polygons(const sx_polygon *a, sx_xf xa, const sx_polygon *b, sx_xf xb,
-                         sx_real margin, sx_real hyst, sx_manifold *out) {
-    bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
-    int count = 0;
-    /* As in coll_segments. */
-    if (touch_test) {
-        bool clear_cut = false;
-        count = sx_cores_collide(SX_SHAPE_POLYGON, a, xa, SX_SHAPE_POLYGON, b, xb, SX_R(0.0), hyst,
-                                 out, &clear_cut);
-        if (clear_cut) return count;
-    }
-    return collide_polygons_gated(a, xa, b, xb, margin, hyst, count, touch_test, out);
-}
 int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return coll_polygons(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
-                         out ? out : &scratch);
+    return sx_coll_polygons(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
+                            out ? out : &scratch);
 }
 
 /* ---- the dispatch table ------------------------------------------------- */
@@ -1102,10 +1013,6 @@ typedef struct sx_pair_entry {
                            sx_vec2 *mtv) {                                                         \
         return sx_mtv_##NAME(&a->u.MA, xa, &b->u.MB, xb, mtv);                                     \
     }                                                                                              \
-    static int col_##NAME(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,                \
-                          sx_real margin, sx_real hyst, sx_manifold *out) {                        \
-        return coll_##NAME(&a->u.MA, xa, &b->u.MB, xb, margin, hyst, out);                         \
-    }                                                                                              \
     static bool ov_##NAME##_rev(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {  \
         return sx_overlap_##NAME(&b->u.MA, xb, &a->u.MB, xa);                                      \
     }                                                                                              \
@@ -1115,12 +1022,6 @@ typedef struct sx_pair_entry {
         bool hit = sx_mtv_##NAME(&b->u.MA, xb, &a->u.MB, xa, &v);                                  \
         if (mtv) *mtv = hit ? sx_neg(v) : sx_v2_zero();                                            \
         return hit;                                                                                \
-    }                                                                                              \
-    static int col_##NAME##_rev(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,          \
-                                sx_real margin, sx_real hyst, sx_manifold *out) {                  \
-        coll_##NAME(&b->u.MA, xb, &a->u.MB, xa, margin, hyst, out);                                \
-        mirror_manifold(out);                                                                      \
-        return out->count;                                                                         \
     }
 
 SX_PAIR_ENTRIES(segment_circle, segment, circle)
@@ -1152,20 +1053,12 @@ static bool mtv_segments(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_x
                          sx_vec2 *mtv) {
     return sx_mtv_segments(&a->u.segment, xa, &b->u.segment, xb, mtv);
 }
-static int col_segments(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb, sx_real margin,
-                        sx_real hyst, sx_manifold *out) {
-    return coll_segments(&a->u.segment, xa, &b->u.segment, xb, margin, hyst, out);
-}
 static bool ov_capsules(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
     return sx_overlap_capsules(&a->u.capsule, xa, &b->u.capsule, xb);
 }
 static bool mtv_capsules(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
                          sx_vec2 *mtv) {
     return sx_mtv_capsules(&a->u.capsule, xa, &b->u.capsule, xb, mtv);
-}
-static int col_capsules(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb, sx_real margin,
-                        sx_real hyst, sx_manifold *out) {
-    return coll_capsules(&a->u.capsule, xa, &b->u.capsule, xb, margin, hyst, out);
 }
 static bool ov_polygons(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
     return sx_overlap_polygons(&a->u.polygon, xa, &b->u.polygon, xb);
@@ -1174,32 +1067,28 @@ static bool mtv_polygons(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_x
                          sx_vec2 *mtv) {
     return sx_mtv_polygons(&a->u.polygon, xa, &b->u.polygon, xb, mtv);
 }
-static int col_polygons(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb, sx_real margin,
-                        sx_real hyst, sx_manifold *out) {
-    return coll_polygons(&a->u.polygon, xa, &b->u.polygon, xb, margin, hyst, out);
-}
 
 static const sx_pair_entry sx_pair_table[SX_SHAPE_TYPE_COUNT][SX_SHAPE_TYPE_COUNT] = {
     /* A = circle */
     {{ov_circles, mtv_circles, col_circles},
-     {ov_segment_circle_rev, mtv_segment_circle_rev, col_segment_circle_rev},
-     {ov_capsule_circle_rev, mtv_capsule_circle_rev, col_capsule_circle_rev},
-     {ov_polygon_circle_rev, mtv_polygon_circle_rev, col_polygon_circle_rev}},
+     {ov_segment_circle_rev, mtv_segment_circle_rev, sx_entry_segment_circle_rev},
+     {ov_capsule_circle_rev, mtv_capsule_circle_rev, sx_entry_capsule_circle_rev},
+     {ov_polygon_circle_rev, mtv_polygon_circle_rev, sx_entry_polygon_circle_rev}},
     /* A = segment */
-    {{ov_segment_circle, mtv_segment_circle, col_segment_circle},
-     {ov_segments, mtv_segments, col_segments},
-     {ov_capsule_segment_rev, mtv_capsule_segment_rev, col_capsule_segment_rev},
-     {ov_polygon_segment_rev, mtv_polygon_segment_rev, col_polygon_segment_rev}},
+    {{ov_segment_circle, mtv_segment_circle, sx_entry_segment_circle},
+     {ov_segments, mtv_segments, sx_entry_segments},
+     {ov_capsule_segment_rev, mtv_capsule_segment_rev, sx_entry_capsule_segment_rev},
+     {ov_polygon_segment_rev, mtv_polygon_segment_rev, sx_entry_polygon_segment_rev}},
     /* A = capsule */
-    {{ov_capsule_circle, mtv_capsule_circle, col_capsule_circle},
-     {ov_capsule_segment, mtv_capsule_segment, col_capsule_segment},
-     {ov_capsules, mtv_capsules, col_capsules},
-     {ov_polygon_capsule_rev, mtv_polygon_capsule_rev, col_polygon_capsule_rev}},
+    {{ov_capsule_circle, mtv_capsule_circle, sx_entry_capsule_circle},
+     {ov_capsule_segment, mtv_capsule_segment, sx_entry_capsule_segment},
+     {ov_capsules, mtv_capsules, sx_entry_capsules},
+     {ov_polygon_capsule_rev, mtv_polygon_capsule_rev, sx_entry_polygon_capsule_rev}},
     /* A = polygon */
-    {{ov_polygon_circle, mtv_polygon_circle, col_polygon_circle},
-     {ov_polygon_segment, mtv_polygon_segment, col_polygon_segment},
-     {ov_polygon_capsule, mtv_polygon_capsule, col_polygon_capsule},
-     {ov_polygons, mtv_polygons, col_polygons}},
+    {{ov_polygon_circle, mtv_polygon_circle, sx_entry_polygon_circle},
+     {ov_polygon_segment, mtv_polygon_segment, sx_entry_polygon_segment},
+     {ov_polygon_capsule, mtv_polygon_capsule, sx_entry_polygon_capsule},
+     {ov_polygons, mtv_polygons, sx_entry_polygons}},
 };
 
 static const sx_pair_entry *pair_entry(const sx_shape *a, const sx_shape *b) {

@@ -315,6 +315,23 @@ static inline int sx_world_manifold(sx_manifold *m, int count, sx_xf xa) {
 int sx_collide_world(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_real margin,
                      sx_manifold *out);
 
+/* collide.c's general route, for what the fused routines hand back: the
+ * manifold of A (kind: SX_SHAPE_SEGMENT, CAPSULE or POLYGON) against a
+ * circle through a core; and for the same-type pairs, what is not a
+ * clear-cut pair at margin 0 (count, the fused manifold's answer then,
+ * stands when the canonical order is the caller's) or is speculative. */
+int sx_point_collide_general(int kind, const void *a, sx_xf xa, const sx_circle *b, sx_xf xb,
+                             sx_real margin, sx_manifold *out);
+int sx_collide_segments_gated(const sx_segment *a, sx_xf ta, const sx_segment *b, sx_xf tb,
+                              sx_real margin, sx_real hyst, int count, bool touch_test,
+                              sx_manifold *out);
+int sx_collide_capsules_gated(const sx_capsule *a, sx_xf ta, const sx_capsule *b, sx_xf tb,
+                              sx_real margin, sx_real hyst, int count, bool touch_test,
+                              sx_manifold *out);
+int sx_collide_polygons_gated(const sx_polygon *a, sx_xf ta, const sx_polygon *b, sx_xf tb,
+                              sx_real margin, sx_real hyst, int count, bool touch_test,
+                              sx_manifold *out);
+
 /* ---- fused pair functions (narrow_core.c) ------------------------------- */
 
 /* The manifold of a and b (kinds ka, kb: SX_SHAPE_SEGMENT, CAPSULE or
@@ -327,15 +344,26 @@ int sx_collide_world(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform
 int sx_cores_collide(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_xf xb,
                      sx_real margin, sx_real hysteresis, sx_manifold *out, bool *clear_cut);
 
-/* sx_collide for a polygon A against a circle B placed by *xa and *xb, in
- * one function: -1 (and *out unusable) where the general route must answer
- * (sx_core_polygon_point_manifold's -1), otherwise the point count with *out
- * complete in world space. out is not NULL. */
-int sx_polygon_circle_collide(const sx_polygon *a, sx_xf xa, const sx_circle *b, sx_xf xb,
-                              sx_real margin, sx_manifold *out);
-/* The same for the segment or capsule a0-a1 of radius ra (>= 0 and finite)
- * against a circle (sx_core_segment_point_manifold's -1). */
-int sx_segment_circle_collide(sx_vec2 a0, sx_vec2 a1, sx_real ra, sx_xf xa, const sx_circle *b,
-                              sx_xf xb, sx_real margin, sx_manifold *out);
+/* The manifold entries (narrow_core.c): sx_entry_NAME takes the two shapes
+ * as the dispatch table does (NAME_rev: the arguments in the other order,
+ * the manifold mirrored), sx_coll_NAME the pair's own structs, as the typed
+ * pair functions do; hyst is the reference-face hysteresis, out not NULL. */
+#define SX_ENTRY_DECL(NAME, TA, TB)                                                                \
+    int sx_coll_##NAME(const TA *a, sx_xf xa, const TB *b, sx_xf xb, sx_real margin, sx_real hyst, \
+                       sx_manifold *out);                                                          \
+    int sx_entry_##NAME(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb, sx_real margin,  \
+                        sx_real hyst, sx_manifold *out);                                           \
+    int sx_entry_##NAME##_rev(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,            \
+                              sx_real margin, sx_real hyst, sx_manifold *out);
+SX_ENTRY_DECL(segment_circle, sx_segment, sx_circle)
+SX_ENTRY_DECL(capsule_circle, sx_capsule, sx_circle)
+SX_ENTRY_DECL(polygon_circle, sx_polygon, sx_circle)
+SX_ENTRY_DECL(capsule_segment, sx_capsule, sx_segment)
+SX_ENTRY_DECL(polygon_segment, sx_polygon, sx_segment)
+SX_ENTRY_DECL(polygon_capsule, sx_polygon, sx_capsule)
+SX_ENTRY_DECL(segments, sx_segment, sx_segment)
+SX_ENTRY_DECL(capsules, sx_capsule, sx_capsule)
+SX_ENTRY_DECL(polygons, sx_polygon, sx_polygon)
+#undef SX_ENTRY_DECL
 
 #endif /* SEPAX_NARROW_H */

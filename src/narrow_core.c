@@ -1122,17 +1122,24 @@ static SX_ALWAYS_INLINE int cores_collide(int ka, const void *a, sx_xf xa, int k
 
 int sx_cores_collide(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_xf xb,
                      sx_real margin, sx_real hysteresis, sx_manifold *out, bool *clear_cut) {
-#define SX_CORES_CASE(KA, KB)                                                                      \
-    if (ka == KA && kb == KB)                                                                      \
-    return cores_collide(KA, a, xa, KB, b, xb, margin, hysteresis, out, clear_cut)
-    SX_CORES_CASE(SX_SHAPE_POLYGON, SX_SHAPE_POLYGON);
-    SX_CORES_CASE(SX_SHAPE_POLYGON, SX_SHAPE_SEGMENT);
-    SX_CORES_CASE(SX_SHAPE_POLYGON, SX_SHAPE_CAPSULE);
-    SX_CORES_CASE(SX_SHAPE_CAPSULE, SX_SHAPE_SEGMENT);
-    SX_CORES_CASE(SX_SHAPE_CAPSULE, SX_SHAPE_CAPSULE);
-    SX_CORES_CASE(SX_SHAPE_SEGMENT, SX_SHAPE_SEGMENT);
-#undef SX_CORES_CASE
     return cores_collide(ka, a, xa, kb, b, xb, margin, hysteresis, out, clear_cut);
+}
+
+/* Same-type manifolds follow the caller's order, but at margin 0 whether
+ * the pair touches is the canonical order's answer; a pair clear of
+ * rounding gets the same answer in both orders (collide.c, collide_gated). */
+static SX_ALWAYS_INLINE int polygons_collide(const sx_polygon *a, sx_xf xa, const sx_polygon *b,
+                                             sx_xf xb, sx_real margin, sx_real hyst,
+                                             sx_manifold *out) {
+    bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
+    int count = 0;
+    if (touch_test) {
+        bool clear_cut = false;
+        count = cores_collide(SX_SHAPE_POLYGON, a, xa, SX_SHAPE_POLYGON, b, xb, SX_R(0.0), hyst,
+                              out, &clear_cut);
+        if (clear_cut) return count;
+    }
+    return sx_collide_polygons_gated(a, xa, b, xb, margin, hyst, count, touch_test, out);
 }
 
 /* ---- a core against a point --------------------------------------------- */
@@ -1606,8 +1613,9 @@ int sx_core_polygon_point_manifold(const sx_polygon *a, sx_vec2 c, sx_real rb, s
 
 /* ---- fused entries: a core against a circle ----------------------------- */
 
-int sx_polygon_circle_collide(const sx_polygon *a, sx_xf xa, const sx_circle *b, sx_xf xb,
-                              sx_real margin, sx_manifold *out) {
+static SX_ALWAYS_INLINE int polygon_circle_collide(const sx_polygon *a, sx_xf xa,
+                                                   const sx_circle *b, sx_xf xb, sx_real margin,
+                                                   sx_manifold *out) {
     sx_vec2 c;
     int local;
     bool finite = false;
@@ -1624,8 +1632,9 @@ int sx_polygon_circle_collide(const sx_polygon *a, sx_xf xa, const sx_circle *b,
     return sx_world_manifold(out, local, xa);
 }
 
-int sx_segment_circle_collide(sx_vec2 a0, sx_vec2 a1, sx_real ra, sx_xf xa, const sx_circle *b,
-                              sx_xf xb, sx_real margin, sx_manifold *out) {
+static SX_ALWAYS_INLINE int segment_circle_collide(sx_vec2 a0, sx_vec2 a1, sx_real ra, sx_xf xa,
+                                                   const sx_circle *b, sx_xf xb, sx_real margin,
+                                                   sx_manifold *out) {
     sx_vec2 c;
     int local;
     if (b == NULL) {
@@ -1639,3 +1648,140 @@ int sx_segment_circle_collide(sx_vec2 a0, sx_vec2 a1, sx_real ra, sx_xf xa, cons
     if (local > 0 && !sx_circle_valid(b, xb, c)) local = 0;
     return sx_world_manifold(out, local, xa);
 }
+
+/* ---- the manifold entries of the dispatch table ------------------------- */
+
+/* The manifold of each pair kind in one function (the fused routines above,
+ * and collide.c's general route for what they hand back). Each exists as
+ * the dispatch table's entry, taking the shapes (sx_entry_*), its reversed
+ * order (the manifold mirrored), and for the typed pair functions
+ * (sx_coll_*), so that sx_collide reaches the work through one call. */
+
+static SX_ALWAYS_INLINE int coll_segment_circle(const sx_segment *a, sx_xf xa, const sx_circle *b,
+                                                sx_xf xb, sx_real margin, sx_real hyst,
+                                                sx_manifold *out) {
+    int count =
+        a == NULL ? -1 : segment_circle_collide(a->a, a->b, SX_R(0.0), xa, b, xb, margin, out);
+    SX_UNUSED(hyst); /* circles have no reference face */
+    if (count < 0) count = sx_point_collide_general(SX_SHAPE_SEGMENT, a, xa, b, xb, margin, out);
+    return count;
+}
+
+static SX_ALWAYS_INLINE int coll_capsule_circle(const sx_capsule *a, sx_xf xa, const sx_circle *b,
+                                                sx_xf xb, sx_real margin, sx_real hyst,
+                                                sx_manifold *out) {
+    int count = a == NULL || !core_radius_ok(a->radius)
+                    ? -1
+                    : segment_circle_collide(a->a, a->b, a->radius, xa, b, xb, margin, out);
+    SX_UNUSED(hyst);
+    if (count < 0) count = sx_point_collide_general(SX_SHAPE_CAPSULE, a, xa, b, xb, margin, out);
+    return count;
+}
+
+static SX_ALWAYS_INLINE int coll_polygon_circle(const sx_polygon *a, sx_xf xa, const sx_circle *b,
+                                                sx_xf xb, sx_real margin, sx_real hyst,
+                                                sx_manifold *out) {
+    int count = polygon_circle_collide(a, xa, b, xb, margin, out);
+    SX_UNUSED(hyst);
+    if (count < 0) count = sx_point_collide_general(SX_SHAPE_POLYGON, a, xa, b, xb, margin, out);
+    return count;
+}
+
+#define SX_CORES_COLL(NAME, TA, KA, TB, KB)                                                        \
+    static SX_ALWAYS_INLINE int coll_##NAME(const TA *a, sx_xf xa, const TB *b, sx_xf xb,          \
+                                            sx_real margin, sx_real hyst, sx_manifold *out) {      \
+        return cores_collide(KA, a, xa, KB, b, xb, margin, hyst, out, NULL);                       \
+    }                                                                                              \
+    int sx_coll_##NAME(const TA *a, sx_xf xa, const TB *b, sx_xf xb, sx_real margin, sx_real hyst, \
+                       sx_manifold *out) {                                                         \
+        return sx_cores_collide(KA, a, xa, KB, b, xb, margin, hyst, out, NULL);                    \
+    }
+SX_CORES_COLL(capsule_segment, sx_capsule, SX_SHAPE_CAPSULE, sx_segment, SX_SHAPE_SEGMENT)
+SX_CORES_COLL(polygon_segment, sx_polygon, SX_SHAPE_POLYGON, sx_segment, SX_SHAPE_SEGMENT)
+SX_CORES_COLL(polygon_capsule, sx_polygon, SX_SHAPE_POLYGON, sx_capsule, SX_SHAPE_CAPSULE)
+#undef SX_CORES_COLL
+
+/* Same-type manifolds follow the caller's order, but at margin 0 whether
+ * the pair touches is the canonical order's answer; a pair clear of
+ * rounding gets the same answer in both orders, and the rest goes to
+ * collide.c's gated route (collide_gated). In the canonical order the
+ * manifold at margin 0 makes exactly the decisions of the overlap test,
+ * and in the other order too unless the pair is within rounding of
+ * touching. The clear-cut test comes first: nearly every pair passes it,
+ * so the branch predicts, where the order of two random transforms is a
+ * coin toss that mispredicts half the time. */
+#define SX_SAME_COLL(NAME, T, K)                                                                   \
+    static SX_ALWAYS_INLINE int coll_##NAME(const T *a, sx_xf xa, const T *b, sx_xf xb,            \
+                                            sx_real margin, sx_real hyst, sx_manifold *out) {      \
+        bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));                           \
+        int count = 0;                                                                             \
+        if (touch_test) {                                                                          \
+            bool clear_cut = false;                                                                \
+            count = cores_collide(K, a, xa, K, b, xb, SX_R(0.0), hyst, out, &clear_cut);           \
+            if (clear_cut) return count;                                                           \
+        }                                                                                          \
+        return sx_collide_##NAME##_gated(a, xa, b, xb, margin, hyst, count, touch_test, out);      \
+    }                                                                                              \
+    int sx_coll_##NAME(const T *a, sx_xf xa, const T *b, sx_xf xb, sx_real margin, sx_real hyst,   \
+                       sx_manifold *out) {                                                         \
+        bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));                           \
+        int count = 0;                                                                             \
+        if (touch_test) {                                                                          \
+            bool clear_cut = false;                                                                \
+            count = sx_cores_collide(K, a, xa, K, b, xb, SX_R(0.0), hyst, out, &clear_cut);        \
+            if (clear_cut) return count;                                                           \
+        }                                                                                          \
+        return sx_collide_##NAME##_gated(a, xa, b, xb, margin, hyst, count, touch_test, out);      \
+    }
+SX_SAME_COLL(segments, sx_segment, SX_SHAPE_SEGMENT)
+SX_SAME_COLL(capsules, sx_capsule, SX_SHAPE_CAPSULE)
+SX_SAME_COLL(polygons, sx_polygon, SX_SHAPE_POLYGON)
+#undef SX_SAME_COLL
+
+/* The manifold of (B, A) from that of (A, B): same points and depths, the
+ * normal reversed, and the flipped bit of every id toggled. */
+static void mirror(sx_manifold *m) {
+    int i;
+    m->normal = sx_neg(m->normal);
+    for (i = 0; i < m->count; ++i)
+        m->points[i].id ^= (uint32_t)1 << 16;
+}
+
+#define SX_COLL(NAME, TA, TB)                                                                      \
+    int sx_coll_##NAME(const TA *a, sx_xf xa, const TB *b, sx_xf xb, sx_real margin, sx_real hyst, \
+                       sx_manifold *out) {                                                         \
+        return coll_##NAME(a, xa, b, xb, margin, hyst, out);                                       \
+    }
+#define SX_ENTRY(NAME, TA, MA, TB, MB)                                                             \
+    int sx_entry_##NAME(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb, sx_real margin,  \
+                        sx_real hyst, sx_manifold *out) {                                          \
+        return coll_##NAME(&a->u.MA, xa, &b->u.MB, xb, margin, hyst, out);                         \
+    }
+#define SX_ENTRY_REV(NAME)                                                                         \
+    int sx_entry_##NAME##_rev(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,            \
+                              sx_real margin, sx_real hyst, sx_manifold *out) {                    \
+        sx_entry_##NAME(b, xb, a, xa, margin, hyst, out);                                          \
+        mirror(out);                                                                               \
+        return out->count;                                                                         \
+    }
+SX_COLL(segment_circle, sx_segment, sx_circle)
+SX_COLL(capsule_circle, sx_capsule, sx_circle)
+SX_COLL(polygon_circle, sx_polygon, sx_circle)
+SX_ENTRY(segment_circle, sx_segment, segment, sx_circle, circle)
+SX_ENTRY_REV(segment_circle)
+SX_ENTRY(capsule_circle, sx_capsule, capsule, sx_circle, circle)
+SX_ENTRY_REV(capsule_circle)
+SX_ENTRY(polygon_circle, sx_polygon, polygon, sx_circle, circle)
+SX_ENTRY_REV(polygon_circle)
+SX_ENTRY(capsule_segment, sx_capsule, capsule, sx_segment, segment)
+SX_ENTRY_REV(capsule_segment)
+SX_ENTRY(polygon_segment, sx_polygon, polygon, sx_segment, segment)
+SX_ENTRY_REV(polygon_segment)
+SX_ENTRY(polygon_capsule, sx_polygon, polygon, sx_capsule, capsule)
+SX_ENTRY_REV(polygon_capsule)
+SX_ENTRY(segments, sx_segment, segment, sx_segment, segment)
+SX_ENTRY(capsules, sx_capsule, capsule, sx_capsule, capsule)
+SX_ENTRY(polygons, sx_polygon, polygon, sx_polygon, polygon)
+#undef SX_COLL
+#undef SX_ENTRY
+#undef SX_ENTRY_REV
