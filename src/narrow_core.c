@@ -1125,23 +1125,6 @@ int sx_cores_collide(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_
     return cores_collide(ka, a, xa, kb, b, xb, margin, hysteresis, out, clear_cut);
 }
 
-/* Same-type manifolds follow the caller's order, but at margin 0 whether
- * the pair touches is the canonical order's answer; a pair clear of
- * rounding gets the same answer in both orders (collide.c, collide_gated). */
-static SX_ALWAYS_INLINE int polygons_collide(const sx_polygon *a, sx_xf xa, const sx_polygon *b,
-                                             sx_xf xb, sx_real margin, sx_real hyst,
-                                             sx_manifold *out) {
-    bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
-    int count = 0;
-    if (touch_test) {
-        bool clear_cut = false;
-        count = cores_collide(SX_SHAPE_POLYGON, a, xa, SX_SHAPE_POLYGON, b, xb, SX_R(0.0), hyst,
-                              out, &clear_cut);
-        if (clear_cut) return count;
-    }
-    return sx_collide_polygons_gated(a, xa, b, xb, margin, hyst, count, touch_test, out);
-}
-
 /* ---- a core against a point --------------------------------------------- */
 
 /* The cheap pairs (a segment, capsule or polygon A against a circle B) are
