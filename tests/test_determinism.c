@@ -196,44 +196,74 @@ static sx_shape det_shape(sx_test_rng *rng, int k) {
     }
 }
 
-/* Hashes every narrowphase answer (overlap, MTV, manifolds at two margins)
- * over random pairs of every kind and order. The float build's SSE loops
- * (src/narrow_core.c) and the portable ones (make ... SIMD=0) must print
- * the same hash, as must every optimisation level (see .ci/run). */
+/* Hashes one pair's narrowphase answers: overlap, MTV and the manifolds at
+ * margins 0 and 0.05, in the given order. */
+static void det_add_pair(det_hash *d, const sx_shape *a, sx_xform xa, const sx_shape *b,
+                         sx_xform xb) {
+    sx_manifold m[2];
+    sx_vec2 mtv;
+    int ov = sx_overlap(a, xa, b, xb), hit = sx_mtv(a, xa, b, xb, &mtv), c, j;
+    det_add(d, &ov, sizeof ov);
+    det_add(d, &hit, sizeof hit);
+    det_add_real(d, mtv.x);
+    det_add_real(d, mtv.y);
+    (void)sx_collide(a, xa, b, xb, &m[0]);
+    (void)sx_collide_ex(a, xa, b, xb, SX_R(0.05), &m[1]);
+    for (c = 0; c < 2; ++c) {
+        det_add(d, &m[c].count, sizeof m[c].count);
+        det_add_real(d, m[c].normal.x);
+        det_add_real(d, m[c].normal.y);
+        for (j = 0; j < m[c].count; ++j) {
+            det_add_real(d, m[c].points[j].point.x);
+            det_add_real(d, m[c].points[j].point.y);
+            det_add_real(d, m[c].points[j].depth);
+            det_add(d, &m[c].points[j].id, sizeof m[c].points[j].id);
+        }
+    }
+}
+
+/* Hashes every narrowphase answer over random pairs of every kind and
+ * order, in four kinds of placement: unit shapes near the origin; turned
+ * by multiples of a quarter turn (exact zeros in the rotations: the signs
+ * of zero and the axis-aligned box path); 1e4 m from the origin; and moved
+ * onto touching by the MTV, give or take a few ulps (the rounding ties of
+ * the reference face and the touch rescue). The float build's SSE loops
+ * and fused routines (src/narrow_core.c, src/collide.c) and the portable
+ * ones (make ... SIMD=0) must print the same hash, as must every
+ * optimisation level (see .ci/run). */
 static uint64_t narrowphase_hash(void) {
     sx_test_rng rng = sx_test_rng_make(2026u);
     det_hash d;
-    int ka, kb, i, j;
+    int ka, kb, i, mode;
     d.h = 14695981039346656037ull;
-    for (ka = 0; ka < 6; ++ka) {
-        for (kb = 0; kb < 6; ++kb) {
-            for (i = 0; i < 2000; ++i) {
-                sx_shape a = det_shape(&rng, ka), b = det_shape(&rng, kb);
-                sx_xform xa = sx_xform_make(
-                    sx_v2(sx_test_rng_range(&rng, -3.0, 3.0), sx_test_rng_range(&rng, -3.0, 3.0)),
-                    sx_test_rng_range(&rng, -4.0, 4.0));
-                sx_xform xb = sx_xform_make(sx_add(xa.p, sx_v2(sx_test_rng_range(&rng, -2.5, 2.5),
-                                                               sx_test_rng_range(&rng, -2.5, 2.5))),
-                                            sx_test_rng_range(&rng, -4.0, 4.0));
-                sx_manifold m[2];
-                sx_vec2 mtv;
-                int ov = sx_overlap(&a, xa, &b, xb), hit = sx_mtv(&a, xa, &b, xb, &mtv), c;
-                det_add(&d, &ov, sizeof ov);
-                det_add(&d, &hit, sizeof hit);
-                det_add_real(&d, mtv.x);
-                det_add_real(&d, mtv.y);
-                (void)sx_collide(&a, xa, &b, xb, &m[0]);
-                (void)sx_collide_ex(&a, xa, &b, xb, SX_R(0.05), &m[1]);
-                for (c = 0; c < 2; ++c) {
-                    det_add(&d, &m[c].count, sizeof m[c].count);
-                    det_add_real(&d, m[c].normal.x);
-                    det_add_real(&d, m[c].normal.y);
-                    for (j = 0; j < m[c].count; ++j) {
-                        det_add_real(&d, m[c].points[j].point.x);
-                        det_add_real(&d, m[c].points[j].point.y);
-                        det_add_real(&d, m[c].points[j].depth);
-                        det_add(&d, &m[c].points[j].id, sizeof m[c].points[j].id);
+    for (mode = 0; mode < 4; ++mode) {
+        for (ka = 0; ka < 6; ++ka) {
+            for (kb = 0; kb < 6; ++kb) {
+                for (i = 0; i < (mode == 0 ? 2000 : 500); ++i) {
+                    sx_shape a = det_shape(&rng, ka), b = det_shape(&rng, kb);
+                    double ra = sx_test_rng_range(&rng, -4.0, 4.0);
+                    double rb = sx_test_rng_range(&rng, -4.0, 4.0);
+                    double o = mode == 2 ? 1e4 : 0.0;
+                    sx_xform xa, xb;
+                    if (mode == 1) {
+                        ra = (double)(sx_test_rng_next(&rng) % 4u) * 1.5707963267948966;
+                        rb = (double)(sx_test_rng_next(&rng) % 4u) * 1.5707963267948966;
                     }
+                    xa = sx_xform_make(sx_v2(sx_test_rng_range(&rng, o - 3.0, o + 3.0),
+                                             sx_test_rng_range(&rng, -o - 3.0, -o + 3.0)),
+                                       (sx_real)ra);
+                    xb = sx_xform_make(sx_add(xa.p, sx_v2(sx_test_rng_range(&rng, -2.5, 2.5),
+                                                          sx_test_rng_range(&rng, -2.5, 2.5))),
+                                       (sx_real)rb);
+                    if (mode == 3) {
+                        sx_vec2 v;
+                        if (sx_mtv(&b, xb, &a, xa, &v)) {
+                            double f =
+                                1.0 + (double)((int)(sx_test_rng_next(&rng) % 9u) - 4) * 1e-7;
+                            xb.p = sx_add(xb.p, sx_scale(v, (sx_real)f));
+                        }
+                    }
+                    det_add_pair(&d, &a, xa, &b, xb);
                 }
             }
         }
