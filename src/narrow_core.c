@@ -258,6 +258,10 @@ typedef struct sx_sat {
     sx_vec2 axis;         /* unit axis of sep, from A towards B */
     bool has_axes;
 #if SX_NARROW_SSE
+    /* mags bit 1: mag_b holds the lane-wise largest magnitudes of B's
+     * coordinates (from the SAT's loads); bit 2: mag_a, A's. */
+    int mags;
+    __m128 mag_a, mag_b;
     /* When rows is set (two polygon cores, limit > 0): the separation of
      * each vertex of B from each face of A (rows_b, best_face_sse's rows)
      * and of A's vertices from B's faces (rows_a), for the closest-feature
@@ -302,14 +306,18 @@ static inline sx_real sse_lane_min(__m128 lo, __m128 bad) {
  * complete when the call returns true. */
 static SX_ALWAYS_INLINE bool best_face_sse(const sx_core *p, const sx_core *q, sx_real limit,
                                            sx_real *sep, int *face, sx_real *stop, int track,
-                                           __m128 *rows) {
+                                           __m128 *rows, __m128 *qmag) {
     int i, n = p->count, m = q->count, f = 0;
     __m128 v0 = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&q->v[0]);
     __m128 v00 = _mm_movelh_ps(v0, v0);
     __m128 p0 = sse_vertex_pair(q->v, 0, m, v00), p1 = sse_vertex_pair(q->v, 2, m, v00);
     __m128 x0 = _mm_shuffle_ps(p0, p1, _MM_SHUFFLE(2, 0, 2, 0));
     __m128 y0 = _mm_shuffle_ps(p0, p1, _MM_SHUFFLE(3, 1, 3, 1));
+    __m128 sign = _mm_set1_ps(SX_R(-0.0));
     sx_real best = SX_NO_SEPARATION, s;
+    /* The lane-wise largest magnitudes of q's coordinates, from the values
+     * loaded anyway (the clear-cut test's scale; padding repeats vertex 0). */
+    *qmag = _mm_max_ps(_mm_andnot_ps(sign, p0), _mm_andnot_ps(sign, p1));
     if (m <= 4) {
         for (i = 0; i < n; ++i) {
             __m128 d = sse_face_lanes(p, i, x0, y0);
@@ -326,6 +334,7 @@ static SX_ALWAYS_INLINE bool best_face_sse(const sx_core *p, const sx_core *q, s
         __m128 p2 = sse_vertex_pair(q->v, 4, m, v00), p3 = sse_vertex_pair(q->v, 6, m, v00);
         __m128 x1 = _mm_shuffle_ps(p2, p3, _MM_SHUFFLE(2, 0, 2, 0));
         __m128 y1 = _mm_shuffle_ps(p2, p3, _MM_SHUFFLE(3, 1, 3, 1));
+        *qmag = _mm_max_ps(*qmag, _mm_max_ps(_mm_andnot_ps(sign, p2), _mm_andnot_ps(sign, p3)));
         for (i = 0; i < n; ++i) {
             __m128 d0 = sse_face_lanes(p, i, x0, y0), d1 = sse_face_lanes(p, i, x1, y1);
             s = sse_lane_min(_mm_min_ps(d0, d1), _mm_cmpunord_ps(d0, d1));
@@ -380,11 +389,19 @@ static void sse_vertex_faces(const __m128 *rows, int n, int m, int *vface, sx_re
  * that separation in *stop. The running maximum is kept without a branch
  * (its comparisons go either way at random); the face index follows it. */
 static SX_ALWAYS_INLINE bool best_face(const sx_core *p, const sx_core *q, sx_real limit,
-                                       sx_real *sep, int *face, sx_real *stop) {
+                                       sx_real *sep, int *face, sx_real *stop, sx_sat *sat,
+                                       int mag_bit) {
     int i, n = face_count(p), f = 0;
     sx_real best;
 #if SX_NARROW_SSE
-    if (n >= 3 && q->count >= 3) return best_face_sse(p, q, limit, sep, face, stop, 0, NULL);
+    if (n >= 3 && q->count >= 3) {
+        sat->mags |= mag_bit;
+        return best_face_sse(p, q, limit, sep, face, stop, 0, NULL,
+                             mag_bit == 1 ? &sat->mag_b : &sat->mag_a);
+    }
+#else
+    SX_UNUSED(sat);
+    SX_UNUSED(mag_bit);
 #endif
     if (n == 0) {
         *sep = SX_NO_SEPARATION;
@@ -423,20 +440,27 @@ static SX_ALWAYS_INLINE bool sat_run(const sx_core *a, const sx_core *b, sx_real
     int na = face_count(a), nb = face_count(b);
 #if SX_NARROW_SSE
     out->rows = false;
+    out->mags = 0;
     if (limit > SX_R(0.0) && na >= 3 && nb >= 3) {
         /* Cores apart by less than limit need their closest features,
          * whose sweep starts from each vertex's face of largest
          * separation: the SAT's lanes have what it needs. */
-        if (!best_face_sse(a, b, limit, &out->sep_a, &out->face_a, &out->sep, 1, out->rows_b) ||
-            !best_face_sse(b, a, limit, &out->sep_b, &out->face_b, &out->sep, 1, out->rows_a)) {
+        out->mags = 1;
+        if (!best_face_sse(a, b, limit, &out->sep_a, &out->face_a, &out->sep, 1, out->rows_b,
+                           &out->mag_b)) {
+            return false;
+        }
+        out->mags = 3;
+        if (!best_face_sse(b, a, limit, &out->sep_b, &out->face_b, &out->sep, 1, out->rows_a,
+                           &out->mag_a)) {
             return false;
         }
         out->rows = true;
     } else
 #endif
     {
-        if (!best_face(a, b, limit, &out->sep_a, &out->face_a, &out->sep)) return false;
-        if (!best_face(b, a, limit, &out->sep_b, &out->face_b, &out->sep)) return false;
+        if (!best_face(a, b, limit, &out->sep_a, &out->face_a, &out->sep, out, 1)) return false;
+        if (!best_face(b, a, limit, &out->sep_b, &out->face_b, &out->sep, out, 2)) return false;
     }
     out->has_axes = na + nb > 0;
     out->axis = sx_v2_zero();
@@ -536,6 +560,23 @@ static SX_ALWAYS_INLINE sx_real core_pair_scale(const sx_core *a, const sx_core 
     return _mm_cvtss_f32(m);
 #else
     return sx_maxr(core_scale(a), core_scale(b));
+#endif
+}
+
+/* core_pair_scale, with the magnitudes the SAT took (sat may be NULL). */
+static SX_ALWAYS_INLINE sx_real sat_pair_scale(const sx_core *a, const sx_core *b,
+                                               const sx_sat *sat) {
+#if SX_NARROW_SSE
+    __m128 m;
+    if (sat == NULL) return core_pair_scale(a, b);
+    m = (sat->mags & 1) ? sat->mag_b : sse_core_magnitudes(b, _mm_setzero_ps());
+    m = (sat->mags & 2) ? _mm_max_ps(m, sat->mag_a) : sse_core_magnitudes(a, m);
+    m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(1, 0, 3, 2)));
+    m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(2, 3, 0, 1)));
+    return _mm_cvtss_f32(m);
+#else
+    SX_UNUSED(sat);
+    return core_pair_scale(a, b);
 #endif
 }
 
@@ -725,7 +766,7 @@ static void closest_features(const sx_core *a, const sx_core *b, const sx_sat *s
     SX_UNUSED(sat);
 #if SX_NARROW_SSE
     if (sat != NULL && sat->rows) {
-        sx_real slack = SX_PRUNE_SLACK * core_pair_scale(a, b);
+        sx_real slack = SX_PRUNE_SLACK * sat_pair_scale(a, b, sat);
         int vface[SX_VERTEX_SLOTS];
         sx_real vsep[SX_VERTEX_SLOTS];
         sse_vertex_faces(sat->rows_b, a->count, b->count, vface, vsep);
@@ -999,8 +1040,8 @@ static int clip_face(const sx_core *ref, int *face, const sx_core *inc, sx_real 
 #define SX_ORDER_RESCUE (SX_R(0.01) * SX_LINEAR_SLOP)
 #define SX_ORDER_ROUNDING (SX_R(1024.0) * SX_REAL_EPSILON)
 
-static bool gap_is_clear(const sx_core *a, const sx_core *b, sx_real gap) {
-    sx_real scale = sx_maxr(core_pair_scale(a, b), a->radius + b->radius);
+static bool gap_is_clear(const sx_core *a, const sx_core *b, const sx_sat *sat, sx_real gap) {
+    sx_real scale = sx_maxr(sat_pair_scale(a, b, sat), a->radius + b->radius);
     return sx_magnitude(gap) > SX_ORDER_RESCUE + SX_ORDER_ROUNDING * scale;
 }
 
@@ -1016,16 +1057,16 @@ static SX_ALWAYS_INLINE int core_manifold(const sx_core *a, const sx_core *b, sx
     out->count = 0;
     out->normal = sx_v2_zero();
     if (!sat_run(a, b, limit, &sat)) {
-        if (clear_cut) *clear_cut = gap_is_clear(a, b, sat.sep - r);
+        if (clear_cut) *clear_cut = gap_is_clear(a, b, &sat, sat.sep - r);
         return 0;
     }
     if (sat.has_axes && sat.sep <= SX_R(0.0)) {
         face_contact = true;
-        if (clear_cut) *clear_cut = gap_is_clear(a, b, sat.sep - r);
+        if (clear_cut) *clear_cut = gap_is_clear(a, b, &sat, sat.sep - r);
     } else {
         sx_vec2 n;
         closest_features(a, b, &sat, &cl);
-        if (clear_cut) *clear_cut = gap_is_clear(a, b, cl.distance - r);
+        if (clear_cut) *clear_cut = gap_is_clear(a, b, &sat, cl.distance - r);
         if (!(cl.distance <= limit)) return 0;
         /* The exact contact of cores apart: on the line between the closest
          * core points, midway between the surfaces. */
