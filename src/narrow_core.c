@@ -709,6 +709,20 @@ static inline bool cannot_win(sx_real s, sx_real slack, const sx_closest *best) 
     return lb2 < SX_REAL_MAX && lb2 * (SX_R(1.0) - SX_R(16.0) * SX_REAL_EPSILON) >= thr;
 }
 
+/* Index of the lowest set bit of x (not 0). */
+static inline int sx_lowest_bit(uint64_t x) {
+#if defined(__GNUC__) || defined(__clang__)
+    return __builtin_ctzll(x);
+#else
+    int i = 0;
+    while (!(x & 1u)) {
+        x >>= 1;
+        ++i;
+    }
+    return i;
+#endif
+}
+
 /* Offers every vertex of q to the edges of p (p_is_a: p is A), edge-major.
  * A polygon p needs only one edge per vertex: for a point outside a convex
  * polygon the closest point lies on the face that separates it the most
@@ -723,24 +737,38 @@ static inline bool cannot_win(sx_real s, sx_real slack, const sx_closest *best) 
 static void offer_vertices(const sx_core *p, const sx_core *q, bool p_is_a, sx_closest *out,
                            const int *vface, const sx_real *vsep, sx_real slack) {
     int i, j, edges = p->count >= 3 ? p->count : p->count - 1;
+#if SX_MAX_POLYGON_VERTICES <= 8
     if (p->count >= 3) {
-        /* The vertices of each face as a bit mask, so that the sweep visits
-         * them edge-major without testing every (edge, vertex) pair. */
-        unsigned mask[SX_MAX_POLYGON_VERTICES];
-        for (i = 0; i < p->count; ++i)
-            mask[i] = 0u;
-        for (j = 0; j < q->count; ++j)
-            mask[vface ? vface[j] : point_best_face(p, q->v[j])] |= 1u << j;
+        /* Bit 8 face + j for each vertex j of q: the set bits, lowest
+         * first, are the sweep's edge-major order (face, then vertex), and
+         * the loop visits only them. */
+        uint64_t order = 0u;
+        for (j = 0; j < q->count; ++j) {
+            int f = vface ? vface[j] : point_best_face(p, q->v[j]);
+            order |= (uint64_t)1u << (8 * f + j);
+        }
+        while (order != 0u) {
+            int bit = sx_lowest_bit(order);
+            order &= order - 1u;
+            i = bit >> 3;
+            j = bit & 7;
+            if (vsep != NULL && cannot_win(vsep[j], slack, out)) continue;
+            offer_edge(p, i, q->v[j], j, p_is_a, out);
+        }
+        return;
+    }
+#else
+    if (p->count >= 3) {
         for (i = 0; i < edges; ++i) {
-            unsigned bits = mask[i];
-            for (j = 0; bits != 0u; ++j, bits >>= 1) {
-                if (!(bits & 1u)) continue;
+            for (j = 0; j < q->count; ++j) {
+                if ((vface ? vface[j] : point_best_face(p, q->v[j])) != i) continue;
                 if (vsep != NULL && cannot_win(vsep[j], slack, out)) continue;
                 offer_edge(p, i, q->v[j], j, p_is_a, out);
             }
         }
         return;
     }
+#endif
     for (i = 0; i < edges; ++i) {
         for (j = 0; j < q->count; ++j)
             offer_edge(p, i, q->v[j], j, p_is_a, out);
