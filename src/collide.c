@@ -62,6 +62,8 @@ static bool finish_mtv(bool hit, sx_vec2 local, sx_xform xa, sx_vec2 *mtv) {
     return true;
 }
 
+/* Moves a local manifold of `count` points to world space in place (see
+ * sx_world_manifold). */
 static int world_manifold(sx_manifold *m, int count, sx_xform xa) {
     return sx_world_manifold(m, count, sx_xf_of(&xa));
 }

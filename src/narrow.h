@@ -335,12 +335,13 @@ int sx_collide_polygons_gated(const sx_polygon *a, sx_xf ta, const sx_polygon *b
 /* ---- fused pair functions (narrow_core.c) ------------------------------- */
 
 /* The manifold of a and b (kinds ka, kb: SX_SHAPE_SEGMENT, CAPSULE or
- * POLYGON, the shapes as those structs) placed by *xa and *xb, in world
- * space: the cores (b placed in a's frame), sx_core_manifold, the value
- * checks and the move to world space together, in one function. Invalid
- * input (a NULL or bad shape, a non-finite transform) gives 0 points and a
- * zeroed *out. out is not NULL; clear_cut as sx_core_manifold's, false
- * when overflow in world space lost the points. */
+ * POLYGON, the shapes as those structs) placed by xa and xb, in world
+ * space, with reference-face hysteresis `hysteresis`: the cores (b placed
+ * in a's frame), the manifold, the value checks and the move to world
+ * space together, in one function. Invalid input (a NULL or bad shape, a
+ * non-finite transform) gives 0 points and a zeroed *out. out is not NULL;
+ * clear_cut (may be NULL) as sx_core_manifold's, false when overflow in
+ * world space lost the points. */
 int sx_cores_collide(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_xf xb,
                      sx_real margin, sx_real hysteresis, sx_manifold *out, bool *clear_cut);
 
@@ -352,18 +353,21 @@ int sx_cores_collide(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_
     int sx_coll_##NAME(const TA *a, sx_xf xa, const TB *b, sx_xf xb, sx_real margin, sx_real hyst, \
                        sx_manifold *out);                                                          \
     int sx_entry_##NAME(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb, sx_real margin,  \
-                        sx_real hyst, sx_manifold *out);                                           \
+                        sx_real hyst, sx_manifold *out);
+#define SX_ENTRY_DECL_REV(NAME, TA, TB)                                                            \
+    SX_ENTRY_DECL(NAME, TA, TB)                                                                    \
     int sx_entry_##NAME##_rev(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,            \
                               sx_real margin, sx_real hyst, sx_manifold *out);
-SX_ENTRY_DECL(segment_circle, sx_segment, sx_circle)
-SX_ENTRY_DECL(capsule_circle, sx_capsule, sx_circle)
-SX_ENTRY_DECL(polygon_circle, sx_polygon, sx_circle)
-SX_ENTRY_DECL(capsule_segment, sx_capsule, sx_segment)
-SX_ENTRY_DECL(polygon_segment, sx_polygon, sx_segment)
-SX_ENTRY_DECL(polygon_capsule, sx_polygon, sx_capsule)
+SX_ENTRY_DECL_REV(segment_circle, sx_segment, sx_circle)
+SX_ENTRY_DECL_REV(capsule_circle, sx_capsule, sx_circle)
+SX_ENTRY_DECL_REV(polygon_circle, sx_polygon, sx_circle)
+SX_ENTRY_DECL_REV(capsule_segment, sx_capsule, sx_segment)
+SX_ENTRY_DECL_REV(polygon_segment, sx_polygon, sx_segment)
+SX_ENTRY_DECL_REV(polygon_capsule, sx_polygon, sx_capsule)
 SX_ENTRY_DECL(segments, sx_segment, sx_segment)
 SX_ENTRY_DECL(capsules, sx_capsule, sx_capsule)
 SX_ENTRY_DECL(polygons, sx_polygon, sx_polygon)
+#undef SX_ENTRY_DECL_REV
 #undef SX_ENTRY_DECL
 
 #endif /* SEPAX_NARROW_H */
