@@ -699,7 +699,11 @@ static inline int point_best_face(const sx_core *p, sx_vec2 q) {
  * away, slack covering the rounding of s and of the placed vertices and the
  * lean of a valid polygon's normals (sx_shape_validate), and its square, less
  * its own rounding, is already no better than what the sweep would take.
- * Only with a finite best, so that no square near overflow is involved. */
+ * Only with a finite best, so that no square near overflow is involved.
+ * The bound holds for shapes that sx_shape_validate accepts placed by unit
+ * rotations; for raw polygons with arbitrary normals, or raw rotations, the
+ * sweep may then keep another candidate than the full sweep would (never a
+ * NaN: only the choice among its candidates changes). */
 static inline bool cannot_win(sx_real s, sx_real slack, const sx_closest *best) {
     sx_real lb = s - slack, lb2, thr;
     if (!(lb > SX_R(0.0)) || !(best->dist_sq < SX_REAL_MAX)) return false;
