@@ -392,11 +392,15 @@ static bool build_pair(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_
     return relative_xform(xa, xb, &rel) && fa(a, NULL, ca) && fb(b, &rel, cb);
 }
 
+/* The shape type a builder builds cores of. */
+static int builder_kind(sx_core_builder *f) {
+    if (f == build_polygon) return SX_SHAPE_POLYGON;
+    return f == build_capsule ? SX_SHAPE_CAPSULE : SX_SHAPE_SEGMENT;
+}
+
 static bool pair_overlap(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
                          const void *b, sx_xform xb) {
-    sx_core ca, cb;
-    return build_pair(fa, a, xa, fb, b, xb, &ca, &cb) && sx_core_overlap(&ca, &cb) &&
-           sx_core_values_finite(&ca) && sx_core_values_finite(&cb);
+    return sx_cores_overlap(builder_kind(fa), a, sx_xf_of(&xa), builder_kind(fb), b, sx_xf_of(&xb));
 }
 
 static bool pair_mtv(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
@@ -406,12 +410,6 @@ static bool pair_mtv(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_bu
     bool hit = build_pair(fa, a, xa, fb, b, xb, &ca, &cb) && sx_core_mtv(&ca, &cb, &local) &&
                sx_core_values_finite(&ca) && sx_core_values_finite(&cb);
     return finish_mtv(hit, local, xa, mtv);
-}
-
-/* The shape type a builder builds cores of. */
-static int builder_kind(sx_core_builder *f) {
-    if (f == build_polygon) return SX_SHAPE_POLYGON;
-    return f == build_capsule ? SX_SHAPE_CAPSULE : SX_SHAPE_SEGMENT;
 }
 
 static int pair_collide_checked(sx_core_builder *fa, const void *a, sx_xform xa,

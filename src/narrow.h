@@ -345,6 +345,10 @@ int sx_collide_polygons_gated(const sx_polygon *a, sx_xf ta, const sx_polygon *b
 int sx_cores_collide(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_xf xb,
                      sx_real margin, sx_real hysteresis, sx_manifold *out, bool *clear_cut);
 
+/* sx_core_overlap of the same cores, with the value checks: what
+ * collide.c's pair_overlap answers, in one function. */
+bool sx_cores_overlap(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_xf xb);
+
 /* The manifold entries (narrow_core.c): sx_entry_NAME takes the two shapes
  * as the dispatch table does (NAME_rev: the arguments in the other order,
  * the manifold mirrored), sx_coll_NAME the pair's own structs, as the typed

@@ -824,7 +824,7 @@ static sx_vec2 fallback_normal(const sx_sat *sat) {
 
 /* ---- overlap and MTV ---------------------------------------------------- */
 
-bool sx_core_overlap(const sx_core *a, const sx_core *b) {
+static SX_ALWAYS_INLINE bool core_overlap(const sx_core *a, const sx_core *b) {
     sx_real r = a->radius + b->radius;
     sx_sat sat;
     sx_closest cl;
@@ -833,6 +833,8 @@ bool sx_core_overlap(const sx_core *a, const sx_core *b) {
     closest_features(a, b, &sat, &cl);
     return cl.distance <= r;
 }
+
+bool sx_core_overlap(const sx_core *a, const sx_core *b) { return core_overlap(a, b); }
 
 bool sx_core_mtv(const sx_core *a, const sx_core *b, sx_vec2 *mtv) {
     sx_real r = a->radius + b->radius;
@@ -1151,37 +1153,41 @@ static SX_ALWAYS_INLINE bool core_of(int kind, const void *shape, const sx_xform
  * the values and world space, with nothing passed between them through
  * memory that registers can hold. Specialised for each pair of kinds by
  * sx_cores_collide. */
+/* Builds the cores of a (in its own frame) and b (placed in a's frame) for
+ * the fused routines below, as build_pair in collide.c builds them; false
+ * for invalid input (a NULL or bad shape, a non-finite transform). */
+static SX_ALWAYS_INLINE bool cores_build(int ka, const void *a, sx_xf xa, int kb, const void *b,
+                                         sx_xf xb, sx_core *ca, sx_core *cb) {
+    bool ok;
+#if SX_NARROW_SSE
+    __m128 r = sx_sse_relative_xform(xa, xb);
+    ok = sx_sse_finite(r);
+    if (ok && kb == SX_SHAPE_POLYGON) {
+        const sx_polygon *pb = (const sx_polygon *)b;
+        ok = pb != NULL && core_radius_ok(pb->radius) && pb->count >= 3 &&
+             pb->count <= SX_MAX_POLYGON_VERTICES;
+        if (ok) place_polygon_rel(pb, r, cb);
+    } else if (ok) {
+        sx_xform rel;
+        _mm_storeu_ps(&rel.p.x, r);
+        ok = core_of(kb, b, &rel, cb);
+    }
+#else
+    sx_xform rel = sx_xform_inv_mul(*xa, *xb);
+    ok = sx_is_finite(((rel.p.x - rel.p.x) + (rel.p.y - rel.p.y)) +
+                      ((rel.q.c - rel.q.c) + (rel.q.s - rel.q.s))) &&
+         core_of(kb, b, &rel, cb);
+#endif
+    return ok && core_of(ka, a, NULL, ca);
+}
+
 static SX_ALWAYS_INLINE int cores_collide(int ka, const void *a, sx_xf xa, int kb, const void *b,
                                           sx_xf xb, sx_real margin, sx_real hysteresis,
                                           sx_manifold *out, bool *clear_cut) {
     sx_core ca, cb;
     int local, count;
-    bool ok;
     if (clear_cut) *clear_cut = false;
-#if SX_NARROW_SSE
-    {
-        __m128 r = sx_sse_relative_xform(xa, xb);
-        ok = sx_sse_finite(r);
-        if (ok && kb == SX_SHAPE_POLYGON) {
-            const sx_polygon *pb = (const sx_polygon *)b;
-            ok = pb != NULL && core_radius_ok(pb->radius) && pb->count >= 3 &&
-                 pb->count <= SX_MAX_POLYGON_VERTICES;
-            if (ok) place_polygon_rel(pb, r, &cb);
-        } else if (ok) {
-            sx_xform rel;
-            _mm_storeu_ps(&rel.p.x, r);
-            ok = core_of(kb, b, &rel, &cb);
-        }
-    }
-#else
-    {
-        sx_xform rel = sx_xform_inv_mul(*xa, *xb);
-        ok = sx_is_finite(((rel.p.x - rel.p.x) + (rel.p.y - rel.p.y)) +
-                          ((rel.q.c - rel.q.c) + (rel.q.s - rel.q.s))) &&
-             core_of(kb, b, &rel, &cb);
-    }
-#endif
-    if (!ok || !core_of(ka, a, NULL, &ca)) {
+    if (!cores_build(ka, a, xa, kb, b, xb, &ca, &cb)) {
         memset(out, 0, sizeof(*out));
         return 0;
     }
@@ -1191,6 +1197,12 @@ static SX_ALWAYS_INLINE int cores_collide(int ka, const void *a, sx_xf xa, int k
     count = sx_world_manifold(out, local, xa);
     if (clear_cut && count != local) *clear_cut = false;
     return count;
+}
+
+bool sx_cores_overlap(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_xf xb) {
+    sx_core ca, cb;
+    return cores_build(ka, a, xa, kb, b, xb, &ca, &cb) && core_overlap(&ca, &cb) &&
+           sx_core_values_finite(&ca) && sx_core_values_finite(&cb);
 }
 
 int sx_cores_collide(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_xf xb,
