@@ -1216,6 +1216,34 @@ static void a_far_neighbour_face_ties_within_its_rounding(void **state) {
     }
 }
 
+/* Regression (make fuzz, 2026-11-25, collide-long-capsule-along-reference-
+ * normal-cut-by-rounding; fails c9ef77a too): a capsule 3.4e-7 m long lying
+ * at the end of a capsule 1.3e5 m long and 9e4 m thick, the long one's core
+ * along the short one's face normal. The short face stayed the reference
+ * (the two separations tied within rounding), and clipping cut the long
+ * incident segment where its far end, rounded by 8 mm, seemed to cross the
+ * 3.4e-7 m slab: at 97 % of its length, with a depth of 0 where the pair
+ * overlaps by 9e4 m. An incident face whose ends differ along the face by
+ * no more than their rounding is not cut. */
+static void a_long_capsule_along_the_reference_normal_is_not_cut_by_rounding(void **state) {
+    sx_shape a = sx_capsule_shape(sx_v2(SX_R(1.125), SX_R(1.12499976)),
+                                  sx_v2(SX_R(1.12499976), SX_R(1.125)), SX_R(1.125));
+    sx_shape b = sx_capsule_shape(sx_v2(SX_R(1.125), SX_R(1.12498999)),
+                                  sx_v2(SX_R(90000.0), SX_R(90000.0)), SX_R(90000.0));
+    sx_xform x = X(-16.0, -16.0, 0.0);
+    sx_manifold m;
+    sx_vec2 mtv;
+    int order;
+    (void)state;
+    assert_true(sx_mtv(&a, x, &b, x, &mtv));
+    assert_near(sx_length(mtv), 90001.125, 0.05);
+    for (order = 0; order < 2; ++order) {
+        int n = order ? sx_collide(&b, x, &a, x, &m) : sx_collide(&a, x, &b, x, &m);
+        assert_in_range(n, 1, 2);
+        assert_near(deepest(&m), 90001.125, 0.05);
+    }
+}
+
 /* Regression (make fuzz, double build: sx_compound_overlap disagreed with
  * sx_overlap): two circles whose centres are closer than the square root of
  * the smallest normal real compared squares that underflowed to 0, so two
@@ -1693,6 +1721,7 @@ int main(void) {
         cmocka_unit_test(a_speculative_margin_never_reports_fewer_points_than_margin_0),
         cmocka_unit_test(a_speck_on_a_far_edge_gets_no_fewer_speculative_points),
         cmocka_unit_test(a_far_neighbour_face_ties_within_its_rounding),
+        cmocka_unit_test(a_long_capsule_along_the_reference_normal_is_not_cut_by_rounding),
         cmocka_unit_test(circles_closer_than_square_underflow_compare_exactly),
         cmocka_unit_test(tiny_box_on_a_far_corner_touches_in_both_orders),
         cmocka_unit_test(sliver_incident_face_is_taken_at_the_deepest_vertex),
