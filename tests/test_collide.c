@@ -1244,6 +1244,41 @@ static void a_long_capsule_along_the_reference_normal_is_not_cut_by_rounding(voi
     }
 }
 
+/* Regression (make fuzz, 2026-11-25, collide-tiny-reference-face-clips-long-
+ * capsule; fails c9ef77a too): a capsule 3.4e-7 m long and 1.125 m thick
+ * 6e-5 m beside the end of a capsule 2.8e4 m long, of the same thickness,
+ * at 5e-5 rad from the short one's face normal. The short face was the
+ * reference, and clipping the long core to its 3.4e-7 m slab (narrower than
+ * the 2 mm rounding of the long core's far end) cut it 1.3 m along: 0.93 m
+ * reported of a 2.25 m depth. A reference face no wider than the rounding
+ * does not clip. */
+static void a_reference_face_narrower_than_rounding_does_not_clip(void **state) {
+    sx_shape a = sx_capsule_shape(sx_v2(SX_R(1.125), SX_R(1.12499976)),
+                                  sx_v2(SX_R(1.12499976), SX_R(1.125)), SX_R(1.125));
+    sx_shape b = sx_capsule_shape(sx_v2(SX_R(1.125), SX_R(1.12498951)),
+                                  sx_v2(SX_R(-20000.0), SX_R(-20000.0)), SX_R(1.125));
+    sx_xform xa, xb;
+    sx_manifold m;
+    sx_vec2 mtv;
+    int order;
+    (void)state;
+    xa.p = sx_v2(SX_R(1.125), SX_R(1.125));
+    xa.q.c = SX_R(0.431190938);
+    xa.q.s = SX_R(0.902260721);
+    xb.p = sx_v2(SX_R(1.12500036), SX_R(1.12501669));
+    xb.q.c = SX_R(0.431146622);
+    xb.q.s = SX_R(0.90228188);
+    xa.q = sx_rot_normalize(xa.q);
+    xb.q = sx_rot_normalize(xb.q);
+    assert_true(sx_mtv(&a, xa, &b, xb, &mtv));
+    assert_near(sx_length(mtv), 2.25, 0.01);
+    for (order = 0; order < 2; ++order) {
+        int n = order ? sx_collide(&b, xb, &a, xa, &m) : sx_collide(&a, xa, &b, xb, &m);
+        assert_in_range(n, 1, 2);
+        assert_near(deepest(&m), 2.25, 0.01);
+    }
+}
+
 /* Regression (make fuzz, double build: sx_compound_overlap disagreed with
  * sx_overlap): two circles whose centres are closer than the square root of
  * the smallest normal real compared squares that underflowed to 0, so two
@@ -1722,6 +1757,7 @@ int main(void) {
         cmocka_unit_test(a_speck_on_a_far_edge_gets_no_fewer_speculative_points),
         cmocka_unit_test(a_far_neighbour_face_ties_within_its_rounding),
         cmocka_unit_test(a_long_capsule_along_the_reference_normal_is_not_cut_by_rounding),
+        cmocka_unit_test(a_reference_face_narrower_than_rounding_does_not_clip),
         cmocka_unit_test(circles_closer_than_square_underflow_compare_exactly),
         cmocka_unit_test(tiny_box_on_a_far_corner_touches_in_both_orders),
         cmocka_unit_test(sliver_incident_face_is_taken_at_the_deepest_vertex),
