@@ -530,21 +530,40 @@ bool sx_contacts_impacts(sx_world *world, sx_real h) {
     world->impact_shifts_pending = true;
 
     /* contact lists per movable body (contacts with restitution only: the
-     * others never take part in the pass) */
-    /* movable bodies are active ones: a sleeping world costs nothing here */
+     * others never take part in the pass). The active bodies are reset for
+     * the shifts integrate applies to them; the bodies of the contacts too,
+     * which are not always active ones: a body put to sleep between the
+     * step's collide and a solve called on its own keeps its contacts, and
+     * its entry from an earlier pass indexed past the adjacency array
+     * (fuzz: world-sleeping-body-stale-impact-list). Each body's list is
+     * placed at the first contact that names it. */
     for (i = 0; i < world->active_body_count; ++i)
         memset(&world->impact_bodies[world->active_bodies[i]], 0, sizeof(sx_impact_body));
+    for (i = 0; i < world->contact_count; ++i) {
+        const sx_contact *c = &world->contacts[i];
+        if (!sx_impact_candidate(world, c)) continue;
+        memset(&world->impact_bodies[c->body_a], 0, sizeof(sx_impact_body));
+        memset(&world->impact_bodies[c->body_b], 0, sizeof(sx_impact_body));
+        world->impact_bodies[c->body_a].start = -1;
+        world->impact_bodies[c->body_b].start = -1;
+    }
     for (i = 0; i < world->contact_count; ++i) {
         const sx_contact *c = &world->contacts[i];
         if (!sx_impact_candidate(world, c)) continue;
         if (sx_movable(&world->sims[c->body_a])) world->impact_bodies[c->body_a].count++;
         if (sx_movable(&world->sims[c->body_b])) world->impact_bodies[c->body_b].count++;
     }
-    for (i = 0, k = 0; i < world->active_body_count; ++i) {
-        sx_impact_body *body = &world->impact_bodies[world->active_bodies[i]];
-        body->start = k;
-        k += body->count;
-        body->count = 0;
+    for (i = 0, k = 0; i < world->contact_count; ++i) {
+        const sx_contact *c = &world->contacts[i];
+        int side;
+        if (!sx_impact_candidate(world, c)) continue;
+        for (side = 0; side < 2; ++side) {
+            sx_impact_body *body = &world->impact_bodies[side ? c->body_b : c->body_a];
+            if (body->start >= 0) continue;
+            body->start = k;
+            k += body->count;
+            body->count = 0;
+        }
     }
     for (i = 0; i < world->contact_count; ++i) {
         const sx_contact *c = &world->contacts[i];
