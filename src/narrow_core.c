@@ -593,9 +593,13 @@ static SX_ALWAYS_INLINE sx_real sat_pair_scale(const sx_core *a, const sx_core *
  * origin has its vertices rounded while its normals stay exact, and an edge
  * shorter than that rounding (a 5 mm edge at 1e5 m in float) points
  * anywhere; the face case would then take q's distance to the face's line
- * for a q far beyond the face's ends (a 16 m gap reported as 77 km). */
-static inline void offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index, bool p_is_a,
-                              sx_closest *best) {
+ * for a q far beyond the face's ends (a 16 m gap reported as 77 km).
+ * Returns 0 when q lies over the face, -1 (1) when it lies before its first
+ * (past its second) end, the corner offered; with walk (polygon p), 0 too
+ * when q lies within that corner's region, past the end of the face beyond
+ * the corner (offer_face_walk). */
+static SX_ALWAYS_INLINE int offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index,
+                                       bool p_is_a, bool walk, sx_closest *best) {
     int i2 = next_index(p, i);
     sx_vec2 v1 = p->v[i], w = sx_sub(q, v1), n = p->n[i], dir = sx_v2(-n.y, n.x);
     sx_real t = sx_dot(w, dir);
@@ -608,12 +612,21 @@ static inline void offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index, b
         vertex = i2;
     }
     if (vertex >= 0) {
+        int side = vertex == i ? -1 : 1;
+        if (walk) {
+            /* q within the corner's region (past the end of the face past
+             * the corner) settles the walk (offer_face_walk). */
+            int past = vertex == i ? (i > 0 ? i - 1 : p->count - 1) : i2;
+            sx_vec2 np = p->n[past];
+            sx_real along = sx_dot(vertex == i ? w : sx_sub(q, p->v[i2]), sx_v2(-np.y, np.x));
+            if (vertex == i ? along >= SX_R(0.0) : along <= SX_R(0.0)) side = 0;
+        }
         on_p = p->v[vertex];
         dsq = sx_distance_sq(on_p, q);
         if (!(dsq < (best->kind == SX_CLOSEST_VERTICES
                          ? best->dist_sq
                          : best->dist_sq * (SX_R(1.0) - SX_CLOSEST_TIE)))) {
-            return;
+            return side;
         }
         best->dist_sq = dsq;
         best->kind = SX_CLOSEST_VERTICES;
@@ -622,7 +635,7 @@ static inline void offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index, b
         best->pa = p_is_a ? on_p : q;
         best->pb = p_is_a ? q : on_p;
         best->normal = sx_v2_zero();
-        return;
+        return side;
     }
     s = sx_dot(w, n);
     if (p->count == 2 && s < SX_R(0.0)) {
@@ -633,7 +646,7 @@ static inline void offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index, b
     dsq = s * s;
     if (!(dsq < (best->kind == SX_CLOSEST_VERTICES ? best->dist_sq * (SX_R(1.0) + SX_CLOSEST_TIE)
                                                    : best->dist_sq))) {
-        return;
+        return 0;
     }
     on_p = sx_mul_sub(q, s, n);
     best->dist_sq = dsq;
@@ -644,6 +657,26 @@ static inline void offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index, b
     best->pa = p_is_a ? on_p : q;
     best->pb = p_is_a ? q : on_p;
     best->normal = p_is_a ? n : sx_neg(n);
+    return 0;
+}
+
+/* offer_edge for the face i of polygon core p (count >= 3) that separates q
+ * the most, and, while q lies beyond an end of the face offered, the face
+ * past that end. In exact arithmetic q then lies in the corner's region
+ * and the next face only offers that corner again; but two faces that are
+ * nearly one line separate q by amounts closer than their rounding (a far
+ * vertex rounds both by its magnitude), and the face found largest may be
+ * the one q lies beyond: its corner was then taken, metres from the point
+ * on the neighbour face that q lies over (a 1.71 m gap reported as 7.96 m
+ * beside a vertex at 1e5 m). The walk offers only real points of p, so it
+ * can only bring the answer closer. */
+static inline void offer_face_walk(const sx_core *p, int i, sx_vec2 q, int q_index, bool p_is_a,
+                                   sx_closest *best) {
+    int side = offer_edge(p, i, q, q_index, p_is_a, true, best), k;
+    for (k = 1; side != 0 && k < p->count; ++k) {
+        i = side < 0 ? (i > 0 ? i - 1 : p->count - 1) : next_index(p, i);
+        if (offer_edge(p, i, q, q_index, p_is_a, true, best) != side) break;
+    }
 }
 
 static inline sx_real max_abs_coord(sx_vec2 a, sx_vec2 b) {
@@ -731,7 +764,8 @@ static inline int sx_lowest_bit(uint64_t x) {
  * A polygon p needs only one edge per vertex: for a point outside a convex
  * polygon the closest point lies on the face that separates it the most
  * (see point_closest below; every vertex of q is outside p, the cores being
- * disjoint), so the other edges cannot win the sweep, and the sweep visits
+ * disjoint), so the other edges cannot win the sweep (offer_face_walk adds
+ * the faces past a corner, for a face chosen by rounding), and the sweep visits
  * the candidates that can in the order of the full sweep, edge-major, so
  * exact ties resolve as they did. vface and vsep (may be NULL) are each
  * vertex's face of largest separation and that separation, from the SAT;
@@ -757,7 +791,7 @@ static void offer_vertices(const sx_core *p, const sx_core *q, bool p_is_a, sx_c
             i = bit >> 3;
             j = bit & 7;
             if (vsep != NULL && cannot_win(vsep[j], slack, out)) continue;
-            offer_edge(p, i, q->v[j], j, p_is_a, out);
+            offer_face_walk(p, i, q->v[j], j, p_is_a, out);
         }
         return;
     }
@@ -767,7 +801,7 @@ static void offer_vertices(const sx_core *p, const sx_core *q, bool p_is_a, sx_c
             for (j = 0; j < q->count; ++j) {
                 if ((vface ? vface[j] : point_best_face(p, q->v[j])) != i) continue;
                 if (vsep != NULL && cannot_win(vsep[j], slack, out)) continue;
-                offer_edge(p, i, q->v[j], j, p_is_a, out);
+                offer_face_walk(p, i, q->v[j], j, p_is_a, out);
             }
         }
         return;
@@ -775,7 +809,7 @@ static void offer_vertices(const sx_core *p, const sx_core *q, bool p_is_a, sx_c
 #endif
     for (i = 0; i < edges; ++i) {
         for (j = 0; j < q->count; ++j)
-            offer_edge(p, i, q->v[j], j, p_is_a, out);
+            (void)offer_edge(p, i, q->v[j], j, p_is_a, false, out);
     }
 }
 
@@ -1295,9 +1329,9 @@ static void point_closest(const sx_core *a, sx_vec2 c, const sx_sat *sat, sx_clo
     if (a->count == 1) {
         out->dist_sq = sx_distance_sq(a->v[0], c);
     } else if (a->count == 2) {
-        offer_edge(a, 0, c, 0, true, out);
+        (void)offer_edge(a, 0, c, 0, true, false, out);
     } else {
-        offer_edge(a, sat->face_a, c, 0, true, out);
+        offer_face_walk(a, sat->face_a, c, 0, true, out);
     }
     vertex_direction(out);
 }
@@ -1354,8 +1388,13 @@ static inline int point_manifold_rest(const sx_core *a, sx_vec2 c, sx_real rb, s
     if (n.x == SX_R(0.0) && n.y == SX_R(0.0)) n = fallback_normal(sat);
     p->point = sx_mul_add(sx_lerp(cl.pa, cl.pb, SX_R(0.5)), SX_R(0.5) * (a->radius - rb), n);
     p->depth = sx_maxr(r - cl.distance, -margin);
-    if (sat->face_a >= 0 &&
-        (cl.kind != SX_CLOSEST_VERTICES || cl.distance <= sat->sep_a + SX_FACE_CONTACT_TOLERANCE)) {
+    if (cl.kind == SX_CLOSEST_FACE_A && a->count >= 3) {
+        /* A face contact on the face the walk found (offer_face_walk). */
+        p->id = SX_FEATURE_ID(cl.ia, 0, 0);
+        out->normal = a->n[cl.ia];
+    } else if (sat->face_a >= 0 &&
+               (cl.kind != SX_CLOSEST_VERTICES ||
+                cl.distance <= sat->sep_a + SX_FACE_CONTACT_TOLERANCE)) {
         /* A face contact: the exact point, labelled and oriented by the face. */
         p->id = SX_FEATURE_ID(sat->face_a, 0, 0);
         out->normal = a->n[sat->face_a];
@@ -1613,6 +1652,12 @@ static SX_ALWAYS_INLINE int polygon_point(const sx_vec2 *v, const sx_vec2 *nn, i
     }
     out->vertex = vertex;
     if (vertex >= 0) {
+        /* The corner's region ends at the face past it: beyond, rounding
+         * chose the face (see offer_face_walk), and the general route
+         * walks on. */
+        int side_face = vertex == face ? (face > 0 ? face - 1 : count - 1) : i2;
+        sx_real past = sx_dot(sx_sub(c, v[vertex]), sx_v2(-nn[side_face].y, nn[side_face].x));
+        if (vertex == face ? !(past >= SX_R(0.0)) : !(past <= SX_R(0.0))) return -1;
         out->on = v[vertex];
         dsq = sx_distance_sq(out->on, c);
         if (!(dsq < SX_REAL_MAX)) return -1;

@@ -1279,6 +1279,67 @@ static void a_reference_face_narrower_than_rounding_does_not_clip(void **state) 
     }
 }
 
+/* Regression (make fuzz, 2026-11-25, collide-near-collinear-faces-take-
+ * the-wrong-corner; fails c9ef77a too): a quad whose first two faces are
+ * nearly one line (the first runs to a vertex at (-1e5, -1e5)), 1.71 m from
+ * a point in front of its first face, 0.9 m short of the corner between
+ * them. The faces separate the point by amounts closer than the rounding of
+ * the far vertex, the second was taken as the face of largest separation,
+ * and the point lies beyond its start: the corner was taken as the closest
+ * feature, 7.96 m away. The MTV reported 1.21 m of a 7.45 m depth against a
+ * 9.17 m rounded triangle, and a 9.17 m circle at that point was missed
+ * altogether. The closest feature now walks past the corner. */
+static void near_collinear_faces_find_the_face_past_the_corner(void **state) {
+    const sx_vec2 tri[3] = {{SX_R(-12.2484293), SX_R(-0.0127412677)},
+                            {SX_R(0.00217082025), SX_R(0.000494657608)},
+                            {SX_R(0.00217082025), SX_R(0.00190534221)}};
+    const sx_vec2 quad[4] = {{SX_R(-100000.0), SX_R(-100000.0)},
+                             {SX_R(0.00729999971), SX_R(0.00729999971)},
+                             {SX_R(9.16062546), SX_R(9.16468811)},
+                             {SX_R(-16.0), SX_R(9.125)}};
+    const sx_real r = SX_R(9.16875076);
+    /* 9.16875076 - 1.71384791 (the gap, taken in double from the placed
+     * vertices) */
+    const double depth = 7.45490285;
+    sx_shape a, b, core, circle;
+    sx_xform xa, xb, xc;
+    sx_manifold m;
+    sx_vec2 mtv;
+    int order;
+    (void)state;
+    assert_int_equal(sx_polygon_shape(tri, 3, SX_R(0.0), &a), SX_OK);
+    assert_int_equal(sx_polygon_shape(quad, 4, r, &b), SX_OK);
+    assert_int_equal(sx_polygon_shape(quad, 4, SX_R(0.0), &core), SX_OK);
+    assert_int_equal(b.u.polygon.count, 4);
+    xa.p = sx_v2(SX_R(9.17281342), SX_R(9.17687607));
+    xa.q.c = SX_R(-0.0541771352);
+    xa.q.s = SX_R(0.998531342);
+    xb.p = sx_v2(SX_R(1.62906253), SX_R(1.63312507));
+    xb.q.c = SX_R(-0.0850384012);
+    xb.q.s = SX_R(0.996377647);
+    xa.q = sx_rot_normalize(xa.q);
+    xb.q = sx_rot_normalize(xb.q);
+    for (order = 0; order < 2; ++order) {
+        int n = order ? sx_collide(&b, xb, &a, xa, &m) : sx_collide(&a, xa, &b, xb, &m);
+        assert_true(order ? sx_mtv(&b, xb, &a, xa, &mtv) : sx_mtv(&a, xa, &b, xb, &mtv));
+        assert_near(sx_length(mtv), depth, 0.02);
+        assert_in_range(n, 1, 2);
+        assert_near(deepest(&m), depth, 0.02);
+    }
+    /* The point of the triangle nearest the quad, as a circle's centre. */
+    xc.p = sx_xform_point(xa, tri[0]);
+    xc.q = sx_rot_identity();
+    circle = sx_circle_shape(sx_v2_zero(), r);
+    for (order = 0; order < 2; ++order) {
+        int n = order ? sx_collide(&circle, xc, &core, xb, &m) : sx_collide(&core, xb, &circle, xc, &m);
+        assert_true(order ? sx_overlap(&circle, xc, &core, xb) : sx_overlap(&core, xb, &circle, xc));
+        assert_true(order ? sx_mtv(&circle, xc, &core, xb, &mtv) : sx_mtv(&core, xb, &circle, xc, &mtv));
+        assert_near(sx_length(mtv), depth, 0.02);
+        assert_int_equal(n, 1);
+        assert_near(deepest(&m), depth, 0.02);
+    }
+}
+
 /* Regression (make fuzz, double build: sx_compound_overlap disagreed with
  * sx_overlap): two circles whose centres are closer than the square root of
  * the smallest normal real compared squares that underflowed to 0, so two
@@ -1758,6 +1819,7 @@ int main(void) {
         cmocka_unit_test(a_far_neighbour_face_ties_within_its_rounding),
         cmocka_unit_test(a_long_capsule_along_the_reference_normal_is_not_cut_by_rounding),
         cmocka_unit_test(a_reference_face_narrower_than_rounding_does_not_clip),
+        cmocka_unit_test(near_collinear_faces_find_the_face_past_the_corner),
         cmocka_unit_test(circles_closer_than_square_underflow_compare_exactly),
         cmocka_unit_test(tiny_box_on_a_far_corner_touches_in_both_orders),
         cmocka_unit_test(sliver_incident_face_is_taken_at_the_deepest_vertex),
