@@ -385,31 +385,30 @@ static bool build_polygon(const void *s, const sx_xform *x, sx_core *out) {
     return sx_core_from_polygon((const sx_polygon *)s, x, out);
 }
 
-/* Builds both cores in A's frame; false on any invalid input. */
-static bool build_pair(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
-                       const void *b, sx_xform xb, sx_core *ca, sx_core *cb) {
-    sx_xform rel;
-    return relative_xform(xa, xb, &rel) && fa(a, NULL, ca) && fb(b, &rel, cb);
-}
-
 /* The shape type a builder builds cores of. */
 static int builder_kind(sx_core_builder *f) {
     if (f == build_polygon) return SX_SHAPE_POLYGON;
     return f == build_capsule ? SX_SHAPE_CAPSULE : SX_SHAPE_SEGMENT;
 }
 
-static bool pair_overlap(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
-                         const void *b, sx_xform xb) {
-    return sx_cores_overlap(builder_kind(fa), a, sx_xf_of(&xa), builder_kind(fb), b, sx_xf_of(&xb));
+/* The overlap and MTV of two cores: narrow_core.c's fused routines. The
+ * transforms come by address, from the function that holds them by value:
+ * passed on by value through the inlined pair functions, GCC 12 copied the
+ * transform of B as one 16-byte load of its two stored 8-byte halves, a
+ * failed store forward that cost the overlap of a polygon and a segment a
+ * fifth of its time (40 ns, 33 ns now). circle_valid takes B's transform by
+ * address for the same reason. */
+static bool pair_overlap(sx_core_builder *fa, const void *a, const sx_xform *xa,
+                         sx_core_builder *fb, const void *b, const sx_xform *xb) {
+    return sx_cores_overlap(builder_kind(fa), a, sx_xf_of(xa), builder_kind(fb), b, sx_xf_of(xb));
 }
 
-static bool pair_mtv(sx_core_builder *fa, const void *a, sx_xform xa, sx_core_builder *fb,
-                     const void *b, sx_xform xb, sx_vec2 *mtv) {
-    sx_core ca, cb;
-    sx_vec2 local = sx_v2_zero();
-    bool hit = build_pair(fa, a, xa, fb, b, xb, &ca, &cb) && sx_core_mtv(&ca, &cb, &local) &&
-               sx_core_values_finite(&ca) && sx_core_values_finite(&cb);
-    return finish_mtv(hit, local, xa, mtv);
+static bool pair_mtv(sx_core_builder *fa, const void *a, const sx_xform *xa, sx_core_builder *fb,
+                     const void *b, const sx_xform *xb, sx_vec2 *mtv) {
+    sx_vec2 local;
+    bool hit =
+        sx_cores_mtv(builder_kind(fa), a, sx_xf_of(xa), builder_kind(fb), b, sx_xf_of(xb), &local);
+    return finish_mtv(hit, local, *xa, mtv);
 }
 
 static int pair_collide_checked(sx_core_builder *fa, const void *a, sx_xform xa,
@@ -433,8 +432,8 @@ static inline sx_vec2 circle_in_frame(const sx_circle *b, const sx_xform *xa, co
     return sx_circle_in_frame(b, sx_xf_of(xa), sx_xf_of(xb));
 }
 
-static inline bool circle_valid(const sx_circle *b, sx_xform xb, sx_vec2 c) {
-    return sx_circle_valid(b, sx_xf_of(&xb), c);
+static inline bool circle_valid(const sx_circle *b, const sx_xform *xb, sx_vec2 c) {
+    return sx_circle_valid(b, sx_xf_of(xb), c);
 }
 
 static bool point_overlap(sx_core_builder *fa, const void *a, sx_xform xa, const sx_circle *b,
@@ -443,7 +442,7 @@ static bool point_overlap(sx_core_builder *fa, const void *a, sx_xform xa, const
     sx_vec2 c;
     if (b == NULL || !fa(a, NULL, &ca)) return false;
     c = circle_in_frame(b, &xa, &xb);
-    return sx_core_point_overlap(&ca, c, b->radius) && circle_valid(b, xb, c) &&
+    return sx_core_point_overlap(&ca, c, b->radius) && circle_valid(b, &xb, c) &&
            sx_core_values_finite(&ca);
 }
 
@@ -454,7 +453,7 @@ static bool point_mtv(sx_core_builder *fa, const void *a, sx_xform xa, const sx_
     bool hit = false;
     if (b != NULL && fa(a, NULL, &ca)) {
         c = circle_in_frame(b, &xa, &xb);
-        hit = sx_core_point_mtv(&ca, c, b->radius, &local) && circle_valid(b, xb, c) &&
+        hit = sx_core_point_mtv(&ca, c, b->radius, &local) && circle_valid(b, &xb, c) &&
               sx_core_values_finite(&ca);
     }
     return finish_mtv(hit, local, xa, mtv);
@@ -473,7 +472,7 @@ static int point_collide(sx_core_builder *fa, const void *a, sx_xform xa, const 
     }
     c = circle_in_frame(b, &xa, &xb);
     local = sx_core_point_manifold(&ca, c, b->radius, clean_margin(margin), m);
-    if (local > 0 && !(circle_valid(b, xb, c) && sx_core_values_finite(&ca))) local = 0;
+    if (local > 0 && !(circle_valid(b, &xb, c) && sx_core_values_finite(&ca))) local = 0;
     return world_manifold(m, local, xa);
 }
 
@@ -494,7 +493,7 @@ SX_NOINLINE static bool segment_point_overlap(sx_vec2 a0, sx_vec2 a1, sx_real ra
     c = circle_in_frame(b, &xa, &xb);
     hit = sx_core_segment_point_overlap(a0, a1, ra, c, b->radius);
     if (hit < 0) return point_overlap(fa, a, xa, b, xb);
-    return hit > 0 && circle_valid(b, xb, c);
+    return hit > 0 && circle_valid(b, &xb, c);
 }
 
 SX_NOINLINE static bool segment_point_mtv(sx_vec2 a0, sx_vec2 a1, sx_real ra, sx_core_builder *fa,
@@ -506,7 +505,7 @@ SX_NOINLINE static bool segment_point_mtv(sx_vec2 a0, sx_vec2 a1, sx_real ra, sx
         c = circle_in_frame(b, &xa, &xb);
         hit = sx_core_segment_point_mtv(a0, a1, ra, c, b->radius, &local);
         if (hit < 0) return point_mtv(fa, a, xa, b, xb, mtv);
-        hit = hit > 0 && circle_valid(b, xb, c);
+        hit = hit > 0 && circle_valid(b, &xb, c);
     }
     return finish_mtv(hit, local, xa, mtv);
 }
@@ -531,8 +530,8 @@ static bool capsule_radius_ok(const sx_capsule *a) {
  * (b, a) is the canonical order. */
 static bool pair_overlap_sym(sx_core_builder *f, const void *a, sx_xform xa, const void *b,
                              sx_xform xb, int order) {
-    if (order > 0) return pair_overlap(f, b, xb, f, a, xa);
-    return pair_overlap(f, a, xa, f, b, xb);
+    if (order > 0) return pair_overlap(f, b, &xb, f, a, &xa);
+    return pair_overlap(f, a, &xa, f, b, &xb);
 }
 
 static bool pair_mtv_sym(sx_core_builder *f, const void *a, sx_xform xa, const void *b, sx_xform xb,
@@ -540,10 +539,10 @@ static bool pair_mtv_sym(sx_core_builder *f, const void *a, sx_xform xa, const v
     sx_vec2 v;
     bool hit;
     if (order > 0) {
-        hit = pair_mtv(f, b, xb, f, a, xa, &v);
+        hit = pair_mtv(f, b, &xb, f, a, &xa, &v);
         v = hit ? sx_neg(v) : sx_v2_zero();
     } else {
-        hit = pair_mtv(f, a, xa, f, b, xb, &v);
+        hit = pair_mtv(f, a, &xa, f, b, &xb, &v);
     }
     if (mtv) *mtv = v;
     return hit;
@@ -696,11 +695,11 @@ int sx_collide_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle 
 
 bool sx_overlap_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b,
                                 sx_xform xb) {
-    return pair_overlap(build_capsule, a, xa, build_segment, b, xb);
+    return pair_overlap(build_capsule, a, &xa, build_segment, b, &xb);
 }
 bool sx_mtv_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                             sx_vec2 *mtv) {
-    return pair_mtv(build_capsule, a, xa, build_segment, b, xb, mtv);
+    return pair_mtv(build_capsule, a, &xa, build_segment, b, &xb, mtv);
 }
 int sx_collide_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                                sx_real margin, sx_manifold *out) {
@@ -772,7 +771,7 @@ SX_NOINLINE static bool polygon_point_overlap(const sx_polygon *a, sx_xform xa, 
     c = circle_in_frame(b, &xa, &xb);
     hit = sx_core_polygon_point_overlap(a, c, b->radius);
     if (hit < 0) return point_overlap(build_polygon, a, xa, b, xb);
-    return hit > 0 && circle_valid(b, xb, c) &&
+    return hit > 0 && circle_valid(b, &xb, c) &&
            sx_polygon_values_finite(a->vertices, a->normals, a->count);
 }
 
@@ -784,7 +783,7 @@ SX_NOINLINE static bool polygon_point_mtv(const sx_polygon *a, sx_xform xa, cons
         c = circle_in_frame(b, &xa, &xb);
         hit = sx_core_polygon_point_mtv(a, c, b->radius, &local);
         if (hit < 0) return point_mtv(build_polygon, a, xa, b, xb, mtv);
-        hit = hit > 0 && circle_valid(b, xb, c) &&
+        hit = hit > 0 && circle_valid(b, &xb, c) &&
               sx_polygon_values_finite(a->vertices, a->normals, a->count);
     }
     return finish_mtv(hit, local, xa, mtv);
@@ -806,11 +805,11 @@ int sx_collide_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle 
 
 bool sx_overlap_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b,
                                 sx_xform xb) {
-    return pair_overlap(build_polygon, a, xa, build_segment, b, xb);
+    return pair_overlap(build_polygon, a, &xa, build_segment, b, &xb);
 }
 bool sx_mtv_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                             sx_vec2 *mtv) {
-    return pair_mtv(build_polygon, a, xa, build_segment, b, xb, mtv);
+    return pair_mtv(build_polygon, a, &xa, build_segment, b, &xb, mtv);
 }
 int sx_collide_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                                sx_real margin, sx_manifold *out) {
@@ -821,11 +820,11 @@ int sx_collide_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segmen
 
 bool sx_overlap_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b,
                                 sx_xform xb) {
-    return pair_overlap(build_polygon, a, xa, build_capsule, b, xb);
+    return pair_overlap(build_polygon, a, &xa, build_capsule, b, &xb);
 }
 bool sx_mtv_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                             sx_vec2 *mtv) {
-    return pair_mtv(build_polygon, a, xa, build_capsule, b, xb, mtv);
+    return pair_mtv(build_polygon, a, &xa, build_capsule, b, &xb, mtv);
 }
 int sx_collide_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                                sx_real margin, sx_manifold *out) {
@@ -936,7 +935,7 @@ static bool overlap_polygons_ordered(const sx_polygon *a, sx_xform xa, const sx_
     bool hit;
     sx_vec2 local;
     if (box_fast_path(a, xa, b, xb, &hit, &local)) return hit;
-    return pair_overlap(build_polygon, a, xa, build_polygon, b, xb);
+    return pair_overlap(build_polygon, a, &xa, build_polygon, b, &xb);
 }
 
 static bool mtv_polygons_ordered(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
@@ -944,7 +943,7 @@ static bool mtv_polygons_ordered(const sx_polygon *a, sx_xform xa, const sx_poly
     bool hit;
     sx_vec2 local;
     if (box_fast_path(a, xa, b, xb, &hit, &local)) return finish_mtv(hit, local, xa, mtv);
-    return pair_mtv(build_polygon, a, xa, build_polygon, b, xb, mtv);
+    return pair_mtv(build_polygon, a, &xa, build_polygon, b, &xb, mtv);
 }
 
 bool sx_overlap_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb) {

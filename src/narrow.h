@@ -349,6 +349,11 @@ int sx_cores_collide(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_
  * collide.c's pair_overlap answers, in one function. */
 bool sx_cores_overlap(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_xf xb);
 
+/* sx_core_mtv of the same cores, with the value checks: the MTV in a's
+ * frame (zero when false), as collide.c's pair_mtv takes it before the
+ * move to world space. */
+bool sx_cores_mtv(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_xf xb, sx_vec2 *mtv);
+
 /* The manifold entries (narrow_core.c): sx_entry_NAME takes the two shapes
  * as the dispatch table does (NAME_rev: the arguments in the other order,
  * the manifold mirrored), sx_coll_NAME the pair's own structs, as the typed

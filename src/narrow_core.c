@@ -870,7 +870,7 @@ static SX_ALWAYS_INLINE bool core_overlap(const sx_core *a, const sx_core *b) {
 
 bool sx_core_overlap(const sx_core *a, const sx_core *b) { return core_overlap(a, b); }
 
-bool sx_core_mtv(const sx_core *a, const sx_core *b, sx_vec2 *mtv) {
+static SX_ALWAYS_INLINE bool core_mtv(const sx_core *a, const sx_core *b, sx_vec2 *mtv) {
     sx_real r = a->radius + b->radius;
     sx_sat sat;
     sx_closest cl;
@@ -897,6 +897,8 @@ bool sx_core_mtv(const sx_core *a, const sx_core *b, sx_vec2 *mtv) {
     *mtv = sx_scale(n, cl.distance - r);
     return true;
 }
+
+bool sx_core_mtv(const sx_core *a, const sx_core *b, sx_vec2 *mtv) { return core_mtv(a, b, mtv); }
 
 /* ---- manifolds ---------------------------------------------------------- */
 
@@ -1255,6 +1257,13 @@ static SX_ALWAYS_INLINE int cores_collide(int ka, const void *a, sx_xf xa, int k
 bool sx_cores_overlap(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_xf xb) {
     sx_core ca, cb;
     return cores_build(ka, a, xa, kb, b, xb, &ca, &cb) && core_overlap(&ca, &cb) &&
+           sx_core_values_finite(&ca) && sx_core_values_finite(&cb);
+}
+
+bool sx_cores_mtv(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_xf xb, sx_vec2 *mtv) {
+    sx_core ca, cb;
+    *mtv = sx_v2_zero();
+    return cores_build(ka, a, xa, kb, b, xb, &ca, &cb) && core_mtv(&ca, &cb, mtv) &&
            sx_core_values_finite(&ca) && sx_core_values_finite(&cb);
 }
 
