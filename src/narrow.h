@@ -260,7 +260,12 @@ static inline int sx_world_manifold(sx_manifold *m, int count, sx_xf xa) {
      * sx_xform_point compute it; one test checks every output. */
     if (count > 0) {
         __m128 x = xa, z = _mm_setzero_ps();
-        __m128 np = _mm_loadu_ps(&m->normal.x);
+        /* Two 8-byte loads, not one of 16: the routines before this store
+         * the normal and the point separately, and a 16-byte load of two
+         * stores still in flight cannot take their values (a failed store
+         * forward, a quarter of a segment-circle manifold). */
+        __m128 np = _mm_loadh_pi(_mm_loadl_pi(z, (const __m64 *)(const void *)&m->normal),
+                                 (const __m64 *)(const void *)&m->points[0].point);
         /* -0 is the identity of addition (+0 would turn a -0 normal
          * component into +0). */
         __m128 w = _mm_add_ps(sx_sse_rotate(x, np), _mm_movelh_ps(_mm_set1_ps(SX_R(-0.0)), x));
