@@ -92,12 +92,8 @@ bool sx_core_values_finite(const sx_core *c);
 bool sx_polygon_values_finite(const sx_vec2 *v, const sx_vec2 *n, int count);
 
 /** True if the rounded cores overlap or touch. Same decisions as
- *  sx_core_mtv, with early outs. */
+ *  sx_cores_mtv, with early outs. */
 bool sx_core_overlap(const sx_core *a, const sx_core *b);
-
-/** True if the rounded cores overlap or touch; *mtv (in the working frame)
- *  receives the shortest translation of a separating it from b. */
-bool sx_core_mtv(const sx_core *a, const sx_core *b, sx_vec2 *mtv);
 
 /** The contact manifold of a against b in the working frame (normal from a
  *  to b), keeping points with depth >= -margin (margin >= 0). Returns the
@@ -354,7 +350,8 @@ int sx_cores_collide(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_
  * collide.c's pair_overlap answers, in one function. */
 bool sx_cores_overlap(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_xf xb);
 
-/* sx_core_mtv of the same cores, with the value checks: the MTV in a's
+/* The MTV of the rounded cores (the shortest translation of a separating it
+ * from b), with the value checks: the MTV in a's
  * frame (zero when false), as collide.c's pair_mtv takes it before the
  * move to world space. */
 bool sx_cores_mtv(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_xf xb, sx_vec2 *mtv);

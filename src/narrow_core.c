@@ -898,7 +898,6 @@ static SX_ALWAYS_INLINE bool core_mtv(const sx_core *a, const sx_core *b, sx_vec
     return true;
 }
 
-bool sx_core_mtv(const sx_core *a, const sx_core *b, sx_vec2 *mtv) { return core_mtv(a, b, mtv); }
 
 /* ---- manifolds ---------------------------------------------------------- */
 
