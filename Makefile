@@ -179,8 +179,8 @@ determinism: $(DET_LEVELS:%=$(DET_OUT)/%/test_determinism)
 # ---- benchmarks --------------------------------------------------------------
 #
 # bench/*.c is our code (strict flags, the float or double build of the
-# library); bench/*.cpp are the peers, Box2D 2.4 and Chipmunk 7 (C++, relaxed
-# flags). `make bench`
+# library); bench/*.cpp are the Debian peers, Box2D 2.4 and Chipmunk 7 (C++,
+# relaxed flags); bench/box2d3/ is the glue to Box2D v3 (below). `make bench`
 # prints the table and writes $(OUT)/bench/narrowphase.csv (build/bench for
 # the float build); `make bench-smoke` runs every pair type a few times only.
 
@@ -191,7 +191,7 @@ BENCH_OBJS := $(BENCH_SRCS:bench/%.c=$(OUT)/obj/bench/%.o) \
 BENCH_BIN := $(OUT)/bench/sepax_bench
 BENCH_CFLAGS = $(filter-out -O2 -g,$(CFLAGS_ALL)) -O2 -DNDEBUG -Ibench -Itests/support
 
-deps-bench:
+deps-bench: $(BOX2D3_STAMP)
 	@sh scripts/deps.sh box2d chipmunk
 
 $(OUT)/obj/bench/%.o: bench/%.c | $(OUT)/obj/bench deps-bench
@@ -201,10 +201,55 @@ $(OUT)/obj/bench/%.o: bench/%.c | $(OUT)/obj/bench deps-bench
 $(OUT)/obj/bench/%.o: bench/%.cpp | $(OUT)/obj/bench deps-bench
 	$(CXX) -std=c++17 -O2 -DNDEBUG $(DEFS) -Iinclude -Ibench -MMD -MP -c $< -o $@
 
+# Box2D v3, the headline peer: its C source comes from the pinned crates.io
+# package boxdd-sys (scripts/fetch_box2d3.sh, with cargo) into
+# build/deps/box2d3/box2d, or from BOX2D3_DIR=/path. It is built three ways
+# (its default SSE2 path, AVX2, and the portable scalar path), each with its
+# own flags (-std=c17 -O2 -DNDEBUG, warnings off: foreign code) into an
+# archive of its own; none of its flags reach sepax's code. Our glue in
+# bench/box2d3/ is compiled once per build and linked with that archive into
+# one relocatable object whose only global symbols end in box2d3_<build>, so
+# the three builds share one bench program. The AVX2 build compiles on any
+# x86-64 CPU and runs only where the CPU has AVX2 (checked at run time).
+BOX2D3_SRC := $(if $(BOX2D3_DIR),$(BOX2D3_DIR),build/deps/box2d3/box2d)
+BOX2D3_STAMP := $(BOX2D3_SRC)/include/box2d/box2d.h
+BOX2D3_LIB_DIR := build/deps/box2d3-lib$(if $(BOX2D3_DIR),-own)
+BOX2D3_BUILDS := sse2 avx2 scalar
+BOX2D3_FLAGS_sse2 :=
+BOX2D3_FLAGS_avx2 := -DBOX2D_AVX2 -mavx2
+BOX2D3_FLAGS_scalar := -DBOX2D_DISABLE_SIMD
+BOX2D3_CFLAGS := -std=c17 -O2 -DNDEBUG -fPIC -w
+BOX2D3_GLUE_SRCS := $(sort $(wildcard bench/box2d3/*.c))
+BOX2D3_OBJS := $(BOX2D3_BUILDS:%=$(OUT)/obj/bench/box2d3_%.o)
+
+$(BOX2D3_STAMP):
+	@sh scripts/fetch_box2d3.sh $(BOX2D3_SRC)
+
+$(BOX2D3_LIB_DIR)/%/libbox2d3.a: $(BOX2D3_STAMP)
+	@mkdir -p $(dir $@)
+	@echo "sepax: building Box2D v3 ($*) into $(dir $@)"
+	@set -e; for f in $(BOX2D3_SRC)/src/*.c; do \
+	  $(CC) $(BOX2D3_CFLAGS) $(BOX2D3_FLAGS_$*) -I$(BOX2D3_SRC)/include -c $$f \
+	    -o $(dir $@)$$(basename $$f .c).o; \
+	done; rm -f $@; ar rcs $@ $(dir $@)*.o
+
+$(OUT)/obj/bench/box2d3_%.o: $(BOX2D3_GLUE_SRCS) bench/box2d3/b3_export.h bench/scenes.h bench/pairs.h \
+                             $(BOX2D3_LIB_DIR)/%/libbox2d3.a | $(OUT)/obj/bench
+	@mkdir -p $(OUT)/obj/bench/box2d3-$*
+	@set -e; for f in $(BOX2D3_GLUE_SRCS); do \
+	  echo "$(CC) [box2d3 $*] $$f"; \
+	  $(CC) -std=c17 -O2 -DNDEBUG -fPIC $(WARNINGS) $(BOX2D3_FLAGS_$*) -DB3_SUFFIX=$* \
+	    -isystem $(BOX2D3_SRC)/include -Ibench -Itests/support -c $$f \
+	    -o $(OUT)/obj/bench/box2d3-$*/$$(basename $$f .c).o; \
+	done
+	ld -r -o $@.all.o $(OUT)/obj/bench/box2d3-$*/*.o --whole-archive $(BOX2D3_LIB_DIR)/$*/libbox2d3.a
+	objcopy --wildcard --keep-global-symbol='*box2d3_$*' $@.all.o $@
+	@rm -f $@.all.o
+
 # The depth reference of the tests (tests/support/reference.c) is linked too.
 BENCH_REF_OBJ := $(OUT)/obj/tests/support/reference.o
-$(BENCH_BIN): $(BENCH_OBJS) $(BENCH_REF_OBJ) $(LIB_A) | $(OUT)/bench
-	$(CXX) $(SANFLAGS) -o $@ $(BENCH_OBJS) $(BENCH_REF_OBJ) $(LIB_A) -lbox2d -lchipmunk $(LDLIBS_ALL)
+$(BENCH_BIN): $(BENCH_OBJS) $(BOX2D3_OBJS) $(BENCH_REF_OBJ) $(LIB_A) | $(OUT)/bench
+	$(CXX) $(SANFLAGS) -o $@ $(BENCH_OBJS) $(BOX2D3_OBJS) $(BENCH_REF_OBJ) $(LIB_A) -lbox2d -lchipmunk $(LDLIBS_ALL)
 
 bench: $(BENCH_BIN)
 	./$(BENCH_BIN) --out $(OUT)/bench

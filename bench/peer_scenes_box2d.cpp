@@ -1,6 +1,7 @@
 /* sepax benchmarks — the Box2D 2.4 world behind the scene interface of
  * bench/scenes.h: one b2Body and one b2Fixture per scene body, stepped by
- * b2World::Step(dt, velocityIterations, positionIterations).
+ * b2World::Step(dt, velocityIterations, positionIterations), called
+ * sub_steps times with dt / sub_steps per scene step.
  *
  * Box2D is used as shipped: polygons keep their skin b2_polygonRadius
  * (2 x linearSlop = 1 cm), which is how Box2D stacks rest (the skins touch,
@@ -23,6 +24,7 @@ struct World {
     std::vector<b2Body *> bodies;
     float dt = 1.0f / 60.0f;
     int vel = 8, pos = 3;
+    int calls = 1;
 };
 
 void add_fixture(b2Body *body, const scene_body &sb) {
@@ -80,35 +82,45 @@ void add_fixture(b2Body *body, const scene_body &sb) {
 
 } // namespace
 
-extern "C" void *scene_box2d_create(const scene_def *def, const scene_config *cfg) {
+namespace {
+
+int box2d_add(void *world, const scene_body *sb) {
+    World *w = static_cast<World *>(world);
+    b2BodyDef bd;
+    bd.type = sb->kinematic ? b2_kinematicBody : sb->dynamic ? b2_dynamicBody : b2_staticBody;
+    bd.position.Set((float)sb->x, (float)sb->y);
+    bd.angle = (float)sb->angle;
+    bd.linearVelocity.Set((float)sb->vx, (float)sb->vy);
+    bd.angularVelocity = (float)sb->w;
+    b2Body *body = w->world.CreateBody(&bd);
+    add_fixture(body, *sb);
+    w->bodies.push_back(body);
+    return (int)w->bodies.size() - 1;
+}
+
+void *box2d_create(const scene_def *def, const scene_config *cfg) {
     World *w = new World;
     w->world.SetGravity(b2Vec2((float)def->gx, (float)def->gy));
     w->world.SetAllowSleeping(def->sleep != 0);
-    w->dt = (float)cfg->dt;
+    w->calls = cfg->sub_steps > 0 ? cfg->sub_steps : 1;
+    w->dt = (float)(cfg->dt / w->calls);
     w->vel = cfg->vel_iters;
     w->pos = cfg->pos_iters;
     w->bodies.reserve((size_t)def->count);
-    for (int i = 0; i < def->count; ++i) {
-        const scene_body &sb = def->bodies[i];
-        b2BodyDef bd;
-        bd.type = sb.dynamic ? b2_dynamicBody : b2_staticBody;
-        bd.position.Set((float)sb.x, (float)sb.y);
-        bd.angle = (float)sb.angle;
-        bd.linearVelocity.Set((float)sb.vx, (float)sb.vy);
-        b2Body *body = w->world.CreateBody(&bd);
-        add_fixture(body, sb);
-        w->bodies.push_back(body);
-    }
+    for (int i = 0; i < def->count; ++i)
+        box2d_add(w, &def->bodies[i]);
     return w;
 }
 
-extern "C" void scene_box2d_step(void *world, int steps) {
+/* A scene step of dt is `calls` Box2D steps of dt / calls: how Box2D 2.4
+ * users sub-step. */
+void box2d_step(void *world, int steps) {
     World *w = static_cast<World *>(world);
-    for (int i = 0; i < steps; ++i)
+    for (int i = 0; i < steps * w->calls; ++i)
         w->world.Step(w->dt, w->vel, w->pos);
 }
 
-extern "C" void scene_box2d_get(void *world, int body, scene_state *out) {
+void box2d_get(void *world, int body, scene_state *out) {
     const b2Body *b = static_cast<World *>(world)->bodies[(size_t)body];
     out->x = b->GetPosition().x;
     out->y = b->GetPosition().y;
@@ -118,4 +130,16 @@ extern "C" void scene_box2d_get(void *world, int body, scene_state *out) {
     out->w = b->GetAngularVelocity();
 }
 
-extern "C" void scene_box2d_destroy(void *world) { delete static_cast<World *>(world); }
+void box2d_destroy(void *world) { delete static_cast<World *>(world); }
+
+int box2d_awake(void *world) {
+    int n = 0;
+    for (const b2Body *b : static_cast<World *>(world)->bodies)
+        n += b->GetType() != b2_staticBody && b->IsAwake();
+    return n;
+}
+
+} // namespace
+
+extern "C" const scene_engine scene_box2d = {box2d_create, box2d_step,  box2d_get,
+                                             box2d_destroy, box2d_add, box2d_awake};

@@ -1,6 +1,7 @@
 /* sepax benchmarks — the Chipmunk 7 world behind the scene interface of
  * bench/scenes.h: one cpBody and one cpShape per scene body, stepped by
- * cpSpaceStep(dt) with cpSpaceSetIterations(vel_iters).
+ * cpSpaceStep(dt / sub_steps), sub_steps times per scene step, with
+ * cpSpaceSetIterations(vel_iters).
  *
  * Mass and inertia come from the shapes' densities (cpShapeSetDensity), as
  * in the other engines. Chipmunk multiplies the two shapes' friction and
@@ -24,6 +25,7 @@ struct World {
     std::vector<cpBody *> bodies;
     std::vector<cpShape *> shapes;
     double dt = 1.0 / 60.0;
+    int calls = 1;
 };
 
 cpShape *make_shape(cpBody *body, const bench_shape &s, double angle, double x, double y,
@@ -54,43 +56,53 @@ cpShape *make_shape(cpBody *body, const bench_shape &s, double angle, double x, 
 
 } // namespace
 
-extern "C" void *scene_chipmunk_create(const scene_def *def, const scene_config *cfg) {
+namespace {
+
+int chipmunk_add(void *world, const scene_body *sb) {
+    World *w = static_cast<World *>(world);
+    const bool moving = sb->dynamic || sb->kinematic;
+    cpBody *body = cpSpaceGetStaticBody(w->space);
+    if (sb->dynamic)
+        body = cpSpaceAddBody(w->space, cpBodyNew(0.0, 0.0));
+    else if (sb->kinematic)
+        body = cpSpaceAddBody(w->space, cpBodyNewKinematic());
+    cpShape *shape = make_shape(body, sb->shape, sb->angle, sb->x, sb->y, !moving);
+    cpShapeSetFriction(shape, std::sqrt(sb->friction));
+    cpShapeSetElasticity(shape, std::sqrt(sb->restitution));
+    if (sb->dynamic) cpShapeSetDensity(shape, sb->density);
+    cpSpaceAddShape(w->space, shape);
+    if (moving) {
+        cpBodySetPosition(body, cpv(sb->x, sb->y));
+        cpBodySetAngle(body, sb->angle);
+        cpBodySetVelocity(body, cpv(sb->vx, sb->vy));
+        cpBodySetAngularVelocity(body, sb->w);
+    }
+    w->bodies.push_back(body);
+    w->shapes.push_back(shape);
+    return (int)w->bodies.size() - 1;
+}
+
+void *chipmunk_create(const scene_def *def, const scene_config *cfg) {
     World *w = new World;
     w->space = cpSpaceNew();
     cpSpaceSetGravity(w->space, cpv(def->gx, def->gy));
     cpSpaceSetIterations(w->space, cfg->vel_iters);
     cpSpaceSetSleepTimeThreshold(w->space, def->sleep ? 0.5 : INFINITY);
-    w->dt = cfg->dt;
-    cpBody *ground = cpSpaceGetStaticBody(w->space);
-    for (int i = 0; i < def->count; ++i) {
-        const scene_body &sb = def->bodies[i];
-        cpBody *body = ground;
-        if (sb.dynamic) {
-            body = cpSpaceAddBody(w->space, cpBodyNew(0.0, 0.0));
-        }
-        cpShape *shape = make_shape(body, sb.shape, sb.angle, sb.x, sb.y, !sb.dynamic);
-        cpShapeSetFriction(shape, std::sqrt(sb.friction));
-        cpShapeSetElasticity(shape, std::sqrt(sb.restitution));
-        if (sb.dynamic) cpShapeSetDensity(shape, sb.density);
-        cpSpaceAddShape(w->space, shape);
-        if (sb.dynamic) {
-            cpBodySetPosition(body, cpv(sb.x, sb.y));
-            cpBodySetAngle(body, sb.angle);
-            cpBodySetVelocity(body, cpv(sb.vx, sb.vy));
-        }
-        w->bodies.push_back(body);
-        w->shapes.push_back(shape);
-    }
+    w->calls = cfg->sub_steps > 0 ? cfg->sub_steps : 1;
+    w->dt = cfg->dt / w->calls;
+    for (int i = 0; i < def->count; ++i)
+        chipmunk_add(w, &def->bodies[i]);
     return w;
 }
 
-extern "C" void scene_chipmunk_step(void *world, int steps) {
+/* A scene step of dt is `calls` Chipmunk steps of dt / calls. */
+void chipmunk_step(void *world, int steps) {
     World *w = static_cast<World *>(world);
-    for (int i = 0; i < steps; ++i)
+    for (int i = 0; i < steps * w->calls; ++i)
         cpSpaceStep(w->space, w->dt);
 }
 
-extern "C" void scene_chipmunk_get(void *world, int body, scene_state *out) {
+void chipmunk_get(void *world, int body, scene_state *out) {
     const cpBody *b = static_cast<World *>(world)->bodies[(size_t)body];
     cpVect p = cpBodyGetPosition(b), v = cpBodyGetVelocity(b);
     out->x = p.x;
@@ -101,7 +113,7 @@ extern "C" void scene_chipmunk_get(void *world, int body, scene_state *out) {
     out->w = cpBodyGetAngularVelocity(b);
 }
 
-extern "C" void scene_chipmunk_destroy(void *world) {
+void chipmunk_destroy(void *world) {
     World *w = static_cast<World *>(world);
     for (cpShape *s : w->shapes) {
         cpSpaceRemoveShape(w->space, s);
@@ -115,3 +127,16 @@ extern "C" void scene_chipmunk_destroy(void *world) {
     cpSpaceFree(w->space);
     delete w;
 }
+
+int chipmunk_awake(void *world) {
+    int n = 0;
+    World *w = static_cast<World *>(world);
+    for (cpBody *b : w->bodies)
+        n += cpBodyGetType(b) == CP_BODY_TYPE_DYNAMIC && !cpBodyIsSleeping(b);
+    return n;
+}
+
+} // namespace
+
+extern "C" const scene_engine scene_chipmunk = {chipmunk_create,  chipmunk_step, chipmunk_get,
+                                                chipmunk_destroy, chipmunk_add,  chipmunk_awake};

@@ -17,9 +17,10 @@ extern "C" {
 /** One rigid body with one shape in its local frame (bench_shape: circle,
  *  segment, capsule, box or sharp convex polygon centred on its centroid). */
 typedef struct scene_body {
-    int dynamic; /**< 0: static */
+    int dynamic;   /**< 0: static (or kinematic, below) */
+    int kinematic; /**< moved by its velocity only (dynamic is then 0) */
     double x, y, angle;
-    double vx, vy;
+    double vx, vy, w;
     bench_shape shape;
     double density, friction, restitution;
 } scene_body;
@@ -31,9 +32,12 @@ typedef struct scene_def {
     int sleep; /**< allow sleeping */
 } scene_def;
 
-/** The knobs of one run. sub_steps is sepax's (the peers have none: 1);
- *  velocity/position iterations are Box2D's; Chipmunk uses vel_iters as its
- *  iteration count. */
+/** The knobs of one run. sub_steps: sepax's and Box2D v3's own sub-steps;
+ *  Box2D 2.4 and Chipmunk have none, so for them it is the number of Step
+ *  calls of dt / sub_steps each per scene step (how their users sub-step),
+ *  and every engine's effective step is dt / sub_steps. Velocity/position
+ *  iterations are sepax's and Box2D 2.4's; Chipmunk uses vel_iters as its
+ *  iteration count; v3 has none. */
 typedef struct scene_config {
     double dt;
     int sub_steps;
@@ -49,26 +53,37 @@ typedef struct scene_state {
 
 typedef enum scene_engine_id {
     SCENE_SEPAX = 0,
-    SCENE_BOX2D,
-    SCENE_CHIPMUNK,
+    SCENE_BOX2D3,        /**< Box2D v3, its default x86-64 build (SSE2) */
+    SCENE_BOX2D,         /**< Box2D 2.4 (Debian) */
+    SCENE_CHIPMUNK,      /**< Chipmunk 7 (Debian) */
+    SCENE_BOX2D3_AVX2,   /**< Box2D v3 with -DBOX2D_AVX2 -mavx2 (run where the CPU has AVX2) */
+    SCENE_BOX2D3_SCALAR, /**< Box2D v3 with -DBOX2D_DISABLE_SIMD */
     SCENE_ENGINE_COUNT
 } scene_engine_id;
 
-/** Builds the engine's world (NULL on failure). */
-void *scene_box2d_create(const scene_def *def, const scene_config *cfg);
-void scene_box2d_step(void *world, int steps);
-void scene_box2d_get(void *world, int body, scene_state *out);
-void scene_box2d_destroy(void *world);
+/** An engine behind the scene interface. add places one more body in a
+ *  running world and returns its index (-1 on failure); awake counts the
+ *  awake bodies (-1 when the engine cannot tell). */
+typedef struct scene_engine {
+    void *(*create)(const scene_def *def, const scene_config *cfg);
+    void (*step)(void *world, int steps);
+    void (*get)(void *world, int body, scene_state *out);
+    void (*destroy)(void *world);
+    int (*add)(void *world, const scene_body *body);
+    int (*awake)(void *world);
+} scene_engine;
 
-/** Chipmunk mixes friction and elasticity as products; Box2D and sepax take
- *  sqrt(mu_a mu_b) and max(e_a, e_b). The adapter hands Chipmunk sqrt(mu)
- *  and sqrt(e) so that equal values on both sides mix to the same result
- *  in all three engines (the scenes give both sides of a contact the same
- *  restitution). */
-void *scene_chipmunk_create(const scene_def *def, const scene_config *cfg);
-void scene_chipmunk_step(void *world, int steps);
-void scene_chipmunk_get(void *world, int body, scene_state *out);
-void scene_chipmunk_destroy(void *world);
+/** The three Box2D v3 builds (bench/peer_box2d3.c, one object each). */
+extern const scene_engine scene_box2d3_sse2, scene_box2d3_avx2, scene_box2d3_scalar;
+
+/** Box2D 2.4 (bench/peer_scenes_box2d.cpp). */
+extern const scene_engine scene_box2d;
+/** Chipmunk 7 (bench/peer_scenes_chipmunk.cpp). Chipmunk mixes friction and
+ *  elasticity as products; Box2D and sepax take sqrt(mu_a mu_b) and
+ *  max(e_a, e_b). The adapter hands Chipmunk sqrt(mu) and sqrt(e) so that
+ *  equal values on both sides mix to the same result in every engine (the
+ *  scenes give both sides of a contact the same restitution). */
+extern const scene_engine scene_chipmunk;
 
 /** Runs the scene benchmarks (bench/scenes.c). level 0: the default run
  *  (large_pyramid 200 steps, rain to 16k with an 8 s cap per engine and
