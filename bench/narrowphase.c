@@ -1,19 +1,20 @@
 /* sepax benchmarks — the narrowphase benchmark: ns per pair of sx_overlap,
- * sx_mtv and sx_collide for every pair of shape kinds, beside Box2D 2.4 and
- * Chipmunk 7 on the very same pairs, with each engine's depth error against
- * a long double reference.
+ * sx_mtv and sx_collide for every pair of shape kinds, beside Box2D v3 (the
+ * headline peer), Box2D 2.4 and Chipmunk 7 on the very same pairs, with each
+ * engine's depth error against a long double reference.
  *
  * For each pair type a few thousand seeded pairs (half overlapping) are built
  * once per engine in that engine's own types and timed by looping over the
  * whole array many times; every result feeds a sum that is returned and
  * stored in a volatile sink, so no call can be dropped. The engines are timed
- * in turns within each repetition (sepax overlap, mtv, collide, Box2D
+ * in turns within each repetition (sepax overlap, mtv, collide, Box2D v3
  * overlap, collide, ...), so a burst of noise on the shared machine hits them
  * alike, and the best repetition is reported: interference only ever adds
  * time, so the best is the closest to the uncontended cost (the median over
  * best ratio is printed at the end as a noise gauge). Depth errors are taken
  * over the overlapping pairs: sepax's depth is its deepest manifold point
- * (and |mtv| for sx_mtv), Box2D's the deepest b2WorldManifold separation,
+ * (and |mtv| for sx_mtv), Box2D v3's the separation of its deepest manifold
+ * point (negated), Box2D 2.4's the deepest b2WorldManifold separation,
  * Chipmunk's the deepest contact distance; an overlapping pair with no
  * contact point counts as depth 0. Two independent long double references
  * (the tests' sx_ref_penetration and bench_ref_depth) must agree, or the run
@@ -44,6 +45,9 @@ enum {
     ROW_SX_OVERLAP = 0,
     ROW_SX_MTV,
     ROW_SX_COLLIDE,
+    ROW_B3_OVERLAP,
+    ROW_B3_COLLIDE,
+    ROW_B3_COLLIDE_WORLD,
     ROW_B2_OVERLAP,
     ROW_B2_COLLIDE,
     ROW_B2_COLLIDE_WORLD,
@@ -51,10 +55,23 @@ enum {
     ROW_COUNT
 };
 
-static const char *const row_engine[ROW_COUNT] = {"sepax", "sepax", "sepax",   "box2d",
-                                                  "box2d", "box2d", "chipmunk"};
+static const char *const row_engine[ROW_COUNT] = {"sepax",  "sepax", "sepax", "box2d3", "box2d3",
+                                                  "box2d3", "box2d", "box2d", "box2d",  "chipmunk"};
 static const char *const row_function[ROW_COUNT] = {
-    "overlap", "mtv", "collide", "overlap", "collide", "collide_world", "collide"};
+    "overlap",       "mtv",     "collide", "overlap",       "collide",
+    "collide_world", "overlap", "collide", "collide_world", "collide"};
+
+/* Box2D v3's narrowphase is scalar code, the same in its three builds (the
+ * run checks that their answers agree): the SSE2 build, v3's default, is the
+ * one timed. */
+#define B3 narrow_box2d3_sse2
+
+/* The peers' pair sets of one pair type (NULL where a peer cannot run it). */
+typedef struct peer_sets {
+    const bench_box2d_set *b2;
+    const bench_b3_set *b3;
+    const bench_chipmunk_set *cp;
+} peer_sets;
 
 typedef struct sepax_pair {
     sx_shape a, b;
@@ -139,20 +156,24 @@ static double sepax_run(const sepax_pair *p, int n, int row, int passes) {
     return sum;
 }
 
+/* The peer function of a Box2D row (v3 or 2.4). */
+static int row_fn(int row) {
+    if (row == ROW_B3_OVERLAP || row == ROW_B2_OVERLAP) return BENCH_FN_OVERLAP;
+    if (row == ROW_B3_COLLIDE || row == ROW_B2_COLLIDE) return BENCH_FN_COLLIDE;
+    return BENCH_FN_COLLIDE_WORLD;
+}
+
 /* Runs one row over all pairs `passes` times; returns the elapsed ns. */
-static double time_row(int row, const sepax_pair *sp, const bench_box2d_set *b2,
-                       const bench_chipmunk_set *cp, int n, int passes) {
+static double time_row(int row, const sepax_pair *sp, const peer_sets *ps, int n, int passes) {
     double t0 = now_ns(), sum;
-    if (row <= ROW_SX_COLLIDE) {
+    if (row <= ROW_SX_COLLIDE)
         sum = sepax_run(sp, n, row, passes);
-    } else if (row == ROW_CP_COLLIDE) {
-        sum = bench_chipmunk_run(cp, passes);
-    } else {
-        int fn = row == ROW_B2_OVERLAP   ? BENCH_FN_OVERLAP
-                 : row == ROW_B2_COLLIDE ? BENCH_FN_COLLIDE
-                                         : BENCH_FN_COLLIDE_WORLD;
-        sum = bench_box2d_run(b2, fn, passes);
-    }
+    else if (row == ROW_CP_COLLIDE)
+        sum = bench_chipmunk_run(ps->cp, passes);
+    else if (row <= ROW_B3_COLLIDE_WORLD)
+        sum = B3.run(ps->b3, row_fn(row), passes);
+    else
+        sum = bench_box2d_run(ps->b2, row_fn(row), passes);
     double t1 = now_ns();
     bench_sink = bench_sink + sum;
     return t1 - t0;
@@ -199,8 +220,9 @@ static int count_wrong(const double *ref, const int *overlap, int n) {
 
 /* The accuracy side of one pair type: answers of every engine against the
  * reference (untimed). */
-static void measure_accuracy(const double *ref, const sepax_pair *sp, const bench_box2d_set *b2,
-                             const bench_chipmunk_set *cp, int ka, int kb, int n, result *res) {
+static void measure_accuracy(const double *ref, const sepax_pair *sp, const peer_sets *ps, int ka,
+                             int kb, int n, result *res) {
+    const bench_box2d_set *b2 = ps->b2;
     double *depth = malloc((size_t)n * sizeof *depth);
     double *scratch = malloc((size_t)n * sizeof *scratch);
     int *ovl = malloc((size_t)n * sizeof *ovl);
@@ -232,6 +254,20 @@ static void measure_accuracy(const double *ref, const sepax_pair *sp, const benc
     res[ROW_SX_COLLIDE].wrong = count_wrong(ref, ovl, n);
     depth_errors(ref, depth, n, scratch, &res[ROW_SX_COLLIDE]);
 
+    if (res[ROW_B3_OVERLAP].available) {
+        B3.overlaps(ps->b3, ovl);
+        res[ROW_B3_OVERLAP].wrong = count_wrong(ref, ovl, n);
+    }
+    if (res[ROW_B3_COLLIDE].available) {
+        /* v3 answers speculative points on near pairs: its overlap answer is
+         * a point of negative separation, i.e. a positive depth. */
+        B3.depths(ps->b3, depth);
+        for (int i = 0; i < n; ++i)
+            ovl[i] = depth[i] > 0.0;
+        res[ROW_B3_COLLIDE].wrong = count_wrong(ref, ovl, n);
+        depth_errors(ref, depth, n, scratch, &res[ROW_B3_COLLIDE]);
+        res[ROW_B3_COLLIDE_WORLD] = res[ROW_B3_COLLIDE];
+    }
     if (b2 && bench_box2d_supports(ka, kb, BENCH_FN_OVERLAP)) {
         bench_box2d_overlaps(b2, ovl);
         res[ROW_B2_OVERLAP].wrong = count_wrong(ref, ovl, n);
@@ -244,8 +280,8 @@ static void measure_accuracy(const double *ref, const sepax_pair *sp, const benc
         depth_errors(ref, depth, n, scratch, &res[ROW_B2_COLLIDE]);
         res[ROW_B2_COLLIDE_WORLD] = res[ROW_B2_COLLIDE];
     }
-    if (cp) {
-        bench_chipmunk_depths(cp, depth);
+    if (ps->cp) {
+        bench_chipmunk_depths(ps->cp, depth);
         for (int i = 0; i < n; ++i)
             ovl[i] = depth[i] > 0.0;
         res[ROW_CP_COLLIDE].wrong = count_wrong(ref, ovl, n);
@@ -256,8 +292,8 @@ static void measure_accuracy(const double *ref, const sepax_pair *sp, const benc
     free(ovl);
 }
 
-static void measure_speed(const sepax_pair *sp, const bench_box2d_set *b2,
-                          const bench_chipmunk_set *cp, int n, const options *opt, result *res) {
+static void measure_speed(const sepax_pair *sp, const peer_sets *ps, int n, const options *opt,
+                          result *res) {
     int passes[ROW_COUNT];
     double *times = malloc((size_t)(ROW_COUNT * opt->reps) * sizeof *times);
     if (!times) {
@@ -268,7 +304,7 @@ static void measure_speed(const sepax_pair *sp, const bench_box2d_set *b2,
     for (int r = 0; r < ROW_COUNT; ++r) {
         passes[r] = 1;
         if (!res[r].available || opt->smoke) continue;
-        double t = time_row(r, sp, b2, cp, n, 1);
+        double t = time_row(r, sp, ps, n, 1);
         double want = opt->target_ms * 1e6 / (t > 1.0 ? t : 1.0);
         passes[r] = want < 1.0 ? 1 : (want > 1e6 ? 1000000 : (int)want);
     }
@@ -276,7 +312,7 @@ static void measure_speed(const sepax_pair *sp, const bench_box2d_set *b2,
         for (int r = 0; r < ROW_COUNT; ++r)
             if (res[r].available)
                 times[r * opt->reps + rep] =
-                    time_row(r, sp, b2, cp, n, passes[r]) / ((double)passes[r] * (double)n);
+                    time_row(r, sp, ps, n, passes[r]) / ((double)passes[r] * (double)n);
     for (int r = 0; r < ROW_COUNT; ++r) {
         if (!res[r].available) continue;
         res[r].ns_median = median(&times[r * opt->reps], opt->reps);
@@ -365,15 +401,18 @@ static void dump_shape(FILE *f, const char *label, const bench_shape *s, const b
     fprintf(f, "\n");
 }
 
-/* The pair of largest depth error of each sepax function, with every number
- * needed to replay it (float values printed exactly with %.9g). */
+/* The pair of largest depth error of each sepax function and of Box2D v3's
+ * collide, with every number needed to replay it (float values printed
+ * exactly with %.9g). */
 static void dump_worst(FILE *f, const char *name, const bench_pair *pairs, const double *ref,
                        const result *res) {
-    for (int r = ROW_SX_MTV; r <= ROW_SX_COLLIDE; ++r) {
-        if (!res[r].has_depth) continue;
+    static const int rows[] = {ROW_SX_MTV, ROW_SX_COLLIDE, ROW_B3_COLLIDE};
+    for (size_t k = 0; k < sizeof rows / sizeof rows[0]; ++k) {
+        int r = rows[k];
+        if (!res[r].available || !res[r].has_depth) continue;
         int i = res[r].worst;
-        fprintf(f, "%s sepax %s: pair %d, depth %.9g, reference %.12g, error %.3g\n", name,
-                row_function[r], i, res[r].worst_depth, ref[i], res[r].max_err);
+        fprintf(f, "%s %s %s: pair %d, depth %.9g, reference %.12g, error %.3g\n", name,
+                row_engine[r], row_function[r], i, res[r].worst_depth, ref[i], res[r].max_err);
         dump_shape(f, "A", &pairs[i].a, &pairs[i].xa);
         dump_shape(f, "B", &pairs[i].b, &pairs[i].xb);
     }
@@ -391,6 +430,144 @@ static void print_err(const result *r) {
         printf(" %9.2e %9.2e", r->max_err, r->p99_err);
     else
         printf(" %9s %9s", "n/a", "n/a");
+}
+
+static void print_ratio(double sx_ns, const result *peer) {
+    if (peer->available && peer->ns > 0.0)
+        printf(" %6.2f", sx_ns / peer->ns);
+    else
+        printf(" %6s", "n/a");
+}
+
+static void print_wrong(const result *r) {
+    if (r->available)
+        printf("%d", r->wrong);
+    else
+        printf("n/a");
+}
+
+/* One line of the main table: sepax against Box2D v3. */
+static void print_b3_row(const char *name, const result *res) {
+    const result *so = &res[ROW_SX_OVERLAP], *sc = &res[ROW_SX_COLLIDE];
+    const result *vo = &res[ROW_B3_OVERLAP], *vc = &res[ROW_B3_COLLIDE];
+    const result *vw = &res[ROW_B3_COLLIDE_WORLD];
+    printf("%-17s", name);
+    print_ns(so->ns, 1);
+    print_ns(res[ROW_SX_MTV].ns, 1);
+    print_ns(sc->ns, 1);
+    printf(" |");
+    print_ns(vo->ns, vo->available);
+    print_ns(vc->ns, vc->available);
+    print_ns(vw->ns, vw->available);
+    printf(" |");
+    print_ratio(sc->ns, vc);
+    print_ratio(sc->ns, vw);
+    print_ratio(so->ns, vo);
+    printf(" %5.1f |", sc->ns / so->ns);
+    print_err(sc);
+    printf(" |");
+    print_err(vc);
+    printf(" | %d/%d/%d ", so->wrong, res[ROW_SX_MTV].wrong, sc->wrong);
+    print_wrong(vo);
+    printf("/");
+    print_wrong(vc);
+    printf("\n");
+}
+
+/* One line of the Box2D 2.4 table. */
+static void print_b2_row(const char *name, const result *res) {
+    const result *sc = &res[ROW_SX_COLLIDE], *bo = &res[ROW_B2_OVERLAP];
+    const result *bc = &res[ROW_B2_COLLIDE], *bw = &res[ROW_B2_COLLIDE_WORLD];
+    printf("%-17s", name);
+    print_ns(sc->ns, 1);
+    printf(" |");
+    print_ns(bo->ns, bo->available);
+    print_ns(bc->ns, bc->available);
+    print_ns(bw->ns, bw->available);
+    printf(" |");
+    if (bc->available)
+        printf(" %5.2f |", sc->ns / bc->ns);
+    else
+        printf(" %5s |", "n/a");
+    print_err(bc);
+    printf(" | ");
+    print_wrong(bo);
+    printf("/");
+    print_wrong(bc);
+    printf("\n");
+}
+
+static void print_floor(double floor_ns, double sx_ns, const result *res) {
+    const result *vc = &res[ROW_B3_COLLIDE], *vw = &res[ROW_B3_COLLIDE_WORLD];
+    const result *bc = &res[ROW_B2_COLLIDE], *bw = &res[ROW_B2_COLLIDE_WORLD];
+    printf("floor of a circle-circle manifold (place, compare, sqrt, divide, store; no "
+           "validation; bench/narrowphase.c floor_circles): %.1f ns",
+           floor_ns);
+    if (vc->available)
+        printf(" = %.2f x v3's b2CollideCircles (%.1f ns, normal and separation in A's frame), "
+               "%.2f x v3 + world space (%.1f ns)",
+               floor_ns / vc->ns, vc->ns, floor_ns / vw->ns, vw->ns);
+    if (bc->available)
+        printf("%s%.2f x 2.4's b2CollideCircles (%.1f ns, no normal or depth), %.2f x 2.4 + "
+               "b2WorldManifold (%.1f ns)",
+               vc->available ? ", " : " = ", floor_ns / bc->ns, bc->ns, floor_ns / bw->ns, bw->ns);
+    printf("; sx_collide %.1f ns = %.2f x the floor (interleaved with it)\n", sx_ns,
+           sx_ns / floor_ns);
+}
+
+/* Box2D v3's scalar and AVX2 builds against the timed SSE2 build. */
+typedef struct b3_agreement {
+    int pairs;     /* pairs compared, per build */
+    int avx2;      /* the AVX2 build ran (the CPU has AVX2) */
+    int differ[2]; /* depth or overlap answers not the same bits: scalar, AVX2 */
+} b3_agreement;
+
+/* Runs the other v3 builds on the pairs and counts the answers that differ
+ * from the SSE2 build's: v3's narrowphase is the same scalar C in every
+ * build, so any difference would make the timed build unrepresentative. */
+static int b3_builds_agree(const bench_pair *pairs, int n, const bench_b3_set *sse2, int ka, int kb,
+                           b3_agreement *ag) {
+    const bench_b3_narrow *other[2] = {&narrow_box2d3_scalar, &narrow_box2d3_avx2};
+    int builds = __builtin_cpu_supports("avx2") ? 2 : 1, ok = 1;
+    int collides = B3.supports(ka, kb, BENCH_FN_COLLIDE);
+    double *d0 = malloc((size_t)n * sizeof *d0), *d1 = malloc((size_t)n * sizeof *d1);
+    int *o0 = malloc((size_t)n * sizeof *o0), *o1 = malloc((size_t)n * sizeof *o1);
+    if (!d0 || !d1 || !o0 || !o1) {
+        fprintf(stderr, "sepax_bench: out of memory\n");
+        exit(1);
+    }
+    if (collides) B3.depths(sse2, d0);
+    B3.overlaps(sse2, o0);
+    for (int b = 0; b < builds; ++b) {
+        bench_b3_set *set = other[b]->build(pairs, n);
+        if (!set) {
+            ok = 0;
+            continue;
+        }
+        if (collides) other[b]->depths(set, d1);
+        other[b]->overlaps(set, o1);
+        for (int i = 0; i < n; ++i)
+            ag->differ[b] +=
+                (collides && memcmp(&d0[i], &d1[i], sizeof d0[i]) != 0) || o0[i] != o1[i];
+        other[b]->free(set);
+    }
+    ag->pairs += n;
+    ag->avx2 = builds == 2;
+    free(d0);
+    free(d1);
+    free(o0);
+    free(o1);
+    return ok;
+}
+
+static void print_b3_agreement(const b3_agreement *ag) {
+    printf("Box2D v3 builds (the SSE2 one is timed): on all %d pairs the scalar build answers "
+           "%d depths or overlaps differently",
+           ag->pairs, ag->differ[0]);
+    if (ag->avx2)
+        printf(", the AVX2 build %d\n", ag->differ[1]);
+    else
+        printf("; the AVX2 build was not run (no AVX2 on this CPU)\n");
 }
 
 static void usage(void) {
@@ -495,30 +672,36 @@ int main(int argc, char **argv) {
         fprintf(stderr, "sepax_bench: out of memory\n");
         return 1;
     }
-    char peer[64];
-    bench_box2d_version(peer, (int)sizeof peer);
+    char b2_name[64], b3_name[64], cp_name[64];
+    bench_box2d_version(b2_name, (int)sizeof b2_name);
+    B3.version(b3_name, (int)sizeof b3_name);
+    bench_chipmunk_version(cp_name, (int)sizeof cp_name);
 #ifdef SX_DOUBLE
     const char *sepax_engine = "sepax-double";
 #else
     const char *sepax_engine = "sepax";
 #endif
-    printf("sepax narrowphase benchmark%s: sx_real = %s, peer %s, %d pairs per type "
-           "(half overlapping), best of %d reps\n",
+    printf("sepax narrowphase benchmark%s: sx_real = %s, peers %s (v3, SSE2 build), %s, %s; "
+           "%d pairs per type (half overlapping), best of %d reps\n",
            opt.smoke ? " (smoke)" : "", sizeof(sx_real) == sizeof(double) ? "double" : "float",
-           peer, n, opt.reps);
+           b3_name, b2_name, cp_name, n, opt.reps);
     printf("working set: %d pairs x %d bytes per sepax pair (two sx_shape of %d bytes and two "
            "transforms)\n",
            n, (int)sizeof(sepax_pair), (int)sizeof(sx_shape));
-    printf("ns per pair; ratio = sepax collide / box2d collide (< 1: sepax faster); "
-           "ovl x = sepax collide / sepax overlap;\n"
+    printf("ns per pair; v3 col = B's transform in A's frame + b2Collide* (answer in A's frame), "
+           "v3 c+w = the same moved to world space as sx_collide answers;\n"
+           "/v3 = sx col / v3 col, /v3+w = sx col / v3 c+w, ovl/v3 = sx ovl / v3 ovl "
+           "(< 1: sepax faster); ovl x = sx col / sx ovl;\n"
            "depth errors |depth - reference| in metres over the overlapping pairs "
            "(long double reference); wrong = overlap answers contradicting it\n\n");
-    printf("%-17s %7s %7s %7s | %7s %7s %7s | %5s %5s | %9s %9s | %9s %9s | %s\n", "pair", "sx ovl",
-           "sx mtv", "sx col", "b2 ovl", "b2 col", "b2 c+wm", "ratio", "ovl x", "sx max", "sx p99",
-           "b2 max", "b2 p99", "wrong: sx o/m/c b2 o/c");
+    printf("%-17s %7s %7s %7s | %7s %7s %7s | %6s %6s %6s %5s | %9s %9s | %9s %9s | %s\n", "pair",
+           "sx ovl", "sx mtv", "sx col", "v3 ovl", "v3 col", "v3 c+w", "/v3", "/v3+w", "ovl/v3",
+           "ovl x", "sx max", "sx p99", "v3 max", "v3 p99", "wrong: sx o/m/c v3 o/c");
 
     int failures = 0, ntypes = 0;
-    double floor_ns = 0.0, floor_sx_ns = 0.0, floor_b2_ns = 0.0, floor_b2wm_ns = 0.0;
+    b3_agreement agree = {0, 0, {0, 0}};
+    double floor_ns = 0.0, floor_sx_ns = 0.0;
+    const result *floor_res = NULL;
     static result all[BENCH_KIND_COUNT * (BENCH_KIND_COUNT + 1) / 2][ROW_COUNT];
     static char names[BENCH_KIND_COUNT * (BENCH_KIND_COUNT + 1) / 2][40];
     for (int ka = 0; ka < BENCH_KIND_COUNT; ++ka) {
@@ -549,7 +732,9 @@ int main(int argc, char **argv) {
                 if (gap > ref_disagreement) ref_disagreement = gap;
             }
             bench_box2d_set *b2 = bench_box2d_build(pairs, n);
+            bench_b3_set *b3 = B3.build(pairs, n);
             bench_chipmunk_set *cp = bench_chipmunk_build(pairs, n);
+            peer_sets ps = {b2, b3, cp};
             result *res = all[ntypes];
             snprintf(names[ntypes], sizeof names[ntypes], "%s", name);
             ++ntypes;
@@ -557,50 +742,32 @@ int main(int argc, char **argv) {
             res[ROW_CP_COLLIDE].available = cp != NULL;
             res[ROW_SX_OVERLAP].available = res[ROW_SX_MTV].available =
                 res[ROW_SX_COLLIDE].available = 1;
+            res[ROW_B3_OVERLAP].available = b3 && B3.supports(ka, kb, BENCH_FN_OVERLAP);
+            res[ROW_B3_COLLIDE].available = res[ROW_B3_COLLIDE_WORLD].available =
+                b3 && B3.supports(ka, kb, BENCH_FN_COLLIDE);
             res[ROW_B2_OVERLAP].available = b2 && bench_box2d_supports(ka, kb, BENCH_FN_OVERLAP);
             res[ROW_B2_COLLIDE].available = res[ROW_B2_COLLIDE_WORLD].available =
                 b2 && bench_box2d_supports(ka, kb, BENCH_FN_COLLIDE);
+            if (!b3) {
+                fprintf(stderr, "sepax_bench: %s: Box2D v3 changed a polygon\n", name);
+                ++failures;
+            }
             if (!b2 && bench_box2d_supports(ka, kb, BENCH_FN_OVERLAP)) {
                 fprintf(stderr, "sepax_bench: %s: Box2D changed a polygon\n", name);
                 ++failures;
             }
 
-            measure_accuracy(ref, sp, b2, cp, ka, kb, n, res);
-            measure_speed(sp, b2, cp, n, &opt, res);
+            measure_accuracy(ref, sp, &ps, ka, kb, n, res);
+            if (b3 && !b3_builds_agree(pairs, n, b3, ka, kb, &agree)) {
+                fprintf(stderr, "sepax_bench: %s: the Box2D v3 builds refused the pairs\n", name);
+                ++failures;
+            }
+            measure_speed(sp, &ps, n, &opt, res);
             if (ka == BENCH_CIRCLE && kb == BENCH_CIRCLE) {
                 measure_floor(sp, n, &opt, &floor_ns, &floor_sx_ns);
-                floor_b2_ns = res[ROW_B2_COLLIDE].available ? res[ROW_B2_COLLIDE].ns : 0.0;
-                floor_b2wm_ns =
-                    res[ROW_B2_COLLIDE_WORLD].available ? res[ROW_B2_COLLIDE_WORLD].ns : 0.0;
+                floor_res = res;
             }
-
-            const result *sc = &res[ROW_SX_COLLIDE], *bc = &res[ROW_B2_COLLIDE];
-            printf("%-17s", name);
-            print_ns(res[ROW_SX_OVERLAP].ns, 1);
-            print_ns(res[ROW_SX_MTV].ns, 1);
-            print_ns(sc->ns, 1);
-            printf(" |");
-            print_ns(res[ROW_B2_OVERLAP].ns, res[ROW_B2_OVERLAP].available);
-            print_ns(bc->ns, bc->available);
-            print_ns(res[ROW_B2_COLLIDE_WORLD].ns, res[ROW_B2_COLLIDE_WORLD].available);
-            printf(" |");
-            if (bc->available)
-                printf(" %5.2f", sc->ns / bc->ns);
-            else
-                printf(" %5s", "n/a");
-            printf(" %5.1f |", sc->ns / res[ROW_SX_OVERLAP].ns);
-            print_err(sc);
-            printf(" |");
-            print_err(bc);
-            printf(" | %d/%d/%d ", res[ROW_SX_OVERLAP].wrong, res[ROW_SX_MTV].wrong, sc->wrong);
-            if (res[ROW_B2_OVERLAP].available)
-                printf("%d", res[ROW_B2_OVERLAP].wrong);
-            else
-                printf("n/a");
-            if (bc->available)
-                printf("/%d\n", bc->wrong);
-            else
-                printf("/n/a\n");
+            print_b3_row(name, res);
 
             for (int r = 0; r < ROW_COUNT; ++r) {
                 if (!res[r].available) continue;
@@ -614,11 +781,17 @@ int main(int argc, char **argv) {
             }
             dump_worst(worst, name, pairs, ref, res);
             bench_box2d_free(b2);
+            B3.free(b3);
             bench_chipmunk_free(cp);
         }
     }
-    char cp_name[64];
-    bench_chipmunk_version(cp_name, (int)sizeof cp_name);
+    printf("\n%s (Debian's build, asserts compiled in) on the same pairs: b2 col = b2Collide*, "
+           "b2 c+wm = + b2WorldManifold, b2 ovl = b2TestOverlap; ratio = sx col / b2 col\n",
+           b2_name);
+    printf("%-17s %7s | %7s %7s %7s | %5s | %9s %9s | %s\n", "pair", "sx col", "b2 ovl", "b2 col",
+           "b2 c+wm", "ratio", "b2 max", "b2 p99", "wrong b2 o/c");
+    for (int t = 0; t < ntypes; ++t)
+        print_b2_row(names[t], all[t]);
     printf("\n%s (double precision, cpShapesCollide) on the same pairs:\n", cp_name);
     printf("%-17s %7s %7s | %5s | %9s %9s | %s\n", "pair", "sx col", "cp col", "ratio", "cp max",
            "cp p99", "wrong cp");
@@ -635,18 +808,14 @@ int main(int argc, char **argv) {
         printf(" | %d\n", cc->wrong);
     }
     printf("\nsx mtv depth = |mtv|; its errors are in %s, the pair of largest error of each "
-           "sepax function in %s. Box2D shapes carry the benchmark "
+           "sepax function and of v3's collide in %s. Box2D 2.4 shapes carry the benchmark "
            "shapes' own radii (0 for sharp polygons and segments) instead of "
-           "b2_polygonRadius: see bench/peer_box2d.cpp.\n",
+           "b2_polygonRadius: see bench/peer_box2d.cpp. v3 has no such skin; its manifolds "
+           "include speculative points (separation up to 2 cm): its collide counts as "
+           "overlapping when a point has a negative separation.\n",
            csv_path, worst_path);
-    if (floor_ns > 0.0 && floor_b2_ns > 0.0) {
-        printf("floor of a circle-circle manifold (place, compare, sqrt, divide, store; no "
-               "validation; bench/narrowphase.c floor_circles): %.1f ns = %.2f x b2CollideCircles "
-               "(%.1f ns, no normal or depth), %.2f x b2CollideCircles + b2WorldManifold "
-               "(%.1f ns); sx_collide %.1f ns = %.2f x the floor (interleaved with it)\n",
-               floor_ns, floor_ns / floor_b2_ns, floor_b2_ns, floor_ns / floor_b2wm_ns,
-               floor_b2wm_ns, floor_sx_ns, floor_sx_ns / floor_ns);
-    }
+    print_b3_agreement(&agree);
+    if (floor_res && floor_ns > 0.0) print_floor(floor_ns, floor_sx_ns, floor_res);
     {
         double gauge[BENCH_KIND_COUNT * (BENCH_KIND_COUNT + 1) / 2 * ROW_COUNT];
         int g = 0;

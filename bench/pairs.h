@@ -122,6 +122,40 @@ void bench_box2d_version(char *out, int size);
 /** Box2D's overlap answer per pair (b2TestOverlap). */
 void bench_box2d_overlaps(const bench_box2d_set *set, int *overlap);
 
+/* ---- the Box2D v3 peer (bench/box2d3/narrow.c) -------------------------- */
+
+typedef struct bench_b3_set bench_b3_set;
+
+/** Box2D v3's narrowphase on the benchmark pairs, one table per v3 build
+ *  (bench/box2d3/b3_export.h): the same entry points as the Box2D 2.4 peer
+ *  above, with BENCH_FN_COLLIDE = relative transform + b2Collide* (answer in
+ *  A's frame) and BENCH_FN_COLLIDE_WORLD = the same moved to world space. */
+typedef struct bench_b3_narrow {
+    /** "Box2D x.y.z". */
+    void (*version)(char *out, int size);
+    /** True if v3 has the function for this pair of kinds. */
+    int (*supports)(int kind_a, int kind_b, int fn);
+    /** v3 shapes and transforms for the pairs; NULL when v3's hull builder
+     *  changes a polygon or memory runs out. */
+    bench_b3_set *(*build)(const bench_pair *pairs, int n);
+    void (*free)(bench_b3_set *set);
+    /** Runs fn over all pairs `passes` times; returns a checksum. */
+    double (*run)(const bench_b3_set *set, int fn, int passes);
+    /** Depth per pair: the deepest manifold point's separation, negated; 0
+     *  without points (and on pairs v3 does not collide). */
+    void (*depths)(const bench_b3_set *set, double *depth);
+    /** Overlap answer per pair (b2ShapeDistance, as v3's sensors use it). */
+    void (*overlaps)(const bench_b3_set *set, int *overlap);
+} bench_b3_narrow;
+
+/** The SSE2 build's (v3's default on x86-64; its narrowphase is scalar code,
+ *  the same in every build). */
+extern const bench_b3_narrow narrow_box2d3_sse2;
+/** The portable scalar build's (-DBOX2D_DISABLE_SIMD). */
+extern const bench_b3_narrow narrow_box2d3_scalar;
+/** The AVX2 build's: call it only where the CPU has AVX2. */
+extern const bench_b3_narrow narrow_box2d3_avx2;
+
 /* ---- the Chipmunk 7 peer (bench/peer_chipmunk.cpp) ---------------------- */
 
 typedef struct bench_chipmunk_set bench_chipmunk_set;
