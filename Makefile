@@ -156,7 +156,9 @@ stress: $(OUT)/tests/test_hostile
 # same flags otherwise: -ffp-contract=off, no -ffast-math) into
 # build/determinism[-double][-nosimd]/O<n>/, and the three hashes must be
 # equal. A second hash covers the narrowphase answers over random pairs;
-# .ci/run also checks that SIMD=0 prints the same pair of hashes.
+# .ci/run also checks that SIMD=0 prints the same pair of hashes. Both must
+# also equal the values pinned per build in tests/test_determinism.c
+# (det_pins): a failure prints the line to pin when a change is intended.
 DET_LEVELS := O0 O2 O3
 DET_OUT := build/determinism$(if $(filter double,$(SX_REAL)),-double)$(if $(filter 0,$(SIMD)),-nosimd)
 DET_SRCS := $(SRCS) tests/test_determinism.c $(TEST_SUPPORT)
