@@ -467,6 +467,43 @@ static void cradle_with_two_moving_balls_sends_two_away(void **state) {
     cradle_check("two moving, touching", v, p, ke, m, 2);
 }
 
+/* Two impacts in one sub-step are resolved in time order. Three equal balls
+ * in a row, e = 0.5, no gravity: A moves right at 2 m/s 1 mm from B (at
+ * rest), C left at 2 m/s 3 mm from B's other side. A meets B first (A 0.5,
+ * B 1.5 m/s), then B meets C (B -1.125, C 0.625), then B meets A again (A
+ * -0.71875, B 0.09375), all within the first 2 ms. Taken in the reverse
+ * order the answer is the mirror image (A -0.625, B -0.09375, C 0.71875). */
+static void impacts_within_a_sub_step_are_resolved_in_time_order(void **state) {
+    sx_world_def def = cradle_def();
+    sx_world *w = sx_world_create(&def);
+    sx_shape ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    sx_body_id a, b, c;
+    double va, vb, vc;
+    (void)state;
+    assert_non_null(w);
+    a = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-1.001), SX_R(0.0)), SX_R(0.0), &ball, SX_R(1.0),
+                 SX_R(0.0), SX_R(0.5));
+    b = add_body(w, SX_BODY_DYNAMIC, sx_v2_zero(), SX_R(0.0), &ball, SX_R(1.0), SX_R(0.0),
+                 SX_R(0.5));
+    c = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(1.003), SX_R(0.0)), SX_R(0.0), &ball, SX_R(1.0),
+                 SX_R(0.0), SX_R(0.5));
+    assert_int_equal(sx_body_set_linear_velocity(w, a, sx_v2(SX_R(2.0), SX_R(0.0))), SX_OK);
+    assert_int_equal(sx_body_set_linear_velocity(w, c, sx_v2(SX_R(-2.0), SX_R(0.0))), SX_OK);
+    step_n(w, 30);
+    va = (double)sx_body_get_linear_velocity(w, a).x;
+    vb = (double)sx_body_get_linear_velocity(w, b).x;
+    vc = (double)sx_body_get_linear_velocity(w, c).x;
+    printf("  three balls, two impacts in one sub-step: v %.5f %.5f %.5f (time order -0.71875 "
+           "0.09375 0.625)\n",
+           va, vb, vc);
+    /* the bound: the impacts' arithmetic in float, far below the 0.09 m/s
+     * that separates the two orders */
+    assert_near(va, -0.71875, 1e-4);
+    assert_near(vb, 0.09375, 1e-4);
+    assert_near(vc, 0.625, 1e-4);
+    sx_world_destroy(w);
+}
+
 /* The impact pass keeps the step deterministic: the same calls twice give
  * bit-identical velocities. */
 static void cradle_is_bit_identical_when_run_twice(void **state) {
@@ -981,6 +1018,7 @@ int main(void) {
         cmocka_unit_test(cradle_built_in_reverse_order_gives_the_same_answer),
         cmocka_unit_test(cradle_of_touching_balls_passes_the_speed_to_the_last_ball),
         cmocka_unit_test(cradle_with_two_moving_balls_sends_two_away),
+        cmocka_unit_test(impacts_within_a_sub_step_are_resolved_in_time_order),
         cmocka_unit_test(cradle_is_bit_identical_when_run_twice),
         cmocka_unit_test(impact_impulse_is_reported_apart_from_the_iterations),
         cmocka_unit_test(ball_jammed_between_two_walls_ends_the_step_and_gains_no_energy),
