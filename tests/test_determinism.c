@@ -24,11 +24,60 @@
  * -O0, -O2 and -O3 give the same hash; -O2 -march=haswell (which has FMA)
  * gives that same hash with -ffp-contract=off and a different one with
  * -ffp-contract=fast. Across compilers, C libraries (sinf/cosf/atan2f) or
- * CPU architectures the hash may differ. */
+ * CPU architectures the hash may differ.
+ *
+ * Both hashes are compared with the values pinned below, so a change of the
+ * answers fails here even when every other test still passes. */
 #include <stdio.h>
 #include <string.h>
 
 #include "test_support.h"
+
+/* ---- the pinned hashes -------------------------------------------------------
+ *
+ * What the scene and the narrowphase hash to, one line per build, with the
+ * toolchain CI uses (gcc 12, glibc, x86-64). The float line holds for the
+ * SSE and the SIMD=0 builds, every optimisation level and SAN=1; the double
+ * line for SX_REAL=double. When a change alters the answers on purpose (a
+ * solver fix, a new narrowphase route), the failure prints the line to put
+ * here: replace the build's line with it and say in the commit message why
+ * the answers changed. Never update a line to make an unexplained failure
+ * pass. */
+typedef struct det_pin {
+    const char *build;
+    uint64_t state, narrowphase;
+} det_pin;
+
+static const det_pin det_pins[] = {
+    /* build    state hash             narrowphase hash */
+    {"float", 0x3a97cd9475194984ull, 0x4d1bf48ab77e19cbull},
+    {"double", 0x76dbb50344d03897ull, 0x8963162b0ec798e3ull},
+};
+
+#ifdef SX_DOUBLE
+#define DET_PIN (&det_pins[1])
+#else
+#define DET_PIN (&det_pins[0])
+#endif
+
+static uint64_t det_run(bool nudge);
+static uint64_t narrowphase_hash(void);
+
+/* Fails, printing the line to pin (both hashes as they are now), when `got`
+ * is not the pinned `want`. */
+static void det_check_pin(const char *what, uint64_t got, uint64_t want) {
+    const det_pin *pin = DET_PIN;
+    if (got == want) return;
+    printf("sepax determinism: the %s hash of the %s build is %016llx, pinned %016llx.\n"
+           "  The answers changed. If that is intended, replace the %s line of det_pins in\n"
+           "  tests/test_determinism.c with the line below and give the reason in the commit\n"
+           "  message; otherwise find the change that did it.\n"
+           "    {\"%s\", 0x%016llxull, 0x%016llxull},\n",
+           what, pin->build, (unsigned long long)got, (unsigned long long)want, pin->build,
+           pin->build, (unsigned long long)det_run(false), (unsigned long long)narrowphase_hash());
+    fail_msg("%s hash %016llx differs from the pinned %016llx", what, (unsigned long long)got,
+             (unsigned long long)want);
+}
 
 #define DT (SX_R(1.0) / SX_R(60.0))
 
@@ -176,6 +225,7 @@ static void same_scene_and_commands_give_bit_identical_state(void **state) {
            (unsigned long long)c);
     assert_true(a == b);
     assert_true(a != c);
+    det_check_pin("state", a, DET_PIN->state);
 }
 
 /* A random shape of kind k (0 circle, 1 segment, 2 capsule, 3 box, 4 sharp
@@ -276,6 +326,7 @@ static void narrowphase_answers_hash_the_same_every_run(void **state) {
     (void)state;
     printf("sepax narrowphase hash: %016llx\n", (unsigned long long)a);
     assert_true(a == b);
+    det_check_pin("narrowphase", a, DET_PIN->narrowphase);
 }
 
 int main(void) {

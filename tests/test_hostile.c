@@ -217,7 +217,8 @@ static void mass_ratios_100_and_1000_keep_penetration_bounded(void **state) {
     printf("  mass ratio 100:1: max depth %.2f slop, heavy box sank %.5f m; 1000:1: %.2f slop, "
            "%.5f m\n",
            d100, sag100, d1000, sag1000);
-    assert_true(d100 < 5.0);
+    /* 0.48 and 7.6 slops measured (float and double) */
+    assert_true(d100 < 1.5);
     assert_true(d1000 < 10.0);
     assert_true(sag1000 < 0.05);
 }
@@ -259,10 +260,11 @@ static void boxes_created_half_inside_each_other_separate_without_launching(void
     /* recovery by position only (sx_world_separate, at most
      * max_correction_speed per contact): the column regains its 2.5 m of
      * overlap in about 6 s; velocities stay those of a slow push, nothing is
-     * launched (bound 1 m/s; a velocity bias would fling the top box) */
+     * launched (0.017 m/s, upwards 0.006 m/s measured in float and double;
+     * bounds about 3 times that: a velocity bias would fling the top box) */
     assert_true(separated_at > 0.0 && separated_at < 8.0);
-    assert_true(max_speed < 1.0);
-    assert_true(max_up < 1.0);
+    assert_true(max_speed < 0.05);
+    assert_true(max_up < 0.02);
     for (i = 0; i < n; ++i)
         assert_true(sx_length(sx_body_get_linear_velocity(w, ids[i])) < SX_R(0.05));
     sx_world_destroy(w);
@@ -345,11 +347,14 @@ static void busy_box_runs_long_with_bounded_energy_and_no_nan(void **state) {
     }
     printf(
         "  busy box, %d steps (%.0f s): total energy at start %.2f J, max %.2f J (%.3f x start), "
-        "max kinetic %.2f J\n",
-        steps, (double)steps / 60.0, e0, e_max, e_max / e0, ke_max);
-    /* the paddle adds energy and contacts and damping-free friction take it
-     * out: the total stays within 1.5 x the drop's energy */
-    assert_true(e_max < 1.5 * e0);
+        "max kinetic %.2f J (e_max / e0 - 1 = %.3e)\n",
+        steps, (double)steps / 60.0, e0, e_max, e_max / e0, ke_max, e_max / e0 - 1.0);
+    /* The scene starts at rest at the top, its most energetic state:
+     * symplectic Euler loses 1/2 m g^2 h^2 per sub-step of free fall, the
+     * landings dissipate, and the paddle's pushes never gave back as much
+     * (the maximum measured is the start, float and double). 1e-4 is room
+     * for the rounding of the sum, not for any gain. */
+    assert_true(e_max <= e0 * (1.0 + 1e-4));
     sx_world_destroy(w);
 }
 

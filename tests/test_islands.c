@@ -1,5 +1,6 @@
 /* sepax tests — what the step skips: sleeping islands (a pyramid that wakes
- * when hit and sleeps again, per-body sleep switch), the collision filter's
+ * when hit and sleeps again, per-body sleep switch, every force and impulse
+ * waking its body's island), the collision filter's
  * truth table, sensors that never push, and a sleeping world that costs no
  * contacts in the solver's list. */
 #include <stdio.h>
@@ -121,6 +122,153 @@ static void a_body_with_sleep_off_keeps_its_island_awake(void **state) {
     assert_false(sx_body_is_sleep_enabled(w, lone));
     assert_false(sx_body_is_sleep_enabled(NULL, a));
     sx_world_destroy(w);
+}
+
+/* A body faster than the sleep speeds never counts towards sleep: a ball
+ * thrown up at 10 m/s (2 s of flight, four times time_to_sleep) stays
+ * awake all the way, and is back on the ground when it lands, not frozen
+ * in the air. Only then, at rest, does it fall asleep. */
+static void a_ball_in_flight_longer_than_time_to_sleep_stays_awake(void **state) {
+    sx_world_def def = sx_default_world_def();
+    sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(0.5)), ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    sx_world *w;
+    sx_body_id b;
+    int s;
+    (void)state;
+    w = sx_world_create(&def);
+    assert_non_null(w);
+    add_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-0.5)), &ground, true);
+    b = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.5)), &ball, true);
+    assert_int_equal(sx_body_set_linear_velocity(w, b, sx_v2(SX_R(0.0), SX_R(10.0))), SX_OK);
+    /* up for 1 s, 5 m high, and down for 1 s */
+    for (s = 0; s < 115; ++s) {
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+        assert_true(sx_body_is_awake(w, b));
+    }
+    assert_true(step_until_asleep(w, 300) < 300);
+    assert_near(sx_body_get_position(w, b).y, 0.5, 0.01);
+    sx_world_destroy(w);
+}
+
+/* The time to sleep counts from the body's last motion: a ball in zero
+ * gravity rests 0.4 s (of the 0.5 s time_to_sleep), moves at 1 m/s for
+ * 0.5 s and stops; it must rest another full 0.5 s before it sleeps, not
+ * the 0.1 s left from before it moved. */
+static void the_time_to_sleep_counts_from_the_last_motion(void **state) {
+    sx_world_def def = sx_default_world_def();
+    sx_shape ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    sx_world *w;
+    sx_body_id b;
+    int s;
+    (void)state;
+    def.gravity = sx_v2_zero();
+    w = sx_world_create(&def);
+    assert_non_null(w);
+    b = add_body(w, SX_BODY_DYNAMIC, sx_v2_zero(), &ball, true);
+    for (s = 0; s < 24; ++s)
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_true(sx_body_is_awake(w, b));
+    assert_int_equal(sx_body_set_linear_velocity(w, b, sx_v2(SX_R(1.0), SX_R(0.0))), SX_OK);
+    for (s = 0; s < 30; ++s)
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_int_equal(sx_body_set_linear_velocity(w, b, sx_v2_zero()), SX_OK);
+    /* 0.4 s at rest again: still awake; by 0.6 s asleep */
+    for (s = 0; s < 24; ++s) {
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+        assert_true(sx_body_is_awake(w, b));
+    }
+    for (s = 0; s < 12; ++s)
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_false(sx_body_is_awake(w, b));
+    sx_world_destroy(w);
+}
+
+/* Positional correction moves bodies out of an overlap without giving them
+ * speed, so a body being pushed out looks at rest by its speeds; it must
+ * not sleep before the overlap is gone. A column of five boxes, each half
+ * inside the next and the bottom one half inside the ground, takes several
+ * seconds to come apart (about 6 s, test_hostile.c); when the world has
+ * fallen asleep, every contact is within twice the slop, the depth at
+ * which the sleep test stops counting an overlap as being pushed out. */
+static void bodies_pushed_out_of_a_deep_overlap_do_not_sleep_before_it_is_gone(void **state) {
+    sx_world_def def = sx_default_world_def();
+    sx_shape ground = sx_box_shape(SX_R(10.0), SX_R(1.0)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_world *w;
+    int i, k, steps;
+    double deepest = 0.0;
+    (void)state;
+    w = sx_world_create(&def);
+    assert_non_null(w);
+    add_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-1.0)), &ground, true);
+    for (i = 0; i < 5; ++i)
+        add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.5) * (sx_real)i), &box, true);
+    steps = step_until_asleep(w, 1200);
+    for (i = 0; i < sx_world_contact_count(w); ++i) {
+        sx_contact_data c;
+        assert_int_equal(sx_world_get_contact(w, i, &c), SX_OK);
+        for (k = 0; k < c.count; ++k)
+            if ((double)c.depths[k] > deepest) deepest = (double)c.depths[k];
+    }
+    printf("  column of 5 boxes half inside each other: asleep after %d steps, deepest contact "
+           "then %.5f m (slop %.4f)\n",
+           steps, deepest, (double)sx_world_linear_slop(w));
+    assert_true(steps < 1200);
+    assert_true(deepest <= 2.0 * (double)sx_world_linear_slop(w));
+    sx_world_destroy(w);
+}
+
+/* Each way of pushing a body: force, force at a point, torque, impulse,
+ * impulse at a point, angular impulse. */
+enum { PUSH_FORCE, PUSH_FORCE_AT, PUSH_TORQUE, PUSH_IMPULSE, PUSH_IMPULSE_AT, PUSH_ANGULAR, PUSHES };
+
+static sx_status push(sx_world *w, sx_body_id b, int how) {
+    /* off the centre by 0.4 m, so the pushes at a point also turn it */
+    sx_vec2 at = sx_add(sx_body_get_world_center(w, b), sx_v2(SX_R(0.4), SX_R(0.0)));
+    switch (how) {
+    case PUSH_FORCE: return sx_body_apply_force(w, b, sx_v2(SX_R(0.0), SX_R(120.0)));
+    case PUSH_FORCE_AT: return sx_body_apply_force_at_point(w, b, sx_v2(SX_R(0.0), SX_R(120.0)), at);
+    case PUSH_TORQUE: return sx_body_apply_torque(w, b, SX_R(60.0));
+    case PUSH_IMPULSE: return sx_body_apply_impulse(w, b, sx_v2(SX_R(0.0), SX_R(3.0)));
+    case PUSH_IMPULSE_AT:
+        return sx_body_apply_impulse_at_point(w, b, sx_v2(SX_R(0.0), SX_R(3.0)), at);
+    default: return sx_body_apply_angular_impulse(w, b, SX_R(1.0));
+    }
+}
+
+/* A force or an impulse on a sleeping body wakes it, and its island, at
+ * once: a sleeping body is skipped by the step, so a push left on it would
+ * wait (or be lost) until something else woke it. The top box of a
+ * sleeping two-box stack is pushed up or turned; right after the call both
+ * boxes are awake, and one step later the push shows (the top box moved up
+ * by more than 1 cm or turned by more than 0.01 rad: every push above gives
+ * at least 1 m/s or 1 rad/s within the step). */
+static void every_force_and_impulse_wakes_a_sleeping_body_and_its_island(void **state) {
+    sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(0.5)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    int how;
+    (void)state;
+    for (how = 0; how < PUSHES; ++how) {
+        sx_world_def def = sx_default_world_def();
+        sx_world *w = sx_world_create(&def);
+        sx_body_id bottom, top;
+        sx_vec2 p0;
+        sx_real a0;
+        assert_non_null(w);
+        add_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-0.5)), &ground, true);
+        bottom = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.5)), &box, true);
+        top = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(1.5)), &box, true);
+        assert_true(step_until_asleep(w, 300) < 300);
+        assert_false(sx_body_is_awake(w, top));
+        assert_false(sx_body_is_awake(w, bottom));
+        p0 = sx_body_get_position(w, top);
+        a0 = sx_body_get_angle(w, top);
+        assert_int_equal(push(w, top, how), SX_OK);
+        assert_true(sx_body_is_awake(w, top));
+        assert_true(sx_body_is_awake(w, bottom));
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+        assert_true(sx_body_get_position(w, top).y - p0.y > SX_R(0.01) ||
+                    sx_absr(sx_body_get_angle(w, top) - a0) > SX_R(0.01));
+        sx_world_destroy(w);
+    }
 }
 
 /* ---- filtering ------------------------------------------------------------ */
@@ -265,6 +413,10 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(sleeping_pyramid_wakes_when_a_ball_hits_it_and_sleeps_again),
         cmocka_unit_test(a_body_with_sleep_off_keeps_its_island_awake),
+        cmocka_unit_test(every_force_and_impulse_wakes_a_sleeping_body_and_its_island),
+        cmocka_unit_test(a_ball_in_flight_longer_than_time_to_sleep_stays_awake),
+        cmocka_unit_test(the_time_to_sleep_counts_from_the_last_motion),
+        cmocka_unit_test(bodies_pushed_out_of_a_deep_overlap_do_not_sleep_before_it_is_gone),
         cmocka_unit_test(filter_truth_table_decides_every_pair),
         cmocka_unit_test(sensors_report_but_never_push),
         cmocka_unit_test(contact_events_are_built_only_when_asked),

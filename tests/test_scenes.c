@@ -207,10 +207,10 @@ static void oblique_impact_with_friction_leaves_rolling(void **state) {
 /* A box of half-extent 0.5 released at rest on a ramp at 0.25 rad with
  * friction mu (both colliders, so the mixed coefficient is mu). Returns the
  * distance slid down the slope after 1 s and 2 s and the speed then. */
-static void incline_run2(sx_real mu_ramp, sx_real mu_box, double *d1, double *d2, double *v1,
-                         double *v2) {
+static void incline_run_at(double angle, sx_real mu_ramp, sx_real mu_box, double *d1, double *d2,
+                           double *v1, double *v2) {
     sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
-    sx_real th = (sx_real)INCLINE_ANGLE;
+    sx_real th = (sx_real)angle;
     sx_shape ramp = sx_box_shape(SX_R(20.0), SX_R(0.5));
     sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5));
     sx_vec2 down = sx_v2(-sx_cos(th), -sx_sin(th)), start;
@@ -225,6 +225,11 @@ static void incline_run2(sx_real mu_ramp, sx_real mu_box, double *d1, double *d2
     *d2 = (double)sx_dot(sx_sub(sx_body_get_position(w, b), start), down);
     *v2 = (double)sx_dot(sx_body_get_linear_velocity(w, b), down);
     sx_world_destroy(w);
+}
+
+static void incline_run2(sx_real mu_ramp, sx_real mu_box, double *d1, double *d2, double *v1,
+                         double *v2) {
+    incline_run_at(INCLINE_ANGLE, mu_ramp, mu_box, d1, d2, v1, v2);
 }
 
 static void incline_run(sx_real mu, double *d1, double *d2, double *v1, double *v2) {
@@ -248,11 +253,10 @@ static void incline_box_slides_with_coulomb_acceleration(void **state) {
     int i;
     (void)state;
     for (i = 0; i < 2; ++i) {
-        double d1, d2, v1, v2;
+        double d1, d2, v1, v2, a;
         double want = 10.0 * (sin(INCLINE_ANGLE) - mus[i] * cos(INCLINE_ANGLE));
-        double a = v2 - v1; /* speed gained in the second second */
         incline_run((sx_real)mus[i], &d1, &d2, &v1, &v2);
-        a = v2 - v1;
+        a = v2 - v1; /* speed gained in the second second */
         printf("  incline mu=%.2f: a %.4f m/s^2, g(sin-mu cos) %.4f, error %+.2f%%\n", mus[i], a,
                want, 100.0 * (a - want) / want);
         assert_near(a, want, 0.02 * want);
@@ -271,6 +275,29 @@ static void incline_friction_mixes_as_geometric_mean(void **state) {
     assert_true(d2 < 0.001 && d2 > -0.001);
     incline_run2(SX_R(0.25), SX_R(0.25), &d1, &d2, &v1, &v2);
     assert_true(d2 > 0.01);
+}
+
+/* 0.1 on 0.9 mixes to sqrt(0.09) = 0.3, where the arithmetic mean (0.5),
+ * the larger (0.9), the smaller (0.1) and the product (0.09) all differ. On
+ * a ramp at 0.35 rad (tan 0.365) the box slides at g(sin - 0.3 cos) = 0.61
+ * m/s^2; with 0.5 or 0.9 it would stick, with 0.1 or 0.09 it would slide at
+ * 2.5 m/s^2. The bound is the one of the single-coefficient slides above
+ * (2 %), in both orders of the two colliders. */
+static void incline_friction_of_0_1_on_0_9_mixes_to_0_3(void **state) {
+    const double angle = 0.35, want = 10.0 * (sin(angle) - 0.3 * cos(angle));
+    int order;
+    (void)state;
+    for (order = 0; order < 2; ++order) {
+        double d1, d2, v1, v2, a;
+        sx_real ramp = order == 0 ? SX_R(0.1) : SX_R(0.9), box = order == 0 ? SX_R(0.9) : SX_R(0.1);
+        incline_run_at(angle, ramp, box, &d1, &d2, &v1, &v2);
+        a = v2 - v1;
+        printf("  incline 0.35 rad, mu %.1f on %.1f: a %.4f m/s^2, g(sin-0.3 cos) %.4f, error "
+               "%+.2f%%\n",
+               (double)box, (double)ramp, a, want, 100.0 * (a - want) / want);
+        assert_near(a, want, 0.02 * want);
+        assert_near(d2, 0.5 * want * 4.0, 0.02 * 0.5 * want * 4.0);
+    }
 }
 
 /* An impact slower than the restitution threshold (1 m/s by default) does not
@@ -440,6 +467,43 @@ static void cradle_with_two_moving_balls_sends_two_away(void **state) {
     cradle_check("two moving, touching", v, p, ke, m, 2);
 }
 
+/* Two impacts in one sub-step are resolved in time order. Three equal balls
+ * in a row, e = 0.5, no gravity: A moves right at 2 m/s 1 mm from B (at
+ * rest), C left at 2 m/s 3 mm from B's other side. A meets B first (A 0.5,
+ * B 1.5 m/s), then B meets C (B -1.125, C 0.625), then B meets A again (A
+ * -0.71875, B 0.09375), all within the first 2 ms. Taken in the reverse
+ * order the answer is the mirror image (A -0.625, B -0.09375, C 0.71875). */
+static void impacts_within_a_sub_step_are_resolved_in_time_order(void **state) {
+    sx_world_def def = cradle_def();
+    sx_world *w = sx_world_create(&def);
+    sx_shape ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    sx_body_id a, b, c;
+    double va, vb, vc;
+    (void)state;
+    assert_non_null(w);
+    a = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-1.001), SX_R(0.0)), SX_R(0.0), &ball, SX_R(1.0),
+                 SX_R(0.0), SX_R(0.5));
+    b = add_body(w, SX_BODY_DYNAMIC, sx_v2_zero(), SX_R(0.0), &ball, SX_R(1.0), SX_R(0.0),
+                 SX_R(0.5));
+    c = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(1.003), SX_R(0.0)), SX_R(0.0), &ball, SX_R(1.0),
+                 SX_R(0.0), SX_R(0.5));
+    assert_int_equal(sx_body_set_linear_velocity(w, a, sx_v2(SX_R(2.0), SX_R(0.0))), SX_OK);
+    assert_int_equal(sx_body_set_linear_velocity(w, c, sx_v2(SX_R(-2.0), SX_R(0.0))), SX_OK);
+    step_n(w, 30);
+    va = (double)sx_body_get_linear_velocity(w, a).x;
+    vb = (double)sx_body_get_linear_velocity(w, b).x;
+    vc = (double)sx_body_get_linear_velocity(w, c).x;
+    printf("  three balls, two impacts in one sub-step: v %.5f %.5f %.5f (time order -0.71875 "
+           "0.09375 0.625)\n",
+           va, vb, vc);
+    /* the bound: the impacts' arithmetic in float, far below the 0.09 m/s
+     * that separates the two orders */
+    assert_near(va, -0.71875, 1e-4);
+    assert_near(vb, 0.09375, 1e-4);
+    assert_near(vc, 0.625, 1e-4);
+    sx_world_destroy(w);
+}
+
 /* The impact pass keeps the step deterministic: the same calls twice give
  * bit-identical velocities. */
 static void cradle_is_bit_identical_when_run_twice(void **state) {
@@ -523,6 +587,7 @@ static void pileup_conserves_momentum_and_never_gains_energy(void **state) {
     sx_test_rng rng = sx_test_rng_make(20261122u);
     sx_body_id ids[48];
     double p0x = 0.0, p0y = 0.0, scale = 0.0, ke0 = 0.0, ke_max = 0.0, drift = 0.0;
+    double l0 = 0.0, l_scale = 0.0, l_drift = 0.0;
     int i, s;
     (void)state;
     for (i = 0; i < 48; ++i) {
@@ -551,35 +616,50 @@ static void pileup_conserves_momentum_and_never_gains_energy(void **state) {
         double m = (double)sx_body_get_mass(w, ids[i]),
                iner = (double)sx_body_get_inertia(w, ids[i]);
         sx_vec2 v = sx_body_get_linear_velocity(w, ids[i]);
+        sx_vec2 c = sx_body_get_world_center(w, ids[i]);
         double om = (double)sx_body_get_angular_velocity(w, ids[i]);
         p0x += m * (double)v.x;
         p0y += m * (double)v.y;
         scale += m * (double)sx_length(v);
         ke0 += 0.5 * (m * (double)sx_dot(v, v) + iner * om * om);
+        l0 += iner * om + m * ((double)c.x * (double)v.y - (double)c.y * (double)v.x);
+        l_scale += iner * fabs(om) + m * (double)sx_length(c) * (double)sx_length(v);
     }
     for (s = 0; s < 180; ++s) {
-        double px = 0.0, py = 0.0, ke = 0.0;
+        double px = 0.0, py = 0.0, ke = 0.0, l = 0.0;
         step_n(w, 1);
         for (i = 0; i < 48; ++i) {
             double m = (double)sx_body_get_mass(w, ids[i]);
             double iner = (double)sx_body_get_inertia(w, ids[i]);
             sx_vec2 v = sx_body_get_linear_velocity(w, ids[i]);
+            sx_vec2 c = sx_body_get_world_center(w, ids[i]);
             double om = (double)sx_body_get_angular_velocity(w, ids[i]);
             px += m * (double)v.x;
             py += m * (double)v.y;
             ke += 0.5 * (m * (double)sx_dot(v, v) + iner * om * om);
+            l += iner * om + m * ((double)c.x * (double)v.y - (double)c.y * (double)v.x);
         }
+        if (fabs(l - l0) > l_drift) l_drift = fabs(l - l0);
         if (ke > ke_max) ke_max = ke;
         if (fabs(px - p0x) > drift) drift = fabs(px - p0x);
         if (fabs(py - p0y) > drift) drift = fabs(py - p0y);
     }
-    printf("  pileup: momentum drift %.2e of %.2f, max energy %.6f of %.6f (ratio %.6f)\n", drift,
-           scale, ke_max, ke0, ke_max / ke0);
+    printf("  pileup: momentum drift %.2e of %.2f (%.2e), angular momentum drift %.2e of %.2f "
+           "(%.2e), max energy %.6f of %.6f (ratio %.8f)\n",
+           drift, scale, drift / scale, l_drift, l_scale, l_drift / l_scale, ke_max, ke0,
+           ke_max / ke0);
+    /* Every impulse acts equal and opposite at one point, so momentum and
+     * angular momentum change only by rounding: the bounds are a few times
+     * the drift measured (float 1.5e-7, double 3e-16 of the scale). The
+     * angular momentum about the origin also moves with the positional
+     * correction (it moves centres, not velocities, which changes c x m v):
+     * 1e-4 of its scale in both builds, bound 3e-4. */
 #ifdef SX_DOUBLE
-    assert_true(drift <= 1e-5 * scale);
+    assert_true(drift <= 1e-14 * scale);
 #else
-    assert_true(drift <= 1e-4 * scale);
+    assert_true(drift <= 1e-6 * scale);
 #endif
+    assert_true(l_drift <= 3e-4 * l_scale);
     assert_true(ke_max <= ke0 * (1.0 + 1e-6));
     sx_world_destroy(w);
 }
@@ -590,8 +670,8 @@ static void pyramid_of_base_20_stands_for_10_seconds(void **state) {
     sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
     sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5));
     sx_body_id top = {0, 0};
-    sx_vec2 top0;
-    double deepest = 0.0, moved;
+    sx_vec2 top0, settled = sx_v2_zero();
+    double deepest = 0.0, moved, drift;
     int i, j, s;
     (void)state;
     add_ground(w, SX_R(100.0), SX_R(0.6));
@@ -608,20 +688,27 @@ static void pyramid_of_base_20_stands_for_10_seconds(void **state) {
         step_n(w, 1);
         d = max_depth(w);
         if (s > 60 && d > deepest) deepest = d;
+        if (s == 59) settled = sx_body_get_position(w, top);
     }
     moved = (double)sx_distance(top0, sx_body_get_position(w, top));
-    printf("  pyramid20: top box moved %.4f m (y %.4f from %.4f), max depth after 1 s %.4f m "
-           "(slop %.4f)\n",
-           moved, (double)sx_body_get_position(w, top).y, (double)top0.y, deepest,
+    drift = (double)sx_distance(settled, sx_body_get_position(w, top));
+    printf("  pyramid20: top box moved %.5f m (y %.5f from %.4f), %.2e m after the first second; "
+           "max depth after 1 s %.5f m (slop %.4f)\n",
+           moved, (double)sx_body_get_position(w, top).y, (double)top0.y, drift, deepest,
            (double)sx_world_linear_slop(w));
-    assert_true(moved < 0.05);
-    assert_true(deepest < 2.0 * (double)sx_world_linear_slop(w));
+    /* settling: 20 contact layers each sink into the slop, 4 mm in all;
+     * then it stands: 8e-5 m of drift in the 9 s after the first second
+     * (float and double), bound 3e-4 m. Resting contacts keep within the
+     * slop (positional correction pushes only beyond it). */
+    assert_true(moved < 0.01);
+    assert_true(drift < 3e-4);
+    assert_true(deepest < (double)sx_world_linear_slop(w));
     sx_world_destroy(w);
 }
 
 /* ---- mass ratio ------------------------------------------------------------- */
 
-static void heavy_box_on_light_box_penetrates_less_than_five_slops(void **state) {
+static void heavy_box_on_light_box_penetrates_less_than_two_slops(void **state) {
     sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
     sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5));
     sx_body_id light, heavy;
@@ -641,13 +728,16 @@ static void heavy_box_on_light_box_penetrates_less_than_five_slops(void **state)
     }
     printf("  mass ratio 100:1: max depth %.5f m = %.2f slop, heavy box y %.4f\n", deepest,
            deepest / (double)sx_world_linear_slop(w), (double)sx_body_get_position(w, heavy).y);
-    assert_true(deepest < 5.0 * (double)sx_world_linear_slop(w));
-    assert_near(sx_body_get_position(w, heavy).y, 1.5, 5.0 * (double)sx_world_linear_slop(w));
-    assert_near(sx_body_get_position(w, light).x, 0.0, 0.01);
+    /* 1.15 slop deep and 4.4 mm down measured (float and double): the
+     * light box's contacts converge less than a uniform stack's, so the
+     * bounds are 2 slops, not 1 */
+    assert_true(deepest < 2.0 * (double)sx_world_linear_slop(w));
+    assert_near(sx_body_get_position(w, heavy).y, 1.5, 2.0 * (double)sx_world_linear_slop(w));
+    assert_near(sx_body_get_position(w, light).x, 0.0, 1e-3);
     sx_world_destroy(w);
 }
 
-static void wide_plank_on_two_small_boxes_penetrates_less_than_five_slops(void **state) {
+static void wide_plank_on_two_small_boxes_penetrates_less_than_a_third_of_a_slop(void **state) {
     sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
     sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5)), plank = sx_box_shape(SX_R(10.0), SX_R(0.5));
     sx_body_id p;
@@ -671,9 +761,11 @@ static void wide_plank_on_two_small_boxes_penetrates_less_than_five_slops(void *
     printf("  plank 20:1 on two boxes: max depth %.5f m = %.2f slop, plank y %.4f, angle %.2e\n",
            deepest, deepest / (double)sx_world_linear_slop(w), (double)sx_body_get_position(w, p).y,
            (double)sx_body_get_angle(w, p));
-    assert_true(deepest < 5.0 * (double)sx_world_linear_slop(w));
-    assert_near(sx_body_get_position(w, p).y, 1.5, 5.0 * (double)sx_world_linear_slop(w));
-    assert_near(sx_body_get_angle(w, p), 0.0, 1e-3);
+    /* 0.44 mm deep, 0.4 mm down, 1.7e-6 rad measured (float and double);
+     * bounds about 3 times that */
+    assert_true(deepest < 0.3 * (double)sx_world_linear_slop(w));
+    assert_near(sx_body_get_position(w, p).y, 1.5, 0.3 * (double)sx_world_linear_slop(w));
+    assert_near(sx_body_get_angle(w, p), 0.0, 1e-5);
     sx_world_destroy(w);
 }
 
@@ -771,11 +863,12 @@ static void overlapping_pyramid_separates_without_gaining_speed(void **state) {
     printf("  overlap recovery: separated after %.3f s, max speed %.4f m/s, final depth %.5f\n",
            separated_at, max_speed, max_depth(w));
     assert_true(separated_at > 0.0 && separated_at < 2.0);
-    /* positions were corrected, not velocities: nothing shoots off. The
-     * speed bound is the free fall of the 25 cm the pile sags by. */
-    assert_true(max_speed < 2.5);
+    /* positions were corrected, not velocities: nothing shoots off, the
+     * boxes only pick up what gravity gives them between two corrections
+     * (3.4 mm/s measured, float and double; bound 1 cm/s), and end at rest */
+    assert_true(max_speed < 0.01);
     for (i = 0; i < n; ++i) {
-        assert_true(sx_length(sx_body_get_linear_velocity(w, ids[i])) < SX_R(0.05));
+        assert_true(sx_length(sx_body_get_linear_velocity(w, ids[i])) < SX_R(1e-3));
     }
     sx_world_destroy(w);
 }
@@ -918,19 +1011,21 @@ int main(void) {
         cmocka_unit_test(incline_box_sticks_when_friction_exceeds_tangent),
         cmocka_unit_test(incline_box_slides_with_coulomb_acceleration),
         cmocka_unit_test(incline_friction_mixes_as_geometric_mean),
+        cmocka_unit_test(incline_friction_of_0_1_on_0_9_mixes_to_0_3),
         cmocka_unit_test(slow_impact_below_the_threshold_does_not_bounce),
         cmocka_unit_test(cradle_passes_the_speed_to_the_last_ball),
         cmocka_unit_test(cradle_with_the_default_world_passes_the_speed_to_the_last_ball),
         cmocka_unit_test(cradle_built_in_reverse_order_gives_the_same_answer),
         cmocka_unit_test(cradle_of_touching_balls_passes_the_speed_to_the_last_ball),
         cmocka_unit_test(cradle_with_two_moving_balls_sends_two_away),
+        cmocka_unit_test(impacts_within_a_sub_step_are_resolved_in_time_order),
         cmocka_unit_test(cradle_is_bit_identical_when_run_twice),
         cmocka_unit_test(impact_impulse_is_reported_apart_from_the_iterations),
         cmocka_unit_test(ball_jammed_between_two_walls_ends_the_step_and_gains_no_energy),
         cmocka_unit_test(pileup_conserves_momentum_and_never_gains_energy),
         cmocka_unit_test(pyramid_of_base_20_stands_for_10_seconds),
-        cmocka_unit_test(heavy_box_on_light_box_penetrates_less_than_five_slops),
-        cmocka_unit_test(wide_plank_on_two_small_boxes_penetrates_less_than_five_slops),
+        cmocka_unit_test(heavy_box_on_light_box_penetrates_less_than_two_slops),
+        cmocka_unit_test(wide_plank_on_two_small_boxes_penetrates_less_than_a_third_of_a_slop),
         cmocka_unit_test(column_of_20_boxes_creeps_less_than_a_centimetre_in_10_seconds),
         cmocka_unit_test(column_far_from_the_origin_rests_as_at_the_origin),
         cmocka_unit_test(overlapping_pyramid_separates_without_gaining_speed),
