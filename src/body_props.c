@@ -92,9 +92,7 @@ sx_status sx_body_create(sx_world *world, const sx_body_def *def, sx_body_id *ou
     return sx_create_body(world, def, out);
 }
 
-sx_status sx_body_destroy(sx_world *world, sx_body_id body) {
-    return sx_destroy_body(world, body);
-}
+sx_status sx_body_destroy(sx_world *world, sx_body_id body) { return sx_destroy_body(world, body); }
 
 sx_status sx_collider_create(sx_world *world, sx_body_id body, const sx_collider_def *def,
                              sx_collider_id *out) {

@@ -252,7 +252,8 @@ static void fixed_rotation_set_at_run_time_zeroes_inertia_and_freeing_restores_i
 
 static void collider_density_change_recomputes_the_body_mass(void **state) {
     sx_world *w = make_world(sx_v2_zero());
-    sx_shape a = sx_box_shape(SX_R(0.5), SX_R(0.5)), c = sx_circle_shape(sx_v2(SX_R(2.0), SX_R(0.0)), SX_R(0.5));
+    sx_shape a = sx_box_shape(SX_R(0.5), SX_R(0.5)),
+             c = sx_circle_shape(sx_v2(SX_R(2.0), SX_R(0.0)), SX_R(0.5));
     sx_collider_id ca, cc;
     sx_body_id b = make_body(w, SX_BODY_DYNAMIC, sx_v2_zero(), &a, &ca);
     sx_collider_def cd = sx_default_collider_def();
