@@ -44,6 +44,17 @@ ifeq ($(SAN),1)
 endif
 OUT := build$(if $(VARIANT),/$(VARIANT))
 
+# Quiet build lines ("  CC     src/body.c") by default; V=1 prints every
+# command in full.
+V ?= 0
+ifeq ($(V),1)
+  Q :=
+  msg =
+else
+  Q := @
+  msg = @printf '  %-6s %s\n' '$(1)' '$(2)'
+endif
+
 # Strict flags for our code. -ffp-contract=off keeps results bit-identical
 # across optimisation levels (no fused multiply-add contraction).
 # -fno-semantic-interposition: the library's calls to its own functions stay
@@ -87,23 +98,27 @@ all: lib
 lib: $(LIB_A) $(LIB_SO_REAL) $(LIB_SO)
 
 $(OUT)/obj/src/%.o: src/%.c | $(OUT)/obj/src
-	$(CC) $(CFLAGS_ALL) -c $< -o $@
+	$(call msg,CC,$<)
+	$(Q)$(CC) $(CFLAGS_ALL) -c $< -o $@
 
 $(LIB_A): $(OBJS)
-	rm -f $@
-	ar rcs $@ $^
+	$(Q)rm -f $@
+	$(call msg,AR,$@)
+	$(Q)ar rcs $@ $^
 
 $(LIB_SO_REAL): $(OBJS)
-	$(CC) -shared -Wl,-soname,$(SONAME) $(SANFLAGS) -o $@ $^ $(LDLIBS_ALL)
-	ln -sf $(notdir $(LIB_SO_REAL)) $(OUT)/$(SONAME)
-	ln -sf $(SONAME) $(LIB_SO)
+	$(call msg,LD,$@)
+	$(Q)$(CC) -shared -Wl,-soname,$(SONAME) $(SANFLAGS) -o $@ $^ $(LDLIBS_ALL)
+	$(Q)ln -sf $(notdir $(LIB_SO_REAL)) $(OUT)/$(SONAME)
+	$(Q)ln -sf $(SONAME) $(LIB_SO)
 
 $(LIB_SO): $(LIB_SO_REAL)
-	ln -sf $(notdir $(LIB_SO_REAL)) $(OUT)/$(SONAME)
-	ln -sf $(SONAME) $@
+	$(call msg,LN,$@)
+	$(Q)ln -sf $(notdir $(LIB_SO_REAL)) $(OUT)/$(SONAME)
+	$(Q)ln -sf $(SONAME) $@
 
 $(OUT)/obj/src $(OUT)/obj/tests $(OUT)/obj/tests/support $(OUT)/tests $(OUT)/obj/bench $(OUT)/bench:
-	mkdir -p $@
+	$(Q)mkdir -p $@
 
 # ---- tests ------------------------------------------------------------------
 
@@ -111,13 +126,16 @@ deps-test:
 	@sh scripts/deps.sh cmocka
 
 $(OUT)/obj/tests/support/%.o: tests/support/%.c | $(OUT)/obj/tests/support deps-test
-	$(CC) $(CFLAGS_ALL) $(CMOCKA_CFLAGS) -Itests/support -c $< -o $@
+	$(call msg,CC,$<)
+	$(Q)$(CC) $(CFLAGS_ALL) $(CMOCKA_CFLAGS) -Itests/support -c $< -o $@
 
 $(OUT)/obj/tests/%.o: tests/%.c | $(OUT)/obj/tests deps-test
-	$(CC) $(CFLAGS_ALL) $(CMOCKA_CFLAGS) -Itests/support -c $< -o $@
+	$(call msg,CC,$<)
+	$(Q)$(CC) $(CFLAGS_ALL) $(CMOCKA_CFLAGS) -Itests/support -c $< -o $@
 
 $(OUT)/tests/%: $(OUT)/obj/tests/%.o $(TEST_SUPPORT_OBJS) $(LIB_A) | $(OUT)/tests
-	$(CC) $(SANFLAGS) -o $@ $< $(TEST_SUPPORT_OBJS) $(LIB_A) $(CMOCKA_LIBS) $(LDLIBS_ALL)
+	$(call msg,LD,$@)
+	$(Q)$(CC) $(SANFLAGS) -o $@ $< $(TEST_SUPPORT_OBJS) $(LIB_A) $(CMOCKA_LIBS) $(LDLIBS_ALL)
 
 # Public headers must compile as C++ too.
 check-headers:
@@ -143,7 +161,7 @@ doc-examples: $(LIB_A) $(ECS_OBJ) $(FLECS_OBJ)
 	cxx=$$(sh scripts/code_blocks.sh ecs/sepax_flecs.h cpp $(DOC_OUT) cpp); \
 	[ $$(echo $$c | wc -w) -ge 4 ] && [ -n "$$cxx" ] || { echo "sepax: doc-examples: code blocks not found"; exit 1; }; \
 	for f in $$c $$cxx; do \
-	  bin=$${f%.*}; \
+	  bin=$${f%.*}; $(if $(filter 1,$(V)),set -x;) \
 	  case $$f in \
 	    *.cpp) echo "  CXX  $$f"; $(CXX) $(DOC_CXXFLAGS) -o $$bin $$f $(ECS_OBJ) $(FLECS_OBJ) $(LIB_A) $(ECS_LIBS) ;; \
 	    *) if grep -q 'sepax_flecs.h' $$f; then echo "  CC   $$f (flecs)"; \
@@ -160,7 +178,8 @@ readme-example: doc-examples
 SAMPLE_PYRAMID := $(OUT)/samples/pyramid
 $(SAMPLE_PYRAMID): samples/pyramid.c $(LIB_A)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS_ALL) -o $@ $< $(LIB_A) $(LDLIBS_ALL)
+	$(call msg,CC,$<)
+	$(Q)$(CC) $(CFLAGS_ALL) -o $@ $< $(LIB_A) $(LDLIBS_ALL)
 sample-pyramid: $(SAMPLE_PYRAMID)
 	@./$(SAMPLE_PYRAMID) 5 1 > $(SAMPLE_PYRAMID).out
 	@echo "sepax: samples/pyramid ran: $$(tail -n 1 $(SAMPLE_PYRAMID).out)"
@@ -197,7 +216,8 @@ DET_SRCS := $(SRCS) tests/test_determinism.c $(TEST_SUPPORT)
 .PHONY: determinism
 $(DET_OUT)/%/test_determinism: $(DET_SRCS) $(wildcard include/sepax/*.h src/*.h tests/support/*.h) | deps-test
 	@mkdir -p $(dir $@)
-	$(CC) -std=c99 -$* -ffp-contract=off $(WARNINGS) $(DEFS) -Iinclude -Itests/support $(CMOCKA_CFLAGS) \
+	$(call msg,CC,$@)
+	$(Q)$(CC) -std=c99 -$* -ffp-contract=off $(WARNINGS) $(DEFS) -Iinclude -Itests/support $(CMOCKA_CFLAGS) \
 	  -o $@ $(DET_SRCS) $(CMOCKA_LIBS) $(LDLIBS_ALL)
 determinism: $(DET_LEVELS:%=$(DET_OUT)/%/test_determinism)
 	@for o in $(DET_LEVELS); do \
@@ -229,11 +249,13 @@ deps-bench: $(BOX2D3_STAMP)
 	@sh scripts/deps.sh box2d chipmunk
 
 $(OUT)/obj/bench/%.o: bench/%.c | $(OUT)/obj/bench deps-bench
-	$(CC) $(BENCH_CFLAGS) -c $< -o $@
+	$(call msg,CC,$<)
+	$(Q)$(CC) $(BENCH_CFLAGS) -c $< -o $@
 
 # The peer engines are C++ (Box2D 2.4): compiled with relaxed flags.
 $(OUT)/obj/bench/%.o: bench/%.cpp | $(OUT)/obj/bench deps-bench
-	$(CXX) -std=c++17 -O2 -DNDEBUG $(DEFS) -Iinclude -Ibench -MMD -MP -c $< -o $@
+	$(call msg,CXX,$<)
+	$(Q)$(CXX) -std=c++17 -O2 -DNDEBUG $(DEFS) -Iinclude -Ibench -MMD -MP -c $< -o $@
 
 # Box2D v3, the headline peer: its C source comes from the pinned crates.io
 # package boxdd-sys (scripts/fetch_box2d3.sh, with cargo) into
@@ -263,7 +285,7 @@ $(BOX2D3_LIB_DIR)/%/libbox2d3.a: $(BOX2D3_STAMP)
 	@mkdir -p $(dir $@)
 	@echo "sepax: building Box2D v3 ($*) into $(dir $@)"
 	@set -e; for f in $(BOX2D3_SRC)/src/*.c; do \
-	  $(CC) $(BOX2D3_CFLAGS) $(BOX2D3_FLAGS_$*) -I$(BOX2D3_SRC)/include -c $$f \
+	  $(if $(filter 1,$(V)),set -x;) $(CC) $(BOX2D3_CFLAGS) $(BOX2D3_FLAGS_$*) -I$(BOX2D3_SRC)/include -c $$f \
 	    -o $(dir $@)$$(basename $$f .c).o; \
 	done; rm -f $@; ar rcs $@ $(dir $@)*.o
 
@@ -271,19 +293,21 @@ $(OUT)/obj/bench/box2d3_%.o: $(BOX2D3_GLUE_SRCS) bench/box2d3/b3_export.h bench/
                              $(BOX2D3_LIB_DIR)/%/libbox2d3.a | $(OUT)/obj/bench
 	@mkdir -p $(OUT)/obj/bench/box2d3-$*
 	@set -e; for f in $(BOX2D3_GLUE_SRCS); do \
-	  echo "$(CC) [box2d3 $*] $$f"; \
-	  $(CC) -std=c17 -O2 -DNDEBUG -fPIC $(WARNINGS) $(BOX2D3_FLAGS_$*) -DB3_SUFFIX=$* \
+	  echo "  CC     [box2d3 $*] $$f"; \
+	  $(if $(filter 1,$(V)),set -x;) $(CC) -std=c17 -O2 -DNDEBUG -fPIC $(WARNINGS) $(BOX2D3_FLAGS_$*) -DB3_SUFFIX=$* \
 	    -isystem $(BOX2D3_SRC)/include -Ibench -Itests/support -c $$f \
 	    -o $(OUT)/obj/bench/box2d3-$*/$$(basename $$f .c).o; \
 	done
-	ld -r -o $@.all.o $(OUT)/obj/bench/box2d3-$*/*.o --whole-archive $(BOX2D3_LIB_DIR)/$*/libbox2d3.a
-	objcopy --wildcard --keep-global-symbol='*box2d3_$*' $@.all.o $@
+	$(call msg,LD,$@)
+	$(Q)ld -r -o $@.all.o $(OUT)/obj/bench/box2d3-$*/*.o --whole-archive $(BOX2D3_LIB_DIR)/$*/libbox2d3.a
+	$(Q)objcopy --wildcard --keep-global-symbol='*box2d3_$*' $@.all.o $@
 	@rm -f $@.all.o
 
 # The depth reference of the tests (tests/support/reference.c) is linked too.
 BENCH_REF_OBJ := $(OUT)/obj/tests/support/reference.o
 $(BENCH_BIN): $(BENCH_OBJS) $(BOX2D3_OBJS) $(BENCH_REF_OBJ) $(LIB_A) | $(OUT)/bench
-	$(CXX) $(SANFLAGS) -o $@ $(BENCH_OBJS) $(BOX2D3_OBJS) $(BENCH_REF_OBJ) $(LIB_A) -lbox2d -lchipmunk $(LDLIBS_ALL)
+	$(call msg,LD,$@)
+	$(Q)$(CXX) $(SANFLAGS) -o $@ $(BENCH_OBJS) $(BOX2D3_OBJS) $(BENCH_REF_OBJ) $(LIB_A) -lbox2d -lchipmunk $(LDLIBS_ALL)
 
 bench: $(BENCH_BIN)
 	./$(BENCH_BIN) --out $(OUT)/bench
@@ -333,25 +357,31 @@ flecs: $(FLECS_OBJ)
 
 $(FLECS_OBJ): $(FLECS_C)
 	@mkdir -p $(dir $@)
-	$(CC) $(FLECS_CFLAGS) -c $(FLECS_C) -o $@
+	$(call msg,CC,$(FLECS_C))
+	$(Q)$(CC) $(FLECS_CFLAGS) -c $(FLECS_C) -o $@
 
 $(ECS_OBJ): ecs/sepax_flecs.c ecs/sepax_flecs.h $(FLECS_H)
 	@mkdir -p $(dir $@)
-	$(CC) $(ECS_CFLAGS) -c $< -o $@
+	$(call msg,CC,$<)
+	$(Q)$(CC) $(ECS_CFLAGS) -c $< -o $@
 
 $(OUT)/obj/tests/test_ecs.o: tests/test_ecs.c $(FLECS_H) | $(OUT)/obj/tests deps-test
-	$(CC) $(ECS_CFLAGS) $(CMOCKA_CFLAGS) -Itests/support -c $< -o $@
+	$(call msg,CC,$<)
+	$(Q)$(CC) $(ECS_CFLAGS) $(CMOCKA_CFLAGS) -Itests/support -c $< -o $@
 
 $(TEST_ECS): $(OUT)/obj/tests/test_ecs.o $(ECS_OBJ) $(FLECS_OBJ) $(TEST_SUPPORT_OBJS) $(LIB_A) | $(OUT)/tests
-	$(CC) $(SANFLAGS) -o $@ $< $(ECS_OBJ) $(FLECS_OBJ) $(TEST_SUPPORT_OBJS) $(LIB_A) $(CMOCKA_LIBS) $(ECS_LIBS)
+	$(call msg,LD,$@)
+	$(Q)$(CC) $(SANFLAGS) -o $@ $< $(ECS_OBJ) $(FLECS_OBJ) $(TEST_SUPPORT_OBJS) $(LIB_A) $(CMOCKA_LIBS) $(ECS_LIBS)
 
 $(OUT)/obj/samples/demo.o: samples/demo.c ecs/sepax_flecs.h $(FLECS_H)
 	@mkdir -p $(dir $@)
-	$(CC) $(ECS_CFLAGS) -c $< -o $@
+	$(call msg,CC,$<)
+	$(Q)$(CC) $(ECS_CFLAGS) -c $< -o $@
 
 $(DEMO_BIN): $(OUT)/obj/samples/demo.o $(ECS_OBJ) $(FLECS_OBJ) $(LIB_A)
 	@mkdir -p $(dir $@)
-	$(CC) $(SANFLAGS) -o $@ $< $(ECS_OBJ) $(FLECS_OBJ) $(LIB_A) $(ECS_LIBS)
+	$(call msg,LD,$@)
+	$(Q)$(CC) $(SANFLAGS) -o $@ $< $(ECS_OBJ) $(FLECS_OBJ) $(LIB_A) $(ECS_LIBS)
 
 demo: $(DEMO_BIN)
 	@mkdir -p build/demo
@@ -364,11 +394,13 @@ BENCH_ECS_BIN := $(OUT)/bench/sepax_bench_ecs
 .PHONY: bench-ecs bench-ecs-smoke
 $(OUT)/obj/bench/ecs/overhead.o: bench/ecs/overhead.c ecs/sepax_flecs.h $(FLECS_H)
 	@mkdir -p $(dir $@)
-	$(CC) $(filter-out -O2 -g,$(ECS_CFLAGS)) -O2 -DNDEBUG -c $< -o $@
+	$(call msg,CC,$<)
+	$(Q)$(CC) $(filter-out -O2 -g,$(ECS_CFLAGS)) -O2 -DNDEBUG -c $< -o $@
 
 $(BENCH_ECS_BIN): $(OUT)/obj/bench/ecs/overhead.o $(ECS_OBJ) $(FLECS_OBJ) $(LIB_A)
 	@mkdir -p $(dir $@)
-	$(CC) $(SANFLAGS) -o $@ $< $(ECS_OBJ) $(FLECS_OBJ) $(LIB_A) $(ECS_LIBS)
+	$(call msg,LD,$@)
+	$(Q)$(CC) $(SANFLAGS) -o $@ $< $(ECS_OBJ) $(FLECS_OBJ) $(LIB_A) $(ECS_LIBS)
 
 bench-ecs: $(BENCH_ECS_BIN)
 	./$(BENCH_ECS_BIN) --out $(OUT)/bench
@@ -409,10 +441,12 @@ deps-fuzz:
 
 $(FUZZ_OUT)/obj/%.o: src/%.c | deps-fuzz
 	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link,address,undefined -c $< -o $@
+	$(call msg,CC,$<)
+	$(Q)$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link,address,undefined -c $< -o $@
 
 $(FUZZ_OUT)/fuzz_%: fuzz/fuzz_%.c $(FUZZ_LIB_OBJS) | deps-fuzz
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer,address,undefined -o $@ $< $(FUZZ_LIB_OBJS) -lm
+	$(call msg,LD,$@)
+	$(Q)$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer,address,undefined -o $@ $< $(FUZZ_LIB_OBJS) -lm
 
 fuzz-build: $(FUZZ_BINS)
 
