@@ -145,7 +145,8 @@ typedef struct sx_world_def {
 sx_world_def sx_default_world_def(void);
 
 /** Creates a world. Returns NULL when def is NULL, a field is out of its
- *  documented range or not finite, or memory runs out. */
+ *  documented range or not finite (sx_world_def_validate names the field),
+ *  or memory runs out. */
 sx_world *sx_world_create(const sx_world_def *def);
 
 /** Destroys the world and everything in it (NULL is ignored). Every handle of
