@@ -9,8 +9,9 @@
 #   make determinism          the determinism hash at -O0, -O2 and -O3 must agree
 #   make mutate               the mutation check: the tests must catch each bug of a list
 #   make bench                benchmarks (installs the peers it compares with)
-#   make install PREFIX=/usr/local
+#   make install PREFIX=/usr/local   (make uninstall PREFIX=... removes it)
 #   make clean
+#   make help                 every target, one line each
 #
 # Variants build out of tree: the default float build in build/, the others
 # in build/<variant>/ (double, san, double-san), so they never mix objects.
@@ -44,6 +45,17 @@ ifeq ($(SAN),1)
 endif
 OUT := build$(if $(VARIANT),/$(VARIANT))
 
+# Quiet build lines ("  CC     src/body.c") by default; V=1 prints every
+# command in full.
+V ?= 0
+ifeq ($(V),1)
+  Q :=
+  msg =
+else
+  Q := @
+  msg = @printf '  %-6s %s\n' '$(1)' '$(2)'
+endif
+
 # Strict flags for our code. -ffp-contract=off keeps results bit-identical
 # across optimisation levels (no fused multiply-add contraction).
 # -fno-semantic-interposition: the library's calls to its own functions stay
@@ -61,7 +73,15 @@ LDLIBS_ALL := -lm
 SRCS := $(sort $(wildcard src/*.c))
 OBJS := $(SRCS:src/%.c=$(OUT)/obj/src/%.o)
 LIB_A := $(OUT)/libsepax.a
+# The shared library is versioned: libsepax.so.MAJOR.MINOR.PATCH, with the
+# SONAME libsepax.so.MAJOR (what a program records and the loader looks
+# for) and the links libsepax.so.MAJOR and libsepax.so (what -lsepax finds).
+SX_VERSION_PART = $(shell sed -n 's/^\#define SX_VERSION_$(1) \([0-9]*\)/\1/p' include/sepax/base.h)
+VERSION_MAJOR := $(call SX_VERSION_PART,MAJOR)
+VERSION := $(VERSION_MAJOR).$(call SX_VERSION_PART,MINOR).$(call SX_VERSION_PART,PATCH)
+SONAME := libsepax.so.$(VERSION_MAJOR)
 LIB_SO := $(OUT)/libsepax.so
+LIB_SO_REAL := $(OUT)/libsepax.so.$(VERSION)
 
 TEST_SRCS := $(sort $(wildcard tests/test_*.c))
 TEST_SUPPORT := $(sort $(wildcard tests/support/*.c))
@@ -70,26 +90,36 @@ TEST_BINS := $(TEST_SRCS:tests/%.c=$(OUT)/tests/%)
 CMOCKA_CFLAGS = $(shell pkg-config --cflags cmocka 2>/dev/null)
 CMOCKA_LIBS = $(shell pkg-config --libs cmocka 2>/dev/null || echo -lcmocka)
 
-.PHONY: all lib test test-run check-headers readme-example sample-pyramid deps-test deps-bench install clean bench \
-        bench-smoke format format-check
+.PHONY: all lib test check-headers readme-example doc-examples sample-pyramid deps-test deps-bench \
+        install uninstall clean bench bench-smoke format format-check help
 .DEFAULT_GOAL := all
 .SECONDARY:
 
 all: lib
-lib: $(LIB_A) $(LIB_SO)
+lib: $(LIB_A) $(LIB_SO_REAL) $(LIB_SO)
 
 $(OUT)/obj/src/%.o: src/%.c | $(OUT)/obj/src
-	$(CC) $(CFLAGS_ALL) -c $< -o $@
+	$(call msg,CC,$<)
+	$(Q)$(CC) $(CFLAGS_ALL) -c $< -o $@
 
 $(LIB_A): $(OBJS)
-	rm -f $@
-	ar rcs $@ $^
+	$(Q)rm -f $@
+	$(call msg,AR,$@)
+	$(Q)ar rcs $@ $^
 
-$(LIB_SO): $(OBJS)
-	$(CC) -shared $(SANFLAGS) -o $@ $^ $(LDLIBS_ALL)
+$(LIB_SO_REAL): $(OBJS)
+	$(call msg,LD,$@)
+	$(Q)$(CC) -shared -Wl,-soname,$(SONAME) $(SANFLAGS) -o $@ $^ $(LDLIBS_ALL)
+	$(Q)ln -sf $(notdir $(LIB_SO_REAL)) $(OUT)/$(SONAME)
+	$(Q)ln -sf $(SONAME) $(LIB_SO)
+
+$(LIB_SO): $(LIB_SO_REAL)
+	$(call msg,LN,$@)
+	$(Q)ln -sf $(notdir $(LIB_SO_REAL)) $(OUT)/$(SONAME)
+	$(Q)ln -sf $(SONAME) $@
 
 $(OUT)/obj/src $(OUT)/obj/tests $(OUT)/obj/tests/support $(OUT)/tests $(OUT)/obj/bench $(OUT)/bench:
-	mkdir -p $@
+	$(Q)mkdir -p $@
 
 # ---- tests ------------------------------------------------------------------
 
@@ -97,13 +127,16 @@ deps-test:
 	@sh scripts/deps.sh cmocka
 
 $(OUT)/obj/tests/support/%.o: tests/support/%.c | $(OUT)/obj/tests/support deps-test
-	$(CC) $(CFLAGS_ALL) $(CMOCKA_CFLAGS) -Itests/support -c $< -o $@
+	$(call msg,CC,$<)
+	$(Q)$(CC) $(CFLAGS_ALL) $(CMOCKA_CFLAGS) -Itests/support -c $< -o $@
 
 $(OUT)/obj/tests/%.o: tests/%.c | $(OUT)/obj/tests deps-test
-	$(CC) $(CFLAGS_ALL) $(CMOCKA_CFLAGS) -Itests/support -c $< -o $@
+	$(call msg,CC,$<)
+	$(Q)$(CC) $(CFLAGS_ALL) $(CMOCKA_CFLAGS) -Itests/support -c $< -o $@
 
 $(OUT)/tests/%: $(OUT)/obj/tests/%.o $(TEST_SUPPORT_OBJS) $(LIB_A) | $(OUT)/tests
-	$(CC) $(SANFLAGS) -o $@ $< $(TEST_SUPPORT_OBJS) $(LIB_A) $(CMOCKA_LIBS) $(LDLIBS_ALL)
+	$(call msg,LD,$@)
+	$(Q)$(CC) $(SANFLAGS) -o $@ $< $(TEST_SUPPORT_OBJS) $(LIB_A) $(CMOCKA_LIBS) $(LDLIBS_ALL)
 
 # Public headers must compile as C++ too.
 check-headers:
@@ -111,28 +144,48 @@ check-headers:
 	@printf '#include <sepax/sepax.h>\nint main() { sx_vec2 v = sx_v2(1, 2); return (int)sx_length(v) - 2; }\n' \
 	  | $(CXX) -std=c++11 -Wall -Wextra -pedantic -Werror $(DEFS) -Iinclude -x c++ -fsyntax-only -
 
-# The README's code example is compiled and run, so it stays true.
-README_EXAMPLE := $(OUT)/readme_example
-readme-example: $(LIB_A)
-	@mkdir -p $(OUT)
-	@awk '/<!-- readme-example:begin -->/{f=1;next} /<!-- readme-example:end -->/{f=0} f' README.md \
-	  | sed '/^```/d' > $(README_EXAMPLE).c
-	@test -s $(README_EXAMPLE).c || { echo "sepax: README example block not found"; exit 1; }
-	$(CC) $(CFLAGS_ALL) -o $(README_EXAMPLE) $(README_EXAMPLE).c $(LIB_A) $(LDLIBS_ALL)
-	@./$(README_EXAMPLE) > $(README_EXAMPLE).out
-	@echo "sepax: README example ran: $$(head -c 200 $(README_EXAMPLE).out)"
+# Every C code block of README.md and the C and C++ blocks of the usage
+# comment atop ecs/sepax_flecs.h are compiled with the strict flags and run,
+# so the documentation stays true (blocks that include sepax_flecs.h are
+# linked with the flecs module and flecs). Their shell blocks (install,
+# linking, the flecs build lines) are run as written by .ci/run.
+# They are compiled with the warnings a user's own build would turn on
+# (-Wall -Wextra -pedantic -Werror), not with the library's stricter set.
+DOC_OUT := $(OUT)/doc-examples
+DOC_CFLAGS = -std=c99 $(OPT) -Wall -Wextra -pedantic -Werror $(SANFLAGS) $(DEFS) -Iinclude
+DOC_CXXFLAGS = -std=c++17 $(OPT) -Wall -Wextra -pedantic -Werror $(SANFLAGS) $(DEFS) -Iinclude -Iecs \
+               -isystem $(FLECS_SRC_DIR)
+doc-examples: $(LIB_A)
+	@rm -rf $(DOC_OUT)
+	@set -e; \
+	c=$$(sh scripts/code_blocks.sh README.md c $(DOC_OUT) c; sh scripts/code_blocks.sh ecs/sepax_flecs.h c $(DOC_OUT) c); \
+	cxx=$$(sh scripts/code_blocks.sh ecs/sepax_flecs.h cpp $(DOC_OUT) cpp); \
+	[ $$(echo $$c | wc -w) -ge 4 ] && [ -n "$$cxx" ] || { echo "sepax: doc-examples: code blocks not found"; exit 1; }; \
+	for f in $$c $$cxx; do \
+	  bin=$${f%.*}; $(if $(filter 1,$(V)),set -x;) \
+	  case $$f in \
+	    *.cpp) echo "  CXX  $$f"; $(CXX) $(DOC_CXXFLAGS) -o $$bin $$f $(ECS_OBJ) $(FLECS_OBJ) $(LIB_A) $(ECS_LIBS) ;; \
+	    *) if grep -q 'sepax_flecs.h' $$f; then echo "  CC   $$f (flecs)"; \
+	         $(CC) $(DOC_CFLAGS) -Iecs -isystem $(FLECS_SRC_DIR) -o $$bin $$f $(ECS_OBJ) $(FLECS_OBJ) $(LIB_A) $(ECS_LIBS); \
+	       else echo "  CC   $$f"; $(CC) $(DOC_CFLAGS) -o $$bin $$f $(LIB_A) $(LDLIBS_ALL); fi ;; \
+	  esac; \
+	  ./$$bin > $$bin.out 2>&1 || { cat $$bin.out; echo "sepax: $$f (from the documentation) failed"; exit 1; }; \
+	  echo "sepax: $$f ran: $$(head -n 1 $$bin.out)"; \
+	done
+readme-example: doc-examples
 
 # The plain-C sample (samples/pyramid.c) is built with the strict flags and
 # run on a small pyramid, so it stays working.
 SAMPLE_PYRAMID := $(OUT)/samples/pyramid
 $(SAMPLE_PYRAMID): samples/pyramid.c $(LIB_A)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS_ALL) -o $@ $< $(LIB_A) $(LDLIBS_ALL)
+	$(call msg,CC,$<)
+	$(Q)$(CC) $(CFLAGS_ALL) -o $@ $< $(LIB_A) $(LDLIBS_ALL)
 sample-pyramid: $(SAMPLE_PYRAMID)
 	@./$(SAMPLE_PYRAMID) 5 1 > $(SAMPLE_PYRAMID).out
 	@echo "sepax: samples/pyramid ran: $$(tail -n 1 $(SAMPLE_PYRAMID).out)"
 
-test: lib check-headers readme-example sample-pyramid $(TEST_BINS)
+test: lib check-headers doc-examples sample-pyramid $(TEST_BINS)
 	@failed=0; total=0; \
 	for t in $(TEST_BINS); do \
 	  total=$$((total + 1)); \
@@ -166,7 +219,8 @@ DET_SRCS := $(SRCS) tests/test_determinism.c $(TEST_SUPPORT)
 .PHONY: determinism
 $(DET_OUT)/%/test_determinism: $(DET_SRCS) $(wildcard include/sepax/*.h src/*.h tests/support/*.h) | deps-test
 	@mkdir -p $(dir $@)
-	$(CC) -std=c99 -$* -ffp-contract=off $(WARNINGS) $(DEFS) -Iinclude -Itests/support $(CMOCKA_CFLAGS) \
+	$(call msg,CC,$@)
+	$(Q)$(CC) -std=c99 -$* -ffp-contract=off $(WARNINGS) $(DEFS) -Iinclude -Itests/support $(CMOCKA_CFLAGS) \
 	  -o $@ $(DET_SRCS) $(CMOCKA_LIBS) $(LDLIBS_ALL)
 determinism: $(DET_LEVELS:%=$(DET_OUT)/%/test_determinism)
 	@for o in $(DET_LEVELS); do \
@@ -209,11 +263,13 @@ deps-bench: $(BOX2D3_STAMP)
 	@sh scripts/deps.sh box2d chipmunk
 
 $(OUT)/obj/bench/%.o: bench/%.c | $(OUT)/obj/bench deps-bench
-	$(CC) $(BENCH_CFLAGS) -c $< -o $@
+	$(call msg,CC,$<)
+	$(Q)$(CC) $(BENCH_CFLAGS) -c $< -o $@
 
 # The peer engines are C++ (Box2D 2.4): compiled with relaxed flags.
 $(OUT)/obj/bench/%.o: bench/%.cpp | $(OUT)/obj/bench deps-bench
-	$(CXX) -std=c++17 -O2 -DNDEBUG $(DEFS) -Iinclude -Ibench -MMD -MP -c $< -o $@
+	$(call msg,CXX,$<)
+	$(Q)$(CXX) -std=c++17 -O2 -DNDEBUG $(DEFS) -Iinclude -Ibench -MMD -MP -c $< -o $@
 
 # Box2D v3, the headline peer: its C source comes from the pinned crates.io
 # package boxdd-sys (scripts/fetch_box2d3.sh, with cargo) into
@@ -243,7 +299,7 @@ $(BOX2D3_LIB_DIR)/%/libbox2d3.a: $(BOX2D3_STAMP)
 	@mkdir -p $(dir $@)
 	@echo "sepax: building Box2D v3 ($*) into $(dir $@)"
 	@set -e; for f in $(BOX2D3_SRC)/src/*.c; do \
-	  $(CC) $(BOX2D3_CFLAGS) $(BOX2D3_FLAGS_$*) -I$(BOX2D3_SRC)/include -c $$f \
+	  $(if $(filter 1,$(V)),set -x;) $(CC) $(BOX2D3_CFLAGS) $(BOX2D3_FLAGS_$*) -I$(BOX2D3_SRC)/include -c $$f \
 	    -o $(dir $@)$$(basename $$f .c).o; \
 	done; rm -f $@; ar rcs $@ $(dir $@)*.o
 
@@ -251,19 +307,21 @@ $(OUT)/obj/bench/box2d3_%.o: $(BOX2D3_GLUE_SRCS) bench/box2d3/b3_export.h bench/
                              $(BOX2D3_LIB_DIR)/%/libbox2d3.a | $(OUT)/obj/bench
 	@mkdir -p $(OUT)/obj/bench/box2d3-$*
 	@set -e; for f in $(BOX2D3_GLUE_SRCS); do \
-	  echo "$(CC) [box2d3 $*] $$f"; \
-	  $(CC) -std=c17 -O2 -DNDEBUG -fPIC $(WARNINGS) $(BOX2D3_FLAGS_$*) -DB3_SUFFIX=$* \
+	  echo "  CC     [box2d3 $*] $$f"; \
+	  $(if $(filter 1,$(V)),set -x;) $(CC) -std=c17 -O2 -DNDEBUG -fPIC $(WARNINGS) $(BOX2D3_FLAGS_$*) -DB3_SUFFIX=$* \
 	    -isystem $(BOX2D3_SRC)/include -Ibench -Itests/support -c $$f \
 	    -o $(OUT)/obj/bench/box2d3-$*/$$(basename $$f .c).o; \
 	done
-	ld -r -o $@.all.o $(OUT)/obj/bench/box2d3-$*/*.o --whole-archive $(BOX2D3_LIB_DIR)/$*/libbox2d3.a
-	objcopy --wildcard --keep-global-symbol='*box2d3_$*' $@.all.o $@
+	$(call msg,LD,$@)
+	$(Q)ld -r -o $@.all.o $(OUT)/obj/bench/box2d3-$*/*.o --whole-archive $(BOX2D3_LIB_DIR)/$*/libbox2d3.a
+	$(Q)objcopy --wildcard --keep-global-symbol='*box2d3_$*' $@.all.o $@
 	@rm -f $@.all.o
 
 # The depth reference of the tests (tests/support/reference.c) is linked too.
 BENCH_REF_OBJ := $(OUT)/obj/tests/support/reference.o
 $(BENCH_BIN): $(BENCH_OBJS) $(BOX2D3_OBJS) $(BENCH_REF_OBJ) $(LIB_A) | $(OUT)/bench
-	$(CXX) $(SANFLAGS) -o $@ $(BENCH_OBJS) $(BOX2D3_OBJS) $(BENCH_REF_OBJ) $(LIB_A) -lbox2d -lchipmunk $(LDLIBS_ALL)
+	$(call msg,LD,$@)
+	$(Q)$(CXX) $(SANFLAGS) -o $@ $(BENCH_OBJS) $(BOX2D3_OBJS) $(BENCH_REF_OBJ) $(LIB_A) -lbox2d -lchipmunk $(LDLIBS_ALL)
 
 bench: $(BENCH_BIN)
 	./$(BENCH_BIN) --out $(OUT)/bench
@@ -313,25 +371,34 @@ flecs: $(FLECS_OBJ)
 
 $(FLECS_OBJ): $(FLECS_C)
 	@mkdir -p $(dir $@)
-	$(CC) $(FLECS_CFLAGS) -c $(FLECS_C) -o $@
+	$(call msg,CC,$(FLECS_C))
+	$(Q)$(CC) $(FLECS_CFLAGS) -c $(FLECS_C) -o $@
+
+# (the examples of the documentation link the module: see doc-examples)
+doc-examples: $(ECS_OBJ) $(FLECS_OBJ)
 
 $(ECS_OBJ): ecs/sepax_flecs.c ecs/sepax_flecs.h $(FLECS_H)
 	@mkdir -p $(dir $@)
-	$(CC) $(ECS_CFLAGS) -c $< -o $@
+	$(call msg,CC,$<)
+	$(Q)$(CC) $(ECS_CFLAGS) -c $< -o $@
 
 $(OUT)/obj/tests/test_ecs.o: tests/test_ecs.c $(FLECS_H) | $(OUT)/obj/tests deps-test
-	$(CC) $(ECS_CFLAGS) $(CMOCKA_CFLAGS) -Itests/support -c $< -o $@
+	$(call msg,CC,$<)
+	$(Q)$(CC) $(ECS_CFLAGS) $(CMOCKA_CFLAGS) -Itests/support -c $< -o $@
 
 $(TEST_ECS): $(OUT)/obj/tests/test_ecs.o $(ECS_OBJ) $(FLECS_OBJ) $(TEST_SUPPORT_OBJS) $(LIB_A) | $(OUT)/tests
-	$(CC) $(SANFLAGS) -o $@ $< $(ECS_OBJ) $(FLECS_OBJ) $(TEST_SUPPORT_OBJS) $(LIB_A) $(CMOCKA_LIBS) $(ECS_LIBS)
+	$(call msg,LD,$@)
+	$(Q)$(CC) $(SANFLAGS) -o $@ $< $(ECS_OBJ) $(FLECS_OBJ) $(TEST_SUPPORT_OBJS) $(LIB_A) $(CMOCKA_LIBS) $(ECS_LIBS)
 
 $(OUT)/obj/samples/demo.o: samples/demo.c ecs/sepax_flecs.h $(FLECS_H)
 	@mkdir -p $(dir $@)
-	$(CC) $(ECS_CFLAGS) -c $< -o $@
+	$(call msg,CC,$<)
+	$(Q)$(CC) $(ECS_CFLAGS) -c $< -o $@
 
 $(DEMO_BIN): $(OUT)/obj/samples/demo.o $(ECS_OBJ) $(FLECS_OBJ) $(LIB_A)
 	@mkdir -p $(dir $@)
-	$(CC) $(SANFLAGS) -o $@ $< $(ECS_OBJ) $(FLECS_OBJ) $(LIB_A) $(ECS_LIBS)
+	$(call msg,LD,$@)
+	$(Q)$(CC) $(SANFLAGS) -o $@ $< $(ECS_OBJ) $(FLECS_OBJ) $(LIB_A) $(ECS_LIBS)
 
 demo: $(DEMO_BIN)
 	@mkdir -p build/demo
@@ -344,11 +411,13 @@ BENCH_ECS_BIN := $(OUT)/bench/sepax_bench_ecs
 .PHONY: bench-ecs bench-ecs-smoke
 $(OUT)/obj/bench/ecs/overhead.o: bench/ecs/overhead.c ecs/sepax_flecs.h $(FLECS_H)
 	@mkdir -p $(dir $@)
-	$(CC) $(filter-out -O2 -g,$(ECS_CFLAGS)) -O2 -DNDEBUG -c $< -o $@
+	$(call msg,CC,$<)
+	$(Q)$(CC) $(filter-out -O2 -g,$(ECS_CFLAGS)) -O2 -DNDEBUG -c $< -o $@
 
 $(BENCH_ECS_BIN): $(OUT)/obj/bench/ecs/overhead.o $(ECS_OBJ) $(FLECS_OBJ) $(LIB_A)
 	@mkdir -p $(dir $@)
-	$(CC) $(SANFLAGS) -o $@ $< $(ECS_OBJ) $(FLECS_OBJ) $(LIB_A) $(ECS_LIBS)
+	$(call msg,LD,$@)
+	$(Q)$(CC) $(SANFLAGS) -o $@ $< $(ECS_OBJ) $(FLECS_OBJ) $(LIB_A) $(ECS_LIBS)
 
 bench-ecs: $(BENCH_ECS_BIN)
 	./$(BENCH_ECS_BIN) --out $(OUT)/bench
@@ -389,10 +458,12 @@ deps-fuzz:
 
 $(FUZZ_OUT)/obj/%.o: src/%.c | deps-fuzz
 	@mkdir -p $(dir $@)
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link,address,undefined -c $< -o $@
+	$(call msg,CC,$<)
+	$(Q)$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer-no-link,address,undefined -c $< -o $@
 
 $(FUZZ_OUT)/fuzz_%: fuzz/fuzz_%.c $(FUZZ_LIB_OBJS) | deps-fuzz
-	$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer,address,undefined -o $@ $< $(FUZZ_LIB_OBJS) -lm
+	$(call msg,LD,$@)
+	$(Q)$(FUZZ_CC) $(FUZZ_CFLAGS) -fsanitize=fuzzer,address,undefined -o $@ $< $(FUZZ_LIB_OBJS) -lm
 
 fuzz-build: $(FUZZ_BINS)
 
@@ -432,16 +503,33 @@ fuzz-merge: $(FUZZ_BINS)
 
 # ---- install -----------------------------------------------------------------
 
+INSTALL_FILES = include/sepax/*.h lib/libsepax.a lib/libsepax.so lib/$(SONAME) \
+                lib/libsepax.so.$(VERSION) lib/pkgconfig/sepax.pc share/sepax/ecs/sepax_flecs.h \
+                share/sepax/ecs/sepax_flecs.c
 install: lib
 	install -d $(DESTDIR)$(PREFIX)/include/sepax $(DESTDIR)$(PREFIX)/lib/pkgconfig
 	install -m 644 include/sepax/*.h $(DESTDIR)$(PREFIX)/include/sepax/
 	install -m 644 $(LIB_A) $(DESTDIR)$(PREFIX)/lib/
-	install -m 755 $(LIB_SO) $(DESTDIR)$(PREFIX)/lib/
+	install -m 755 $(LIB_SO_REAL) $(DESTDIR)$(PREFIX)/lib/
+	ln -sf libsepax.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/$(SONAME)
+	ln -sf $(SONAME) $(DESTDIR)$(PREFIX)/lib/libsepax.so
 	install -d $(DESTDIR)$(PREFIX)/share/sepax/ecs
 	install -m 644 ecs/sepax_flecs.h ecs/sepax_flecs.c $(DESTDIR)$(PREFIX)/share/sepax/ecs/
-	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@CFLAGS@|$(DEFS)|g' \
-	    -e 's|@VERSION@|$(shell sed -n 's/^#define SX_VERSION_\(MAJOR\|MINOR\|PATCH\) \([0-9]*\)/\2/p' include/sepax/base.h | paste -sd.)|g' \
+	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@CFLAGS@|$(DEFS)|g' -e 's|@VERSION@|$(VERSION)|g' \
 	    scripts/sepax.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/sepax.pc
+	@echo "sepax $(VERSION) is installed in $(DESTDIR)$(PREFIX). To build and run a program with it:"
+	@echo "  pkg-config finds it in /usr and /usr/local; elsewhere:"
+	@echo "    export PKG_CONFIG_PATH=$(PREFIX)/lib/pkgconfig"
+	@echo "  the loader must find libsepax.so.$(VERSION_MAJOR) at run time: either"
+	@echo "    - run ldconfig (as root) once after installing into a directory it searches (/usr/local/lib),"
+	@echo "    - or link with -Wl,-rpath,$(PREFIX)/lib (or run with LD_LIBRARY_PATH=$(PREFIX)/lib),"
+	@echo "    - or link statically: $(PREFIX)/lib/libsepax.a -lm"
+	@echo "  make uninstall PREFIX=$(PREFIX) removes it."
+
+uninstall:
+	rm -f $(addprefix $(DESTDIR)$(PREFIX)/,$(filter-out include/sepax/*.h,$(INSTALL_FILES)))
+	rm -f $(addprefix $(DESTDIR)$(PREFIX)/include/sepax/,$(notdir $(wildcard include/sepax/*.h)))
+	-rmdir $(DESTDIR)$(PREFIX)/include/sepax $(DESTDIR)$(PREFIX)/share/sepax/ecs $(DESTDIR)$(PREFIX)/share/sepax 2>/dev/null
 
 # ---- housekeeping --------------------------------------------------------------
 
@@ -456,6 +544,37 @@ format-check:
 
 clean:
 	rm -rf build
+
+# One line per target; .ci/run checks that every .PHONY target is listed.
+help:
+	@echo "sepax make targets (variables: SX_REAL=double, SAN=1, SIMD=0, V=1, PREFIX=..., FLECS_DIR=...)"
+	@echo "  all, lib          build/libsepax.a and the versioned build/libsepax.so (the default)"
+	@echo "  test              build the library and run every cmocka test, the documentation's examples and the sample"
+	@echo "  check-headers     compile the public headers as C++"
+	@echo "  doc-examples      compile and run the C blocks of README.md and the C/C++ blocks of ecs/sepax_flecs.h"
+	@echo "  readme-example    the same as doc-examples (its former name)"
+	@echo "  sample-pyramid    build and run samples/pyramid.c on a small pyramid"
+	@echo "  stress            the hostile scenes with the 100,000-step long run"
+	@echo "  determinism       the determinism and narrowphase hashes at -O0, -O2 and -O3 must agree"
+	@echo "  demo              the flecs demo: 8 simulated seconds, final frame in build/demo/final.svg"
+	@echo "  flecs             fetch flecs 4 (cargo, or FLECS_DIR) and compile flecs.c"
+	@echo "  bench             every benchmark: narrowphase, world scenes, flecs overhead (minutes)"
+	@echo "  bench-scenes      the world scenes alone (scenes.csv, plots, REPORT.md in build/bench)"
+	@echo "  bench-smoke       every benchmark for a few iterations only (a check that they run)"
+	@echo "  bench-ecs         the flecs module's overhead over the plain world"
+	@echo "  bench-ecs-smoke   the same for a few steps"
+	@echo "  fuzz              the libFuzzer harnesses, FUZZ_SECONDS each (fuzz/README.md)"
+	@echo "  fuzz-build        build the fuzz harnesses with clang only"
+	@echo "  fuzz-merge        add the last fuzz run's new-coverage inputs to fuzz/corpus/"
+	@echo "  deps-test         install cmocka when missing (Debian package, as root)"
+	@echo "  deps-bench        install the benchmark peers when missing (Debian packages; Box2D v3 with cargo)"
+	@echo "  deps-fuzz         install clang and libFuzzer when missing (Debian packages)"
+	@echo "  install           headers, libraries, sepax.pc and the flecs module's source into PREFIX (/usr/local)"
+	@echo "  uninstall         remove what install put into PREFIX"
+	@echo "  format            clang-format every source file in place"
+	@echo "  format-check      fail if a source file is not clang-formatted"
+	@echo "  clean             remove build/"
+	@echo "  help              this list"
 
 -include $(OBJS:.o=.d) $(TEST_SRCS:tests/%.c=$(OUT)/obj/tests/%.d) \
          $(TEST_SUPPORT_OBJS:.o=.d) $(BENCH_OBJS:.o=.d)

@@ -622,7 +622,7 @@ int main(int argc, char **argv) {
     options opt;
     /* The world scenes (bench/scenes.c) run after the narrowphase table:
      * --scenes runs them alone, --no-scenes skips them, --quick shortens
-     * the large ones, --full runs SCENES.md's lengths. These flags are
+     * the large ones, --full runs docs/scenes.md's lengths. These flags are
      * taken out before parse() sees argv. */
     int scenes = 1, scenes_only = 0, scene_level = 0, nargs = 1;
     for (int i = 1; i < argc; ++i) {
@@ -640,7 +640,7 @@ int main(int argc, char **argv) {
     argc = nargs;
     if (argc > 1 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0))
         printf("world scenes: [--scenes] only the scenes, [--no-scenes] only the narrowphase,\n"
-               "  [--quick] fewer steps in the large scenes, [--full] SCENES.md's full lengths\n");
+               "  [--quick] fewer steps in the large scenes, [--full] docs/scenes.md's full lengths\n");
     if (!parse(argc, argv, &opt)) return 2;
     if (!make_dirs(opt.out_dir)) {
         fprintf(stderr, "sepax_bench: cannot create %s: %s\n", opt.out_dir, strerror(errno));

@@ -78,10 +78,12 @@ void md(const char *fmt, ...) {
 }
 
 static char speed_notes[24][240];
-static int speed_notes_n;
+static int speed_notes_n, speed_notes_off;
+
+void speed_notes_smoke(int smoke) { speed_notes_off = smoke; }
 
 void speed_note(const char *fmt, ...) {
-    if (speed_notes_n == 24) return;
+    if (speed_notes_n == 24 || speed_notes_off) return;
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(speed_notes[speed_notes_n++], sizeof speed_notes[0], fmt, ap);
@@ -171,7 +173,7 @@ void set_ngon(scene_body *b, int n, double r) {
     }
 }
 
-/* SCENES.md's ground: static box 100 x 1 centred at (0, -1). */
+/* docs/scenes.md's ground: static box 100 x 1 centred at (0, -1). */
 void add_ground(scene_def *d, double half_width) {
     set_box(scene_add(d, 0, 0.0, -1.0, 0.0), half_width, 1.0);
 }

@@ -55,6 +55,8 @@ void csv_row(const char *scene, int e, const scene_config *c, int bodies, int st
              const char *err_name, double err, const char *details);
 /** A throughput result where sepax is slower than a peer, for the headline. */
 void speed_note(const char *fmt, ...);
+/** smoke != 0: speed_note records nothing (a smoke run's times judge nothing). */
+void speed_notes_smoke(int smoke);
 int speed_note_count(void);
 const char *speed_note_text(int i);
 
@@ -69,9 +71,9 @@ void set_circle(scene_body *b, double r);
 void set_capsule(scene_body *b, double half_length, double r);
 /** Regular n-gon of circumradius r, centred on its centroid. */
 void set_ngon(scene_body *b, int n, double r);
-/** SCENES.md's ground: a static box half_width x 1 centred at (0, -1). */
+/** docs/scenes.md's ground: a static box half_width x 1 centred at (0, -1). */
 void add_ground(scene_def *d, double half_width);
-/** SCENES.md's pyramid of `base` unit boxes on that ground. */
+/** docs/scenes.md's pyramid of `base` unit boxes on that ground. */
 void build_pyramid(scene_def *d, int base, double ground_half);
 
 /* ---- the throughput scenes (bench/throughput.c) ---------------------------------- */

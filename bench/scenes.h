@@ -87,7 +87,7 @@ extern const scene_engine scene_chipmunk;
 
 /** Runs the scene benchmarks (bench/scenes.c). level 0: the default run
  *  (large_pyramid 200 steps, rain to 16k with an 8 s cap per engine and
- *  size); 1 (--quick): fewer steps and sizes; 2 (--full): SCENES.md's 500
+ *  size); 1 (--quick): fewer steps and sizes; 2 (--full): docs/scenes.md's 500
  *  steps and rain to 64k. smoke: every scene a few steps only. Writes
  *  out_dir/scenes.csv, the SVG plots, REPORT.md and headline.md. Returns the number of
  *  failures (0 when everything ran). */

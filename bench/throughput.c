@@ -1,11 +1,11 @@
-/* sepax benchmarks — the throughput scenes of SCENES.md on every engine of
+/* sepax benchmarks — the throughput scenes of docs/scenes.md on every engine of
  * the run, single thread: large_pyramid (ms per step and the top box's sag,
  * with the sub-step front of sepax and Box2D v3), mostly_asleep (a large
  * sleeping world plus a small awake group against the group alone) and rain
  * (ms per step against body count).
  *
  * Timing: wall clock around the stepping only, world creation excluded; the
- * first step is left out where it builds the engines' trees (SCENES.md:
+ * first step is left out where it builds the engines' trees (docs/scenes.md:
  * time steps 2..N). These scenes run long enough per engine (>= 0.1 s) that
  * one run per configuration is kept; their verdicts are ratios in the same
  * run. */

@@ -27,6 +27,7 @@ ECS_COMPONENT_DECLARE(SxTransform);
 ECS_COMPONENT_DECLARE(SxBody);
 ECS_COMPONENT_DECLARE(SxCollider);
 ECS_COMPONENT_DECLARE(SxPhysicsSettings);
+ECS_COMPONENT_DECLARE(SxPhysicsTime);
 ECS_COMPONENT_DECLARE(SxContacts);
 ECS_COMPONENT_DECLARE(SxPhysicsWorld);
 ECS_COMPONENT_DECLARE(SxContactEvent);
@@ -120,7 +121,7 @@ static bool sx_ecs_remember_entity(sx_ecs_state *st, sx_body_id body, ecs_entity
     return true;
 }
 
-static ecs_entity_t sx_ecs_entity_of(const sx_ecs_state *st, sx_body_id body) {
+static ecs_entity_t sx_ecs_entity_at(const sx_ecs_state *st, sx_body_id body) {
     if ((int32_t)body.index >= st->body_entity_cap) return 0;
     return st->body_entity[body.index];
 }
@@ -596,8 +597,8 @@ static void sx_ecs_publish_contacts(ecs_iter_t *it) {
         }
         prev_a = d.collider_a;
         prev_b = d.collider_b;
-        ea = sx_ecs_entity_of(st, d.body_a);
-        eb = sx_ecs_entity_of(st, d.body_b);
+        ea = sx_ecs_entity_at(st, d.body_a);
+        eb = sx_ecs_entity_at(st, d.body_b);
         c->point_count = d.count;
         c->point = d.points[0];
         if (ea <= eb) {
@@ -618,28 +619,28 @@ static void sx_ecs_publish_contacts(ecs_iter_t *it) {
 
     events = sx_world_get_contact_events(w);
     for (i = 0; i < events.begin_count; ++i) {
-        ecs_entity_t a = sx_ecs_entity_of(st, events.begin[i].body_a);
-        ecs_entity_t b = sx_ecs_entity_of(st, events.begin[i].body_b);
+        ecs_entity_t a = sx_ecs_entity_at(st, events.begin[i].body_a);
+        ecs_entity_t b = sx_ecs_entity_at(st, events.begin[i].body_b);
         if (a == 0 || b == 0) continue;
         sx_ecs_emit_pair(it->world, SxContactBegin, a, b,
                          sx_ecs_find_contact(st->contacts, st->contact_count, a, b));
     }
     for (i = 0; i < events.end_count; ++i) {
-        ecs_entity_t a = sx_ecs_entity_of(st, events.end[i].body_a);
-        ecs_entity_t b = sx_ecs_entity_of(st, events.end[i].body_b);
+        ecs_entity_t a = sx_ecs_entity_at(st, events.end[i].body_a);
+        ecs_entity_t b = sx_ecs_entity_at(st, events.end[i].body_b);
         if (a == 0 || b == 0) continue;
         sx_ecs_emit_pair(it->world, SxContactEnd, a, b,
                          sx_ecs_find_contact(st->previous, st->previous_count, a, b));
     }
     sensors = sx_world_get_sensor_events(w);
     for (i = 0; i < sensors.begin_count; ++i) {
-        ecs_entity_t a = sx_ecs_entity_of(st, sensors.begin[i].sensor_body);
-        ecs_entity_t b = sx_ecs_entity_of(st, sensors.begin[i].visitor_body);
+        ecs_entity_t a = sx_ecs_entity_at(st, sensors.begin[i].sensor_body);
+        ecs_entity_t b = sx_ecs_entity_at(st, sensors.begin[i].visitor_body);
         if (a != 0 && b != 0) sx_ecs_emit_pair(it->world, SxSensorBegin, a, b, NULL);
     }
     for (i = 0; i < sensors.end_count; ++i) {
-        ecs_entity_t a = sx_ecs_entity_of(st, sensors.end[i].sensor_body);
-        ecs_entity_t b = sx_ecs_entity_of(st, sensors.end[i].visitor_body);
+        ecs_entity_t a = sx_ecs_entity_at(st, sensors.end[i].sensor_body);
+        ecs_entity_t b = sx_ecs_entity_at(st, sensors.end[i].visitor_body);
         if (a != 0 && b != 0) sx_ecs_emit_pair(it->world, SxSensorEnd, a, b, NULL);
     }
 }
@@ -672,9 +673,17 @@ static void sx_ecs_drive(ecs_iter_t *it) {
     sx_real fixed = s->fixed_time_step;
     int32_t sub_steps = s->sub_steps, max_steps = s->max_steps_per_frame, steps, k, j;
     sx_vec2 g = sx_world_get_gravity(st->world);
+    SxPhysicsTime *clock = ecs_field(it, SxPhysicsTime, 1);
+    sx_world_def now;
 
     if (!(fixed > SX_R(0.0)) || sub_steps < 1 || max_steps < 1) return;
     if (g.x != s->gravity.x || g.y != s->gravity.y) sx_world_set_gravity(st->world, s->gravity);
+    sx_world_get_def(st->world, &now);
+    if (now.velocity_iterations != s->velocity_iterations ||
+        now.position_iterations != s->position_iterations) {
+        /* refused counts (< 1, < 0) leave the world's as they were */
+        sx_world_set_iterations(st->world, s->velocity_iterations, s->position_iterations);
+    }
     st->accumulator += (double)it->delta_time;
     steps = (int32_t)(st->accumulator / (double)fixed + SX_ECS_TICK_TOLERANCE);
     if (steps > max_steps) {
@@ -698,6 +707,10 @@ static void sx_ecs_drive(ecs_iter_t *it) {
         sx_ecs_run_phase(it->world, SxPhysicsPostStep, fixed);
         ++st->steps;
     }
+    clock->alpha = (sx_real)(st->accumulator / (double)fixed);
+    if (clock->alpha >= SX_R(1.0)) clock->alpha = SX_R(0.0); /* the tick tolerance's rounding */
+    clock->frame_steps = steps;
+    clock->steps = st->steps;
 }
 
 /* ---- public helpers ----------------------------------------------------------- */
@@ -787,11 +800,30 @@ sx_world *sx_ecs_world(const ecs_world_t *world) {
     return pw != NULL ? pw->world : NULL;
 }
 
-int64_t sx_ecs_step_count(const ecs_world_t *world) {
+/* The module's state in this flecs world (SxBody's hooks own it), or NULL. */
+static const sx_ecs_state *sx_ecs_state_of(const ecs_world_t *world) {
     const ecs_type_hooks_t *hooks;
-    if (world == NULL || ecs_id(SxBody) == 0) return 0;
+    if (world == NULL || ecs_id(SxBody) == 0) return NULL;
     hooks = ecs_get_hooks(world, SxBody);
-    return hooks != NULL && hooks->ctx != NULL ? ((const sx_ecs_state *)hooks->ctx)->steps : 0;
+    return hooks != NULL ? (const sx_ecs_state *)hooks->ctx : NULL;
+}
+
+int64_t sx_ecs_step_count(const ecs_world_t *world) {
+    const sx_ecs_state *st = sx_ecs_state_of(world);
+    return st != NULL ? st->steps : 0;
+}
+
+ecs_entity_t sx_ecs_entity_of(const ecs_world_t *world, sx_body_id body) {
+    const sx_ecs_state *st = sx_ecs_state_of(world);
+    if (st == NULL || !sx_body_is_valid(st->world, body)) return 0;
+    return sx_ecs_entity_at(st, body);
+}
+
+sx_body_id sx_ecs_body_of(const ecs_world_t *world, ecs_entity_t e) {
+    const sx_ecs_state *st = sx_ecs_state_of(world);
+    const sx_ecs_link *link = st != NULL ? sx_ecs_find(st, e) : NULL;
+    sx_body_id none = {0, 0};
+    return link != NULL && sx_body_is_valid(st->world, link->body) ? link->body : none;
 }
 
 /* ---- import ------------------------------------------------------------------- */
@@ -827,7 +859,13 @@ static void sx_ecs_reflect(ecs_world_t *world) {
                                    {.name = "fixed_time_step", .type = real},
                                    {.name = "sub_steps", .type = ecs_id(ecs_i32_t)},
                                    {.name = "max_steps_per_frame", .type = ecs_id(ecs_i32_t)},
-                                   {.name = "enable_sleep", .type = ecs_id(ecs_bool_t)}}});
+                                   {.name = "enable_sleep", .type = ecs_id(ecs_bool_t)},
+                                   {.name = "velocity_iterations", .type = ecs_id(ecs_i32_t)},
+                                   {.name = "position_iterations", .type = ecs_id(ecs_i32_t)}}});
+    ecs_struct(world, {.entity = ecs_id(SxPhysicsTime),
+                       .members = {{.name = "alpha", .type = real},
+                                   {.name = "frame_steps", .type = ecs_id(ecs_i32_t)},
+                                   {.name = "steps", .type = ecs_id(ecs_i64_t)}}});
 }
 
 static ecs_entity_t sx_ecs_event_type(ecs_world_t *world, const char *name) {
@@ -877,6 +915,7 @@ void SepaxPhysicsImport(ecs_world_t *world) {
     ECS_COMPONENT_DEFINE(world, SxBody);
     ECS_COMPONENT_DEFINE(world, SxCollider);
     ECS_COMPONENT_DEFINE(world, SxPhysicsSettings);
+    ECS_COMPONENT_DEFINE(world, SxPhysicsTime);
     ECS_COMPONENT_DEFINE(world, SxContacts);
     ECS_COMPONENT_DEFINE(world, SxPhysicsWorld);
     ECS_COMPONENT_DEFINE(world, SxContactEvent);
@@ -924,7 +963,10 @@ void SepaxPhysicsImport(ecs_world_t *world) {
     settings.sub_steps = def.sub_steps;
     settings.max_steps_per_frame = 8;
     settings.enable_sleep = def.enable_sleep;
+    settings.velocity_iterations = def.velocity_iterations;
+    settings.position_iterations = def.position_iterations;
     ecs_singleton_set_ptr(world, SxPhysicsSettings, &settings);
+    ecs_singleton_set(world, SxPhysicsTime, {SX_R(0.0), 0, 0});
     ecs_singleton_set(world, SxPhysicsWorld, {st->world});
     ecs_singleton_set(world, SxContacts, {NULL, 0});
 
@@ -938,6 +980,9 @@ void SepaxPhysicsImport(ecs_world_t *world) {
     terms[0].id = ecs_id(SxPhysicsSettings);
     terms[0].src.id = ecs_id(SxPhysicsSettings);
     terms[0].inout = EcsIn;
+    terms[1].id = ecs_id(SxPhysicsTime);
+    terms[1].src.id = ecs_id(SxPhysicsTime);
+    terms[1].inout = EcsOut;
     {
         ecs_system_desc_t desc;
         ecs_entity_desc_t edesc;
@@ -950,6 +995,7 @@ void SepaxPhysicsImport(ecs_world_t *world) {
         edesc.add = add;
         desc.entity = ecs_entity_init(world, &edesc);
         desc.query.terms[0] = terms[0];
+        desc.query.terms[1] = terms[1];
         desc.callback = sx_ecs_drive;
         desc.ctx = st;
         ecs_system_init(world, &desc);

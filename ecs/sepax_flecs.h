@@ -1,13 +1,79 @@
 /* sepax flecs module — rigid-body physics for flecs 4 worlds.
  *
- *   ECS_IMPORT(world, SepaxPhysics);
- *   ecs_entity_t box = ecs_new(world);
- *   ecs_set(world, box, SxTransform, {.position = {0, 4}});
- *   ecs_set(world, box, SxBody, {.type = SX_BODY_DYNAMIC, .gravity_scale = 1});
- *   ecs_set(world, box, SxCollider, sx_ecs_collider(sx_box_shape(0.5f, 0.5f)));
- *   ecs_entity_t ledge = ecs_new(world);       // static concave geometry
- *   sx_ecs_set_outline(world, ledge, outline_points, outline_count, NULL);
- *   ecs_progress(world, 1.0f / 60.0f);
+ * A whole program (make test compiles this block as C, the next one as C++
+ * with the flecs C++ API, and runs both):
+ *
+ * ```c
+ * #include <stdio.h>
+ * #include "sepax_flecs.h"
+ *
+ * static void on_contact(ecs_iter_t *it) {
+ *     const SxContactEvent *ev = it->param;
+ *     printf("%s touches %s\n", ecs_get_name(it->world, ev->self),
+ *            ecs_get_name(it->world, ev->other));
+ * }
+ *
+ * int main(void) {
+ *     ecs_world_t *world = ecs_init();
+ *     ECS_IMPORT(world, SepaxPhysics);
+ *     ecs_entity_t ground = ecs_entity(world, {.name = "ground"});
+ *     ecs_entity_t box = ecs_entity(world, {.name = "box"});
+ *     SxCollider slab = sx_ecs_collider(sx_box_shape(20, 1)); // no SxBody: static
+ *     SxBody body = sx_ecs_body(SX_BODY_DYNAMIC);
+ *     SxCollider cube = sx_ecs_collider(sx_box_shape(0.5, 0.5));
+ *     ecs_set(world, ground, SxTransform, {.position = {0, -1}});
+ *     ecs_set_ptr(world, ground, SxCollider, &slab);
+ *     ecs_set(world, box, SxTransform, {.position = {0, 4}});
+ *     ecs_set_ptr(world, box, SxBody, &body);
+ *     ecs_set_ptr(world, box, SxCollider, &cube);
+ *     ecs_observer(world, {.query.terms = {{.id = ecs_id(SxCollider)}},
+ *                          .events = {SxContactBegin},
+ *                          .callback = on_contact});
+ *     for (int i = 0; i < 120; ++i) ecs_progress(world, 1.0f / 60.0f);
+ *     printf("box at y = %.2f\n", (double)ecs_get(world, box, SxTransform)->position.y);
+ *     return ecs_fini(world);
+ * }
+ * ```
+ *
+ * ```cpp
+ * #include <cstdio>
+ * #include "sepax_flecs.h"
+ *
+ * int main() {
+ *     flecs::world ecs;
+ *     ECS_IMPORT(ecs, SepaxPhysics);
+ *     ecs.entity("ground")
+ *         .set<SxTransform>({{0, -1}, 0})
+ *         .set<SxCollider>(sx_ecs_collider(sx_box_shape(20, 1)));
+ *     flecs::entity box = ecs.entity("box")
+ *         .set<SxTransform>({{0, 4}, 0})
+ *         .set<SxBody>(sx_ecs_body(SX_BODY_DYNAMIC))
+ *         .set<SxCollider>(sx_ecs_collider(sx_box_shape(0.5, 0.5)));
+ *     ecs.observer<SxCollider>().event(SxContactBegin).each(
+ *         [](flecs::iter &it, size_t row, SxCollider &) {
+ *             const SxContactEvent *ev = static_cast<const SxContactEvent *>(it.param());
+ *             std::printf("%s touches %s\n", it.entity(row).name().c_str(),
+ *                         it.world().entity(ev->other).name().c_str());
+ *         });
+ *     for (int i = 0; i < 120; ++i) ecs.progress(1.0f / 60.0f);
+ *     std::printf("box at y = %.2f\n", double(box.get<SxTransform>().position.y));
+ * }
+ * ```
+ *
+ * Build (FLECS: the directory of flecs 4's flecs.c and flecs.h; flecs.c
+ * needs POSIX declarations under -std=c99):
+ *
+ * ```sh
+ * ECS=$(pkg-config --variable=ecsdir sepax)
+ * cc -std=c99 -D_POSIX_C_SOURCE=200809L -c $FLECS/flecs.c -o flecs.o
+ * cc -std=c99 -c $ECS/sepax_flecs.c -I$FLECS $(pkg-config --cflags sepax)
+ * cc -std=c99 -o game game.c sepax_flecs.o flecs.o -I$ECS -I$FLECS \
+ *    $(pkg-config --cflags --libs sepax) -Wl,-rpath,$(pkg-config --variable=libdir sepax) \
+ *    -lpthread -lm
+ * c++ -std=c++17 -o game_cpp game.cpp sepax_flecs.o flecs.o -I$ECS -I$FLECS \
+ *    $(pkg-config --cflags --libs sepax) -Wl,-rpath,$(pkg-config --variable=libdir sepax) \
+ *    -lpthread -lm
+ * ```
  *
  * The components are the truth: once per fixed step the module copies what
  * the game wrote into SxTransform (a teleport) and SxBody (velocity, type,
@@ -122,7 +188,23 @@ typedef struct SxPhysicsSettings {
      *  runs after each step). Default true. Turning it off keeps bodies
      *  that already sleep asleep until something touches or moves them. */
     bool enable_sleep;
+    /** Solver iterations per sub-step, as sx_world_def: velocity (>= 1,
+     *  default 4) and position (>= 0, default 2). */
+    int32_t velocity_iterations;
+    int32_t position_iterations;
 } SxPhysicsSettings;
+
+/** Singleton, written by the module every frame: where the fixed-step clock
+ *  stands. `alpha` is the time left in the accumulator after this frame's
+ *  steps, as a fraction of fixed_time_step, in [0, 1): a game that renders
+ *  between fixed steps draws each body at lerp(previous, current, alpha),
+ *  with `previous` saved by a system of its own in the SxPhysicsPreStep
+ *  phase (see the top of this file). */
+typedef struct SxPhysicsTime {
+    sx_real alpha;
+    int32_t frame_steps; /**< fixed steps run in this frame */
+    int64_t steps;       /**< fixed steps run since the import */
+} SxPhysicsTime;
 
 /** One contact of the last fixed step (collider pairs with a manifold; a
  *  compound collider touching on several parts is still one SxContact: the
@@ -166,6 +248,7 @@ extern ECS_COMPONENT_DECLARE(SxTransform);
 extern ECS_COMPONENT_DECLARE(SxBody);
 extern ECS_COMPONENT_DECLARE(SxCollider);
 extern ECS_COMPONENT_DECLARE(SxPhysicsSettings);
+extern ECS_COMPONENT_DECLARE(SxPhysicsTime);
 extern ECS_COMPONENT_DECLARE(SxContacts);
 extern ECS_COMPONENT_DECLARE(SxPhysicsWorld);
 extern ECS_COMPONENT_DECLARE(SxContactEvent);
@@ -216,6 +299,14 @@ void sx_ecs_apply_force(ecs_world_t *world, ecs_entity_t e, sx_vec2 force);
 void sx_ecs_apply_impulse(ecs_world_t *world, ecs_entity_t e, sx_vec2 impulse);
 /** The module's sepax world (NULL before the import). */
 sx_world *sx_ecs_world(const ecs_world_t *world);
+/** The entity whose body this is (from a ray cast, a query or a contact of
+ *  the module's world); 0 for a NULL world, a null or stale handle, or a
+ *  body the module did not create. */
+ecs_entity_t sx_ecs_entity_of(const ecs_world_t *world, sx_body_id body);
+/** The module's body of an entity (the null handle before the entity's
+ *  first fixed step, after its SxBody or SxCollider is removed, or for a
+ *  NULL world). */
+sx_body_id sx_ecs_body_of(const ecs_world_t *world, ecs_entity_t e);
 /** Fixed steps run since the import. */
 int64_t sx_ecs_step_count(const ecs_world_t *world);
 

@@ -1,4 +1,4 @@
-/* sepax sample — a pyramid of boxes on the ground (SCENES.md "pyramid20",
+/* sepax sample — a pyramid of boxes on the ground (docs/scenes.md "pyramid20",
  * or any base given on the command line), stepped at 60 Hz. Prints where the
  * top box is once a simulated second and the time per step.
  *

@@ -36,7 +36,7 @@ sx_collider_id sx_collider_id_from_u64(uint64_t bits) {
 }
 
 /* The slot of a live body, or -1. */
-static int sx_body_slot(const sx_world *world, sx_body_id id) {
+int sx_body_slot(const sx_world *world, sx_body_id id) {
     const sx_body_info *info;
     if (world == NULL || id.generation == 0 || id.index >= (uint32_t)world->body_slots) return -1;
     info = &world->infos[id.index];
@@ -44,7 +44,7 @@ static int sx_body_slot(const sx_world *world, sx_body_id id) {
     return (int)id.index;
 }
 
-static int sx_collider_slot(const sx_world *world, sx_collider_id id) {
+int sx_collider_slot(const sx_world *world, sx_collider_id id) {
     const sx_collider *c;
     if (world == NULL || id.generation == 0 || id.index >= (uint32_t)world->collider_slots) {
         return -1;

@@ -35,25 +35,66 @@ sx_world_def sx_default_world_def(void) {
     return d;
 }
 
-static bool sx_world_def_is_valid(const sx_world_def *d) {
-    if (!sx_vec2_is_finite(d->gravity) || !sx_is_finite(d->correction_factor) ||
-        !sx_is_finite(d->max_correction_speed) || !sx_is_finite(d->restitution_threshold) ||
-        !sx_is_finite(d->speculative_slops) || !sx_is_finite(d->length_units_per_meter) ||
-        !sx_is_finite(d->sleep_linear_speed) || !sx_is_finite(d->sleep_angular_speed) ||
-        !sx_is_finite(d->time_to_sleep)) {
-        return false;
+/* The first field of d that sx_world_create refuses, with its status. */
+sx_status sx_world_def_validate(const sx_world_def *d, const char **field) {
+    const char *bad = NULL;
+    sx_status s = SX_ERR_NONFINITE;
+    if (d == NULL) {
+        bad = "def";
+        s = SX_ERR_INVALID_ARG;
+    } else if (!sx_vec2_is_finite(d->gravity)) {
+        bad = "gravity";
+    } else if (!sx_is_finite(d->correction_factor)) {
+        bad = "correction_factor";
+    } else if (!sx_is_finite(d->max_correction_speed)) {
+        bad = "max_correction_speed";
+    } else if (!sx_is_finite(d->restitution_threshold)) {
+        bad = "restitution_threshold";
+    } else if (!sx_is_finite(d->speculative_slops)) {
+        bad = "speculative_slops";
+    } else if (!sx_is_finite(d->length_units_per_meter)) {
+        bad = "length_units_per_meter";
+    } else if (!sx_is_finite(d->sleep_linear_speed)) {
+        bad = "sleep_linear_speed";
+    } else if (!sx_is_finite(d->sleep_angular_speed)) {
+        bad = "sleep_angular_speed";
+    } else if (!sx_is_finite(d->time_to_sleep)) {
+        bad = "time_to_sleep";
+    } else {
+        s = SX_ERR_INVALID_ARG;
+        if (d->sub_steps < 1) {
+            bad = "sub_steps";
+        } else if (d->velocity_iterations < 1) {
+            bad = "velocity_iterations";
+        } else if (d->position_iterations < 0) {
+            bad = "position_iterations";
+        } else if (!(d->correction_factor > SX_R(0.0) && d->correction_factor <= SX_R(1.0))) {
+            bad = "correction_factor";
+        } else if (!(d->max_correction_speed > SX_R(0.0))) {
+            bad = "max_correction_speed";
+        } else if (d->restitution_threshold < SX_R(0.0)) {
+            bad = "restitution_threshold";
+        } else if (d->speculative_slops < SX_R(0.0)) {
+            bad = "speculative_slops";
+        } else if (!(d->length_units_per_meter > SX_R(0.0))) {
+            bad = "length_units_per_meter";
+        } else if (d->body_capacity < 0) {
+            bad = "body_capacity";
+        } else if (d->sleep_linear_speed < SX_R(0.0)) {
+            bad = "sleep_linear_speed";
+        } else if (d->sleep_angular_speed < SX_R(0.0)) {
+            bad = "sleep_angular_speed";
+        } else if (!(d->time_to_sleep > SX_R(0.0))) {
+            bad = "time_to_sleep";
+        }
     }
-    return d->sub_steps >= 1 && d->velocity_iterations >= 1 && d->position_iterations >= 0 &&
-           d->correction_factor > SX_R(0.0) && d->correction_factor <= SX_R(1.0) &&
-           d->max_correction_speed > SX_R(0.0) && d->restitution_threshold >= SX_R(0.0) &&
-           d->speculative_slops >= SX_R(0.0) && d->length_units_per_meter > SX_R(0.0) &&
-           d->body_capacity >= 0 && d->sleep_linear_speed >= SX_R(0.0) &&
-           d->sleep_angular_speed >= SX_R(0.0) && d->time_to_sleep > SX_R(0.0);
+    if (field != NULL) *field = bad;
+    return bad == NULL ? SX_OK : s;
 }
 
 sx_world *sx_world_create(const sx_world_def *def) {
     sx_world *w;
-    if (def == NULL || !sx_world_def_is_valid(def)) return NULL;
+    if (sx_world_def_validate(def, NULL) != SX_OK) return NULL;
     w = (sx_world *)sx_alloc(sizeof(sx_world));
     if (w == NULL) return NULL;
     memset(w, 0, sizeof(*w));

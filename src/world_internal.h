@@ -371,5 +371,9 @@ void sx_body_update_mass(sx_world *world, int slot);
 void sx_world_remove_contacts_of(sx_world *world, int collider);
 /* Recomputes xf.p from the centre of mass and rotation. */
 void sx_body_sync_origin(sx_body_sim *sim);
+/* The slot of a live body or collider, or -1 (NULL world, null or stale
+ * handle). */
+int sx_body_slot(const sx_world *world, sx_body_id id);
+int sx_collider_slot(const sx_world *world, sx_collider_id id);
 
 #endif /* SEPAX_WORLD_INTERNAL_H */

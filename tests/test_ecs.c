@@ -773,6 +773,125 @@ static void bad_outlines_leave_the_entity_untouched(void **state) {
     ecs_fini(world);
 }
 
+/* A ray cast through the module's world names the entity it hits, and the
+ * entity's body is found the other way; stale and foreign handles give 0. */
+static void a_ray_cast_names_the_entity_hit(void **state) {
+    ecs_world_t *world = make_world();
+    ecs_entity_t ground = add_ground(world), box;
+    sx_ray_input ray;
+    sx_world_ray_hit hit;
+    sx_body_id body, none = {0, 0};
+    (void)state;
+    box = add_dynamic(world, sx_v2(SX_R(3.0), SX_R(0.5)), sx_box_shape(SX_R(0.5), SX_R(0.5)));
+    assert_true(sx_body_id_is_null(sx_ecs_body_of(world, box))); /* no step yet */
+    progress(world, 1, 1.0 / 60.0);
+    ray.origin = sx_v2(SX_R(3.0), SX_R(10.0));
+    ray.translation = sx_v2(SX_R(0.0), SX_R(-20.0));
+    ray.max_fraction = SX_R(1.0);
+    assert_true(sx_world_cast_ray(sx_ecs_world(world), &ray, &hit));
+    assert_int_equal(sx_ecs_entity_of(world, hit.body), box);
+    ray.origin.x = SX_R(-5.0);
+    assert_true(sx_world_cast_ray(sx_ecs_world(world), &ray, &hit));
+    assert_int_equal(sx_ecs_entity_of(world, hit.body), ground);
+    body = sx_ecs_body_of(world, box);
+    assert_true(sx_body_is_valid(sx_ecs_world(world), body));
+    assert_int_equal(sx_ecs_entity_of(world, body), box);
+    assert_int_equal(sx_ecs_entity_of(world, none), 0);
+    assert_int_equal(sx_ecs_entity_of(NULL, body), 0);
+    assert_true(sx_body_id_is_null(sx_ecs_body_of(NULL, box)));
+    ecs_delete(world, box);
+    assert_int_equal(sx_ecs_entity_of(world, body), 0); /* stale */
+    assert_true(sx_body_id_is_null(sx_ecs_body_of(world, box)));
+    ecs_fini(world);
+}
+
+/* SxPhysicsTime: after frames of 1/100 s at a 1/60 s fixed step the
+ * accumulator holds the fraction a renderer interpolates by. */
+static void the_interpolation_fraction_is_the_accumulator_over_the_step(void **state) {
+    ecs_world_t *world = make_world();
+    const SxPhysicsTime *t;
+    double acc = 0.0, fixed = 1.0 / 60.0;
+    int64_t total = 0;
+    int i;
+    (void)state;
+    for (i = 0; i < 25; ++i) {
+        int32_t n = 0;
+        ecs_progress(world, (ecs_ftime_t)0.01);
+        acc += (double)(ecs_ftime_t)0.01;
+        while (acc + 1e-6 * fixed >= fixed) {
+            acc -= fixed;
+            ++n;
+        }
+        if (acc < 0.0) acc = 0.0;
+        total += n;
+        t = ecs_singleton_get(world, SxPhysicsTime);
+        assert_non_null(t);
+        assert_int_equal(t->frame_steps, n);
+        assert_int_equal(t->steps, total);
+        assert_true(t->alpha >= SX_R(0.0) && t->alpha < SX_R(1.0));
+        assert_near(t->alpha, acc / fixed, 1e-4);
+    }
+    assert_int_equal(sx_ecs_step_count(world), total);
+    ecs_fini(world);
+}
+
+/* Iterations set in SxPhysicsSettings reach the world: the module's run is
+ * bit for bit a plain world created with the same counts; refused counts
+ * leave the world's as they were. */
+static void settings_iterations_reach_the_world(void **state) {
+    ecs_world_t *world = make_world();
+    sx_world_def def = sx_default_world_def(), got;
+    sx_world *plain;
+    sx_body_def bd = sx_default_body_def();
+    sx_collider_def cd = sx_default_collider_def();
+    sx_body_id ground, ids[2];
+    ecs_entity_t es[2];
+    SxPhysicsSettings *s;
+    int frame, i;
+    (void)state;
+    def.sub_steps = 2;
+    def.velocity_iterations = 9;
+    def.position_iterations = 0;
+    plain = sx_world_create(&def);
+    assert_non_null(plain);
+    s = ecs_singleton_ensure(world, SxPhysicsSettings);
+    s->sub_steps = 2;
+    s->velocity_iterations = 9;
+    s->position_iterations = 0;
+    add_ground(world);
+    bd.position = sx_v2(SX_R(0.0), SX_R(-1.0));
+    assert_int_equal(sx_body_create(plain, &bd, &ground), SX_OK);
+    cd.shape = sx_box_shape(SX_R(20.0), SX_R(1.0));
+    assert_int_equal(sx_collider_create(plain, ground, &cd, NULL), SX_OK);
+    for (i = 0; i < 2; ++i) {
+        sx_vec2 p = sx_v2(SX_R(0.2) * (sx_real)i, SX_R(0.5) + SX_R(1.5) * (sx_real)i);
+        es[i] = add_dynamic(world, p, sx_box_shape(SX_R(0.5), SX_R(0.5)));
+        bd.type = SX_BODY_DYNAMIC;
+        bd.position = p;
+        assert_int_equal(sx_body_create(plain, &bd, &ids[i]), SX_OK);
+        cd.shape = sx_box_shape(SX_R(0.5), SX_R(0.5));
+        assert_int_equal(sx_collider_create(plain, ids[i], &cd, NULL), SX_OK);
+    }
+    for (frame = 0; frame < 90; ++frame) {
+        ecs_progress(world, (ecs_ftime_t)DT);
+        assert_int_equal(sx_world_step(plain, DT), SX_OK);
+    }
+    for (i = 0; i < 2; ++i) {
+        sx_vec2 p = sx_body_get_position(plain, ids[i]);
+        assert_memory_equal(&ecs_get(world, es[i], SxTransform)->position, &p, sizeof(p));
+    }
+    assert_int_equal(sx_world_get_def(sx_ecs_world(world), &got), SX_OK);
+    assert_int_equal(got.velocity_iterations, 9);
+    assert_int_equal(got.position_iterations, 0);
+    s = ecs_singleton_ensure(world, SxPhysicsSettings);
+    s->velocity_iterations = 0;
+    progress(world, 1, 1.0 / 60.0);
+    assert_int_equal(sx_world_get_def(sx_ecs_world(world), &got), SX_OK);
+    assert_int_equal(got.velocity_iterations, 9);
+    sx_world_destroy(plain);
+    ecs_fini(world);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(box_falls_onto_static_ground_and_comes_to_rest),
@@ -795,6 +914,9 @@ int main(void) {
         cmocka_unit_test(a_dynamic_compound_collider_from_parts_rests_on_the_ground),
         cmocka_unit_test(a_box_on_two_teeth_is_one_sx_contact),
         cmocka_unit_test(bad_outlines_leave_the_entity_untouched),
+        cmocka_unit_test(a_ray_cast_names_the_entity_hit),
+        cmocka_unit_test(the_interpolation_fraction_is_the_accumulator_over_the_step),
+        cmocka_unit_test(settings_iterations_reach_the_world),
     };
     return cmocka_run_group_tests_name("ecs", tests, sx_test_group_setup, sx_test_group_teardown);
 }

@@ -1,4 +1,4 @@
-/* sepax tests — the accuracy and stability scenes of SCENES.md with known
+/* sepax tests — the accuracy and stability scenes of docs/scenes.md with known
  * answers: bounce height against restitution squared, sticking and sliding on
  * an incline, Newton's cradle, a zero-gravity pile-up, a base-20 pyramid, a
  * 100:1 mass ratio and recovery from overlap. Every scene runs in the default
@@ -42,7 +42,7 @@ static sx_body_id add_body(sx_world *w, sx_body_type type, sx_vec2 p, sx_real an
     return id;
 }
 
-/* The SCENES.md ground: a static box 2*hw wide, 2 m tall, top surface at y=0. */
+/* The docs/scenes.md ground: a static box 2*hw wide, 2 m tall, top surface at y=0. */
 static sx_body_id add_ground(sx_world *w, sx_real half_width, sx_real friction) {
     sx_shape box = sx_box_shape(half_width, SX_R(1.0));
     return add_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-1.0)), SX_R(0.0), &box, SX_R(0.0),
@@ -781,7 +781,7 @@ static void column_of_20_boxes_creeps_less_than_a_centimetre_in_10_seconds(void 
     (void)state;
     add_ground(w, SX_R(10.0), SX_R(0.6));
     for (i = 0; i < 20; ++i) {
-        /* alternate rows shifted +-1 cm, as SCENES.md's stack20 */
+        /* alternate rows shifted +-1 cm, as docs/scenes.md's stack20 */
         start[i] = sx_v2((i % 2) ? SX_R(0.01) : SX_R(-0.01), SX_R(0.5) + (sx_real)i);
         ids[i] = add_body(w, SX_BODY_DYNAMIC, start[i], SX_R(0.0), &box, SX_R(1.0), SX_R(0.6),
                           SX_R(0.0));

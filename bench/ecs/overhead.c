@@ -156,7 +156,9 @@ int main(int argc, char **argv) {
            BODIES, steps, steps);
     printf("  plain sx_world_step   %9.3f ms/step\n", ms_plain);
     printf("  SepaxPhysics module   %9.3f ms/step\n", ms_module);
-    printf("  overhead              %8.1f %%   (target <= 10 %%)\n", overhead * 100.0);
+    /* a few steps (make bench-smoke) show that the module runs, not what it costs */
+    printf("  overhead              %8.1f %%   %s\n", overhead * 100.0,
+           steps < 60 ? "(a smoke run of a few steps: nothing is judged)" : "(target <= 10 %)");
     printf("  positions bit-identical: %s\n", mismatched ? "NO" : "yes");
     snprintf(path, sizeof path, "%s/ecs_overhead.csv", out);
     csv = fopen(path, "w");

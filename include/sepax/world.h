@@ -145,7 +145,8 @@ typedef struct sx_world_def {
 sx_world_def sx_default_world_def(void);
 
 /** Creates a world. Returns NULL when def is NULL, a field is out of its
- *  documented range or not finite, or memory runs out. */
+ *  documented range or not finite (sx_world_def_validate names the field),
+ *  or memory runs out. */
 sx_world *sx_world_create(const sx_world_def *def);
 
 /** Destroys the world and everything in it (NULL is ignored). Every handle of
@@ -643,6 +644,145 @@ typedef struct sx_debug_draw {
  *  in slot order then contacts in contact order. SX_ERR_INVALID_ARG for
  *  NULL world or draw. */
 sx_status sx_world_draw(const sx_world *world, const sx_debug_draw *draw);
+
+/* ---- run-time properties, iteration and naming ----------------------------- */
+
+/* Naming: every object is made by sx_<object>_create and freed by
+ * sx_<object>_destroy (sx_world_create, sx_body_create, sx_collider_create).
+ * sx_create_body, sx_destroy_body, sx_body_add_collider and
+ * sx_destroy_collider are the same functions under their first names; both
+ * stay. */
+
+/** Checks a world def without creating anything: SX_OK when sx_world_create
+ *  would accept it. SX_ERR_INVALID_ARG for a NULL def or a field outside its
+ *  documented range, SX_ERR_NONFINITE for a NaN or infinite field. When
+ *  `field` is not NULL it receives the name of the first refused field
+ *  ("gravity", "sub_steps", ...; "def" for a NULL def), or NULL for SX_OK. */
+sx_status sx_world_def_validate(const sx_world_def *def, const char **field);
+
+/** Copies the world's current settings (sx_world_create's def with the
+ *  changes of the setters below and sx_world_set_gravity) into *out.
+ *  SX_ERR_INVALID_ARG for NULL. */
+sx_status sx_world_get_def(const sx_world *world, sx_world_def *out);
+
+/** Sets the sub-steps of sx_world_step (>= 1; see sx_world_def). Errors,
+ *  with the world untouched: SX_ERR_INVALID_ARG (NULL, sub_steps < 1). */
+sx_status sx_world_set_sub_steps(sx_world *world, int sub_steps);
+
+/** Sets the solver's iterations per sub-step: velocity (>= 1) and position
+ *  (>= 0; 0 turns sx_world_separate off), as in sx_world_def. Errors, with
+ *  the world untouched: SX_ERR_INVALID_ARG (NULL, a count out of range). */
+sx_status sx_world_set_iterations(sx_world *world, int velocity_iterations,
+                                  int position_iterations);
+
+/** Copies the handles of the world's live bodies, in slot order
+ *  (deterministic), into out[0 .. capacity-1] and returns how many live
+ *  bodies there are: call with capacity 0 (out may then be NULL) to learn
+ *  the count, then with an array that large. 0 for a NULL world; a negative
+ *  capacity counts as 0. */
+int sx_world_get_bodies(const sx_world *world, sx_body_id *out, int capacity);
+
+/** Copies the handles of a body's colliders, in the order they were added,
+ *  as sx_world_get_bodies, and returns how many it has (0 for a stale
+ *  handle or NULL world). */
+int sx_body_get_colliders(const sx_world *world, sx_body_id body, sx_collider_id *out,
+                          int capacity);
+
+/** Tight world bounds of the body's colliders at its current transform (the
+ *  union over its colliders; for a compound, over its parts). A body without
+ *  colliders gives the empty box at its origin (lower == upper); a stale
+ *  handle or NULL world the zero box. */
+sx_aabb sx_body_get_aabb(const sx_world *world, sx_body_id body);
+
+/** Tight world bounds of one collider at its body's current transform (the
+ *  zero box for a stale handle or NULL world). */
+sx_aabb sx_collider_get_aabb(const sx_world *world, sx_collider_id collider);
+
+/** Creates a body: sx_create_body under the sx_<object>_create name. */
+sx_status sx_body_create(sx_world *world, const sx_body_def *def, sx_body_id *out);
+/** Destroys a body: sx_destroy_body under the sx_<object>_destroy name. */
+sx_status sx_body_destroy(sx_world *world, sx_body_id body);
+/** Attaches a collider to a body: sx_body_add_collider under the
+ *  sx_<object>_create name. */
+sx_status sx_collider_create(sx_world *world, sx_body_id body, const sx_collider_def *def,
+                             sx_collider_id *out);
+/** Removes a collider: sx_destroy_collider under the sx_<object>_destroy
+ *  name. */
+sx_status sx_collider_destroy(sx_world *world, sx_collider_id collider);
+
+/* Body setters below answer SX_ERR_INVALID_ARG for a NULL world and
+ * SX_ERR_STALE_HANDLE for a stale handle, and leave the body untouched on
+ * every error. Getters answer a stale handle or NULL world with the zero
+ * value (false, 0). */
+
+/** Enables or disables a body (sx_body_def.enabled). A disabled body neither
+ *  moves nor collides nor is seen by queries: its contacts and sensor
+ *  overlaps end without end events (as when it is destroyed), the bodies
+ *  they touched wake, and its velocities are zeroed. Enabling it puts it
+ *  back where it was (or where sx_body_set_transform moved it), awake. */
+sx_status sx_body_set_enabled(sx_world *world, sx_body_id body, bool enabled);
+/** The body's enabled flag. */
+bool sx_body_is_enabled(const sx_world *world, sx_body_id body);
+
+/** Sets the gravity scale (any finite value: 0 floats, negative rises);
+ *  wakes the body. SX_ERR_NONFINITE for NaN/Inf. */
+sx_status sx_body_set_gravity_scale(sx_world *world, sx_body_id body, sx_real scale);
+/** The gravity scale. */
+sx_real sx_body_get_gravity_scale(const sx_world *world, sx_body_id body);
+
+/** Sets the linear damping (1/s, >= 0; see sx_body_def). SX_ERR_NONFINITE
+ *  for NaN/Inf, SX_ERR_INVALID_ARG for a negative value. */
+sx_status sx_body_set_linear_damping(sx_world *world, sx_body_id body, sx_real damping);
+/** The linear damping (1/s). */
+sx_real sx_body_get_linear_damping(const sx_world *world, sx_body_id body);
+/** Sets the angular damping (1/s, >= 0). Errors as
+ *  sx_body_set_linear_damping. */
+sx_status sx_body_set_angular_damping(sx_world *world, sx_body_id body, sx_real damping);
+/** The angular damping (1/s). */
+sx_real sx_body_get_angular_damping(const sx_world *world, sx_body_id body);
+
+/** Locks (true) or frees the body's rotation; the inertia is recomputed
+ *  (sx_body_get_inertia is 0 while locked) and locking stops its spin. Wakes
+ *  the body. */
+sx_status sx_body_set_fixed_rotation(sx_world *world, sx_body_id body, bool fixed);
+/** The body's fixed_rotation flag. */
+bool sx_body_is_fixed_rotation(const sx_world *world, sx_body_id body);
+
+/** Replaces the body's user data (sx_body_get_user_data). */
+sx_status sx_body_set_user_data(sx_world *world, sx_body_id body, void *user_data);
+
+/* Collider setters answer SX_ERR_INVALID_ARG for a NULL world and
+ * SX_ERR_STALE_HANDLE for a stale handle, leave the collider untouched on
+ * every error, and wake its body (contacts pick the new value up at the next
+ * collide). Getters answer a stale handle or NULL world with 0. */
+
+/** Sets the friction (>= 0; mixed as sx_collider_def). SX_ERR_NONFINITE for
+ *  NaN/Inf, SX_ERR_INVALID_ARG for a negative value. */
+sx_status sx_collider_set_friction(sx_world *world, sx_collider_id collider, sx_real friction);
+/** The friction coefficient. */
+sx_real sx_collider_get_friction(const sx_world *world, sx_collider_id collider);
+/** Sets the restitution (>= 0). Errors as sx_collider_set_friction. */
+sx_status sx_collider_set_restitution(sx_world *world, sx_collider_id collider,
+                                      sx_real restitution);
+/** The restitution. */
+sx_real sx_collider_get_restitution(const sx_world *world, sx_collider_id collider);
+/** Sets the density (kg/m^2, >= 0) and recomputes the body's mass, centre of
+ *  mass and inertia as sx_body_add_collider does (the body origin stays
+ *  put). Errors as sx_collider_set_friction. */
+sx_status sx_collider_set_density(sx_world *world, sx_collider_id collider, sx_real density);
+/** The density (kg/m^2). */
+sx_real sx_collider_get_density(const sx_world *world, sx_collider_id collider);
+/** Sets the collision filter; pairs it now excludes lose their contact (with
+ *  an end event) at the next collide. */
+sx_status sx_collider_set_filter(sx_world *world, sx_collider_id collider, sx_filter filter);
+/** The collision filter (all zero for a stale handle). */
+sx_filter sx_collider_get_filter(const sx_world *world, sx_collider_id collider);
+/** True for a sensor collider. */
+bool sx_collider_is_sensor(const sx_world *world, sx_collider_id collider);
+/** Replaces the collider's user data. */
+sx_status sx_collider_set_user_data(sx_world *world, sx_collider_id collider, void *user_data);
+/** The collider's user data (sx_collider_def.user_data; NULL if stale). */
+void *sx_collider_get_user_data(const sx_world *world, sx_collider_id collider);
 
 #ifdef __cplusplus
 }
