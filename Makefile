@@ -556,6 +556,7 @@ help:
 	@echo "  sample-pyramid    build and run samples/pyramid.c on a small pyramid"
 	@echo "  stress            the hostile scenes with the 100,000-step long run"
 	@echo "  determinism       the determinism and narrowphase hashes at -O0, -O2 and -O3 must agree"
+	@echo "  mutate            the mutation check: each bug of tests/mutations.txt must fail a test (minutes)"
 	@echo "  demo              the flecs demo: 8 simulated seconds, final frame in build/demo/final.svg"
 	@echo "  flecs             fetch flecs 4 (cargo, or FLECS_DIR) and compile flecs.c"
 	@echo "  bench             every benchmark: narrowphase, world scenes, flecs overhead (minutes)"
