@@ -60,7 +60,7 @@ static inline sx_real sx_bounded_impulse(sx_real x) {
 }
 
 /* Applies an impulse along `dir` at the two anchors of a point. */
-static void sx_apply(sx_vec2 *va, sx_real *wa, sx_vec2 *vb, sx_real *wb, sx_real ma, sx_real ia,
+static inline void sx_apply(sx_vec2 *va, sx_real *wa, sx_vec2 *vb, sx_real *wb, sx_real ma, sx_real ia,
                      sx_real mb, sx_real ib, const sx_contact_point *p, sx_vec2 impulse) {
     *va = sx_mul_sub(*va, ma, impulse);
     *wa -= ia * sx_cross(p->anchor_a, impulse);
