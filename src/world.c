@@ -618,8 +618,12 @@ static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, c
         sx_vec2 d;
         memset(p, 0, sizeof(*p));
         p->point = mp->point;
-        p->anchor_a = sx_sub(mp->point, ba->center);
-        p->anchor_b = sx_sub(mp->point, bb->center);
+        /* each body's lever reaches its own surface point (depth apart
+         * along the normal): with a speculative gap of a whole step's
+         * approach, the midway point put the lever of a ball off by half the
+         * gap and its friction at impact with it */
+        p->anchor_a = sx_sub(sx_mul_add(mp->point, SX_R(0.5) * mp->depth, m->normal), ba->center);
+        p->anchor_b = sx_sub(sx_mul_sub(mp->point, SX_R(0.5) * mp->depth, m->normal), bb->center);
         p->rel_a = sx_inv_rotate(ba->xf.q, p->anchor_a);
         p->rel_b = sx_inv_rotate(bb->xf.q, p->anchor_b);
         p->separation = -mp->depth;
