@@ -436,16 +436,17 @@ static void sx_ecs_sync_bodies(ecs_iter_t *it) {
     }
 }
 
-static void sx_ecs_begin_step(ecs_iter_t *it) {
-    SxPhysicsWorld *pw = ecs_field(it, SxPhysicsWorld, 0);
-    sx_world_clear_events(pw->world);
-}
-
-/* ---- the stages: the world's public functions, nothing else --------------- */
-
+/* the stage length the driver hands each system: the step or the sub-step */
 static sx_real sx_ecs_h(const ecs_iter_t *it) {
     return it->param != NULL ? *(const sx_real *)it->param : (sx_real)it->delta_time;
 }
+
+static void sx_ecs_begin_step(ecs_iter_t *it) {
+    SxPhysicsWorld *pw = ecs_field(it, SxPhysicsWorld, 0);
+    sx_world_begin_step(pw->world, sx_ecs_h(it));
+}
+
+/* ---- the stages: the world's public functions, nothing else --------------- */
 
 static void sx_ecs_apply_forces_system(ecs_iter_t *it) {
     sx_world_apply_forces(ecs_field(it, SxPhysicsWorld, 0)->world, sx_ecs_h(it));
@@ -697,9 +698,9 @@ static void sx_ecs_drive(ecs_iter_t *it) {
         /* the same h as sx_world_step(world, fixed) */
         sx_real h = fixed / (sx_real)sub_steps;
         sx_ecs_run_phase(it->world, SxPhysicsPreStep, fixed);
+        sx_ecs_run_phase(it->world, SxPhysicsCollide, fixed);
         for (j = 0; j < sub_steps; ++j) {
             sx_ecs_run_phase(it->world, SxPhysicsApplyForces, h);
-            sx_ecs_run_phase(it->world, SxPhysicsCollide, h);
             sx_ecs_run_phase(it->world, SxPhysicsSolve, h);
             sx_ecs_run_phase(it->world, SxPhysicsIntegrate, h);
             sx_ecs_run_phase(it->world, SxPhysicsSeparate, h);

@@ -86,14 +86,14 @@
  * Physics runs in the phase SxPhysicsUpdate (after EcsOnUpdate): a fixed
  * time step with an accumulator, SxPhysicsSettings.max_steps_per_frame at
  * most per frame. Each fixed step runs the systems of these tags in order,
- * the stage tags once per sub-step:
+ * collision once per step and the other stage tags once per sub-step:
  *
- *   SxPhysicsPreStep      copy components into the world (once per step)
+ *   SxPhysicsPreStep      copy components into the world, sx_world_begin_step
+ *   SxPhysicsCollide      sx_world_collide             (once per step)
  *   SxPhysicsApplyForces  sx_world_apply_forces     \
- *   SxPhysicsCollide      sx_world_collide           |  sub_steps times,
- *   SxPhysicsSolve        sx_world_solve             |  h = fixed_time_step
- *   SxPhysicsIntegrate    sx_world_integrate         |      / sub_steps
- *   SxPhysicsSeparate     sx_world_separate         /
+ *   SxPhysicsSolve        sx_world_solve             |  sub_steps times,
+ *   SxPhysicsIntegrate    sx_world_integrate         |  h = fixed_time_step
+ *   SxPhysicsSeparate     sx_world_separate         /       / sub_steps
  *   SxPhysicsPostStep     clear forces, update sleep, copy the world back
  *                         into the components, fill SxContacts, emit events
  *

@@ -495,6 +495,7 @@ static sx_status sx_attach_collider(sx_world *world, int bslot, const sx_collide
     c->sensor = def->sensor;
     c->alive = true;
     c->aabb_stale = true;
+    c->reach = SX_R(0.0);
     world->sets_dirty = true;
     c->generation = generation;
     c->body = bslot;

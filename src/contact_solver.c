@@ -1,5 +1,12 @@
 /* sepax — the contact solver: sequential impulses on velocities, then
- * positional correction.
+ * positional correction, on the contacts of the step's one collide.
+ *
+ * The contacts are prepared once per collide (effective masses, the block
+ * matrices, anchors fixed for the step). Each sub-step then reads every
+ * point's separation from the bodies' current positions (the anchors turned
+ * with the bodies, along the normal of collide time: first order in the
+ * motion of a step), which is what the speculative and positional terms
+ * aim at.
  *
  * Velocities: each contact point is a constraint on the relative normal
  * velocity vn of the two bodies at the point. The solver visits the points in
@@ -15,20 +22,21 @@
  * cases), which keeps stacks from rocking. A point still separated by a gap
  * s > 0 is speculative: it may approach at up to s / h, closing the gap
  * exactly in this sub-step, so fast bodies stop at the surface instead of
- * tunnelling. An overlapping point only asks for vn >= 0; the overlap itself
- * is removed by moving positions (sx_contacts_separate), never by adding
- * velocity, so overlap does not turn into kinetic energy.
+ * tunnelling. With rigid contacts (the default) an overlapping point only
+ * asks for vn >= 0; the overlap itself is removed by moving positions
+ * (sx_contacts_relax), never by adding velocity, so overlap does not turn
+ * into kinetic energy. With soft contacts (contact_hertz > 0) the overlap is
+ * a stiff damped spring whose push-out the relax passes take back.
  *
  * Restitution is not part of these iterations: an impact pass before them
  * resolves the impacts one at a time in time-of-impact order (see "impacts"
  * below for the design and why), with impulses kept apart from the
  * iterations' accumulators.
  *
- * Positions: each pass recomputes every point's separation from the surface
- * points stored in the body frames by collide, and moves the two bodies
- * apart along the normal by a fraction of the overlap beyond the slop, the
- * move split by inverse mass and inverse inertia (a pseudo-impulse that
- * changes positions only). */
+ * Positions: each pass reads every point's current separation and moves
+ * the two bodies apart along the normal by a fraction of the overlap beyond
+ * the slop, the move split by inverse mass and inverse inertia (a
+ * pseudo-impulse that changes positions only). */
 #include "world_internal.h"
 
 /* Largest condition estimate k11^2 / det(K) of a two-point contact's mass
@@ -52,7 +60,7 @@ static inline sx_real sx_bounded_impulse(sx_real x) {
 }
 
 /* Applies an impulse along `dir` at the two anchors of a point. */
-static void sx_apply(sx_vec2 *va, sx_real *wa, sx_vec2 *vb, sx_real *wb, sx_real ma, sx_real ia,
+static inline void sx_apply(sx_vec2 *va, sx_real *wa, sx_vec2 *vb, sx_real *wb, sx_real ma, sx_real ia,
                      sx_real mb, sx_real ib, const sx_contact_point *p, sx_vec2 impulse) {
     *va = sx_mul_sub(*va, ma, impulse);
     *wa -= ia * sx_cross(p->anchor_a, impulse);
@@ -79,28 +87,19 @@ void sx_contacts_prepare(sx_world *world) {
     int i, k;
     for (i = 0; i < world->contact_count; ++i) {
         sx_contact *c = &world->contacts[i];
-        sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
+        const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
         sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;
         sx_vec2 n = c->normal, t = sx_cross_vs(n, SX_R(1.0));
-        sx_vec2 va = a->v, vb = b->v;
-        sx_real wa = a->w, wb = b->w;
-        if (!sx_contact_is_active(world, c)) continue;
         for (k = 0; k < c->count; ++k) {
             sx_contact_point *p = &c->points[k];
-            sx_vec2 ra = p->anchor_a, rb = p->anchor_b, impulse;
+            sx_vec2 ra = p->anchor_a, rb = p->anchor_b;
             sx_real rna = sx_cross(ra, n), rnb = sx_cross(rb, n);
             sx_real rta = sx_cross(ra, t), rtb = sx_cross(rb, t);
             sx_real kn = ma + mb + ia * rna * rna + ib * rnb * rnb;
             sx_real kt = ma + mb + ia * rta * rta + ib * rtb * rtb;
             p->normal_mass = kn > SX_R(0.0) ? SX_R(1.0) / kn : SX_R(0.0);
             p->tangent_mass = kt > SX_R(0.0) ? SX_R(1.0) / kt : SX_R(0.0);
-            p->gap = p->separation;
-            p->impact_impulse = SX_R(0.0);
-            /* warm start with last sub-step's accumulated impulses */
-            impulse = sx_add(sx_scale(n, p->normal_impulse), sx_scale(t, p->tangent_impulse));
-            sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p, impulse);
         }
-        sx_store_velocities(a, va, wa, b, vb, wb);
         c->block_solve = false;
         if (c->count == 2) {
             const sx_contact_point *p1 = &c->points[0], *p2 = &c->points[1];
@@ -122,6 +121,44 @@ void sx_contacts_prepare(sx_world *world) {
                 c->block_solve = true;
             }
         }
+    }
+}
+
+/* The separation of point p at the bodies' current positions: the anchors
+ * turned with their bodies, the normal kept from collide time (the
+ * first-order update the sub-steps need between two collides). */
+static sx_real sx_current_gap(const sx_body_sim *a, const sx_body_sim *b, sx_vec2 n,
+                              const sx_contact_point *p) {
+    sx_vec2 ra = sx_rotate(a->xf.q, p->rel_a), rb = sx_rotate(b->xf.q, p->rel_b);
+    sx_vec2 d = sx_add(sx_sub(b->center, a->center), sx_sub(rb, ra));
+    return p->base + sx_dot(d, n);
+}
+
+static void sx_update_gaps(const sx_world *world, sx_contact *c) {
+    const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
+    int k;
+    for (k = 0; k < c->count; ++k)
+        c->points[k].gap = sx_current_gap(a, b, c->normal, &c->points[k]);
+}
+
+void sx_contacts_warm_start(sx_world *world) {
+    int i, k;
+    for (i = 0; i < world->contact_count; ++i) {
+        sx_contact *c = &world->contacts[i];
+        sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
+        sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;
+        sx_vec2 n = c->normal, t = sx_cross_vs(n, SX_R(1.0));
+        sx_vec2 va = a->v, vb = b->v;
+        sx_real wa = a->w, wb = b->w;
+        if (!sx_contact_is_active(world, c)) continue;
+        sx_update_gaps(world, c);
+        for (k = 0; k < c->count; ++k) {
+            sx_contact_point *p = &c->points[k];
+            sx_vec2 impulse = sx_add(sx_scale(n, p->normal_impulse), sx_scale(t, p->tangent_impulse));
+            p->impact_impulse = SX_R(0.0);
+            sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p, impulse);
+        }
+        sx_store_velocities(a, va, wa, b, vb, wb);
     }
 }
 
@@ -180,8 +217,71 @@ static sx_real sx_point_speed(sx_vec2 va, sx_real wa, sx_vec2 vb, sx_real wb,
     return sx_dot(dv, dir);
 }
 
-void sx_contacts_solve(sx_world *world, sx_real h) {
+/* A soft contact (Catto, "Soft Constraints", GDC 2011): the overlap is a
+ * stiff spring of frequency `hertz` and damping ratio `zeta` solved
+ * implicitly over the sub-step h, which makes the push-out a velocity bias
+ * bias_rate x overlap and weakens the constraint by mass_scale (impulse
+ * leak impulse_scale). Stable for any stiffness at a given h. */
+typedef struct sx_softness {
+    sx_real bias_rate, mass_scale, impulse_scale;
+} sx_softness;
+
+static sx_softness sx_make_softness(sx_real hertz, sx_real zeta, sx_real h) {
+    sx_softness s;
+    sx_real omega = SX_R(2.0) * SX_PI * hertz, a1 = SX_R(2.0) * zeta + h * omega;
+    sx_real a2 = h * omega * a1, a3 = SX_R(1.0) / (SX_R(1.0) + a2);
+    if (!(hertz > SX_R(0.0)) || !(a1 > SX_R(0.0))) {
+        s.bias_rate = SX_R(0.0);
+        s.mass_scale = SX_R(1.0);
+        s.impulse_scale = SX_R(0.0);
+        return s;
+    }
+    s.bias_rate = omega / a1;
+    s.mass_scale = a2 * a3;
+    s.impulse_scale = a3;
+    return s;
+}
+
+/* The normal constraint of one point, one at a time: rigid for a
+ * speculative point (it may close its gap and no more) and in the relax
+ * pass, soft for an overlapping point in the soft pass. The relax pass
+ * leaves speculative points alone: the next sub-step's solve, after its
+ * impact pass, limits their approach (a relax pass that did would stop a
+ * ball at the surface before the impact pass could see it arrive). */
+static void sx_solve_normal_point(sx_contact_point *p, sx_vec2 n, sx_vec2 *va, sx_real *wa,
+                                  sx_vec2 *vb, sx_real *wb, sx_real ma, sx_real ia, sx_real mb,
+                                  sx_real ib, sx_real inv_h, const sx_softness *soft,
+                                  sx_real max_push, bool relax) {
+    sx_real vn, lambda, total;
+    if (relax && p->gap > SX_R(0.0)) return;
+    vn = sx_point_speed(*va, *wa, *vb, *wb, p, n);
+    if (p->gap > SX_R(0.0)) {
+        lambda = -p->normal_mass * (vn + p->gap * inv_h);
+    } else if (soft != NULL) {
+        sx_real bias = sx_maxr(soft->mass_scale * soft->bias_rate * p->gap, -max_push);
+        lambda = -p->normal_mass * (soft->mass_scale * vn + bias) -
+                 soft->impulse_scale * p->normal_impulse;
+    } else {
+        lambda = -p->normal_mass * vn;
+    }
+    total = sx_bounded_impulse(sx_maxr(p->normal_impulse + lambda, SX_R(0.0)));
+    lambda = total - p->normal_impulse;
+    p->normal_impulse = total;
+    sx_apply(va, wa, vb, wb, ma, ia, mb, ib, p, sx_scale(n, lambda));
+}
+
+/* One pass over the active contacts: sx_world_solve's (soft when the world's
+ * contacts are) or a relax pass. */
+static void sx_contacts_pass(sx_world *world, sx_real h, bool relax) {
     sx_real inv_h = SX_R(1.0) / h;
+    /* the stiffness follows the sub-step (a spring faster than a quarter of
+     * the sub-step rate is not resolved by it); contacts with a body the
+     * solver cannot move are twice as stiff, as they have half the masses
+     * to share the overlap */
+    sx_real hertz = sx_minr(world->def.contact_hertz, SX_R(0.25) * inv_h);
+    sx_softness moving = sx_make_softness(hertz, world->def.contact_damping_ratio, h);
+    sx_softness fixed = sx_make_softness(SX_R(2.0) * hertz, world->def.contact_damping_ratio, h);
+    sx_real max_push = world->def.max_correction_speed;
     int i, k;
     for (i = 0; i < world->contact_count; ++i) {
         sx_contact *c = &world->contacts[i];
@@ -189,8 +289,11 @@ void sx_contacts_solve(sx_world *world, sx_real h) {
         sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;
         sx_vec2 va = a->v, vb = b->v, n = c->normal, t = sx_cross_vs(n, SX_R(1.0));
         sx_real wa = a->w, wb = b->w;
+        const sx_softness *sft = NULL;
         bool solved = false;
         if (!sx_contact_is_active(world, c)) continue;
+        if (!relax && world->def.contact_hertz > SX_R(0.0))
+            sft = (a->dynamic && b->dynamic) ? &moving : &fixed;
         /* Friction first, with the normal impulses of the last pass (or of
          * the warm start): the normal constraints then have the last word,
          * so a pass never ends with a point moving into the surface. A
@@ -207,7 +310,9 @@ void sx_contacts_solve(sx_world *world, sx_real h) {
                 sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p, sx_scale(t, lambda));
             }
         }
-        if (c->block_solve) {
+        /* the rigid passes solve a face's two points together */
+        if (c->block_solve && sft == NULL &&
+            (!relax || (c->points[0].gap <= SX_R(0.0) && c->points[1].gap <= SX_R(0.0)))) {
             sx_contact_point *p1 = &c->points[0], *p2 = &c->points[1];
             sx_real x1, x2;
             sx_real vn1 = sx_point_speed(va, wa, vb, wb, p1, n);
@@ -226,17 +331,83 @@ void sx_contacts_solve(sx_world *world, sx_real h) {
         }
         if (!solved) {
             for (k = 0; k < c->count; ++k) {
-                sx_contact_point *p = &c->points[k];
-                sx_real vn = sx_point_speed(va, wa, vb, wb, p, n);
-                sx_real lambda = -p->normal_mass * sx_normal_error(p, vn, inv_h);
-                sx_real total = sx_bounded_impulse(sx_maxr(p->normal_impulse + lambda, SX_R(0.0)));
-                lambda = total - p->normal_impulse;
-                p->normal_impulse = total;
-                sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p, sx_scale(n, lambda));
+                sx_solve_normal_point(&c->points[k], n, &va, &wa, &vb, &wb, ma, ia, mb, ib, inv_h,
+                                      sft, max_push, relax);
             }
         }
         sx_store_velocities(a, va, wa, b, vb, wb);
     }
+}
+
+/* Turns a body by a small angle (the pseudo-impulse's rotation) and keeps
+ * its origin consistent with the moved centre of mass. */
+static void sx_move_body(sx_body_sim *b, sx_vec2 dp, sx_real angle) {
+    b->center = sx_add(b->center, dp);
+    if (angle != SX_R(0.0)) b->xf.q = sx_rot_integrate(b->xf.q, angle);
+    sx_body_sync_origin(b);
+}
+
+/* The rigid contacts' positional correction: each overlap beyond the slop
+ * is reduced by correction_factor of it (at most max_correction_speed h per
+ * sub-step) by moving the two bodies along the normal, split by inverse
+ * mass and inertia (a pseudo-impulse: velocities, and so the kinetic
+ * energy, untouched). */
+static void sx_contacts_push_out(sx_world *world, sx_real h, int passes) {
+    sx_real slop = world->linear_slop, beta = world->def.correction_factor, max_move;
+    int it, i, k;
+    if (passes <= 0) return;
+    max_move = world->def.max_correction_speed * h / (sx_real)passes;
+    for (it = 0; it < passes; ++it) {
+        for (i = 0; i < world->contact_count; ++i) {
+            sx_contact *c = &world->contacts[i];
+            sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
+            sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;
+            sx_vec2 n = c->normal;
+            if (!sx_contact_is_active(world, c)) continue;
+            for (k = 0; k < c->count; ++k) {
+                const sx_contact_point *p = &c->points[k];
+                sx_real s = sx_current_gap(a, b, n, p), correction, lambda, rna, rnb;
+                if (s >= -slop || !(p->normal_mass > SX_R(0.0))) continue;
+                correction = sx_maxr(beta * (s + slop), -max_move);
+                rna = sx_cross(p->anchor_a, n);
+                rnb = sx_cross(p->anchor_b, n);
+                lambda = -correction * p->normal_mass;
+                if (!sx_is_finite(lambda)) {
+                    /* an effective mass near SX_REAL_MAX (a body of that
+                     * mass against a static one): the pseudo-impulse
+                     * overflows, and inf x 1 / mass made the position
+                     * -inf. The same moves, as fractions of 1 / mass. */
+                    sx_real kn = ma + mb + ia * rna * rna + ib * rnb * rnb;
+                    if (!(kn > SX_R(0.0))) continue;
+                    if (ma > SX_R(0.0) || ia > SX_R(0.0))
+                        sx_move_body(a, sx_scale(n, correction * (ma / kn)), correction * (ia * rna / kn));
+                    if (mb > SX_R(0.0) || ib > SX_R(0.0))
+                        sx_move_body(b, sx_scale(n, -correction * (mb / kn)), -correction * (ib * rnb / kn));
+                    continue;
+                }
+                if (ma > SX_R(0.0) || ia > SX_R(0.0))
+                    sx_move_body(a, sx_scale(n, -lambda * ma), -ia * lambda * rna);
+                if (mb > SX_R(0.0) || ib > SX_R(0.0))
+                    sx_move_body(b, sx_scale(n, lambda * mb), ib * lambda * rnb);
+            }
+        }
+    }
+}
+
+void sx_contacts_solve(sx_world *world, sx_real h) { sx_contacts_pass(world, h, false); }
+
+void sx_contacts_relax(sx_world *world, sx_real h, int passes) {
+    int i, it;
+    if (!(world->def.contact_hertz > SX_R(0.0))) {
+        sx_contacts_push_out(world, h, passes);
+        return;
+    }
+    for (i = 0; i < world->contact_count; ++i) {
+        sx_contact *c = &world->contacts[i];
+        if (sx_contact_is_active(world, c)) sx_update_gaps(world, c);
+    }
+    for (it = 0; it < passes; ++it)
+        sx_contacts_pass(world, h, true);
 }
 
 /* ---- impacts ----------------------------------------------------------------
@@ -655,69 +826,4 @@ void sx_contacts_free(sx_world *world) {
     sx_free(world->impact_heap, (size_t)world->impact_heap_capacity * sizeof(int));
     sx_free(world->impact_contacts,
             (size_t)world->impact_contact_capacity * sizeof(sx_impact_contact));
-}
-
-/* Turns a body by a small angle (the pseudo-impulse's rotation) and keeps
- * its origin consistent with the moved centre of mass. */
-static void sx_move_body(sx_body_sim *b, sx_vec2 dp, sx_real angle) {
-    b->center = sx_add(b->center, dp);
-    if (angle != SX_R(0.0)) b->xf.q = sx_rot_integrate(b->xf.q, angle);
-    sx_body_sync_origin(b);
-}
-
-void sx_contacts_separate(sx_world *world, sx_real h) {
-    int iterations = world->def.position_iterations, it, i, k;
-    sx_real slop = world->linear_slop, beta = world->def.correction_factor;
-    sx_real max_move;
-    if (iterations == 0) return;
-    /* spread the speed limit over the passes of one sub-step */
-    max_move = world->def.max_correction_speed * h / (sx_real)iterations;
-    for (it = 0; it < iterations; ++it) {
-        for (i = 0; i < world->contact_count; ++i) {
-            sx_contact *c = &world->contacts[i];
-            sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
-            sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;
-            if (!sx_contact_is_active(world, c)) continue;
-            for (k = 0; k < c->count; ++k) {
-                const sx_contact_point *p = &c->points[k];
-                sx_vec2 pa = sx_xform_point(a->xf, p->local_a);
-                sx_vec2 pb = sx_xform_point(b->xf, p->local_b);
-                sx_vec2 n = sx_rotate(a->xf.q, c->local_normal);
-                sx_real s = sx_dot(sx_sub(pb, pa), n), correction, kn, rna, rnb, lambda;
-                sx_vec2 mid, ra, rb, impulse;
-                if (s >= -slop) continue;
-                correction = sx_maxr(beta * (s + slop), -max_move);
-                mid = sx_scale(sx_add(pa, pb), SX_R(0.5));
-                ra = sx_sub(mid, a->center);
-                rb = sx_sub(mid, b->center);
-                rna = sx_cross(ra, n);
-                rnb = sx_cross(rb, n);
-                kn = ma + mb + ia * rna * rna + ib * rnb * rnb;
-                if (!(kn > SX_R(0.0))) continue;
-                lambda = -correction / kn;
-                if (!sx_is_finite(lambda)) {
-                    /* kn below correction / SX_REAL_MAX (a body of mass
-                     * SX_REAL_MAX against a static one): the pseudo-impulse
-                     * overflows, and inf x 1 / mass made the position
-                     * -inf. The same moves, as fractions of kn. */
-                    if (ma > SX_R(0.0) || ia > SX_R(0.0)) {
-                        sx_move_body(a, sx_scale(n, correction * (ma / kn)),
-                                     correction * (ia * rna / kn));
-                    }
-                    if (mb > SX_R(0.0) || ib > SX_R(0.0)) {
-                        sx_move_body(b, sx_scale(n, -correction * (mb / kn)),
-                                     -correction * (ib * rnb / kn));
-                    }
-                    continue;
-                }
-                impulse = sx_scale(n, lambda);
-                if (ma > SX_R(0.0) || ia > SX_R(0.0)) {
-                    sx_move_body(a, sx_scale(impulse, -ma), -ia * sx_cross(ra, impulse));
-                }
-                if (mb > SX_R(0.0) || ib > SX_R(0.0)) {
-                    sx_move_body(b, sx_scale(impulse, mb), ib * sx_cross(rb, impulse));
-                }
-            }
-        }
-    }
 }

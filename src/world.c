@@ -2,14 +2,19 @@
  * the contact solver (applying forces, collision detection, integration).
  *
  * The step is symplectic Euler split into public stages so that other
- * drivers (the flecs systems) run exactly the code sx_world_step runs. Each
- * sub-step re-runs collision detection: a contact list that is at most one
- * sub-step old keeps the speculative margin small and the anchors exact,
- * which we preferred to extrapolating old contacts. Contacts are rebuilt into
- * a second buffer and matched against the previous one by collider pair
- * (both lists are sorted by pair key, so matching is one merge walk) and by
- * feature id, which carries the accumulated impulses over for warm starting.
- * Buffers only grow; a warmed-up world allocates nothing per step. */
+ * drivers (the flecs systems) run exactly the code sx_world_step runs.
+ * Collision runs once per step, before the sub-steps: each contact point
+ * keeps its anchors in both body frames, and the solver reads its
+ * separation from the bodies' current positions, so the sub-steps need no
+ * narrowphase of their own (the first world re-ran collision every
+ * sub-step, which was most of its cost). Each collider's bounds and
+ * speculative margin grow by how far it can move in the step, so a fast
+ * body's contacts exist before it reaches them. Contacts are rebuilt into a
+ * second buffer and matched against the previous one by collider pair (both
+ * lists are sorted by pair key, so matching is one merge walk) and by
+ * feature id, which carries the accumulated impulses over for warm
+ * starting. Buffers only grow; a warmed-up world allocates nothing per
+ * step. */
 #include <stdlib.h>
 
 #include "narrow.h"
@@ -20,9 +25,11 @@ sx_world_def sx_default_world_def(void) {
     d.gravity = sx_v2(SX_R(0.0), SX_R(-10.0));
     d.sub_steps = 4;
     d.velocity_iterations = 4;
-    d.position_iterations = 2;
+    d.position_iterations = 1;
     d.correction_factor = SX_R(0.2);
     d.max_correction_speed = SX_R(3.0);
+    d.contact_hertz = SX_R(0.0);
+    d.contact_damping_ratio = SX_R(10.0);
     d.restitution_threshold = SX_R(1.0);
     d.speculative_slops = SX_R(4.0);
     d.length_units_per_meter = SX_LENGTH_UNITS_PER_METER;
@@ -48,6 +55,10 @@ sx_status sx_world_def_validate(const sx_world_def *d, const char **field) {
         bad = "correction_factor";
     } else if (!sx_is_finite(d->max_correction_speed)) {
         bad = "max_correction_speed";
+    } else if (!sx_is_finite(d->contact_hertz)) {
+        bad = "contact_hertz";
+    } else if (!sx_is_finite(d->contact_damping_ratio)) {
+        bad = "contact_damping_ratio";
     } else if (!sx_is_finite(d->restitution_threshold)) {
         bad = "restitution_threshold";
     } else if (!sx_is_finite(d->speculative_slops)) {
@@ -72,6 +83,10 @@ sx_status sx_world_def_validate(const sx_world_def *d, const char **field) {
             bad = "correction_factor";
         } else if (!(d->max_correction_speed > SX_R(0.0))) {
             bad = "max_correction_speed";
+        } else if (d->contact_hertz < SX_R(0.0)) {
+            bad = "contact_hertz";
+        } else if (d->contact_damping_ratio < SX_R(0.0)) {
+            bad = "contact_damping_ratio";
         } else if (d->restitution_threshold < SX_R(0.0)) {
             bad = "restitution_threshold";
         } else if (d->speculative_slops < SX_R(0.0)) {
@@ -184,26 +199,40 @@ static sx_status sx_check_step(const sx_world *world, sx_real h) {
 /* ---- active sets ------------------------------------------------------------ */
 
 /* The fattened bounds of a collider (half the margin on each side: bounds
- * meet when the gap < margin) into world->aabbs; a compound's are the union
- * of its parts', each kept in part_boxes for the part-pair culling of the
- * narrowphase. */
+ * meet when the gap < margin, plus the collider's reach over the step) into
+ * world->aabbs; a compound's are the union of its parts', each kept in
+ * part_boxes for the part-pair culling of the narrowphase. */
 static void sx_collider_bounds(sx_world *world, int slot) {
     sx_collider *c = &world->colliders[slot];
-    sx_xform xf = world->sims[c->body].xf;
-    const sx_real half = SX_R(0.5) * world->margin;
+    const sx_body_sim *b = &world->sims[c->body];
+    sx_xform xf = b->xf;
+    sx_aabb u;
+    sx_real half = SX_R(0.5) * world->margin, reach = SX_R(0.0);
     if (c->part_count > 0) {
-        sx_aabb u;
         int k;
         for (k = 0; k < c->part_count; ++k) {
-            sx_aabb pb = sx_aabb_fatten(
-                sx_shape_aabb(&c->parts[k].shape, sx_xform_mul(xf, c->parts[k].offset)), half);
+            sx_aabb pb = sx_shape_aabb(&c->parts[k].shape, sx_xform_mul(xf, c->parts[k].offset));
             c->part_boxes[k] = pb;
             u = k == 0 ? pb : sx_aabb_union(u, pb);
         }
-        world->aabbs[slot] = u;
     } else {
-        world->aabbs[slot] = sx_aabb_fatten(sx_shape_aabb(&c->shape, xf), half);
+        u = sx_shape_aabb(&c->shape, xf);
     }
+    if (world->step_dt > SX_R(0.0) && (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0))) {
+        /* the farthest point of the bounds from the centre of mass bounds the
+         * lever of the turn */
+        sx_vec2 far = sx_vmax(sx_vabs(sx_sub(u.lower, b->center)),
+                                sx_vabs(sx_sub(u.upper, b->center)));
+        reach = world->step_dt * (sx_length(b->v) + sx_absr(b->w) * sx_length(far));
+        if (!sx_is_finite(reach)) reach = SX_R(0.0);
+    }
+    c->reach = reach;
+    if (c->part_count > 0) {
+        int k;
+        for (k = 0; k < c->part_count; ++k)
+            c->part_boxes[k] = sx_aabb_fatten(c->part_boxes[k], half + reach);
+    }
+    world->aabbs[slot] = sx_aabb_fatten(u, half + reach);
 }
 
 sx_status sx_world_refresh_sets(sx_world *world) {
@@ -464,6 +493,13 @@ sx_contact_events sx_world_get_contact_events(const sx_world *world) {
     return e;
 }
 
+sx_status sx_world_begin_step(sx_world *world, sx_real dt) {
+    sx_status s = sx_check_step(world, dt);
+    if (s != SX_OK) return s;
+    world->step_dt = dt;
+    return sx_world_clear_events(world);
+}
+
 sx_status sx_world_clear_events(sx_world *world) {
     if (world == NULL) return SX_ERR_INVALID_ARG;
     world->begin_count = 0;
@@ -620,23 +656,27 @@ static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, c
     c->body_a = ca->body;
     c->body_b = cb->body;
     c->normal = m->normal;
-    c->local_normal = sx_inv_rotate(ba->xf.q, m->normal);
     c->friction = sx_sqrt(ca->friction * cb->friction);
     c->restitution = sx_maxr(ca->restitution, cb->restitution);
     c->count = m->count;
     for (k = 0; k < m->count; ++k) {
         const sx_manifold_point *mp = &m->points[k];
         sx_contact_point *p = &c->points[k];
-        /* the surface points of A and B, depth apart along the normal */
-        sx_vec2 pa_w = sx_mul_add(mp->point, SX_R(0.5) * mp->depth, m->normal);
-        sx_vec2 pb_w = sx_mul_sub(mp->point, SX_R(0.5) * mp->depth, m->normal);
+        sx_vec2 d;
         memset(p, 0, sizeof(*p));
         p->point = mp->point;
-        p->local_a = sx_xform_inv_point(ba->xf, pa_w);
-        p->local_b = sx_xform_inv_point(bb->xf, pb_w);
-        p->anchor_a = sx_sub(mp->point, ba->center);
-        p->anchor_b = sx_sub(mp->point, bb->center);
+        /* each body's lever reaches its own surface point (depth apart
+         * along the normal): with a speculative gap of a whole step's
+         * approach, the midway point put the lever of a ball off by half the
+         * gap and its friction at impact with it */
+        p->anchor_a = sx_sub(sx_mul_add(mp->point, SX_R(0.5) * mp->depth, m->normal), ba->center);
+        p->anchor_b = sx_sub(sx_mul_sub(mp->point, SX_R(0.5) * mp->depth, m->normal), bb->center);
+        p->rel_a = sx_inv_rotate(ba->xf.q, p->anchor_a);
+        p->rel_b = sx_inv_rotate(bb->xf.q, p->anchor_b);
         p->separation = -mp->depth;
+        d = sx_add(sx_sub(bb->center, ba->center), sx_sub(p->anchor_b, p->anchor_a));
+        p->base = p->separation - sx_dot(d, m->normal);
+        p->gap = p->separation;
         p->id = mp->id;
         sx_match_point(p, old);
     }
@@ -667,7 +707,8 @@ static sx_status sx_collide_parts(sx_world *world, uint64_t key, int old_begin, 
             sx_status s;
             if (!sx_aabb_overlaps(boxes_a[i], boxes_b[j])) continue;
             if (sx_collide_world(&va.parts[i].shape, xi, &vb.parts[j].shape,
-                                 sx_xform_mul(xb, vb.parts[j].offset), world->margin, &m) <= 0) {
+                                 sx_xform_mul(xb, vb.parts[j].offset),
+                                 world->margin + ca->reach + cb->reach, &m) <= 0) {
                 continue;
             }
             s = sx_add_contact(world, key, i, j, &m, old_begin, old_end);
@@ -729,7 +770,8 @@ sx_status sx_world_collide(sx_world *world) {
             continue;
         }
         n = sx_collide_world(&ca->shape, world->sims[ca->body].xf, &cb->shape,
-                             world->sims[cb->body].xf, world->margin, &m);
+                             world->sims[cb->body].xf, world->margin + ca->reach + cb->reach,
+                             &m);
         if (n <= 0) continue;
         s = sx_add_contact(world, key, 0, 0, &m, old_begin, old_index);
         if (s != SX_OK) return s;
@@ -741,6 +783,7 @@ sx_status sx_world_collide(sx_world *world) {
         s = sx_thaw_contacts(world, world->def.enable_contact_events);
         if (s != SX_OK) return s;
     }
+    sx_contacts_prepare(world);
     if (world->def.enable_contact_events) {
         s = sx_record_events(world);
         if (s != SX_OK) return s;
@@ -796,9 +839,9 @@ sx_status sx_world_solve(sx_world *world, sx_real h) {
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
     sx_limit_speeds(world, h);
-    sx_contacts_prepare(world);
+    sx_contacts_warm_start(world);
     /* restitution first, impact by impact in time order (contact_solver.c
-     * says why); the iterations then solve what rests and slides */
+     * says why); the soft passes then solve what rests and slides */
     impacts = sx_contacts_impacts(world, h);
     for (it = 0; it < world->def.velocity_iterations; ++it)
         sx_contacts_solve(world, h);
@@ -834,7 +877,10 @@ sx_status sx_world_integrate(sx_world *world, sx_real h) {
 sx_status sx_world_separate(sx_world *world, sx_real h) {
     sx_status s = sx_check_step(world, h);
     if (s != SX_OK) return s;
-    sx_contacts_separate(world, h);
+    s = sx_world_refresh_sets(world);
+    if (s != SX_OK) return s;
+    sx_contacts_relax(world, h, world->def.position_iterations);
+    sx_limit_speeds(world, h);
     return SX_OK;
 }
 
@@ -853,11 +899,11 @@ sx_status sx_world_step(sx_world *world, sx_real dt) {
         h = dt;
         steps = 1;
     }
-    sx_world_clear_events(world);
+    sx_world_begin_step(world, dt);
+    s = sx_world_collide(world);
+    if (s != SX_OK) return s;
     for (i = 0; i < steps; ++i) {
         sx_world_apply_forces(world, h);
-        s = sx_world_collide(world);
-        if (s != SX_OK) return s;
         s = sx_world_solve(world, h);
         if (s != SX_OK) return s;
         sx_world_integrate(world, h);

@@ -74,19 +74,31 @@ typedef struct sx_collider {
     /* the cached bounds in world->aabbs no longer fit (teleport of a body
      * the step does not move) */
     bool aabb_stale;
+    /* how far any point of the collider can move in the step its bounds
+     * were found for (|v| + |w| x its farthest point from the centre of
+     * mass, times the step): its bounds and its contacts' speculative
+     * margin grow by this, so a fast body meets in the step's collide what
+     * it will reach before the next one */
+    sx_real reach;
     int next;      /* next collider of the same body, -1 at the end */
     int next_free; /* free-list link while dead */
     void *user_data;
 } sx_collider;
 
 typedef struct sx_contact_point {
-    sx_vec2 anchor_a, anchor_b; /* from each centre of mass to the point, world */
-    sx_vec2 local_a, local_b;   /* each surface point in its body frame */
-    sx_vec2 point;              /* midway point at collide time, world */
-    sx_real separation;         /* at collide time: < 0 overlap, > 0 gap */
-    /* the separation the velocity iterations aim at: `separation` at the
-     * start positions shifted by the impacts of this sub-step (see
-     * sx_contacts_impacts) */
+    sx_vec2 anchor_a, anchor_b; /* from each centre of mass to the point, world, at collide */
+    /* the same two anchors in their body frames: turned with the bodies,
+     * they give the point's separation as the bodies move through the
+     * sub-steps (sx_current_gap in contact_solver.c) */
+    sx_vec2 rel_a, rel_b;
+    sx_vec2 point;      /* midway point at collide time, world */
+    sx_real separation; /* at collide time: < 0 overlap, > 0 gap */
+    /* separation - (normal . (centre_b + anchor_b - centre_a - anchor_a)) at
+     * collide time: the current separation is this plus the normal
+     * component of the anchors' current offset */
+    sx_real base;
+    /* the separation at the start of this sub-step, shifted by the impacts
+     * of this sub-step (see sx_contacts_impacts): what the solve aims at */
     sx_real gap;
     /* accumulated impulses of the velocity iterations (warm started) */
     sx_real normal_impulse, tangent_impulse;
@@ -105,8 +117,7 @@ typedef struct sx_contact {
      * part_b) */
     int part_a, part_b;
     int body_a, body_b;
-    sx_vec2 normal;       /* world, from A to B, at collide time */
-    sx_vec2 local_normal; /* the normal in A's body frame */
+    sx_vec2 normal; /* world, from A to B, at collide time (kept for the step) */
     sx_real friction, restitution;
     int count;
     sx_contact_point points[2];
@@ -194,6 +205,9 @@ struct sx_world {
     sx_world_def def;
     sx_real linear_slop;
     sx_real margin; /* speculative distance */
+    /* the step the next collide looks ahead over (sx_world_begin_step; 0:
+     * none, the margin alone) */
+    sx_real step_dt;
 
     sx_body_sim *sims;
     sx_body_info *infos;
@@ -337,16 +351,25 @@ sx_status sx_broadphase_query(const sx_broadphase *bp, sx_aabb box, int **out, i
                               int *capacity);
 
 /* contact_solver.c */
+/* Once per collide: the effective masses and the block-solve matrices of
+ * the new contacts, from their anchors (fixed for the step). */
 void sx_contacts_prepare(sx_world *world);
+/* Start of a sub-step's solve: every active point's gap from the current
+ * positions, then the warm start. */
+void sx_contacts_warm_start(sx_world *world);
 /* The impact pass (restitution): false when its scratch could not grow (the
  * pass is then skipped). */
 bool sx_contacts_impacts(sx_world *world, sx_real h);
+/* One velocity pass over the contacts: soft (push-out of the overlap at the
+ * world's contact stiffness) when contact_hertz > 0, otherwise rigid. */
 void sx_contacts_solve(sx_world *world, sx_real h);
 /* Moves the bodies by the corrections of the last impact pass and clears
  * them (called by sx_world_integrate). */
 void sx_contacts_apply_impact_shifts(sx_world *world);
 void sx_contacts_free(sx_world *world);
-void sx_contacts_separate(sx_world *world, sx_real h);
+/* The relax passes of sx_world_separate: the gaps from the positions after
+ * integrate, then `passes` rigid passes. */
+void sx_contacts_relax(sx_world *world, sx_real h, int passes);
 
 /* sensor.c */
 /* Finds the sensor overlaps at the current positions and records the sensor

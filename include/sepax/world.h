@@ -6,16 +6,23 @@
  * stale and every call answers it with SX_ERR_STALE_HANDLE (or a zero value
  * for getters) instead of touching another object that reused the slot.
  *
- * One call of sx_world_step(world, dt) runs, for each of `sub_steps` sub-steps
- * of length h = dt / sub_steps, the public stages
+ * One call of sx_world_step(world, dt) runs the public stages
+ *
+ *   sx_world_begin_step(dt)   clears the events, sets the collide's look-ahead
+ *   sx_world_collide()        broadphase + narrowphase into the contact list
+ *
+ * once, then for each of `sub_steps` sub-steps of length h = dt / sub_steps
  *
  *   sx_world_apply_forces(h)  v += h (g * gravity_scale + F / m) + J / m
- *   sx_world_collide()        broadphase + narrowphase into the contact list
- *   sx_world_solve(h)         sequential impulses on velocities
+ *   sx_world_solve(h)         impacts, then impulses on velocities
  *   sx_world_integrate(h)     positions from the new velocities
- *   sx_world_separate(h)      positional correction of what still overlaps
+ *   sx_world_separate(h)      positional correction (or the relax pass)
  *
- * and then sx_world_clear_forces() and sx_world_update_sleep(dt). This is
+ * and then sx_world_clear_forces() and sx_world_update_sleep(dt). Contacts
+ * are found once per step; inside the sub-steps each contact point's
+ * separation follows the bodies' motion (its anchors turn with the bodies,
+ * the normal stays), so the sub-steps stay accurate without running the
+ * narrowphase again. This is
  * symplectic Euler (velocities first, then positions with the new
  * velocities). Callers such as the flecs systems may run the stages
  * themselves, in this order, with their own code in between.
@@ -89,14 +96,16 @@ sx_collider_id sx_collider_id_from_u64(uint64_t bits);
 typedef struct sx_world_def {
     /** Gravity in m/s^2. Default (0, -10). */
     sx_vec2 gravity;
-    /** Sub-steps per sx_world_step (>= 1). Default 4: each runs every stage
-     *  with h = dt / sub_steps, which stiffens stacks and shortens the
-     *  distance a fast body covers between two collision passes. */
+    /** Sub-steps per sx_world_step (>= 1). Default 4: each runs the solver
+     *  stages with h = dt / sub_steps on the step's contacts, which stiffens
+     *  stacks. */
     int sub_steps;
-    /** Sequential-impulse iterations per sub-step (>= 1). Default 4. */
+    /** Sequential-impulse passes of sx_world_solve per sub-step (>= 1).
+     *  Default 4. */
     int velocity_iterations;
-    /** Positional-correction iterations per sub-step (>= 0; 0 turns
-     *  sx_world_separate off). Default 2. */
+    /** Passes of sx_world_separate per sub-step (>= 0; 0 turns it off):
+     *  positional correction with rigid contacts (contact_hertz 0), relax
+     *  passes with soft ones. Default 1. */
     int position_iterations;
     /** Fraction of the overlap beyond the slop that one correction iteration
      *  removes, in (0, 1]. Default 0.2 (Baumgarte's classic value: larger
@@ -108,6 +117,17 @@ typedef struct sx_world_def {
      *  position_iterations); a deep overlap is removed over several steps
      *  instead of in one jump. Default 3 m/s (> 0). */
     sx_real max_correction_speed;
+    /** 0 (default): rigid contacts, overlap removed by the positional
+     *  correction of sx_world_separate (no kinetic energy added). > 0: soft
+     *  contacts, the frequency (Hz) of the stiff damped spring that pushes
+     *  overlapping bodies apart in sx_world_solve's passes, capped at a
+     *  quarter of the sub-step rate and doubled against static and kinematic
+     *  bodies; sx_world_separate then runs relax passes (the same passes
+     *  without the push-out, which take its velocity back). */
+    sx_real contact_hertz;
+    /** Damping ratio of that spring (>= 0; 1 is critical). Default 10: a
+     *  push-out that does not overshoot. */
+    sx_real contact_damping_ratio;
     /** Approach speed (m/s) below which contacts do not bounce: restitution
      *  only applies to impacts at this speed or faster (to round-off: an
      *  approach within 1e-4 of it, relative, counts as equal), so resting
@@ -167,9 +187,9 @@ sx_real sx_world_linear_slop(const sx_world *world);
 
 /* ---- the step and its stages -------------------------------------------- */
 
-/** Advances the world by dt seconds: clears the contact and sensor events,
- *  then for each sub-step runs apply_forces, collide, solve, integrate and
- *  separate with h = dt / sub_steps, then clear_forces and update_sleep(dt)
+/** Advances the world by dt seconds: begin_step(dt) and collide, then for
+ *  each sub-step apply_forces, solve, integrate and separate with h = dt /
+ *  sub_steps, then clear_forces and update_sleep(dt)
  *  (a dt so small that dt / sub_steps rounds to 0 is one sub-step of dt).
  *  Errors, with the world left
  *  untouched: SX_ERR_INVALID_ARG (NULL world, dt <= 0), SX_ERR_NONFINITE (dt
@@ -188,9 +208,11 @@ sx_status sx_world_step(sx_world *world, sx_real dt);
  *  SX_ERR_NONFINITE. */
 sx_status sx_world_apply_forces(sx_world *world, sx_real h);
 
-/** Stage 2: finds the touching (or within the speculative margin) collider
- *  pairs and builds their manifolds. Pairs are found by sort-and-sweep over
- *  the colliders' bounds; pairs without an awake dynamic body (static,
+/** Stage 2 (once per step, after sx_world_begin_step): finds the touching
+ *  (or within the speculative margin, grown by how far each collider can
+ *  move in the step) collider pairs and builds their manifolds, their
+ *  anchors and effective masses for the step's sub-steps. Pairs are found
+ *  by sort-and-sweep over the colliders' bounds; pairs without an awake dynamic body (static,
  *  kinematic or sleeping on both sides), colliders of one body, filtered
  *  pairs and sensors are skipped, and the contacts of sleeping bodies are
  *  carried over unchanged. Contacts persist across calls by collider pair,
@@ -201,8 +223,9 @@ sx_status sx_world_apply_forces(sx_world *world, sx_real h);
  * SX_ERR_NO_MEMORY. */
 sx_status sx_world_collide(sx_world *world);
 
-/** Stage 3: the contacts of the last collide, on velocities. Warm start,
- *  then the impact pass (restitution): the contacts approaching at the
+/** Stage 3: the contacts of the last collide, on velocities. Each point's
+ *  separation at the current positions (the anchors of collide time turned
+ *  with the bodies), warm start, then the impact pass (restitution): the contacts approaching at the
  *  restitution threshold or faster that close their gap within this
  *  sub-step are resolved one at a time in order of their time of impact,
  *  each at most once per sub-step, each approaching point leaving at e times
@@ -233,13 +256,16 @@ sx_status sx_world_solve(sx_world *world, sx_real h);
  *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE. */
 sx_status sx_world_integrate(sx_world *world, sx_real h);
 
-/** Stage 5: removes overlap left after integration by moving positions only
- *  (velocities are not touched, so no kinetic energy is ever added): for
- *  `position_iterations` passes, each contact point's current separation s
- *  (from the anchors stored by collide, moved with the bodies) gives the
- *  correction C = max(correction_factor (s + slop), -max_correction_speed h /
- *  position_iterations) when s < -slop, applied as a pseudo-impulse split by
- *  inverse mass and inverse inertia. We chose positional correction over a
+/** Stage 5: with rigid contacts (contact_hertz 0), removes overlap left
+ *  after integration by moving positions only (velocities are not touched,
+ *  so no kinetic energy is ever added): for `position_iterations` passes,
+ *  each contact point's current separation s (from the anchors stored by
+ *  collide, turned with the bodies, along the normal of collide time) gives
+ *  the correction C = max(correction_factor (s + slop),
+ *  -max_correction_speed h / position_iterations) when s < -slop, applied
+ *  as a pseudo-impulse split by inverse mass and inverse inertia. With soft
+ *  contacts, `position_iterations` relax passes instead: the velocity
+ *  passes of sx_world_solve without the push-out. We chose positional correction over a
  *  Baumgarte velocity bias because a bias turns overlap into velocity, which
  *  comes out as kinetic energy (bodies created overlapping fly apart); split
  *  impulses would do the same work with a second set of velocities.
@@ -355,6 +381,14 @@ sx_sensor_events sx_world_get_sensor_events(const sx_world *world);
 /** Forgets the recorded contact and sensor events. SX_ERR_INVALID_ARG for
  *  NULL. */
 sx_status sx_world_clear_events(sx_world *world);
+
+/** The first stage of a step of dt seconds: clears the contact and sensor
+ *  events and tells the next sx_world_collide how far ahead it looks (each
+ *  collider's bounds and speculative margin grow by how far its points can
+ *  move in dt at their current velocities, so a fast body's contacts exist
+ *  before it reaches them). sx_world_step calls it first. Errors:
+ *  SX_ERR_INVALID_ARG (NULL world, dt <= 0), SX_ERR_NONFINITE. */
+sx_status sx_world_begin_step(sx_world *world, sx_real dt);
 
 /* ---- bodies ------------------------------------------------------------- */
 
