@@ -253,6 +253,7 @@ sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *ou
         out->generation = 0;
     }
     if (world == NULL || def == NULL || out == NULL) return SX_ERR_INVALID_ARG;
+    if (sx_world_locked(world)) return SX_ERR_LOCKED;
     if (def->type != SX_BODY_STATIC && def->type != SX_BODY_KINEMATIC &&
         def->type != SX_BODY_DYNAMIC) {
         return SX_ERR_INVALID_ARG;
@@ -374,6 +375,7 @@ sx_status sx_destroy_body(sx_world *world, sx_body_id body) {
     int slot, c, next;
     sx_body_info *info;
     if (world == NULL) return SX_ERR_INVALID_ARG;
+    if (sx_world_locked(world)) return SX_ERR_LOCKED;
     slot = sx_body_slot(world, body);
     if (slot < 0) return SX_ERR_STALE_HANDLE;
     info = &world->infos[slot];
@@ -522,6 +524,7 @@ static sx_status sx_attach_prologue(sx_world *world, sx_body_id body, const sx_c
         out->generation = 0;
     }
     if (world == NULL || def == NULL) return SX_ERR_INVALID_ARG;
+    if (sx_world_locked(world)) return SX_ERR_LOCKED;
     *bslot = sx_body_slot(world, body);
     if (*bslot < 0) return SX_ERR_STALE_HANDLE;
     return SX_OK;
@@ -637,6 +640,7 @@ sx_status sx_collider_get_part(const sx_world *world, sx_collider_id collider, i
 sx_status sx_destroy_collider(sx_world *world, sx_collider_id collider) {
     int slot, bslot, *link;
     if (world == NULL) return SX_ERR_INVALID_ARG;
+    if (sx_world_locked(world)) return SX_ERR_LOCKED;
     slot = sx_collider_slot(world, collider);
     if (slot < 0) return SX_ERR_STALE_HANDLE;
     bslot = world->colliders[slot].body;

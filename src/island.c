@@ -69,6 +69,7 @@ sx_status sx_world_update_sleep(sx_world *world, sx_real dt) {
     void *p;
     bool ok;
     if (world == NULL) return SX_ERR_INVALID_ARG;
+    if (sx_world_locked(world)) return SX_ERR_LOCKED;
     if (!sx_is_finite(dt)) return SX_ERR_NONFINITE;
     if (!(dt > SX_R(0.0))) return SX_ERR_INVALID_ARG;
     if (!world->def.enable_sleep) return SX_OK;

@@ -82,6 +82,11 @@ sx_world *sx_world_create(const sx_world_def *def) {
 void sx_world_destroy(sx_world *world) {
     int i;
     if (world == NULL) return;
+    if (sx_world_locked(world)) {
+        /* the walk that called back is still reading it */
+        world->destroy_pending = true;
+        return;
+    }
     for (i = 0; i < world->collider_slots; ++i) {
         sx_collider *c = &world->colliders[i];
         if (c->alive && c->parts != NULL) {
@@ -122,6 +127,8 @@ sx_status sx_world_set_gravity(sx_world *world, sx_vec2 gravity) {
     return SX_OK;
 }
 
+bool sx_world_is_locked(const sx_world *world) { return world != NULL && sx_world_locked(world); }
+
 sx_vec2 sx_world_get_gravity(const sx_world *world) {
     return world == NULL ? sx_v2_zero() : world->def.gravity;
 }
@@ -135,6 +142,7 @@ sx_real sx_world_linear_slop(const sx_world *world) {
 /* The answer every stage gives to a bad world or time step. */
 static sx_status sx_check_step(const sx_world *world, sx_real h) {
     if (world == NULL) return SX_ERR_INVALID_ARG;
+    if (sx_world_locked(world)) return SX_ERR_LOCKED;
     if (!sx_is_finite(h)) return SX_ERR_NONFINITE;
     if (!(h > SX_R(0.0))) return SX_ERR_INVALID_ARG;
     return SX_OK;
@@ -318,6 +326,7 @@ sx_status sx_world_clear_forces(sx_world *world) {
     int i;
     sx_status s;
     if (world == NULL) return SX_ERR_INVALID_ARG;
+    if (sx_world_locked(world)) return SX_ERR_LOCKED;
     /* forces wake their body, so only the active ones hold any */
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
@@ -641,6 +650,7 @@ sx_status sx_world_collide(sx_world *world) {
     int i, old_index = 0, cap;
     sx_status s;
     if (world == NULL) return SX_ERR_INVALID_ARG;
+    if (sx_world_locked(world)) return SX_ERR_LOCKED;
 
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;

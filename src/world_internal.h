@@ -257,7 +257,18 @@ struct sx_world {
     int *island_parent; /* union-find scratch, per body slot */
     sx_real *island_time;
     int parent_capacity, time_capacity;
+
+    /* Walks that call user callbacks (queries with a callback, debug draw)
+     * under way, nested ones included: while non-zero, the calls that would
+     * change what a walk visits answer SX_ERR_LOCKED. */
+    int lock_depth;
+    /* sx_world_destroy was called from a callback: the outermost walk
+     * destroys the world when it returns */
+    bool destroy_pending;
 };
+
+/* True while a callback of the world runs (see lock_depth). */
+static inline bool sx_world_locked(const sx_world *world) { return world->lock_depth > 0; }
 
 /* True when the solver must work on a contact: at least one of its bodies
  * is dynamic and awake. */
