@@ -20,19 +20,6 @@ static sx_world *make_world(void) {
     return w;
 }
 
-static sx_body_id make_body(sx_world *w, sx_body_type type, sx_vec2 p, const sx_shape *shape,
-                            sx_collider_id *collider) {
-    sx_body_def bd = sx_default_body_def();
-    sx_collider_def cd = sx_default_collider_def();
-    sx_body_id id;
-    bd.type = type;
-    bd.position = p;
-    assert_int_equal(sx_create_body(w, &bd, &id), SX_OK);
-    cd.shape = *shape;
-    assert_int_equal(sx_body_add_collider(w, id, &cd, collider), SX_OK);
-    return id;
-}
-
 static int count_colliders(const sx_world *w) {
     sx_aabb all = sx_aabb_make(sx_v2(SX_R(-1e4), SX_R(-1e4)), sx_v2(SX_R(1e4), SX_R(1e4)));
     return sx_world_query_aabb(w, all, NULL, NULL);
@@ -83,7 +70,7 @@ static void draw_callback_adding_colliders_is_refused_and_reads_nothing_freed(vo
     /* 16 colliders fill the collider array's first capacity: one more
      * would move it while the draw loop holds a pointer into it */
     for (i = 0; i < 16; ++i)
-        a.body = make_body(w, SX_BODY_STATIC, sx_v2((sx_real)(2 * i), SX_R(0.0)), &box, NULL);
+        a.body = sx_test_body(w, SX_BODY_STATIC, sx_v2((sx_real)(2 * i), SX_R(0.0)), box, NULL);
     a.w = w;
     memset(&dd, 0, sizeof(dd));
     dd.draw_shape = add_on_draw;
@@ -195,7 +182,7 @@ static void query_callback_creating_colliders_ends_and_sees_none_of_them(void **
     int i;
     (void)state;
     for (i = 0; i < 3; ++i)
-        make_body(w, SX_BODY_STATIC, sx_v2((sx_real)(3 * i), SX_R(0.0)), &box, NULL);
+        sx_test_body(w, SX_BODY_STATIC, sx_v2((sx_real)(3 * i), SX_R(0.0)), box, NULL);
     memset(&b, 0, sizeof(b));
     b.w = w;
     assert_int_equal(sx_world_query_aabb(w, area, breed_on_hit, &b), 3);
@@ -326,9 +313,9 @@ static void every_callback_refuses_structure_and_the_step_and_allows_the_rest(vo
     (void)state;
     memset(&p, 0, sizeof(p));
     p.w = w;
-    p.ground = make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-0.5)), &ground, NULL);
+    p.ground = sx_test_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-0.5)), ground, NULL);
     p.dynamic =
-        make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.5)), &box, &p.dynamic_collider);
+        sx_test_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.5)), box, &p.dynamic_collider);
     for (i = 0; i < 5; ++i)
         assert_int_equal(sx_world_step(w, DT), SX_OK);
     assert_true(sx_world_contact_count(w) > 0);
@@ -408,9 +395,9 @@ static sx_world *five_boxes(void) {
     sx_world *w = make_world();
     sx_shape ground = sx_box_shape(SX_R(20.0), SX_R(0.5)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
     int i;
-    make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-0.5)), &ground, NULL);
+    sx_test_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-0.5)), ground, NULL);
     for (i = 0; i < 4; ++i)
-        make_body(w, SX_BODY_DYNAMIC, sx_v2((sx_real)(2 * i), SX_R(0.5)), &box, NULL);
+        sx_test_body(w, SX_BODY_DYNAMIC, sx_v2((sx_real)(2 * i), SX_R(0.5)), box, NULL);
     for (i = 0; i < 3; ++i)
         assert_int_equal(sx_world_step(w, DT), SX_OK);
     return w;
