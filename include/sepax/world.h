@@ -178,8 +178,9 @@ void sx_world_destroy(sx_world *world);
  *  for NULL. */
 bool sx_world_is_locked(const sx_world *world);
 
-/** Sets the gravity and wakes every sleeping body. SX_ERR_INVALID_ARG (NULL
- *  world), SX_ERR_NONFINITE. */
+/** Sets the gravity and wakes every sleeping body (one pass over the body
+ *  slots; each island wakes at the cost of its own bodies).
+ *  SX_ERR_INVALID_ARG (NULL world), SX_ERR_NONFINITE. */
 sx_status sx_world_set_gravity(sx_world *world, sx_vec2 gravity);
 /** The gravity (zero for a NULL world). */
 sx_vec2 sx_world_get_gravity(const sx_world *world);
@@ -422,8 +423,12 @@ sx_body_def sx_default_body_def(void);
  *  kept). */
 sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *out);
 
-/** Destroys a body, its colliders and its contacts. SX_ERR_INVALID_ARG (NULL
- *  world), SX_ERR_LOCKED (from a callback), SX_ERR_STALE_HANDLE. */
+/** Destroys a body, its colliders and its contacts, and wakes its island and
+ *  the bodies it touched. Cost: what it touches (its island, its contacts);
+ *  the first destruction, teleport or retype after a collide also indexes
+ *  the contacts by body, in one pass that the ones after it share.
+ *  SX_ERR_INVALID_ARG (NULL world), SX_ERR_LOCKED (from a callback),
+ *  SX_ERR_STALE_HANDLE. */
 sx_status sx_destroy_body(sx_world *world, sx_body_id body);
 
 /** True if the handle names a live body of this world. */
