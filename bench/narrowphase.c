@@ -29,6 +29,7 @@
 #include <sys/stat.h>
 #include <time.h>
 
+#include "lifecycle.h"
 #include "pairs.h"
 #include "reference.h"
 #include "scenes.h"
@@ -624,9 +625,11 @@ int main(int argc, char **argv) {
      * --scenes runs them alone, --no-scenes skips them, --quick shortens
      * the large ones, --full runs docs/scenes.md's lengths. These flags are
      * taken out before parse() sees argv. */
-    int scenes = 1, scenes_only = 0, scene_level = 0, nargs = 1;
+    int scenes = 1, scenes_only = 0, scene_level = 0, nargs = 1, lifecycle_only = 0;
     for (int i = 1; i < argc; ++i) {
-        if (strcmp(argv[i], "--scenes") == 0)
+        if (strcmp(argv[i], "--lifecycle") == 0)
+            lifecycle_only = 1; /* bench/lifecycle.c alone */
+        else if (strcmp(argv[i], "--scenes") == 0)
             scenes_only = 1;
         else if (strcmp(argv[i], "--no-scenes") == 0)
             scenes = 0;
@@ -639,13 +642,15 @@ int main(int argc, char **argv) {
     }
     argc = nargs;
     if (argc > 1 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0))
-        printf("world scenes: [--scenes] only the scenes, [--no-scenes] only the narrowphase,\n"
+        printf("[--lifecycle] only the wake/destroy figures (bench/lifecycle.c)\n"
+               "world scenes: [--scenes] only the scenes, [--no-scenes] only the narrowphase,\n"
                "  [--quick] fewer steps in the large scenes, [--full] docs/scenes.md's full lengths\n");
     if (!parse(argc, argv, &opt)) return 2;
     if (!make_dirs(opt.out_dir)) {
         fprintf(stderr, "sepax_bench: cannot create %s: %s\n", opt.out_dir, strerror(errno));
         return 1;
     }
+    if (lifecycle_only) return bench_lifecycle_run(opt.out_dir, opt.smoke) ? 1 : 0;
     if (scenes_only) return bench_scenes_run(opt.out_dir, opt.smoke, scene_level) ? 1 : 0;
     char csv_path[1100];
     snprintf(csv_path, sizeof csv_path, "%s/narrowphase.csv", opt.out_dir);
@@ -843,6 +848,7 @@ int main(int argc, char **argv) {
     free(pairs);
     free(sp);
     if (failures) fprintf(stderr, "sepax_bench: %d pair types failed\n", failures);
+    failures += bench_lifecycle_run(opt.out_dir, opt.smoke);
     if (scenes) failures += bench_scenes_run(opt.out_dir, opt.smoke, scene_level);
     return failures ? 1 : 0;
 }

@@ -70,6 +70,11 @@ typedef struct sx_ecs_link {
     sx_real angle, angular_velocity;
 } sx_ecs_link;
 
+typedef struct sx_ecs_doomed {
+    uint64_t id; /* sx_body_id_to_u64 or sx_collider_id_to_u64 */
+    bool collider;
+} sx_ecs_doomed;
+
 typedef struct sx_ecs_state {
     sx_world *world;
     /* entity -> link, indexed by the entity's index (its low 32 bits, dense
@@ -83,6 +88,11 @@ typedef struct sx_ecs_state {
     SxContact *contacts, *previous;
     int32_t contact_count, previous_count;
     int32_t contact_cap, previous_cap;
+    /* bodies and colliders whose entity died while the world was locked (a
+     * query or draw callback of it deleted the entity): destroyed at the
+     * next step */
+    sx_ecs_doomed *doomed;
+    int32_t doomed_count, doomed_cap;
 } sx_ecs_state;
 
 /* ---- links ------------------------------------------------------------- */
@@ -216,13 +226,32 @@ static sx_ecs_link *sx_ecs_link_new(sx_ecs_state *st, ecs_entity_t e) {
     return link;
 }
 
+/* Destroys a body (collider false) or collider now, or at the next step if
+ * the world is locked; out of memory, it stays in the world. */
+static void sx_ecs_destroy(sx_ecs_state *st, uint64_t id, bool collider) {
+    sx_status s = collider ? sx_destroy_collider(st->world, sx_collider_id_from_u64(id))
+                           : sx_destroy_body(st->world, sx_body_id_from_u64(id));
+    if (s != SX_ERR_LOCKED) return;
+    if (st->doomed_count == st->doomed_cap) {
+        int32_t cap = st->doomed_cap ? 2 * st->doomed_cap : 16;
+        sx_ecs_doomed *grown =
+            (sx_ecs_doomed *)realloc(st->doomed, (size_t)cap * sizeof(sx_ecs_doomed));
+        if (grown == NULL) return;
+        st->doomed = grown;
+        st->doomed_cap = cap;
+    }
+    st->doomed[st->doomed_count].id = id;
+    st->doomed[st->doomed_count].collider = collider;
+    st->doomed_count++;
+}
+
 static void sx_ecs_unlink(sx_ecs_state *st, ecs_entity_t e) {
     sx_ecs_link *link = sx_ecs_find(st, e);
     if (link == NULL) return;
     st->links[(uint32_t)e] = NULL;
     if (sx_body_is_valid(st->world, link->body)) {
         if ((int32_t)link->body.index < st->body_entity_cap) st->body_entity[link->body.index] = 0;
-        sx_destroy_body(st->world, link->body);
+        sx_ecs_destroy(st, sx_body_id_to_u64(link->body), false);
     }
     free(link);
 }
@@ -251,7 +280,7 @@ static void sx_ecs_collider_removed(ecs_iter_t *it) {
         if (!ecs_has(it->world, e, SxBody)) {
             sx_ecs_unlink(st, e);
         } else if (link->has_collider) {
-            sx_destroy_collider(st->world, link->collider);
+            sx_ecs_destroy(st, sx_collider_id_to_u64(link->collider), true);
             link->has_collider = false;
         }
     }
@@ -336,6 +365,7 @@ static void sx_ecs_state_free(void *ctx) {
     free(st->body_entity);
     free(st->contacts);
     free(st->previous);
+    free(st->doomed);
     free(st);
 }
 
@@ -442,7 +472,19 @@ static sx_real sx_ecs_h(const ecs_iter_t *it) {
 }
 
 static void sx_ecs_begin_step(ecs_iter_t *it) {
+    sx_ecs_state *st = (sx_ecs_state *)it->ctx;
     SxPhysicsWorld *pw = ecs_field(it, SxPhysicsWorld, 0);
+    int32_t i;
+    /* what died in a callback of the locked world (stale handles, if the
+     * body went first or the world was rebuilt, are answered harmlessly) */
+    for (i = 0; i < st->doomed_count; ++i) {
+        if (st->doomed[i].collider) {
+            sx_destroy_collider(st->world, sx_collider_id_from_u64(st->doomed[i].id));
+        } else {
+            sx_destroy_body(st->world, sx_body_id_from_u64(st->doomed[i].id));
+        }
+    }
+    st->doomed_count = 0;
     sx_world_begin_step(pw->world, sx_ecs_h(it));
 }
 

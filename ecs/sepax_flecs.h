@@ -226,7 +226,10 @@ typedef struct SxContacts {
 
 /** Singleton: the module's world, for queries and debug drawing
  *  (sx_world_draw, sx_world_cast_ray, ...). Do not create or destroy bodies
- *  in it: the components own them. */
+ *  in it: the components own them. An entity deleted (or stripped of its
+ *  components) from a query or draw callback of this world, which is then
+ *  locked (sx_world_is_locked), keeps its body there until the next fixed
+ *  step removes it. */
 typedef struct SxPhysicsWorld {
     sx_world *world;
 } SxPhysicsWorld;

@@ -25,6 +25,7 @@ const char *sx_status_str(sx_status status) {
     case SX_ERR_CAPACITY: return "capacity exceeded";
     case SX_ERR_NO_MEMORY: return "out of memory";
     case SX_ERR_STALE_HANDLE: return "stale or invalid handle";
+    case SX_ERR_LOCKED: return "world locked: called from one of its callbacks";
     case SX_STATUS_COUNT: break;
     }
     return "unknown status";

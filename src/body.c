@@ -253,6 +253,7 @@ sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *ou
         out->generation = 0;
     }
     if (world == NULL || def == NULL || out == NULL) return SX_ERR_INVALID_ARG;
+    if (sx_world_locked(world)) return SX_ERR_LOCKED;
     if (def->type != SX_BODY_STATIC && def->type != SX_BODY_KINEMATIC &&
         def->type != SX_BODY_DYNAMIC) {
         return SX_ERR_INVALID_ARG;
@@ -294,6 +295,7 @@ sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *ou
     info->first_collider = -1;
     info->next_free = -1;
     info->island = -1;
+    info->island_next = -1;
     info->sleep_time = SX_R(0.0);
     sim->awake = true;
     sim->xf = sx_xform_make(def->position, def->angle);
@@ -311,42 +313,6 @@ sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *ou
     out->index = (uint32_t)slot;
     out->generation = generation;
     return SX_OK;
-}
-
-/* Drops the contacts of a collider from a list, waking their bodies. */
-static int sx_remove_contacts_from(sx_world *world, sx_contact *list, int count, int collider) {
-    int i, n = 0;
-    for (i = 0; i < count; ++i) {
-        const sx_contact *c = &list[i];
-        if (c->collider_a == collider || c->collider_b == collider) {
-            /* whatever rested on the collider must be able to fall */
-            sx_wake_body(world, c->body_a);
-            sx_wake_body(world, c->body_b);
-            continue;
-        }
-        list[n++] = *c;
-    }
-    return n;
-}
-
-void sx_world_remove_contacts_of(sx_world *world, int collider) {
-    world->contact_count =
-        sx_remove_contacts_from(world, world->contacts, world->contact_count, collider);
-    world->frozen_count =
-        sx_remove_contacts_from(world, world->frozen, world->frozen_count, collider);
-}
-
-/* Wakes a body and every body it has a contact with (a static body moved
- * from under a sleeping pile must not leave the pile floating). */
-static void sx_wake_touching(sx_world *world, int slot) {
-    int i;
-    sx_wake_body(world, slot);
-    for (i = 0; i < world->contact_count + world->frozen_count; ++i) {
-        const sx_contact *c = i < world->contact_count ? &world->contacts[i]
-                                                       : &world->frozen[i - world->contact_count];
-        if (c->body_a == slot) sx_wake_body(world, c->body_b);
-        if (c->body_b == slot) sx_wake_body(world, c->body_a);
-    }
 }
 
 /* Unlinks nothing: frees the collider slot (the caller fixes the list). */
@@ -374,6 +340,7 @@ sx_status sx_destroy_body(sx_world *world, sx_body_id body) {
     int slot, c, next;
     sx_body_info *info;
     if (world == NULL) return SX_ERR_INVALID_ARG;
+    if (sx_world_locked(world)) return SX_ERR_LOCKED;
     slot = sx_body_slot(world, body);
     if (slot < 0) return SX_ERR_STALE_HANDLE;
     info = &world->infos[slot];
@@ -523,6 +490,7 @@ static sx_status sx_attach_prologue(sx_world *world, sx_body_id body, const sx_c
         out->generation = 0;
     }
     if (world == NULL || def == NULL) return SX_ERR_INVALID_ARG;
+    if (sx_world_locked(world)) return SX_ERR_LOCKED;
     *bslot = sx_body_slot(world, body);
     if (*bslot < 0) return SX_ERR_STALE_HANDLE;
     return SX_OK;
@@ -638,6 +606,7 @@ sx_status sx_collider_get_part(const sx_world *world, sx_collider_id collider, i
 sx_status sx_destroy_collider(sx_world *world, sx_collider_id collider) {
     int slot, bslot, *link;
     if (world == NULL) return SX_ERR_INVALID_ARG;
+    if (sx_world_locked(world)) return SX_ERR_LOCKED;
     slot = sx_collider_slot(world, collider);
     if (slot < 0) return SX_ERR_STALE_HANDLE;
     bslot = world->colliders[slot].body;

@@ -36,19 +36,24 @@ static void sx_wake_one(sx_world *world, int slot) {
     world->sets_dirty = true;
     world->infos[slot].sleep_time = SX_R(0.0);
     world->infos[slot].island = -1;
+    world->infos[slot].island_next = -1;
 }
 
 void sx_wake_body(sx_world *world, int slot) {
-    int island = world->infos[slot].island, i;
+    int island = world->infos[slot].island, i, next;
     if (world->sims[slot].awake) return;
     if (island < 0) {
         sx_wake_one(world, slot);
         return;
     }
-    for (i = 0; i < world->body_slots; ++i) {
-        if (world->infos[i].alive && !world->sims[i].awake && world->infos[i].island == island) {
-            sx_wake_one(world, i);
-        }
+    /* Every member of a sleeping island sleeps and lives until the island
+     * wakes whole (destroying, retyping or moving a member wakes it first),
+     * so the chain from the root is the island. */
+    for (i = island; i >= 0; i = next) {
+        SX_ASSERT(world->infos[i].alive && !world->sims[i].awake &&
+                  world->infos[i].island == island);
+        next = world->infos[i].island_next;
+        sx_wake_one(world, i);
     }
 }
 
@@ -69,6 +74,7 @@ sx_status sx_world_update_sleep(sx_world *world, sx_real dt) {
     void *p;
     bool ok;
     if (world == NULL) return SX_ERR_INVALID_ARG;
+    if (sx_world_locked(world)) return SX_ERR_LOCKED;
     if (!sx_is_finite(dt)) return SX_ERR_NONFINITE;
     if (!(dt > SX_R(0.0))) return SX_ERR_INVALID_ARG;
     if (!world->def.enable_sleep) return SX_OK;
@@ -87,6 +93,7 @@ sx_status sx_world_update_sleep(sx_world *world, sx_real dt) {
 
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
+    sx_world_purge_contacts(world);
     /* only awake bodies take part: a sleeping one costs nothing */
     for (ak = 0; ak < world->active_body_count; ++ak) {
         i = world->active_bodies[ak];
@@ -145,7 +152,19 @@ sx_status sx_world_update_sleep(sx_world *world, sx_real dt) {
         b->v = sx_v2_zero();
         b->w = SX_R(0.0);
         world->infos[i].island = r;
+        world->infos[i].island_next = -1;
         world->sets_dirty = true;
+    }
+    /* Chain each new sleeping island's members behind its root (the root is
+     * a member: the union-find ran over these very bodies). The active
+     * bodies were all awake, so those asleep now fell asleep just above. */
+    for (ak = 0; ak < world->active_body_count; ++ak) {
+        int r;
+        i = world->active_bodies[ak];
+        r = world->infos[i].island;
+        if (world->sims[i].awake || r == i) continue;
+        world->infos[i].island_next = world->infos[r].island_next;
+        world->infos[r].island_next = i;
     }
     return SX_OK;
 }

@@ -138,6 +138,11 @@ sx_world *sx_world_create(const sx_world_def *def) {
 void sx_world_destroy(sx_world *world) {
     int i;
     if (world == NULL) return;
+    if (sx_world_locked(world)) {
+        /* the walk that called back is still reading it */
+        world->destroy_pending = true;
+        return;
+    }
     for (i = 0; i < world->collider_slots; ++i) {
         sx_collider *c = &world->colliders[i];
         if (c->alive && c->parts != NULL) {
@@ -161,6 +166,9 @@ void sx_world_destroy(sx_world *world) {
     sx_free(world->begin_events, (size_t)world->begin_capacity * sizeof(sx_contact_event));
     sx_free(world->end_events, (size_t)world->end_capacity * sizeof(sx_contact_event));
     sx_sensors_free(world);
+    sx_free(world->by_body_head, (size_t)world->by_body_head_capacity * sizeof(int));
+    sx_free(world->by_body_next, (size_t)world->by_body_next_capacity * sizeof(int));
+    sx_free(world->by_body_stamp, (size_t)world->by_body_stamp_capacity * sizeof(uint32_t));
     sx_free(world->island_parent, (size_t)world->parent_capacity * sizeof(int));
     sx_free(world->island_time, (size_t)world->time_capacity * sizeof(sx_real));
     sx_free(world, sizeof(sx_world));
@@ -178,6 +186,8 @@ sx_status sx_world_set_gravity(sx_world *world, sx_vec2 gravity) {
     return SX_OK;
 }
 
+bool sx_world_is_locked(const sx_world *world) { return world != NULL && sx_world_locked(world); }
+
 sx_vec2 sx_world_get_gravity(const sx_world *world) {
     return world == NULL ? sx_v2_zero() : world->def.gravity;
 }
@@ -191,6 +201,7 @@ sx_real sx_world_linear_slop(const sx_world *world) {
 /* The answer every stage gives to a bad world or time step. */
 static sx_status sx_check_step(const sx_world *world, sx_real h) {
     if (world == NULL) return SX_ERR_INVALID_ARG;
+    if (sx_world_locked(world)) return SX_ERR_LOCKED;
     if (!sx_is_finite(h)) return SX_ERR_NONFINITE;
     if (!(h > SX_R(0.0))) return SX_ERR_INVALID_ARG;
     return SX_OK;
@@ -388,6 +399,7 @@ sx_status sx_world_clear_forces(sx_world *world) {
     int i;
     sx_status s;
     if (world == NULL) return SX_ERR_INVALID_ARG;
+    if (sx_world_locked(world)) return SX_ERR_LOCKED;
     /* forces wake their body, so only the active ones hold any */
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
@@ -581,17 +593,19 @@ static bool sx_has_key(const sx_contact *list, int count, uint64_t key) {
 }
 
 /* Moves the frozen contacts that have an awake dynamic body again into the
- * current list (kept sorted by key), marked `thawed` when asked. A pair the
- * list already holds keeps the list's contact. */
+ * current list (kept sorted by key), marked `thawed` when asked, if a body
+ * woke since the last call; drops the contacts removed since then. A pair
+ * the list already holds keeps the list's contact. */
 static sx_status sx_thaw_contacts(sx_world *world, bool mark) {
     int i, j, out, n = 0, k = 0;
     void *p;
-    bool ok;
+    bool ok, thaw = world->thaw_pending;
     world->thaw_pending = false;
     world->thaw_count = 0;
     for (i = 0; i < world->frozen_count; ++i) {
         const sx_contact *c = &world->frozen[i];
-        if (!sx_contact_is_active(world, c)) {
+        if (c->count == 0) continue; /* a tombstone (body_contacts.c) */
+        if (!thaw || !sx_contact_is_active(world, c)) {
             world->frozen[n++] = *c;
             continue;
         }
@@ -602,6 +616,7 @@ static sx_status sx_thaw_contacts(sx_world *world, bool mark) {
         world->thaw[world->thaw_count - 1].thawed = mark;
     }
     world->frozen_count = n;
+    world->frozen_dead = 0;
     k = world->thaw_count;
     if (k == 0) return SX_OK;
     /* (key, part_a, part_b) is unique: the order is total, the same on every run */
@@ -723,6 +738,10 @@ sx_status sx_world_collide(sx_world *world) {
     int i, old_index = 0, cap;
     sx_status s;
     if (world == NULL) return SX_ERR_INVALID_ARG;
+    if (sx_world_locked(world)) return SX_ERR_LOCKED;
+    /* the lists move from here on: the per-body chains go */
+    sx_world_purge_contacts(world);
+    world->by_body_valid = false;
 
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
@@ -736,7 +755,7 @@ sx_status sx_world_collide(sx_world *world) {
     /* Contacts of sleeping bodies leave the list for the frozen store (the
      * pile keeps its contacts, reports no end events, and warm-starts when it
      * wakes); those of bodies woken since the last collide come back. */
-    if (world->thaw_pending) {
+    if (world->thaw_pending || world->frozen_dead > 0) {
         s = sx_thaw_contacts(world, false);
         if (s != SX_OK) return s;
     }
@@ -792,19 +811,18 @@ sx_status sx_world_collide(sx_world *world) {
 }
 
 int sx_world_contact_count(const sx_world *world) {
-    return world == NULL ? 0 : world->contact_count + world->frozen_count;
+    if (world == NULL) return 0;
+    return world->contact_count + world->frozen_count - world->contact_dead - world->frozen_dead;
 }
 
 sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data *out) {
     const sx_contact *c;
     int k;
-    if (world == NULL || out == NULL || index < 0 ||
-        index >= world->contact_count + world->frozen_count) {
+    if (world == NULL || out == NULL || index < 0 || index >= sx_world_contact_count(world)) {
         return SX_ERR_INVALID_ARG;
     }
     /* the step's contacts first, then those of sleeping bodies */
-    c = index < world->contact_count ? &world->contacts[index]
-                                     : &world->frozen[index - world->contact_count];
+    c = sx_world_live_contact(world, index);
     memset(out, 0, sizeof(*out));
     out->collider_a.index = (uint32_t)c->collider_a;
     out->collider_a.generation = world->colliders[c->collider_a].generation;
@@ -838,6 +856,7 @@ sx_status sx_world_solve(sx_world *world, sx_real h) {
     /* the impact pass works on the active bodies */
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
+    sx_world_purge_contacts(world);
     sx_limit_speeds(world, h);
     sx_contacts_warm_start(world);
     /* restitution first, impact by impact in time order (contact_solver.c
@@ -879,6 +898,7 @@ sx_status sx_world_separate(sx_world *world, sx_real h) {
     if (s != SX_OK) return s;
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
+    sx_world_purge_contacts(world);
     sx_contacts_relax(world, h, world->def.position_iterations);
     sx_limit_speeds(world, h);
     return SX_OK;

@@ -54,6 +54,9 @@ typedef struct sx_body_info {
     int next_free;      /* free-list link while dead */
     sx_real sleep_time; /* seconds spent below the sleep speeds */
     int island;         /* while asleep: the island it fell asleep with */
+    /* while asleep in an island: its next member (-1 at the end); the chain
+     * starts at the island's root, so a wake touches the island only */
+    int island_next;
 } sx_body_info;
 
 typedef struct sx_collider {
@@ -228,6 +231,19 @@ struct sx_world {
     sx_contact *frozen, *thaw;
     int frozen_count, frozen_capacity, thaw_count, thaw_capacity;
     bool thaw_pending;
+    /* Contacts removed since the last collide (a body or collider
+     * destroyed): they stay in place with count 0 (body_contacts.c) */
+    int contact_dead, frozen_dead;
+    /* Which contacts each body has (body_contacts.c): per body slot the
+     * first entry of its chain, valid while its stamp equals the epoch; per
+     * entry 2 p + side (p: position in contacts, then in frozen) the next
+     * entry of the same body. Built on demand; by_body_valid goes false
+     * when a list moves. */
+    int *by_body_head, *by_body_next;
+    uint32_t *by_body_stamp;
+    int by_body_head_capacity, by_body_next_capacity, by_body_stamp_capacity;
+    uint32_t by_body_epoch;
+    bool by_body_valid;
 
     /* The bodies the step moves (alive, enabled, and dynamic and awake, or
      * kinematic) and the colliding colliders of the bodies that are not
@@ -271,7 +287,18 @@ struct sx_world {
     int *island_parent; /* union-find scratch, per body slot */
     sx_real *island_time;
     int parent_capacity, time_capacity;
+
+    /* Walks that call user callbacks (queries with a callback, debug draw)
+     * under way, nested ones included: while non-zero, the calls that would
+     * change what a walk visits answer SX_ERR_LOCKED. */
+    int lock_depth;
+    /* sx_world_destroy was called from a callback: the outermost walk
+     * destroys the world when it returns */
+    bool destroy_pending;
 };
+
+/* True while a callback of the world runs (see lock_depth). */
+static inline bool sx_world_locked(const sx_world *world) { return world->lock_depth > 0; }
 
 /* True when the solver must work on a contact: at least one of its bodies
  * is dynamic and awake. */
@@ -389,14 +416,24 @@ void sx_wake_body(sx_world *world, int slot);
 /* body.c */
 /* Recomputes the mass properties of a body from its colliders. */
 void sx_body_update_mass(sx_world *world, int slot);
-/* Removes every contact involving the collider slot and wakes the bodies
- * of those contacts. */
-void sx_world_remove_contacts_of(sx_world *world, int collider);
 /* Recomputes xf.p from the centre of mass and rotation. */
 void sx_body_sync_origin(sx_body_sim *sim);
 /* The slot of a live body or collider, or -1 (NULL world, null or stale
  * handle). */
 int sx_body_slot(const sx_world *world, sx_body_id id);
 int sx_collider_slot(const sx_world *world, sx_collider_id id);
+
+/* body_contacts.c */
+/* Removes every contact involving the collider slot (tombstones until the
+ * next collide) and wakes the bodies of those contacts. */
+void sx_world_remove_contacts_of(sx_world *world, int collider);
+/* Wakes a body and every body it has a contact with (a static body moved
+ * from under a sleeping pile must not leave the pile floating). */
+void sx_wake_touching(sx_world *world, int slot);
+/* Drops the tombstones of the step's contact list (keeping its order). */
+void sx_world_purge_contacts(sx_world *world);
+/* Contact `index` of the live contacts (the step's, then the frozen ones),
+ * tombstones skipped; index must be below their number. */
+const sx_contact *sx_world_live_contact(const sx_world *world, int index);
 
 #endif /* SEPAX_WORLD_INTERNAL_H */

@@ -5,7 +5,18 @@
  * the narrowphase about each one at the bodies' current transforms, so the
  * answers are exact and deterministic and never depend on when collide last
  * ran. The price is a cost linear in the number of colliders; a bounding
- * volume tree shared with the broadphase would make it logarithmic. */
+ * volume tree shared with the broadphase would make it logarithmic.
+ *
+ * While a walk calls the user back, the world is locked (lock_depth): the
+ * calls that add or remove bodies and colliders or run the step refuse with
+ * SX_ERR_LOCKED, as Box2D v3 refuses them in a locked world and Chipmunk in
+ * a query. The walk can then hold pointers into the collider and contact
+ * arrays across a callback, a query never reports a collider its own
+ * callback made, and the debug draw never reads the parts of a compound
+ * freed under it. sx_world_destroy from a callback waits for the outermost
+ * walk to return, and the walks stop calling back once it is asked for. */
+#include <stdint.h>
+
 #include "world_internal.h"
 
 /* The collider and body handles of collider slot i. */
@@ -21,6 +32,24 @@ static void sx_handles(const sx_world *world, int i, sx_collider_id *c, sx_body_
 static bool sx_queryable(const sx_world *world, int i) {
     const sx_collider *c = &world->colliders[i];
     return c->alive && world->infos[c->body].enabled;
+}
+
+/* Starts a walk that calls back: the world is locked until sx_walk_end.
+ * The lock count is the one field a const walk writes; the world was
+ * allocated by sx_world_create, never defined const, so writing it through
+ * the cast is defined. */
+static sx_world *sx_walk_begin(const sx_world *world) {
+    sx_world *w = (sx_world *)(uintptr_t)world;
+    w->lock_depth++;
+    return w;
+}
+
+/* Ends a walk; the outermost one carries out a destroy asked for by a
+ * callback (the world is then gone). */
+static void sx_walk_end(sx_world *world) {
+    if (--world->lock_depth > 0 || !world->destroy_pending) return;
+    world->destroy_pending = false;
+    sx_world_destroy(world);
 }
 
 /* What a query tests for each collider. */
@@ -48,6 +77,7 @@ static bool sx_query_part(const sx_query *q, const sx_compound_part *part, sx_xf
 
 static int sx_run_query(const sx_world *world, const sx_query *q, sx_query_fn *fn, void *context) {
     int i, found = 0;
+    sx_world *locked = fn != NULL ? sx_walk_begin(world) : NULL;
     for (i = 0; i < world->collider_slots; ++i) {
         const sx_collider *c;
         sx_xform xf;
@@ -76,8 +106,9 @@ static int sx_run_query(const sx_world *world, const sx_query *q, sx_query_fn *f
         if (!hit) continue;
         ++found;
         sx_handles(world, i, &cid, &bid);
-        if (fn != NULL && !fn(cid, bid, context)) break;
+        if (fn != NULL && (!fn(cid, bid, context) || world->destroy_pending)) break;
     }
+    if (locked != NULL) sx_walk_end(locked);
     return found;
 }
 
@@ -156,9 +187,10 @@ bool sx_world_cast_ray(const sx_world *world, const sx_ray_input *ray, sx_world_
     return any;
 }
 
-sx_status sx_world_draw(const sx_world *world, const sx_debug_draw *draw) {
+/* The colliders, then the contact points, through the callbacks of draw,
+ * until a callback asks for the world's destruction. */
+static void sx_draw_walk(const sx_world *world, const sx_debug_draw *draw) {
     int i, k;
-    if (world == NULL || draw == NULL) return SX_ERR_INVALID_ARG;
     for (i = 0; i < world->collider_slots; ++i) {
         const sx_collider *c;
         sx_xform xf;
@@ -172,9 +204,13 @@ sx_status sx_world_draw(const sx_world *world, const sx_debug_draw *draw) {
             for (k = 0; k < view.count; ++k) {
                 draw->draw_shape(&view.parts[k].shape, sx_xform_mul(xf, view.parts[k].offset),
                                  world->infos[c->body].type, c->sensor, draw->context);
+                if (world->destroy_pending) return;
             }
         }
-        if (draw->draw_aabb != NULL) draw->draw_aabb(sx_collider_aabb(c, xf), draw->context);
+        if (draw->draw_aabb != NULL) {
+            draw->draw_aabb(sx_collider_aabb(c, xf), draw->context);
+            if (world->destroy_pending) return;
+        }
     }
     if (draw->draw_contact != NULL) {
         for (i = 0; i < world->contact_count + world->frozen_count; ++i) {
@@ -184,8 +220,17 @@ sx_status sx_world_draw(const sx_world *world, const sx_debug_draw *draw) {
             for (k = 0; k < c->count; ++k) {
                 draw->draw_contact(c->points[k].point, c->normal, -c->points[k].separation,
                                    draw->context);
+                if (world->destroy_pending) return;
             }
         }
     }
+}
+
+sx_status sx_world_draw(const sx_world *world, const sx_debug_draw *draw) {
+    sx_world *locked;
+    if (world == NULL || draw == NULL) return SX_ERR_INVALID_ARG;
+    locked = sx_walk_begin(world);
+    sx_draw_walk(locked, draw);
+    sx_walk_end(locked);
     return SX_OK;
 }

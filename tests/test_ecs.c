@@ -653,6 +653,54 @@ static void a_concave_outline_entity_collides_as_one_collider(void **state) {
     ecs_fini(world);
 }
 
+/* Entities deleted from a query callback of the module's world: the world
+ * is locked then, so their bodies and colliders leave it at the next fixed
+ * step instead of being refused and left behind. */
+typedef struct doom_ctx {
+    ecs_world_t *world;
+    ecs_entity_t body_entity, static_entity;
+    int hits;
+} doom_ctx;
+
+static bool delete_entities_on_hit(sx_collider_id collider, sx_body_id body, void *context) {
+    doom_ctx *d = (doom_ctx *)context;
+    (void)collider;
+    (void)body;
+    if (d->hits++ == 0) {
+        ecs_delete(d->world, d->body_entity);
+        /* static geometry losing its collider loses its body too */
+        ecs_remove(d->world, d->static_entity, SxCollider);
+    }
+    return true;
+}
+
+static void entities_deleted_in_a_query_callback_leave_the_world_at_the_next_step(void **state) {
+    ecs_world_t *world = make_world();
+    sx_aabb all = sx_aabb_make(sx_v2(SX_R(-50.0), SX_R(-50.0)), sx_v2(SX_R(50.0), SX_R(50.0)));
+    doom_ctx d;
+    sx_world *w;
+    (void)state;
+    memset(&d, 0, sizeof(d));
+    d.world = world;
+    d.static_entity = add_ground(world);
+    d.body_entity =
+        add_dynamic(world, sx_v2(SX_R(0.0), SX_R(0.5)), sx_box_shape(SX_R(0.5), SX_R(0.5)));
+    add_dynamic(world, sx_v2(SX_R(3.0), SX_R(0.5)), sx_box_shape(SX_R(0.5), SX_R(0.5)));
+    progress(world, 2, 1.0 / 60.0);
+    w = sx_ecs_world(world);
+    assert_int_equal(sx_world_body_count(w), 3);
+    assert_int_equal(sx_world_query_aabb(w, all, NULL, NULL), 3);
+    assert_int_equal(sx_world_query_aabb(w, all, delete_entities_on_hit, &d), 3);
+    assert_false(ecs_is_alive(world, d.body_entity));
+    progress(world, 1, 1.0 / 60.0);
+    /* the deleted box's body and the ground's are gone */
+    assert_int_equal(sx_world_body_count(w), 1);
+    assert_int_equal(sx_world_query_aabb(w, all, NULL, NULL), 1);
+    progress(world, 2, 1.0 / 60.0);
+    assert_int_equal(sx_world_query_aabb(w, all, NULL, NULL), 1);
+    ecs_fini(world);
+}
+
 /* An L compound given through SxCollider.parts on a dynamic body: the
  * component keeps its own copy, the mass override scales the density, and
  * the L comes to rest on the ground. */
@@ -917,6 +965,7 @@ int main(void) {
         cmocka_unit_test(a_ray_cast_names_the_entity_hit),
         cmocka_unit_test(the_interpolation_fraction_is_the_accumulator_over_the_step),
         cmocka_unit_test(settings_iterations_reach_the_world),
+        cmocka_unit_test(entities_deleted_in_a_query_callback_leave_the_world_at_the_next_step),
     };
     return cmocka_run_group_tests_name("ecs", tests, sx_test_group_setup, sx_test_group_teardown);
 }

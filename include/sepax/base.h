@@ -64,6 +64,9 @@ typedef enum sx_status {
     SX_ERR_CAPACITY,     /**< more than a fixed capacity allows (e.g. hull vertices) */
     SX_ERR_NO_MEMORY,    /**< the allocator hook returned NULL */
     SX_ERR_STALE_HANDLE, /**< the handle's object was destroyed (or never existed) */
+    /** the world is running one of its callbacks (a query's or the debug
+     *  draw's) and the call would change what the callback walks over */
+    SX_ERR_LOCKED,
     SX_STATUS_COUNT
 } sx_status;
 

@@ -40,6 +40,24 @@
  * no solver work until something touches or pushes them. Around the step: contact begin/end events,
  * world queries (bounds, point, shape, ray) and a debug-draw callback interface.
  *
+ * Callbacks: the world calls user code only from the queries with a
+ * callback (sx_world_query_aabb, _point, _shape) and from sx_world_draw,
+ * never from inside the step (contact and sensor events are arrays read
+ * after it). While such a callback runs the world is locked
+ * (sx_world_is_locked): creating or destroying bodies and colliders, and
+ * running sx_world_step or any of its stages, answer SX_ERR_LOCKED and
+ * change nothing, as Box2D v3 and Chipmunk refuse them in their callbacks;
+ * collect the handles and act once the query returns. Every other call
+ * works in a callback and its effect shows in the rest of the walk: getters,
+ * other queries and ray casts, forces and impulses, velocities, teleports,
+ * body types, waking and sleeping, gravity, clearing the events.
+ * sx_world_destroy from a callback stops the walk (no further callback) and
+ * frees the world when the outermost query or draw returns. The lock is a
+ * count in the world, so the queries with a callback and sx_world_draw,
+ * although they take a const world, must not run on one world from two
+ * threads at once (sx_world_cast_ray and the queries without a callback
+ * only read it).
+ *
  * Units: metres, kilograms, seconds, radians. The contact tolerance (the
  * linear slop, 5 mm at one length unit per metre) scales with the world's
  * length_units_per_meter. */
@@ -170,11 +188,20 @@ sx_world_def sx_default_world_def(void);
 sx_world *sx_world_create(const sx_world_def *def);
 
 /** Destroys the world and everything in it (NULL is ignored). Every handle of
- *  it becomes meaningless. */
+ *  it becomes meaningless. Called from a query or draw callback of this
+ *  world, it stops the walk (no further callback) and the world goes when
+ *  the outermost query or draw returns (the world pointer stays usable
+ *  until then). */
 void sx_world_destroy(sx_world *world);
 
-/** Sets the gravity and wakes every sleeping body. SX_ERR_INVALID_ARG (NULL
- *  world), SX_ERR_NONFINITE. */
+/** True while a query or draw callback of this world runs (see "Callbacks"
+ *  above): creation, destruction and the step answer SX_ERR_LOCKED. False
+ *  for NULL. */
+bool sx_world_is_locked(const sx_world *world);
+
+/** Sets the gravity and wakes every sleeping body (one pass over the body
+ *  slots; each island wakes at the cost of its own bodies).
+ *  SX_ERR_INVALID_ARG (NULL world), SX_ERR_NONFINITE. */
 sx_status sx_world_set_gravity(sx_world *world, sx_vec2 gravity);
 /** The gravity (zero for a NULL world). */
 sx_vec2 sx_world_get_gravity(const sx_world *world);
@@ -193,7 +220,8 @@ sx_real sx_world_linear_slop(const sx_world *world);
  *  (a dt so small that dt / sub_steps rounds to 0 is one sub-step of dt).
  *  Errors, with the world left
  *  untouched: SX_ERR_INVALID_ARG (NULL world, dt <= 0), SX_ERR_NONFINITE (dt
- *  NaN or infinite). SX_ERR_NO_MEMORY: the contact list or the impact
+ *  NaN or infinite), SX_ERR_LOCKED (called from a callback of the world;
+ *  the stages below answer it too). SX_ERR_NO_MEMORY: the contact list or the impact
  *  pass's scratch could not grow; the step stops after the stages already
  *  run. */
 sx_status sx_world_step(sx_world *world, sx_real dt);
@@ -205,7 +233,7 @@ sx_status sx_world_step(sx_world *world, sx_real dt);
  *  act over every sub-step of a step until sx_world_clear_forces); J, L the
  *  impulse accumulators, applied once and cleared here. Static and kinematic
  *  bodies are untouched. Errors: SX_ERR_INVALID_ARG (NULL, h <= 0),
- *  SX_ERR_NONFINITE. */
+ *  SX_ERR_NONFINITE, SX_ERR_LOCKED. */
 sx_status sx_world_apply_forces(sx_world *world, sx_real h);
 
 /** Stage 2 (once per step, after sx_world_begin_step): finds the touching
@@ -220,7 +248,7 @@ sx_status sx_world_apply_forces(sx_world *world, sx_real h);
  *  persists (warm starting). An awake body that touches a sleeping one wakes
  *  its island. Pairs that start or stop having a manifold are recorded as
  *  contact events; then the sensors are updated (sensor events). Errors: SX_ERR_INVALID_ARG (NULL),
- * SX_ERR_NO_MEMORY. */
+ * SX_ERR_NO_MEMORY, SX_ERR_LOCKED. */
 sx_status sx_world_collide(sx_world *world);
 
 /** Stage 3: the contacts of the last collide, on velocities. Each point's
@@ -244,7 +272,7 @@ sx_status sx_world_collide(sx_world *world);
  *  penetration is not turned into velocity here (see sx_world_separate).
  *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE,
  *  SX_ERR_NO_MEMORY (the impact pass's scratch could not grow: the pass is
- *  skipped, the iterations still run). */
+ *  skipped, the iterations still run), SX_ERR_LOCKED. */
 sx_status sx_world_solve(sx_world *world, sx_real h);
 
 /** Stage 4: symplectic Euler positions: centre of mass += h v, rotation
@@ -253,7 +281,7 @@ sx_status sx_world_solve(sx_world *world, sx_real h);
  *  then the time-of-impact corrections of the last solve's impacts (a body
  *  whose velocity changed by dv at time t of the sub-step moves by -dv t,
  *  since it kept its old velocity until t).
- *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE. */
+ *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE, SX_ERR_LOCKED. */
 sx_status sx_world_integrate(sx_world *world, sx_real h);
 
 /** Stage 5: with rigid contacts (contact_hertz 0), removes overlap left
@@ -269,11 +297,11 @@ sx_status sx_world_integrate(sx_world *world, sx_real h);
  *  Baumgarte velocity bias because a bias turns overlap into velocity, which
  *  comes out as kinetic energy (bodies created overlapping fly apart); split
  *  impulses would do the same work with a second set of velocities.
- *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE. */
+ *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE, SX_ERR_LOCKED. */
 sx_status sx_world_separate(sx_world *world, sx_real h);
 
 /** Clears every body's force and torque accumulators (the last stage of a
- *  step). Errors: SX_ERR_INVALID_ARG (NULL). */
+ *  step). Errors: SX_ERR_INVALID_ARG (NULL), SX_ERR_LOCKED. */
 sx_status sx_world_clear_forces(sx_world *world);
 
 /** After a step of length dt: bodies slower than the sleep speeds gain dt of
@@ -287,7 +315,8 @@ sx_status sx_world_clear_forces(sx_world *world);
  *  destroyed. A body touching a moving kinematic body never sleeps. Does
  *  nothing when enable_sleep is false. sx_world_step calls it last.
  *  Errors: SX_ERR_INVALID_ARG (NULL, dt <= 0), SX_ERR_NONFINITE,
- *  SX_ERR_NO_MEMORY (the scratch arrays could not grow; nothing sleeps). */
+ *  SX_ERR_NO_MEMORY (the scratch arrays could not grow; nothing sleeps),
+ *  SX_ERR_LOCKED. */
 sx_status sx_world_update_sleep(sx_world *world, sx_real dt);
 
 /* ---- contacts ------------------------------------------------------------ */
@@ -423,13 +452,18 @@ sx_body_def sx_default_body_def(void);
 /** Creates a body. *out receives its handle (the null handle on error).
  *  Errors: SX_ERR_INVALID_ARG (NULL world/def/out, unknown type, negative
  *  damping), SX_ERR_NONFINITE, SX_ERR_NO_MEMORY, SX_ERR_CAPACITY (2^31 - 1
- *  body slots in use). A dynamic body without colliders of positive mass
- *  gets mass 1 kg and no rotational inertia (contacts cannot turn it; its
- *  own angular velocity, if set, is kept). */
+ *  body slots in use), SX_ERR_LOCKED (from a callback). A dynamic body
+ *  without colliders of positive mass gets mass 1 kg and no rotational
+ *  inertia (contacts cannot turn it; its own angular velocity, if set, is
+ *  kept). */
 sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *out);
 
-/** Destroys a body, its colliders and its contacts. SX_ERR_INVALID_ARG (NULL
- *  world), SX_ERR_STALE_HANDLE. */
+/** Destroys a body, its colliders and its contacts, and wakes its island and
+ *  the bodies it touched. Cost: what it touches (its island, its contacts);
+ *  the first destruction, teleport or retype after a collide also indexes
+ *  the contacts by body, in one pass that the ones after it share.
+ *  SX_ERR_INVALID_ARG (NULL world), SX_ERR_LOCKED (from a callback),
+ *  SX_ERR_STALE_HANDLE. */
 sx_status sx_destroy_body(sx_world *world, sx_body_id body);
 
 /** True if the handle names a live body of this world. */
@@ -558,7 +592,8 @@ sx_collider_def sx_default_collider_def(void);
  *  restitution, a shape reaching farther than SX_HUGE from the body origin
  *  in x or y: beyond it the narrowphase has no precision left to offer the
  *  solver); SX_ERR_NONFINITE (non-finite density, friction or
- *  restitution); SX_ERR_STALE_HANDLE; SX_ERR_NO_MEMORY; SX_ERR_CAPACITY. */
+ *  restitution); SX_ERR_STALE_HANDLE; SX_ERR_NO_MEMORY; SX_ERR_CAPACITY;
+ *  SX_ERR_LOCKED (from a callback). */
 sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collider_def *def,
                                sx_collider_id *out);
 
@@ -604,7 +639,8 @@ sx_status sx_collider_get_part(const sx_world *world, sx_collider_id collider, i
                                sx_compound_part *out);
 
 /** Removes a collider (and its contacts) and updates its body's mass.
- *  SX_ERR_INVALID_ARG (NULL), SX_ERR_STALE_HANDLE. */
+ *  SX_ERR_INVALID_ARG (NULL), SX_ERR_LOCKED (from a callback),
+ *  SX_ERR_STALE_HANDLE. */
 sx_status sx_destroy_collider(sx_world *world, sx_collider_id collider);
 
 /** True if the handle names a live collider of this world. */
@@ -620,7 +656,11 @@ sx_body_id sx_collider_get_body(const sx_world *world, sx_collider_id collider);
  * test every collider (cost linear in the collider count: there is no
  * bounding-volume tree yet). */
 
-/** Called for each collider a query finds; return false to stop the query. */
+/** Called for each collider a query finds; return false to stop the query.
+ *  The world is locked meanwhile (see "Callbacks" at the top): fn may push,
+ *  move, wake or inspect what it finds, while creating or destroying bodies
+ *  and colliders answers SX_ERR_LOCKED, so a query never reports a collider
+ *  made during it. */
 typedef bool sx_query_fn(sx_collider_id collider, sx_body_id body, void *context);
 
 /** Reports every collider whose tight bounds overlap `box` (for a compound:
@@ -675,8 +715,10 @@ typedef struct sx_debug_draw {
 } sx_debug_draw;
 
 /** Calls the debug-draw callbacks for the world's current state, colliders
- *  in slot order then contacts in contact order. SX_ERR_INVALID_ARG for
- *  NULL world or draw. */
+ *  in slot order then contacts in contact order. The world is locked while
+ *  they run, as during a query callback (see "Callbacks" at the top); the
+ *  shape pointer passed to draw_shape is valid during that call only.
+ *  SX_ERR_INVALID_ARG for NULL world or draw. */
 sx_status sx_world_draw(const sx_world *world, const sx_debug_draw *draw);
 
 /* ---- run-time properties, iteration and naming ----------------------------- */

@@ -91,3 +91,16 @@ sx_shape sx_test_random_ngon(sx_test_rng *rng, int n, double rmin, double rmax) 
     assert_int_equal(sx_polygon_shape(pts, n, SX_R(0.0), &shape), SX_OK);
     return shape;
 }
+
+sx_body_id sx_test_body(sx_world *w, sx_body_type type, sx_vec2 p, sx_shape shape,
+                        sx_collider_id *collider) {
+    sx_body_def bd = sx_default_body_def();
+    sx_collider_def cd = sx_default_collider_def();
+    sx_body_id id;
+    bd.type = type;
+    bd.position = p;
+    assert_int_equal(sx_create_body(w, &bd, &id), SX_OK);
+    cd.shape = shape;
+    assert_int_equal(sx_body_add_collider(w, id, &cd, collider), SX_OK);
+    return id;
+}

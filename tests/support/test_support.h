@@ -69,4 +69,10 @@ int sx_test_comb_outline(sx_vec2 *p, int teeth);
  * order); fails the test if it does not build. */
 sx_shape sx_test_random_ngon(sx_test_rng *rng, int n, double rmin, double rmax);
 
+/* A body of `type` at p with one collider of `shape` (default material);
+ * *collider (may be NULL) gets the collider's handle. Fails the test if
+ * either call fails. */
+sx_body_id sx_test_body(sx_world *w, sx_body_type type, sx_vec2 p, sx_shape shape,
+                        sx_collider_id *collider);
+
 #endif /* SEPAX_TEST_SUPPORT_H */
