@@ -35,7 +35,16 @@
  *
  * Units: metres, kilograms, seconds, radians. The contact tolerance (the
  * linear slop, 5 mm at one length unit per metre) scales with the world's
- * length_units_per_meter. */
+ * length_units_per_meter.
+ *
+ * Threads: a world is used by one thread at a time (no call on a world may
+ * overlap another call on the same world, getters and queries included;
+ * callbacks run on the calling thread). Different worlds share no state:
+ * any number of threads may each create, step, query and destroy their own
+ * worlds at the same time, without locking, with the default allocator or a
+ * thread-safe custom one (base.h: set the allocator and assert hooks once,
+ * before the first world). A world may move from one thread to another
+ * between calls if the program orders the hand-over (a mutex, a join). */
 #ifndef SEPAX_WORLD_H
 #define SEPAX_WORLD_H
 
