@@ -673,7 +673,9 @@ static void sx_ecs_drive(ecs_iter_t *it) {
     int32_t sub_steps = s->sub_steps, max_steps = s->max_steps_per_frame, steps, k, j;
     sx_vec2 g = sx_world_get_gravity(st->world);
 
-    if (!(fixed > SX_R(0.0)) || sub_steps < 1 || max_steps < 1) return;
+    if (!(fixed > SX_R(0.0)) || sub_steps < 1 || sub_steps > SX_MAX_SUB_STEPS || max_steps < 1) {
+        return;
+    }
     if (g.x != s->gravity.x || g.y != s->gravity.y) sx_world_set_gravity(st->world, s->gravity);
     st->accumulator += (double)it->delta_time;
     steps = (int32_t)(st->accumulator / (double)fixed + SX_ECS_TICK_TOLERANCE);

@@ -193,22 +193,32 @@ void sx_body_update_mass(sx_world *world, int slot) {
 
 /* ---- creation and destruction ------------------------------------------ */
 
-bool sx_grow_array(void **array, int *capacity, int need, size_t size) {
+sx_status sx_reserve_array(void **array, int *capacity, int need, size_t size) {
     int cap = *capacity;
     void *fresh;
-    if (need <= cap) return true;
+    if (need <= cap) return SX_OK;
+    if (need > SX_WORLD_MAX_ITEMS) return SX_ERR_CAPACITY;
     if (cap < 16) cap = 16;
+    /* doubling, but never past the limit: 2 x cap stays below INT_MAX */
     while (cap < need)
-        cap *= 2;
+        cap = cap > SX_WORLD_MAX_ITEMS / 2 ? SX_WORLD_MAX_ITEMS : 2 * cap;
+    /* where size_t is narrower than the byte count (32-bit targets), the
+     * exact need may still fit when the doubled capacity does not */
+    if ((size_t)cap > SIZE_MAX / size) cap = need;
+    if ((size_t)cap > SIZE_MAX / size) return SX_ERR_NO_MEMORY;
     fresh = sx_alloc((size_t)cap * size);
-    if (fresh == NULL) return false;
+    if (fresh == NULL) return SX_ERR_NO_MEMORY;
     if (*array != NULL) {
         memcpy(fresh, *array, (size_t)*capacity * size);
         sx_free(*array, (size_t)*capacity * size);
     }
     *array = fresh;
     *capacity = cap;
-    return true;
+    return SX_OK;
+}
+
+bool sx_grow_array(void **array, int *capacity, int need, size_t size) {
+    return sx_reserve_array(array, capacity, need, size) == SX_OK;
 }
 
 bool sx_grow_zeroed(void **array, int *capacity, int need, size_t size) {
@@ -271,7 +281,7 @@ sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *ou
         world->body_free = world->infos[slot].next_free;
         generation = world->infos[slot].generation;
     } else {
-        if (world->body_slots == 0x7FFFFFFF) return SX_ERR_CAPACITY;
+        if (world->body_slots >= SX_WORLD_MAX_ITEMS) return SX_ERR_CAPACITY;
         if (!sx_reserve_bodies(world, world->body_slots + 1)) return SX_ERR_NO_MEMORY;
         slot = world->body_slots++;
         generation = 1;
@@ -462,7 +472,7 @@ static sx_status sx_attach_collider(sx_world *world, int bslot, const sx_collide
         generation = world->colliders[slot].generation;
     } else {
         sx_status fail = SX_OK;
-        if (world->collider_slots == 0x7FFFFFFF) {
+        if (world->collider_slots >= SX_WORLD_MAX_ITEMS) {
             fail = SX_ERR_CAPACITY;
         } else if (!sx_reserve_colliders(world, world->collider_slots + 1)) {
             fail = SX_ERR_NO_MEMORY;

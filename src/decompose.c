@@ -52,7 +52,8 @@ typedef struct decomp_work {
 
 size_t sx_decompose_scratch_bytes(int count) {
     size_t per = sizeof(sx_vec2) + (size_t)DECOMP_INTS_PER_POINT * sizeof(int);
-    if (count < 3) return 0;
+    /* the triangle indices (3 per point) stay within an int */
+    if (count < 3 || count > SX_DECOMPOSE_MAX_POINTS) return 0;
     if ((size_t)count > ((size_t)-1 - (size_t)DECOMP_ALIGN) / per) return 0;
     return (size_t)count * per + (size_t)DECOMP_ALIGN;
 }

@@ -9,6 +9,7 @@
  * (L, U, star, comb, spiral) in both windings also check the part count
  * against the triangle count; random simple outlines (star-shaped and
  * self-avoiding walks, fixed seeds) check the properties at scale. */
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -516,7 +517,15 @@ static void bad_arguments_and_capacity_are_reported(void **state) {
     bytes = sx_decompose_scratch_bytes(n);
     assert_true(bytes > 0);
     assert_int_equal(sx_decompose_scratch_bytes(2), 0);
+    /* the point limit (issue 28: past it the triangle indices overflow an
+     * int): refused before any point is read or any scratch used */
+    assert_true(sx_decompose_scratch_bytes(SX_DECOMPOSE_MAX_POINTS) > 0);
+    assert_int_equal(sx_decompose_scratch_bytes(SX_DECOMPOSE_MAX_POINTS + 1), 0);
+    assert_int_equal(sx_decompose_scratch_bytes(INT_MAX), 0);
     scratch = malloc(bytes);
+    assert_int_equal(sx_decompose_polygon(p, SX_DECOMPOSE_MAX_POINTS + 1, scratch, bytes, parts,
+                                          MAX_OUTLINE, &count, NULL),
+                     SX_ERR_CAPACITY);
     assert_int_equal(
         sx_decompose_polygon(NULL, n, scratch, bytes, parts, MAX_OUTLINE, &count, NULL),
         SX_ERR_INVALID_ARG);

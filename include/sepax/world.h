@@ -62,6 +62,22 @@ extern "C" {
  *  (see "Speed limit" above). */
 #define SX_MAX_ROTATION (SX_R(0.5) * SX_PI)
 
+/** Most bodies, and most colliders, one world holds: 2^30 - 1 (a body or
+ *  collider more is SX_ERR_CAPACITY). The same bound holds for every list a
+ *  world keeps (contacts, broadphase pairs, sensor overlaps, events): a
+ *  step that would need more stops with SX_ERR_CAPACITY. Memory runs out
+ *  first on most machines (a body with one collider takes about 400 bytes
+ *  in the float build, 700 in the double one). */
+#define SX_WORLD_MAX_ITEMS 0x3FFFFFFF
+
+/** Most sub-steps per step (sx_world_def.sub_steps). */
+#define SX_MAX_SUB_STEPS 256
+
+/** Most velocity iterations, and most position iterations, per sub-step
+ *  (sx_world_def). With SX_MAX_SUB_STEPS, a step makes at most 65,536
+ *  solver passes over its contacts. */
+#define SX_MAX_ITERATIONS 256
+
 /* ---- handles ------------------------------------------------------------ */
 
 /** An opaque world. Create with sx_world_create, free with sx_world_destroy. */
@@ -98,14 +114,16 @@ sx_collider_id sx_collider_id_from_u64(uint64_t bits);
 typedef struct sx_world_def {
     /** Gravity in m/s^2. Default (0, -10). */
     sx_vec2 gravity;
-    /** Sub-steps per sx_world_step (>= 1). Default 4: each runs every stage
-     *  with h = dt / sub_steps, which stiffens stacks and shortens the
-     *  distance a fast body covers between two collision passes. */
+    /** Sub-steps per sx_world_step, 1 .. SX_MAX_SUB_STEPS. Default 4: each
+     *  runs every stage with h = dt / sub_steps, which stiffens stacks and
+     *  shortens the distance a fast body covers between two collision
+     *  passes. */
     int sub_steps;
-    /** Sequential-impulse iterations per sub-step (>= 1). Default 4. */
+    /** Sequential-impulse iterations per sub-step, 1 .. SX_MAX_ITERATIONS.
+     *  Default 4. */
     int velocity_iterations;
-    /** Positional-correction iterations per sub-step (>= 0; 0 turns
-     *  sx_world_separate off). Default 2. */
+    /** Positional-correction iterations per sub-step, 0 .. SX_MAX_ITERATIONS
+     *  (0 turns sx_world_separate off). Default 2. */
     int position_iterations;
     /** Fraction of the overlap beyond the slop that one correction iteration
      *  removes, in (0, 1]. Default 0.2 (Baumgarte's classic value: larger
@@ -129,7 +147,8 @@ typedef struct sx_world_def {
     /** Length units per metre (> 0): scales the linear slop (5 mm at 1).
      *  Default SX_LENGTH_UNITS_PER_METER. */
     sx_real length_units_per_meter;
-    /** Number of bodies to reserve room for at creation (>= 0). Default 0. */
+    /** Number of bodies to reserve room for at creation, 0 ..
+     *  SX_WORLD_MAX_ITEMS. Default 0. */
     int body_capacity;
     /** Lets groups of touching bodies that stay slow fall asleep (see
      *  sx_world_update_sleep). Default true. */
@@ -153,8 +172,17 @@ typedef struct sx_world_def {
 /** The default world settings documented field by field in sx_world_def. */
 sx_world_def sx_default_world_def(void);
 
-/** Creates a world. Returns NULL when def is NULL, a field is out of its
- *  documented range or not finite, or memory runs out. */
+/** Checks world settings: SX_OK, or the reason sx_world_create refuses
+ *  them: SX_ERR_INVALID_ARG (NULL, or a field below its documented range or
+ *  outside it for a bounded real such as correction_factor);
+ *  SX_ERR_NONFINITE (a NaN or infinite real); SX_ERR_CAPACITY (sub_steps
+ *  above SX_MAX_SUB_STEPS, an iteration count above SX_MAX_ITERATIONS, or
+ *  body_capacity above SX_WORLD_MAX_ITEMS). */
+sx_status sx_world_def_validate(const sx_world_def *def);
+
+/** Creates a world. Returns NULL when sx_world_def_validate(def) is not
+ *  SX_OK, or when memory runs out (body_capacity bodies are reserved
+ *  here). */
 sx_world *sx_world_create(const sx_world_def *def);
 
 /** Destroys the world and everything in it (NULL is ignored). Every handle of
@@ -182,8 +210,9 @@ sx_real sx_world_linear_slop(const sx_world *world);
  *  Errors, with the world left
  *  untouched: SX_ERR_INVALID_ARG (NULL world, dt <= 0), SX_ERR_NONFINITE (dt
  *  NaN or infinite). SX_ERR_NO_MEMORY: the contact list or the impact
- *  pass's scratch could not grow; the step stops after the stages already
- *  run. */
+ *  pass's scratch could not grow; SX_ERR_CAPACITY: a list would pass
+ *  SX_WORLD_MAX_ITEMS (more than 2^30 - 1 broadphase pairs or contacts);
+ *  either way the step stops after the stages already run. */
 sx_status sx_world_step(sx_world *world, sx_real dt);
 
 /** Stage 1: for every enabled, awake dynamic body, v += h (gravity x gravity_scale +
@@ -205,8 +234,9 @@ sx_status sx_world_apply_forces(sx_world *world, sx_real h);
  *  and each point keeps its accumulated impulses while its feature id
  *  persists (warm starting). An awake body that touches a sleeping one wakes
  *  its island. Pairs that start or stop having a manifold are recorded as
- *  contact events; then the sensors are updated (sensor events). Errors: SX_ERR_INVALID_ARG (NULL),
- * SX_ERR_NO_MEMORY. */
+ *  contact events; then the sensors are updated (sensor events). Errors:
+ *  SX_ERR_INVALID_ARG (NULL), SX_ERR_NO_MEMORY, SX_ERR_CAPACITY (a list
+ *  would pass SX_WORLD_MAX_ITEMS). */
 sx_status sx_world_collide(sx_world *world);
 
 /** Stage 3: the contacts of the last collide, on velocities. Warm start,
@@ -396,8 +426,9 @@ sx_body_def sx_default_body_def(void);
 
 /** Creates a body. *out receives its handle (the null handle on error).
  *  Errors: SX_ERR_INVALID_ARG (NULL world/def/out, unknown type, negative
- *  damping), SX_ERR_NONFINITE, SX_ERR_NO_MEMORY, SX_ERR_CAPACITY (2^31 - 1
- *  body slots in use). A dynamic body without colliders of positive mass
+ *  damping), SX_ERR_NONFINITE, SX_ERR_NO_MEMORY, SX_ERR_CAPACITY
+ *  (SX_WORLD_MAX_ITEMS body slots in use, or no slot left to reuse: see
+ *  sx_destroy_body). A dynamic body without colliders of positive mass
  *  gets mass 1 kg and no rotational inertia (contacts cannot turn it; its
  *  own angular velocity, if set, is kept). */
 sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *out);
@@ -532,7 +563,8 @@ sx_collider_def sx_default_collider_def(void);
  *  restitution, a shape reaching farther than SX_HUGE from the body origin
  *  in x or y: beyond it the narrowphase has no precision left to offer the
  *  solver); SX_ERR_NONFINITE (non-finite density, friction or
- *  restitution); SX_ERR_STALE_HANDLE; SX_ERR_NO_MEMORY; SX_ERR_CAPACITY. */
+ *  restitution); SX_ERR_STALE_HANDLE; SX_ERR_NO_MEMORY; SX_ERR_CAPACITY
+ *  (SX_WORLD_MAX_ITEMS collider slots in use). */
 sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collider_def *def,
                                sx_collider_id *out);
 
@@ -563,7 +595,9 @@ sx_status sx_body_add_compound(sx_world *world, sx_body_id body, const sx_compou
  *  body origin in x or y; otherwise the status of
  *  sx_decompose_polygon (SX_ERR_NONFINITE for NaN/Inf, SX_ERR_INVALID_ARG
  *  for a self-intersecting outline such as a bow-tie, SX_ERR_DEGENERATE for
- *  all-collinear or zero-area outlines); SX_ERR_NO_MEMORY. */
+ *  all-collinear or zero-area outlines); SX_ERR_CAPACITY for count above
+ *  SX_DECOMPOSE_MAX_POINTS (or SX_WORLD_MAX_ITEMS collider slots in use);
+ *  SX_ERR_NO_MEMORY. */
 sx_status sx_body_add_outline(sx_world *world, sx_body_id body, const sx_vec2 *points, int count,
                               const sx_collider_def *def, sx_collider_id *out);
 
