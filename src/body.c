@@ -5,8 +5,10 @@
  * A handle is a slot index plus the generation the slot had when the object
  * was made. Destroying an object bumps its slot's generation, so every old
  * handle stops matching and is answered with SX_ERR_STALE_HANDLE; the slot
- * goes on a free list and is reused. Generations start at 1, so the all-zero
- * handle is never live. Input is validated here, once; the step trusts it. */
+ * goes on a free list and is reused, until its generation reaches
+ * UINT32_MAX: then it is retired, since one more would wrap. Generations
+ * start at 1, so the all-zero handle is never live. Input is validated here,
+ * once; the step trusts it. */
 #include "world_internal.h"
 
 /* ---- handles ------------------------------------------------------------ */
@@ -359,6 +361,17 @@ static void sx_wake_touching(sx_world *world, int slot) {
     }
 }
 
+/* Moves a dead slot to its next generation and returns true, or returns
+ * false when the slot has handed out its last one (UINT32_MAX): going on
+ * would wrap to 1 and revalidate the slot's first handle, so the slot is
+ * retired instead (never put on the free list; stale handles of it stay
+ * stale for good). A world loses a slot per 2^32 - 1 reuses of it. */
+static bool sx_generation_next(uint32_t *generation) {
+    if (*generation == UINT32_MAX) return false;
+    ++*generation;
+    return true;
+}
+
 /* Unlinks nothing: frees the collider slot (the caller fixes the list). */
 static void sx_free_collider_slot(sx_world *world, int slot) {
     sx_collider *c = &world->colliders[slot];
@@ -372,9 +385,11 @@ static void sx_free_collider_slot(sx_world *world, int slot) {
         c->part_count = 0;
     }
     c->alive = false;
-    c->generation = c->generation == 0xFFFFFFFFu ? 1u : c->generation + 1u;
-    c->next_free = world->collider_free;
-    world->collider_free = slot;
+    c->next_free = -1;
+    if (sx_generation_next(&c->generation)) {
+        c->next_free = world->collider_free;
+        world->collider_free = slot;
+    }
     /* bp_kind keeps the old kind: the next refresh of the sets sees the
      * change and takes the collider out of the broadphase */
     world->sets_dirty = true;
@@ -396,9 +411,11 @@ sx_status sx_destroy_body(sx_world *world, sx_body_id body) {
     info->first_collider = -1;
     info->alive = false;
     world->sets_dirty = true;
-    info->generation = info->generation == 0xFFFFFFFFu ? 1u : info->generation + 1u;
-    info->next_free = world->body_free;
-    world->body_free = slot;
+    info->next_free = -1;
+    if (sx_generation_next(&info->generation)) {
+        info->next_free = world->body_free;
+        world->body_free = slot;
+    }
     world->body_count--;
     return SX_OK;
 }

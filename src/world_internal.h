@@ -42,7 +42,7 @@ typedef struct sx_body_sim {
 } sx_body_sim;
 
 typedef struct sx_body_info {
-    uint32_t generation; /* bumped on destroy; never 0 */
+    uint32_t generation; /* bumped on destroy; never 0; retired at UINT32_MAX */
     bool alive;
     bool enabled;
     bool fixed_rotation;

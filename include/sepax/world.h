@@ -4,7 +4,10 @@
  * attached to them. Bodies and colliders are named by small handles (index +
  * generation) that pack into a uint64_t; a destroyed object's handle goes
  * stale and every call answers it with SX_ERR_STALE_HANDLE (or a zero value
- * for getters) instead of touching another object that reused the slot.
+ * for getters) instead of touching another object that reused the slot. A
+ * slot hands out generations 1 .. 2^32 - 1 and is then retired, never
+ * reused: a stale handle stays stale for good, at the cost of one slot's
+ * memory per 2^32 - 1 destroy/create cycles of that slot.
  *
  * One call of sx_world_step(world, dt) runs, for each of `sub_steps` sub-steps
  * of length h = dt / sub_steps, the public stages
@@ -427,14 +430,16 @@ sx_body_def sx_default_body_def(void);
 /** Creates a body. *out receives its handle (the null handle on error).
  *  Errors: SX_ERR_INVALID_ARG (NULL world/def/out, unknown type, negative
  *  damping), SX_ERR_NONFINITE, SX_ERR_NO_MEMORY, SX_ERR_CAPACITY
- *  (SX_WORLD_MAX_ITEMS body slots in use, or no slot left to reuse: see
- *  sx_destroy_body). A dynamic body without colliders of positive mass
- *  gets mass 1 kg and no rotational inertia (contacts cannot turn it; its
- *  own angular velocity, if set, is kept). */
+ *  (SX_WORLD_MAX_ITEMS body slots in use or retired: see sx_destroy_body).
+ *  A dynamic body without colliders of positive mass gets mass 1 kg and no
+ *  rotational inertia (contacts cannot turn it; its own angular velocity,
+ *  if set, is kept). */
 sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *out);
 
-/** Destroys a body, its colliders and its contacts. SX_ERR_INVALID_ARG (NULL
- *  world), SX_ERR_STALE_HANDLE. */
+/** Destroys a body, its colliders and its contacts. Its slot is reused by a
+ *  later body with the next generation, or retired after generation
+ *  2^32 - 1 (so no old handle ever names a new body; colliders' slots
+ *  likewise). SX_ERR_INVALID_ARG (NULL world), SX_ERR_STALE_HANDLE. */
 sx_status sx_destroy_body(sx_world *world, sx_body_id body);
 
 /** True if the handle names a live body of this world. */
@@ -564,7 +569,7 @@ sx_collider_def sx_default_collider_def(void);
  *  in x or y: beyond it the narrowphase has no precision left to offer the
  *  solver); SX_ERR_NONFINITE (non-finite density, friction or
  *  restitution); SX_ERR_STALE_HANDLE; SX_ERR_NO_MEMORY; SX_ERR_CAPACITY
- *  (SX_WORLD_MAX_ITEMS collider slots in use). */
+ *  (SX_WORLD_MAX_ITEMS collider slots in use or retired). */
 sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collider_def *def,
                                sx_collider_id *out);
 
