@@ -1023,9 +1023,11 @@ static void overflowing_force_or_impulse_at_a_point_is_refused_not_nan(void **st
 }
 
 /* Found by fuzz/fuzz_world.c: a dynamic body with a circle of radius 2.4e28
- * (a valid shape) had mass inf and its centre of mass inf / inf = NaN. Such
- * a shape is now refused (it reaches beyond SX_HUGE); a mass that overflows
- * through its density still gives mass SX_REAL_MAX and no NaN. */
+ * (then a valid shape) had mass inf and its centre of mass inf / inf = NaN.
+ * Such a shape is now refused: by sx_shape_validate in the float build (its
+ * mass overflows), for reaching beyond SX_HUGE in the double one; a mass
+ * that overflows through its density still gives mass SX_REAL_MAX and no
+ * NaN. */
 static void a_collider_whose_mass_overflows_gives_no_nan(void **state) {
     sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
     sx_shape huge = sx_circle_shape(sx_v2_zero(), SX_R(2.36e28));
@@ -1035,7 +1037,12 @@ static void a_collider_whose_mass_overflows_gives_no_nan(void **state) {
     int i;
     (void)state;
     cd.shape = huge;
+#ifdef SX_DOUBLE
+    /* its mass fits a double: refused for reaching beyond SX_HUGE */
     assert_int_equal(sx_body_add_collider(w, b, &cd, NULL), SX_ERR_INVALID_ARG);
+#else
+    assert_int_equal(sx_body_add_collider(w, b, &cd, NULL), SX_ERR_NONFINITE);
+#endif
     cd.shape = sx_circle_shape(sx_v2(SX_R(3.0), SX_R(0.0)), SX_R(1000.0));
     cd.density = SX_REAL_MAX;
     assert_int_equal(sx_body_add_collider(w, b, &cd, NULL), SX_OK);
@@ -1115,6 +1122,44 @@ static void colliders_beyond_huge_are_refused(void **state) {
         assert_true(sx_body_get_angular_velocity(w, b) == SX_R(0.0));
     }
     sx_world_destroy(w);
+}
+
+/* base.h: SX_HUGE is fixed at compile time, in length units, and does not
+ * follow a world's length_units_per_meter (issue 28 asked for it to be said
+ * precisely). In a world of 100 units per metre, whose slop is 100 times
+ * the default's, a collider's extent and a body's speed per sub-step are
+ * bounded by the same SX_HUGE units as in the default world. */
+static void huge_is_in_length_units_whatever_the_world_scale(void **state) {
+    static const sx_real units[2] = {SX_R(1.0), SX_R(100.0)};
+    int k;
+    (void)state;
+    for (k = 0; k < 2; ++k) {
+        sx_world_def d = sx_default_world_def();
+        sx_body_def bd = sx_default_body_def();
+        sx_collider_def cd = sx_default_collider_def();
+        sx_world *w;
+        sx_body_id b;
+        sx_vec2 v;
+        d.length_units_per_meter = units[k];
+        d.gravity = sx_v2_zero();
+        d.sub_steps = 1;
+        w = sx_world_create(&d);
+        assert_non_null(w);
+        assert_near(sx_world_linear_slop(w), 0.005 * (double)units[k], 1e-6 * (double)units[k]);
+        bd.type = SX_BODY_DYNAMIC;
+        assert_int_equal(sx_create_body(w, &bd, &b), SX_OK);
+        cd.shape = sx_box_shape(SX_R(1.01) * SX_HUGE, SX_R(1.0));
+        assert_int_equal(sx_body_add_collider(w, b, &cd, NULL), SX_ERR_INVALID_ARG);
+        cd.shape = sx_box_shape(SX_R(0.99) * SX_HUGE, SX_R(1.0));
+        assert_int_equal(sx_body_add_collider(w, b, &cd, NULL), SX_OK);
+        /* 4 SX_HUGE per step of 1 s: limited to SX_HUGE per sub-step */
+        assert_int_equal(
+            sx_body_set_linear_velocity(w, b, sx_v2(SX_R(4.0) * SX_HUGE, SX_R(0.0))), SX_OK);
+        assert_int_equal(sx_world_step(w, SX_R(1.0)), SX_OK);
+        v = sx_body_get_linear_velocity(w, b);
+        assert_near(v.x, (double)SX_HUGE, 1e-5 * (double)SX_HUGE);
+        sx_world_destroy(w);
+    }
 }
 
 /* Found by fuzz/fuzz_world.c (world-torque-overflow-nan): a force of about
@@ -1548,6 +1593,7 @@ int main(void) {
         cmocka_unit_test(overflowing_force_or_impulse_at_a_point_is_refused_not_nan),
         cmocka_unit_test(a_collider_whose_mass_overflows_gives_no_nan),
         cmocka_unit_test(colliders_beyond_huge_are_refused),
+        cmocka_unit_test(huge_is_in_length_units_whatever_the_world_scale),
         cmocka_unit_test(a_finite_torque_that_overflows_the_spin_is_limited),
         cmocka_unit_test(the_speed_limit_keeps_direction_and_spares_ordinary_speeds),
         cmocka_unit_test(a_huge_restitution_rebounds_at_the_speed_limit),

@@ -68,7 +68,8 @@ typedef enum sx_status {
     SX_OK = 0,
     SX_ERR_INVALID_ARG,  /**< null pointer, negative size/radius/density, bad enum */
     SX_ERR_DEGENERATE,   /**< too few usable points, zero length/area */
-    SX_ERR_NONFINITE,    /**< NaN or infinity in the input */
+    SX_ERR_NONFINITE,    /**< NaN or infinity in the input, or in what it
+                              implies (a shape whose mass overflows) */
     SX_ERR_CAPACITY,     /**< more than a fixed capacity allows (e.g. hull vertices) */
     SX_ERR_NO_MEMORY,    /**< the allocator hook returned NULL */
     SX_ERR_STALE_HANDLE, /**< the handle's object was destroyed (or never existed) */
@@ -163,7 +164,20 @@ size_t sx_live_bytes(void);
 
 /** Largest coordinate magnitude the library promises to handle (float build:
  *  1e5 m keeps sub-centimetre resolution; double: 1e9). Inputs beyond it are
- *  answered (no crash, no NaN) but with reduced precision. */
+ *  answered (no crash, no NaN) but with reduced precision.
+ *
+ *  SX_HUGE is fixed when the library is compiled, in length units: 1e5 (or
+ *  1e9) x SX_LENGTH_UNITS_PER_METER. It does not follow a world's run-time
+ *  length_units_per_meter (the geometry layers, which have no world, use it
+ *  too). A world uses it twice: a collider must lie within SX_HUGE of its
+ *  body's origin in x and y, and a body moves at most SX_HUGE per sub-step.
+ *  With length_units_per_meter L above SX_LENGTH_UNITS_PER_METER (a world in
+ *  centimetres, L = 100, in a library built at 1) those bounds are 1e5
+ *  units, a kilometre, stricter than the precision needs but far above
+ *  game speeds and sizes; with L below it (a world in kilometres) they are
+ *  looser than the precision of sx_real allows, and coordinates near
+ *  SX_HUGE have less resolution than the world's slop. To move SX_HUGE with
+ *  the units, build the library with -DSX_LENGTH_UNITS_PER_METER=L. */
 #ifdef SX_DOUBLE
 #define SX_HUGE (SX_R(1.0e9) * SX_LENGTH_UNITS_PER_METER)
 #else

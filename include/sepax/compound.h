@@ -75,9 +75,11 @@ size_t sx_decompose_scratch_bytes(int count);
  *  outline into its lobes yourself);
  *  SX_ERR_DEGENERATE for zero area, when no ear can be found in the
  *  precision available (not observed for simple outlines), or when no part
- *  survives (far beyond SX_HUGE, where the parts' areas overflow); SX_ERR_CAPACITY
- *  when more than part_capacity parts are needed (then *part_count receives
- *  the number needed). */
+ *  survives (far beyond SX_HUGE, where the parts' areas round away);
+ *  SX_ERR_NONFINITE when a part's mass properties would overflow sx_real
+ *  (as sx_shape_validate refuses: an outline some 1e9 m across in the float
+ *  build); SX_ERR_CAPACITY when more than part_capacity parts are needed
+ *  (then *part_count receives the number needed). */
 sx_status sx_decompose_polygon(const sx_vec2 *points, int count, void *scratch,
                                size_t scratch_bytes, sx_shape *parts, int part_capacity,
                                int *part_count, int *triangle_count);

@@ -24,13 +24,27 @@
  * themselves, in this order, with their own code in between.
  *
  * Speed limit: in one sub-step a body turns at most SX_MAX_ROTATION and
- * moves at most SX_HUGE. sx_world_apply_forces and sx_world_integrate scale
- * faster velocities down to the limit (direction kept), so a finite torque
- * on a tiny inertia, a huge impulse or a huge dt gives a fast body, never an
- * infinite or NaN state. At the default 60 Hz and 4 sub-steps the rotation
+ * moves at most SX_HUGE (in length units: see SX_HUGE in base.h for worlds
+ * whose length_units_per_meter differs from SX_LENGTH_UNITS_PER_METER).
+ * sx_world_apply_forces and sx_world_integrate scale faster velocities down
+ * to the limit (direction kept), so a finite torque on a tiny inertia, a
+ * huge impulse or a huge dt gives a fast body, never an infinite or NaN
+ * state. At the default 60 Hz and 4 sub-steps the rotation
  * limit is 377 rad/s (3600 rpm); a faster spin needs more sub-steps (the
  * rotation update, q + h w q' renormalised, turns by atan(h w), less than a
  * quarter turn per sub-step, whatever w is).
+ *
+ * No continuous collision yet: fast bodies can tunnel. Contacts come from
+ * the positions at the start of each sub-step, for shapes within the
+ * speculative margin (speculative_slops x the linear slop: 2 cm by
+ * default), and the solver stops a body only at the contacts it has. A body
+ * that covers d = |v| dt / sub_steps in one sub-step can end it overlapping
+ * a collider it had no contact with by up to d minus the margin (then
+ * sx_world_separate pushes it out the shortest way, which past the middle
+ * of a thin collider is the far side), and once d exceeds about the margin
+ * plus both thicknesses it can cross the collider outright. Keep d below
+ * half the thinner thickness (a 10 cm wall at 60 Hz and 4 sub-steps: below
+ * 12 m/s), or add sub-steps; bullets and thin walls need care.
  *
  * Sleeping: islands of touching bodies that stay slow fall asleep and cost
  * no solver work until something touches or pushes them. Around the step: contact begin/end events,
@@ -148,7 +162,8 @@ typedef struct sx_world_def {
      *  lets them close exactly the gap in one sub-step. Default 4. */
     sx_real speculative_slops;
     /** Length units per metre (> 0): scales the linear slop (5 mm at 1).
-     *  Default SX_LENGTH_UNITS_PER_METER. */
+     *  Default SX_LENGTH_UNITS_PER_METER. It does not scale SX_HUGE, which
+     *  is fixed at compile time (see base.h). */
     sx_real length_units_per_meter;
     /** Number of bodies to reserve room for at creation, 0 ..
      *  SX_WORLD_MAX_ITEMS. Default 0. */
@@ -563,7 +578,8 @@ sx_collider_def sx_default_collider_def(void);
  *  the body gets mass SX_REAL_MAX, no rotational inertia and its centre of
  *  mass at its origin, never NaN. *out (may be NULL) receives the handle,
  *  the null handle on error.
- *  Errors: the status of sx_shape_validate for a bad shape;
+ *  Errors: the status of sx_shape_validate for a bad shape (among them
+ *  SX_ERR_NONFINITE for a shape whose mass properties overflow sx_real);
  *  SX_ERR_INVALID_ARG (NULL world/def, negative density, friction or
  *  restitution, a shape reaching farther than SX_HUGE from the body origin
  *  in x or y: beyond it the narrowphase has no precision left to offer the
