@@ -4,6 +4,8 @@
 #   make test                 build and run every cmocka test (float build)
 #   make test SX_REAL=double  the same with sx_real = double
 #   make test SAN=1           the tests under AddressSanitizer + UBSan
+#   make test SAN=thread      the tests under ThreadSanitizer (test_threads
+#                             runs worlds on two threads)
 #   make test SIMD=0          the float build without its SSE loops (portable C)
 #   make stress               the hostile scenes with the 100,000-step long run
 #   make determinism          the determinism hash at -O0, -O2 and -O3 must agree
@@ -14,7 +16,8 @@
 #   make help                 every target, one line each
 #
 # Variants build out of tree: the default float build in build/, the others
-# in build/<variant>/ (double, san, double-san), so they never mix objects.
+# in build/<variant>/ (double, san, tsan, double-san, ...), so they never mix
+# objects.
 # Missing dependencies are installed by scripts/deps.sh (Debian packages when
 # run as root, otherwise a message naming the package).
 
@@ -42,6 +45,11 @@ SANFLAGS :=
 ifeq ($(SAN),1)
   VARIANT := $(if $(VARIANT),$(VARIANT)-san,san)
   SANFLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+else ifeq ($(SAN),thread)
+  VARIANT := $(if $(VARIANT),$(VARIANT)-tsan,tsan)
+  SANFLAGS := -fsanitize=thread -fno-omit-frame-pointer
+else ifneq ($(SAN),0)
+  $(error SAN must be 0, 1 or thread)
 endif
 OUT := build$(if $(VARIANT),/$(VARIANT))
 
@@ -136,7 +144,11 @@ $(OUT)/obj/tests/%.o: tests/%.c | $(OUT)/obj/tests deps-test
 
 $(OUT)/tests/%: $(OUT)/obj/tests/%.o $(TEST_SUPPORT_OBJS) $(LIB_A) | $(OUT)/tests
 	$(call msg,LD,$@)
-	$(Q)$(CC) $(SANFLAGS) -o $@ $< $(TEST_SUPPORT_OBJS) $(LIB_A) $(CMOCKA_LIBS) $(LDLIBS_ALL)
+	$(Q)$(CC) $(SANFLAGS) -o $@ $< $(TEST_SUPPORT_OBJS) $(LIB_A) $(CMOCKA_LIBS) $(LDLIBS_ALL) $(TEST_LDLIBS)
+
+# tests/test_threads.c runs worlds on POSIX threads.
+$(OUT)/obj/tests/test_threads.o: CFLAGS += -pthread
+$(OUT)/tests/test_threads: TEST_LDLIBS := -pthread
 
 # Public headers must compile as C++ too.
 check-headers:
@@ -192,7 +204,7 @@ test: lib check-headers doc-examples sample-pyramid $(TEST_BINS)
 	  echo "== $$t"; \
 	  if ! ./$$t; then failed=$$((failed + 1)); echo "FAILED: $$t"; fi; \
 	done; \
-	echo "sepax [$(SX_REAL)$(if $(filter 1,$(SAN)), san)$(if $(filter 0,$(SIMD)), SIMD=0)]: $$((total - failed)) of $$total test programs passed"; \
+	echo "sepax [$(SX_REAL)$(if $(filter 1,$(SAN)), san)$(if $(filter thread,$(SAN)), tsan)$(if $(filter 0,$(SIMD)), SIMD=0)]: $$((total - failed)) of $$total test programs passed"; \
 	test $$failed -eq 0
 
 # make stress: the hostile scenes (tests/test_hostile.c) with the long run of

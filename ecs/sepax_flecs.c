@@ -719,7 +719,9 @@ static void sx_ecs_drive(ecs_iter_t *it) {
     SxPhysicsTime *clock = ecs_field(it, SxPhysicsTime, 1);
     sx_world_def now;
 
-    if (!(fixed > SX_R(0.0)) || sub_steps < 1 || max_steps < 1) return;
+    if (!(fixed > SX_R(0.0)) || sub_steps < 1 || sub_steps > SX_MAX_SUB_STEPS || max_steps < 1) {
+        return;
+    }
     if (g.x != s->gravity.x || g.y != s->gravity.y) sx_world_set_gravity(st->world, s->gravity);
     sx_world_get_def(st->world, &now);
     if (now.velocity_iterations != s->velocity_iterations ||

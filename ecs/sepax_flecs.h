@@ -179,7 +179,10 @@ typedef struct SxCollider {
 typedef struct SxPhysicsSettings {
     sx_vec2 gravity;         /**< m/s^2; default (0, -10) */
     sx_real fixed_time_step; /**< s, > 0; default 1/60 */
-    int32_t sub_steps;       /**< >= 1; default 4 (the world's default) */
+    /** 1 .. SX_MAX_SUB_STEPS; default 4 (the world's default). Settings
+     *  out of range (this, fixed_time_step or max_steps_per_frame) run no
+     *  step until they are fixed. */
+    int32_t sub_steps;
     /** Most fixed steps one frame runs (>= 1; default 8); the time beyond
      *  it is dropped, so a long frame slows the simulation down instead of
      *  spiralling. */

@@ -8,7 +8,8 @@
  * points are input points, every input point lies inside it within the
  * documented tolerance, and every built polygon passes sx_shape_validate
  * with finite, non-negative area and mass; on failure the output is left as
- * documented; a shape that validates gives finite area, mass and bounds. */
+ * documented; a shape that validates gives finite area, mass and inertia at
+ * density 1 whatever its size, and finite bounds within SX_HUGE. */
 #include "fuzz_input.h"
 
 /* Slack for "every input point inside the hull": the documented 2 x weld
@@ -44,8 +45,10 @@ static void hull_check_points_are_input(const sx_hull *h, const sx_vec2 *pts, in
     }
 }
 
-/* A built polygon: valid, with non-negative area; its properties finite when it
- * lies within the promised range (SX_HUGE), never NaN beyond it. */
+/* A built polygon: valid, with non-negative area, and finite area, mass and
+ * inertia at density 1 at any size (validation refuses a shape whose mass
+ * properties overflow); its other properties finite when it lies within the
+ * promised range (SX_HUGE), never NaN beyond it. */
 static void hull_check_valid_shape(const sx_shape *s) {
     sx_mass_data md;
     sx_real area;
@@ -56,13 +59,12 @@ static void hull_check_valid_shape(const sx_shape *s) {
     box = sx_shape_aabb(s, sx_xform_identity());
     /* Not > 0: a valid triangle of 1e-25 m sides has an area that underflows. */
     FZ_CHECK(area >= SX_R(0.0));
-    FZ_CHECK(!fz_is_nan(md.mass) && !fz_is_nan(md.rotational_inertia));
     FZ_CHECK(md.mass >= SX_R(0.0) && md.rotational_inertia >= SX_R(0.0));
+    FZ_CHECK(sx_is_finite(area));
+    FZ_CHECK(sx_is_finite(md.mass) && sx_is_finite(md.rotational_inertia));
     FZ_CHECK(!fz_aabb_has_nan(box));
     if (fz_shape_extent(s) <= SX_HUGE) {
-        FZ_CHECK(sx_is_finite(area));
         FZ_CHECK(fz_finite_vec(sx_shape_centroid(s)));
-        FZ_CHECK(sx_is_finite(md.mass) && sx_is_finite(md.rotational_inertia));
         FZ_CHECK(fz_finite_vec(md.center));
         FZ_CHECK(sx_aabb_is_valid(box));
     }
@@ -181,6 +183,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         }
         if (st == SX_OK && sx_is_finite(density) && density >= SX_R(0.0)) {
             FZ_CHECK(md.mass >= SX_R(0.0) && md.rotational_inertia >= SX_R(0.0));
+        }
+        if (st == SX_OK) {
+            /* at density 1, finite at any size: validation refuses the rest */
+            sx_mass_data unit = sx_shape_mass(&s, SX_R(1.0));
+            FZ_CHECK(sx_is_finite(unit.mass) && sx_is_finite(unit.rotational_inertia));
+            FZ_CHECK(sx_is_finite(sx_shape_area(&s)));
         }
     }
     return 0;

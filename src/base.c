@@ -1,6 +1,9 @@
 /* sepax — the base layer: version, status strings, the assert handler and the
  * allocator hooks with their live-byte counter. These are the library's only
- * process-wide state; both are meant to be set once at start-up. */
+ * process-wide state. The hooks are plain pointers, set once at start-up
+ * before any world exists (then only read, so threads may share them); the
+ * counter is updated by every allocation of every world, from whatever
+ * thread owns that world, so it is atomic. */
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -64,10 +67,39 @@ static void sx_default_free(void *memory, size_t size, void *context) {
     free(memory);
 }
 
+/* The counter's atomic operations. Relaxed order: the count orders no other
+ * memory, it only has to lose no update. GCC and clang have had the
+ * __atomic builtins since 4.7 / 3.1 (in -std=c99 -pedantic too); other
+ * compilers need C11 atomics. */
+#if defined(__GNUC__) || defined(__clang__)
+typedef size_t sx_atomic_size;
+static size_t sx_atomic_add(sx_atomic_size *a, size_t v) {
+    return __atomic_add_fetch(a, v, __ATOMIC_RELAXED);
+}
+static size_t sx_atomic_fetch_sub(sx_atomic_size *a, size_t v) {
+    return __atomic_fetch_sub(a, v, __ATOMIC_RELAXED);
+}
+static size_t sx_atomic_load(sx_atomic_size *a) { return __atomic_load_n(a, __ATOMIC_RELAXED); }
+#elif defined(__STDC_VERSION__) && __STDC_VERSION__ >= 201112L && !defined(__STDC_NO_ATOMICS__)
+#include <stdatomic.h>
+typedef _Atomic size_t sx_atomic_size;
+static size_t sx_atomic_add(sx_atomic_size *a, size_t v) {
+    return atomic_fetch_add_explicit(a, v, memory_order_relaxed) + v;
+}
+static size_t sx_atomic_fetch_sub(sx_atomic_size *a, size_t v) {
+    return atomic_fetch_sub_explicit(a, v, memory_order_relaxed);
+}
+static size_t sx_atomic_load(sx_atomic_size *a) {
+    return atomic_load_explicit(a, memory_order_relaxed);
+}
+#else
+#error "sepax needs atomic operations: build src/base.c with GCC, clang or a C11 compiler"
+#endif
+
 static sx_alloc_fn *s_alloc = sx_default_alloc;
 static sx_free_fn *s_free = sx_default_free;
 static void *s_alloc_context = NULL;
-static size_t s_live_bytes = 0;
+static sx_atomic_size s_live_bytes = 0;
 
 void sx_set_allocator(sx_alloc_fn *alloc, sx_free_fn *free_fn, void *context) {
     if (alloc != NULL && free_fn != NULL) {
@@ -85,15 +117,18 @@ void *sx_alloc(size_t size) {
     void *p;
     if (size == 0) return NULL;
     p = s_alloc(size, s_alloc_context);
-    if (p != NULL) s_live_bytes += size;
+    if (p != NULL) (void)sx_atomic_add(&s_live_bytes, size);
     return p;
 }
 
 void sx_free(void *memory, size_t size) {
+    size_t before;
     if (memory == NULL) return;
-    SX_ASSERT(size <= s_live_bytes);
-    s_live_bytes -= size;
+    before = sx_atomic_fetch_sub(&s_live_bytes, size);
+    /* a size larger than what is live: not a block of sx_alloc, or the
+     * wrong size */
+    SX_ASSERT(size <= before);
     s_free(memory, size, s_alloc_context);
 }
 
-size_t sx_live_bytes(void) { return s_live_bytes; }
+size_t sx_live_bytes(void) { return sx_atomic_load(&s_live_bytes); }

@@ -5,8 +5,10 @@
  * A handle is a slot index plus the generation the slot had when the object
  * was made. Destroying an object bumps its slot's generation, so every old
  * handle stops matching and is answered with SX_ERR_STALE_HANDLE; the slot
- * goes on a free list and is reused. Generations start at 1, so the all-zero
- * handle is never live. Input is validated here, once; the step trusts it. */
+ * goes on a free list and is reused, until its generation reaches
+ * UINT32_MAX: then it is retired, since one more would wrap. Generations
+ * start at 1, so the all-zero handle is never live. Input is validated here,
+ * once; the step trusts it. */
 #include "world_internal.h"
 
 /* ---- handles ------------------------------------------------------------ */
@@ -193,22 +195,32 @@ void sx_body_update_mass(sx_world *world, int slot) {
 
 /* ---- creation and destruction ------------------------------------------ */
 
-bool sx_grow_array(void **array, int *capacity, int need, size_t size) {
+sx_status sx_reserve_array(void **array, int *capacity, int need, size_t size) {
     int cap = *capacity;
     void *fresh;
-    if (need <= cap) return true;
+    if (need <= cap) return SX_OK;
+    if (need > SX_WORLD_MAX_ITEMS) return SX_ERR_CAPACITY;
     if (cap < 16) cap = 16;
+    /* doubling, but never past the limit: 2 x cap stays below INT_MAX */
     while (cap < need)
-        cap *= 2;
+        cap = cap > SX_WORLD_MAX_ITEMS / 2 ? SX_WORLD_MAX_ITEMS : 2 * cap;
+    /* where size_t is narrower than the byte count (32-bit targets), the
+     * exact need may still fit when the doubled capacity does not */
+    if ((size_t)cap > SIZE_MAX / size) cap = need;
+    if ((size_t)cap > SIZE_MAX / size) return SX_ERR_NO_MEMORY;
     fresh = sx_alloc((size_t)cap * size);
-    if (fresh == NULL) return false;
+    if (fresh == NULL) return SX_ERR_NO_MEMORY;
     if (*array != NULL) {
         memcpy(fresh, *array, (size_t)*capacity * size);
         sx_free(*array, (size_t)*capacity * size);
     }
     *array = fresh;
     *capacity = cap;
-    return true;
+    return SX_OK;
+}
+
+bool sx_grow_array(void **array, int *capacity, int need, size_t size) {
+    return sx_reserve_array(array, capacity, need, size) == SX_OK;
 }
 
 bool sx_grow_zeroed(void **array, int *capacity, int need, size_t size) {
@@ -272,7 +284,7 @@ sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *ou
         world->body_free = world->infos[slot].next_free;
         generation = world->infos[slot].generation;
     } else {
-        if (world->body_slots == 0x7FFFFFFF) return SX_ERR_CAPACITY;
+        if (world->body_slots >= SX_WORLD_MAX_ITEMS) return SX_ERR_CAPACITY;
         if (!sx_reserve_bodies(world, world->body_slots + 1)) return SX_ERR_NO_MEMORY;
         slot = world->body_slots++;
         generation = 1;
@@ -315,6 +327,17 @@ sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *ou
     return SX_OK;
 }
 
+/* Moves a dead slot to its next generation and returns true, or returns
+ * false when the slot has handed out its last one (UINT32_MAX): going on
+ * would wrap to 1 and revalidate the slot's first handle, so the slot is
+ * retired instead (never put on the free list; stale handles of it stay
+ * stale for good). A world loses a slot per 2^32 - 1 reuses of it. */
+static bool sx_generation_next(uint32_t *generation) {
+    if (*generation == UINT32_MAX) return false;
+    ++*generation;
+    return true;
+}
+
 /* Unlinks nothing: frees the collider slot (the caller fixes the list). */
 static void sx_free_collider_slot(sx_world *world, int slot) {
     sx_collider *c = &world->colliders[slot];
@@ -328,9 +351,11 @@ static void sx_free_collider_slot(sx_world *world, int slot) {
         c->part_count = 0;
     }
     c->alive = false;
-    c->generation = c->generation == 0xFFFFFFFFu ? 1u : c->generation + 1u;
-    c->next_free = world->collider_free;
-    world->collider_free = slot;
+    c->next_free = -1;
+    if (sx_generation_next(&c->generation)) {
+        c->next_free = world->collider_free;
+        world->collider_free = slot;
+    }
     /* bp_kind keeps the old kind: the next refresh of the sets sees the
      * change and takes the collider out of the broadphase */
     world->sets_dirty = true;
@@ -353,9 +378,11 @@ sx_status sx_destroy_body(sx_world *world, sx_body_id body) {
     info->first_collider = -1;
     info->alive = false;
     world->sets_dirty = true;
-    info->generation = info->generation == 0xFFFFFFFFu ? 1u : info->generation + 1u;
-    info->next_free = world->body_free;
-    world->body_free = slot;
+    info->next_free = -1;
+    if (sx_generation_next(&info->generation)) {
+        info->next_free = world->body_free;
+        world->body_free = slot;
+    }
     world->body_count--;
     return SX_OK;
 }
@@ -429,7 +456,7 @@ static sx_status sx_attach_collider(sx_world *world, int bslot, const sx_collide
         generation = world->colliders[slot].generation;
     } else {
         sx_status fail = SX_OK;
-        if (world->collider_slots == 0x7FFFFFFF) {
+        if (world->collider_slots >= SX_WORLD_MAX_ITEMS) {
             fail = SX_ERR_CAPACITY;
         } else if (!sx_reserve_colliders(world, world->collider_slots + 1)) {
             fail = SX_ERR_NO_MEMORY;

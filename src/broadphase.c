@@ -106,9 +106,10 @@ static sx_status sx_add_pair(sx_broadphase *bp, int a, int b) {
     void *p = bp->pairs;
     int lo = a < b ? a : b, hi = a < b ? b : a;
     if (bp->pair_count == bp->pair_capacity) {
-        bool ok = sx_grow_array(&p, &bp->pair_capacity, bp->pair_count + 1, sizeof(uint64_t));
+        sx_status s =
+            sx_reserve_array(&p, &bp->pair_capacity, bp->pair_count + 1, sizeof(uint64_t));
         bp->pairs = (uint64_t *)p;
-        if (!ok) return SX_ERR_NO_MEMORY;
+        if (s != SX_OK) return s;
     }
     bp->pairs[bp->pair_count++] = ((uint64_t)(uint32_t)lo << 32) | (uint64_t)(uint32_t)hi;
     return SX_OK;

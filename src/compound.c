@@ -397,7 +397,9 @@ static bool find_penetration_at(const side *a, const side *b, sx_vec2 d, sx_real
  * than the MTV (as a solver does) does not run into another part. */
 static bool clear_along(const side *a, const side *b, sx_vec2 d, sx_real best, sx_real *out) {
     sx_real t = SX_R(0.0);
-    int sweep, sweeps = 2 * a->count * b->count + 4;
+    /* 64-bit: two compounds of 2^15 parts would overflow an int here (the
+     * product of two int counts, doubled, still fits an int64_t) */
+    int64_t sweep, sweeps = 2 * (int64_t)a->count * (int64_t)b->count + 4;
     for (sweep = 0; sweep < sweeps; ++sweep) {
         bool moved = false;
         int i, j, k;

@@ -52,7 +52,8 @@ typedef struct decomp_work {
 
 size_t sx_decompose_scratch_bytes(int count) {
     size_t per = sizeof(sx_vec2) + (size_t)DECOMP_INTS_PER_POINT * sizeof(int);
-    if (count < 3) return 0;
+    /* the triangle indices (3 per point) stay within an int */
+    if (count < 3 || count > SX_DECOMPOSE_MAX_POINTS) return 0;
     if ((size_t)count > ((size_t)-1 - (size_t)DECOMP_ALIGN) / per) return 0;
     return (size_t)count * per + (size_t)DECOMP_ALIGN;
 }
@@ -233,6 +234,15 @@ static bool piece_valid(const decomp_work *w, const int *idx, int n, sx_hull *h)
         h->points[i] = w->pts[idx[i]];
     h->count = n;
     return sx_validate_hull(h, SX_R(0.0));
+}
+
+/* The convex polygon of the merged piece whose root is triangle t. */
+static sx_status piece_polygon(const decomp_work *w, int t, sx_shape *out) {
+    sx_hull h;
+    const int *idx = w->pverts + (size_t)t * (size_t)SX_MAX_POLYGON_VERTICES;
+    /* Merging only kept pieces that validate, so this cannot fail. */
+    (void)piece_valid(w, idx, w->pcount[t], &h);
+    return sx_polygon_from_hull(&h, SX_R(0.0), out);
 }
 
 /* No remaining reflex vertex lies in the closed triangle p-i-nx (a vertex on
@@ -549,17 +559,21 @@ sx_status sx_decompose_polygon_ex(const sx_vec2 *points, int count, sx_real weld
         *part_count = roots;
         return SX_ERR_CAPACITY;
     }
+    /* A piece whose mass properties overflow sx_real (an outline some 1e9 m
+     * across in the float build) cannot be a valid shape: the whole outline
+     * is refused, before any part is written, rather than losing pieces. */
+    for (i = 0; i < nt; ++i) {
+        sx_shape tmp;
+        if (w.parent[i] == i && piece_polygon(&w, i, &tmp) == SX_ERR_NONFINITE) {
+            return SX_ERR_NONFINITE;
+        }
+    }
     roots = 0;
     for (i = 0; i < nt; ++i) {
-        sx_hull h;
-        const int *idx = w.pverts + (size_t)i * (size_t)SX_MAX_POLYGON_VERTICES;
-        if (w.parent[i] != i) continue;
-        /* Merging only kept pieces that validate, so this cannot fail. */
-        (void)piece_valid(&w, idx, w.pcount[i], &h);
-        if (sx_polygon_from_hull(&h, SX_R(0.0), &parts[roots]) == SX_OK) ++roots;
+        if (w.parent[i] == i && piece_polygon(&w, i, &parts[roots]) == SX_OK) ++roots;
     }
     /* Far beyond SX_HUGE every piece can fail sx_polygon_from_hull (its
-     * area overflows): no part is no decomposition. */
+     * area rounds away): no part is no decomposition. */
     if (roots == 0) return SX_ERR_DEGENERATE;
     *part_count = roots;
     if (triangle_count != NULL) *triangle_count = nt;

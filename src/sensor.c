@@ -30,7 +30,7 @@ static bool sx_sensor_sees(const sx_world *world, const sx_collider *sensor, con
     return (a->category & b->mask) != 0 && (b->category & a->mask) != 0;
 }
 
-static bool sx_push_sensor_event(sx_world *world, uint64_t key, bool begin) {
+static sx_status sx_push_sensor_event(sx_world *world, uint64_t key, bool begin) {
     sx_sensor_event **events = begin ? &world->sensor_begin : &world->sensor_end;
     int *count = begin ? &world->sensor_begin_count : &world->sensor_end_count;
     int *capacity = begin ? &world->sensor_begin_capacity : &world->sensor_end_capacity;
@@ -38,9 +38,9 @@ static bool sx_push_sensor_event(sx_world *world, uint64_t key, bool begin) {
     sx_sensor_event *e;
     if (*count == *capacity) {
         void *p = *events;
-        bool ok = sx_grow_array(&p, capacity, *count + 1, sizeof(sx_sensor_event));
+        sx_status st = sx_reserve_array(&p, capacity, *count + 1, sizeof(sx_sensor_event));
         *events = (sx_sensor_event *)p;
-        if (!ok) return false;
+        if (st != SX_OK) return st;
     }
     e = &(*events)[(*count)++];
     e->sensor.index = (uint32_t)s;
@@ -51,7 +51,7 @@ static bool sx_push_sensor_event(sx_world *world, uint64_t key, bool begin) {
     e->sensor_body.generation = world->infos[world->colliders[s].body].generation;
     e->visitor_body.index = (uint32_t)world->colliders[v].body;
     e->visitor_body.generation = world->infos[world->colliders[v].body].generation;
-    return true;
+    return SX_OK;
 }
 
 /* Sorts a few ints ascending (insertion sort: a sensor sees few colliders). */
@@ -108,10 +108,10 @@ sx_status sx_sensors_update(sx_world *world) {
             if (!sx_colliders_overlap(s, xs, c, xc)) continue;
             if (world->sensor_count == world->sensor_capacity) {
                 void *p = world->sensor_pairs;
-                bool ok = sx_grow_array(&p, &world->sensor_capacity, world->sensor_count + 1,
-                                        sizeof(uint64_t));
+                st = sx_reserve_array(&p, &world->sensor_capacity, world->sensor_count + 1,
+                                      sizeof(uint64_t));
                 world->sensor_pairs = (uint64_t *)p;
-                if (!ok) return SX_ERR_NO_MEMORY;
+                if (st != SX_OK) return st;
             }
             world->sensor_pairs[world->sensor_count++] =
                 ((uint64_t)(uint32_t)i << 32) | (uint64_t)(uint32_t)j;
@@ -128,10 +128,12 @@ sx_status sx_sensors_update(sx_world *world) {
             ++i;
             ++j;
         } else if (!has_old || (has_new && kn < ko)) {
-            if (!sx_push_sensor_event(world, kn, true)) return SX_ERR_NO_MEMORY;
+            sx_status st = sx_push_sensor_event(world, kn, true);
+            if (st != SX_OK) return st;
             ++i;
         } else {
-            if (!sx_push_sensor_event(world, ko, false)) return SX_ERR_NO_MEMORY;
+            sx_status st = sx_push_sensor_event(world, ko, false);
+            if (st != SX_OK) return st;
             ++j;
         }
     }

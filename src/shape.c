@@ -183,6 +183,21 @@ static bool core_centroid(const sx_polygon *p, sx_vec2 *centroid) {
     return sx_vec2_is_finite(*centroid);
 }
 
+/* SX_OK when a valid shape's area and rotational inertia at unit density
+ * fit sx_real, SX_ERR_NONFINITE when either overflows it (both are summed in
+ * the wide real, which does not overflow for finite input): a circle of
+ * radius 1e10 in the float build is a fine geometric value, but a body made
+ * of it would have an infinite mass or inertia. */
+static sx_status validate_mass(const sx_shape *shape) {
+    sx_wide area, inertia;
+    sx_wvec2 center;
+    sx_shape_wide_mass(shape, &area, &center, &inertia);
+    if (!(area <= (sx_wide)SX_REAL_MAX) || !(inertia <= (sx_wide)SX_REAL_MAX)) {
+        return SX_ERR_NONFINITE;
+    }
+    return SX_OK;
+}
+
 sx_status sx_polygon_from_hull(const sx_hull *hull, sx_real radius, sx_shape *out) {
     sx_shape s;
     sx_polygon *p = &s.u.polygon;
@@ -210,6 +225,7 @@ sx_status sx_polygon_from_hull(const sx_hull *hull, sx_real radius, sx_shape *ou
     }
     if (!core_centroid(p, &p->centroid)) return SX_ERR_DEGENERATE;
     p->radius = radius;
+    if (validate_mass(&s) != SX_OK) return SX_ERR_NONFINITE;
     *out = s;
     return SX_OK;
 }
@@ -282,12 +298,15 @@ static sx_status validate_polygon(const sx_polygon *p) {
 }
 
 sx_status sx_shape_validate(const sx_shape *shape) {
+    sx_status st;
     if (shape == NULL) return SX_ERR_INVALID_ARG;
     switch (shape->type) {
     case SX_SHAPE_CIRCLE:
         if (!sx_vec2_is_finite(shape->u.circle.center)) return SX_ERR_NONFINITE;
-        return validate_radius(shape->u.circle.radius);
+        st = validate_radius(shape->u.circle.radius);
+        break;
     case SX_SHAPE_SEGMENT: {
+        /* no area: no mass to overflow */
         const sx_segment *s = &shape->u.segment;
         sx_real len;
         if (!sx_vec2_is_finite(s->a) || !sx_vec2_is_finite(s->b)) return SX_ERR_NONFINITE;
@@ -297,11 +316,13 @@ sx_status sx_shape_validate(const sx_shape *shape) {
     case SX_SHAPE_CAPSULE: {
         const sx_capsule *c = &shape->u.capsule;
         if (!sx_vec2_is_finite(c->a) || !sx_vec2_is_finite(c->b)) return SX_ERR_NONFINITE;
-        return validate_radius(c->radius);
+        st = validate_radius(c->radius);
+        break;
     }
-    case SX_SHAPE_POLYGON: return validate_polygon(&shape->u.polygon);
+    case SX_SHAPE_POLYGON: st = validate_polygon(&shape->u.polygon); break;
     default: return SX_ERR_INVALID_ARG;
     }
+    return st != SX_OK ? st : validate_mass(shape);
 }
 
 /* ---- mass properties ---------------------------------------------------------- */

@@ -103,6 +103,19 @@ sx_status sx_world_def_validate(const sx_world_def *d, const char **field) {
             bad = "time_to_sleep";
         }
     }
+    /* a step costs sub_steps x iterations passes: bounded, so it returns */
+    if (bad == NULL) {
+        s = SX_ERR_CAPACITY;
+        if (d->sub_steps > SX_MAX_SUB_STEPS) {
+            bad = "sub_steps";
+        } else if (d->velocity_iterations > SX_MAX_ITERATIONS) {
+            bad = "velocity_iterations";
+        } else if (d->position_iterations > SX_MAX_ITERATIONS) {
+            bad = "position_iterations";
+        } else if (d->body_capacity > SX_WORLD_MAX_ITEMS) {
+            bad = "body_capacity";
+        }
+    }
     if (field != NULL) *field = bad;
     return bad == NULL ? SX_OK : s;
 }
@@ -434,14 +447,14 @@ static void sx_match_point(sx_contact_point *p, const sx_contact *old) {
 }
 
 /* Appends the event of contact c to an event array. */
-static bool sx_push_event(const sx_world *world, const sx_contact *c, sx_contact_event **events,
-                          int *count, int *capacity) {
+static sx_status sx_push_event(const sx_world *world, const sx_contact *c,
+                               sx_contact_event **events, int *count, int *capacity) {
     sx_contact_event *e;
     if (*count == *capacity) {
         void *p = *events;
-        bool ok = sx_grow_array(&p, capacity, *count + 1, sizeof(sx_contact_event));
+        sx_status s = sx_reserve_array(&p, capacity, *count + 1, sizeof(sx_contact_event));
         *events = (sx_contact_event *)p;
-        if (!ok) return false;
+        if (s != SX_OK) return s;
     }
     e = &(*events)[(*count)++];
     e->collider_a.index = (uint32_t)c->collider_a;
@@ -452,7 +465,7 @@ static bool sx_push_event(const sx_world *world, const sx_contact *c, sx_contact
     e->body_a.generation = world->infos[c->body_a].generation;
     e->body_b.index = (uint32_t)c->body_b;
     e->body_b.generation = world->infos[c->body_b].generation;
-    return true;
+    return SX_OK;
 }
 
 /* The index past the run of contacts with the key of contacts[i] (a
@@ -469,6 +482,7 @@ static int sx_skip_run(const sx_contact *contacts, int count, int i) {
  * (one event per collider pair, however many part pairs touch). */
 static sx_status sx_record_events(sx_world *world) {
     int i = 0, j = 0;
+    sx_status s;
     while (i < world->contact_count || j < world->old_contact_count) {
         const sx_contact *n = i < world->contact_count ? &world->contacts[i] : NULL;
         const sx_contact *o = j < world->old_contact_count ? &world->old_contacts[j] : NULL;
@@ -478,16 +492,16 @@ static sx_status sx_record_events(sx_world *world) {
         } else if (o == NULL || (n != NULL && n->key < o->key)) {
             if (world->contacts[i].thawed) {
                 world->contacts[i].thawed = false;
-            } else if (!sx_push_event(world, n, &world->begin_events, &world->begin_count,
-                                      &world->begin_capacity)) {
-                return SX_ERR_NO_MEMORY;
+            } else {
+                s = sx_push_event(world, n, &world->begin_events, &world->begin_count,
+                                  &world->begin_capacity);
+                if (s != SX_OK) return s;
             }
             i = sx_skip_run(world->contacts, world->contact_count, i);
         } else {
-            if (!sx_push_event(world, o, &world->end_events, &world->end_count,
-                               &world->end_capacity)) {
-                return SX_ERR_NO_MEMORY;
-            }
+            s = sx_push_event(world, o, &world->end_events, &world->end_count,
+                              &world->end_capacity);
+            if (s != SX_OK) return s;
             j = sx_skip_run(world->old_contacts, world->old_contact_count, j);
         }
     }
@@ -522,13 +536,14 @@ sx_status sx_world_clear_events(sx_world *world) {
 }
 
 /* Room for one more contact in the current list. */
-static bool sx_reserve_contact(sx_world *world) {
+static sx_status sx_reserve_contact(sx_world *world) {
     void *p = world->contacts;
-    bool ok;
-    if (world->contact_count < world->contact_capacity) return true;
-    ok = sx_grow_array(&p, &world->contact_capacity, world->contact_count + 1, sizeof(sx_contact));
+    sx_status s;
+    if (world->contact_count < world->contact_capacity) return SX_OK;
+    s = sx_reserve_array(&p, &world->contact_capacity, world->contact_count + 1,
+                         sizeof(sx_contact));
     world->contacts = (sx_contact *)p;
-    return ok;
+    return s;
 }
 
 /* True when a contact waits for a sleeping dynamic body: the solver skips it
@@ -539,16 +554,18 @@ static bool sx_contact_sleeps(const sx_world *world, const sx_contact *c) {
            ((a->dynamic && !a->awake) || (b->dynamic && !b->awake));
 }
 
-/* Appends a copy of c to a growing contact array; false when out of memory. */
-static bool sx_push_contact(sx_contact **array, int *count, int *capacity, const sx_contact *c) {
+/* Appends a copy of c to a growing contact array (sx_reserve_array's
+ * status). */
+static sx_status sx_push_contact(sx_contact **array, int *count, int *capacity,
+                                 const sx_contact *c) {
     if (*count == *capacity) {
         void *p = *array;
-        bool ok = sx_grow_array(&p, capacity, *count + 1, sizeof(sx_contact));
+        sx_status s = sx_reserve_array(&p, capacity, *count + 1, sizeof(sx_contact));
         *array = (sx_contact *)p;
-        if (!ok) return false;
+        if (s != SX_OK) return s;
     }
     (*array)[(*count)++] = *c;
-    return true;
+    return SX_OK;
 }
 
 /* Moves the sleeping contacts of the current list into the frozen store. */
@@ -557,10 +574,9 @@ static sx_status sx_freeze_contacts(sx_world *world) {
     for (i = 0; i < world->contact_count; ++i) {
         const sx_contact *c = &world->contacts[i];
         if (sx_contact_sleeps(world, c)) {
-            if (!sx_push_contact(&world->frozen, &world->frozen_count, &world->frozen_capacity,
-                                 c)) {
-                return SX_ERR_NO_MEMORY;
-            }
+            sx_status s =
+                sx_push_contact(&world->frozen, &world->frozen_count, &world->frozen_capacity, c);
+            if (s != SX_OK) return s;
         } else {
             world->contacts[n++] = *c;
         }
@@ -599,7 +615,8 @@ static bool sx_has_key(const sx_contact *list, int count, uint64_t key) {
 static sx_status sx_thaw_contacts(sx_world *world, bool mark) {
     int i, j, out, n = 0, k = 0;
     void *p;
-    bool ok, thaw = world->thaw_pending;
+    sx_status s;
+    bool thaw = world->thaw_pending;
     world->thaw_pending = false;
     world->thaw_count = 0;
     for (i = 0; i < world->frozen_count; ++i) {
@@ -610,9 +627,8 @@ static sx_status sx_thaw_contacts(sx_world *world, bool mark) {
             continue;
         }
         if (sx_has_key(world->contacts, world->contact_count, c->key)) continue;
-        if (!sx_push_contact(&world->thaw, &world->thaw_count, &world->thaw_capacity, c)) {
-            return SX_ERR_NO_MEMORY;
-        }
+        s = sx_push_contact(&world->thaw, &world->thaw_count, &world->thaw_capacity, c);
+        if (s != SX_OK) return s;
         world->thaw[world->thaw_count - 1].thawed = mark;
     }
     world->frozen_count = n;
@@ -622,9 +638,10 @@ static sx_status sx_thaw_contacts(sx_world *world, bool mark) {
     /* (key, part_a, part_b) is unique: the order is total, the same on every run */
     qsort(world->thaw, (size_t)k, sizeof(sx_contact), sx_contact_key_cmp);
     p = world->contacts;
-    ok = sx_grow_array(&p, &world->contact_capacity, world->contact_count + k, sizeof(sx_contact));
+    s = sx_reserve_array(&p, &world->contact_capacity, world->contact_count + k,
+                         sizeof(sx_contact));
     world->contacts = (sx_contact *)p;
-    if (!ok) return SX_ERR_NO_MEMORY;
+    if (s != SX_OK) return s;
     /* merge from the back */
     i = world->contact_count - 1;
     j = k - 1;
@@ -651,6 +668,7 @@ static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, c
     const sx_body_sim *ba = &world->sims[ca->body], *bb = &world->sims[cb->body];
     const sx_contact *old = NULL;
     sx_contact *c;
+    sx_status s;
     for (k = old_begin; k < old_end; ++k) {
         if (world->old_contacts[k].part_a == pa && world->old_contacts[k].part_b == pb) {
             old = &world->old_contacts[k];
@@ -660,7 +678,8 @@ static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, c
     /* an awake body touching a sleeping one wakes its island */
     if (!ba->awake) sx_wake_body(world, ca->body);
     if (!bb->awake) sx_wake_body(world, cb->body);
-    if (!sx_reserve_contact(world)) return SX_ERR_NO_MEMORY;
+    s = sx_reserve_contact(world);
+    if (s != SX_OK) return s;
     c = &world->contacts[world->contact_count++];
     c->key = key;
     c->thawed = false;

@@ -42,7 +42,7 @@ typedef struct sx_body_sim {
 } sx_body_sim;
 
 typedef struct sx_body_info {
-    uint32_t generation; /* bumped on destroy; never 0 */
+    uint32_t generation; /* bumped on destroy; never 0; retired at UINT32_MAX */
     bool alive;
     bool enabled;
     bool fixed_rotation;
@@ -345,9 +345,17 @@ static inline bool sx_colliders_overlap(const sx_collider *a, sx_xform xa, const
     return sx_compound_overlap_compound(&va, xa, &vb, xb);
 }
 
+/* Every array of a world holds at most SX_WORLD_MAX_ITEMS (2^30 - 1)
+ * elements, so a count plus one, twice a count, or the sum of two counts,
+ * the needs the callers compute, never overflow an int. */
+
 /* Grows *array (elements of `size` bytes, *capacity of them) to hold at least
- * `need`, doubling; copies the old contents. false when out of memory (the
- * array is then unchanged). */
+ * `need`, doubling up to SX_WORLD_MAX_ITEMS; copies the old contents.
+ * SX_ERR_CAPACITY when need > SX_WORLD_MAX_ITEMS, SX_ERR_NO_MEMORY when the
+ * bytes do not fit a size_t or the allocator fails (the array is then
+ * unchanged). */
+sx_status sx_reserve_array(void **array, int *capacity, int need, size_t size);
+/* sx_reserve_array == SX_OK, for callers that answer any failure alike. */
 bool sx_grow_array(void **array, int *capacity, int need, size_t size);
 /* sx_grow_array that zeroes the elements it adds. */
 bool sx_grow_zeroed(void **array, int *capacity, int need, size_t size);

@@ -1066,7 +1066,9 @@ static void separations_at_the_top_of_the_range_still_choose_a_face(void **state
     bool hit_ab, hit_ba;
     int n;
     (void)state;
-    assert_int_equal(sx_shape_validate(&giant), SX_OK);
+    /* validation refuses it (its mass overflows), but the narrowphase, which
+     * does not validate, must still answer for it */
+    assert_int_equal(sx_shape_validate(&giant), SX_ERR_NONFINITE);
     n = sx_collide(&giant, x, &small, x, &m);
     assert_manifold_sane(&m, n);
     n = sx_collide(&small, x, &giant, x, &m);

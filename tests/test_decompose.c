@@ -9,6 +9,7 @@
  * (L, U, star, comb, spiral) in both windings also check the part count
  * against the triangle count; random simple outlines (star-shaped and
  * self-avoiding walks, fixed seeds) check the properties at scale. */
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -504,6 +505,36 @@ static void non_finite_points_are_refused(void **state) {
     assert_int_equal(status_of(p, 6), SX_ERR_NONFINITE);
 }
 
+/* Regression (issue 28): parts whose mass properties overflow sx_real are
+ * refused by sx_shape_validate, so an outline that large is refused whole
+ * (SX_ERR_NONFINITE, parts untouched) instead of yielding invalid parts or
+ * silently losing some; at a quarter of the scale it decomposes. */
+static void an_outline_too_large_for_finite_mass_is_refused_whole(void **state) {
+    const double quartic_root = pow((double)SX_REAL_MAX, 0.25);
+    sx_vec2 p[6];
+    decomp d, before;
+    int i, n = make_l(p);
+    (void)state;
+    for (i = 0; i < n; ++i)
+        p[i] = sx_scale(p[i], (sx_real)(2.0 * quartic_root));
+    memset(&d, 0x5A, sizeof d);
+    before = d;
+    run_decompose(p, n, &d);
+    assert_int_equal(d.status, SX_ERR_NONFINITE);
+    assert_int_equal(d.part_count, 0);
+    assert_true(memcmp(d.parts, before.parts, sizeof d.parts) == 0);
+    for (i = 0; i < n; ++i)
+        p[i] = sx_scale(p[i], SX_R(0.25));
+    run_decompose(p, n, &d);
+    assert_int_equal(d.status, SX_OK);
+    assert_int_equal(d.part_count, 2);
+    for (i = 0; i < d.part_count; ++i) {
+        sx_mass_data md = sx_shape_mass(&d.parts[i], SX_R(1.0));
+        assert_int_equal(sx_shape_validate(&d.parts[i]), SX_OK);
+        assert_true(sx_is_finite(md.mass) && sx_is_finite(md.rotational_inertia));
+    }
+}
+
 static void bad_arguments_and_capacity_are_reported(void **state) {
     sx_vec2 p[MAX_OUTLINE];
     sx_shape parts[MAX_OUTLINE];
@@ -516,7 +547,15 @@ static void bad_arguments_and_capacity_are_reported(void **state) {
     bytes = sx_decompose_scratch_bytes(n);
     assert_true(bytes > 0);
     assert_int_equal(sx_decompose_scratch_bytes(2), 0);
+    /* the point limit (issue 28: past it the triangle indices overflow an
+     * int): refused before any point is read or any scratch used */
+    assert_true(sx_decompose_scratch_bytes(SX_DECOMPOSE_MAX_POINTS) > 0);
+    assert_int_equal(sx_decompose_scratch_bytes(SX_DECOMPOSE_MAX_POINTS + 1), 0);
+    assert_int_equal(sx_decompose_scratch_bytes(INT_MAX), 0);
     scratch = malloc(bytes);
+    assert_int_equal(sx_decompose_polygon(p, SX_DECOMPOSE_MAX_POINTS + 1, scratch, bytes, parts,
+                                          MAX_OUTLINE, &count, NULL),
+                     SX_ERR_CAPACITY);
     assert_int_equal(
         sx_decompose_polygon(NULL, n, scratch, bytes, parts, MAX_OUTLINE, &count, NULL),
         SX_ERR_INVALID_ARG);
@@ -874,6 +913,7 @@ int main(void) {
         cmocka_unit_test(collinear_or_duplicate_outlines_are_degenerate),
         cmocka_unit_test(non_finite_points_are_refused),
         cmocka_unit_test(bad_arguments_and_capacity_are_reported),
+        cmocka_unit_test(an_outline_too_large_for_finite_mass_is_refused_whole),
         cmocka_unit_test(point_in_outline_follows_the_winding_number),
         cmocka_unit_test(a_spike_whose_base_is_below_the_tolerance_is_dropped),
         cmocka_unit_test(outline_pinched_below_the_weld_tolerance_is_refused),

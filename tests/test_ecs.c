@@ -3,6 +3,7 @@
  * plain world's, the fixed tick and its cap, contact events, writes to the
  * components taking effect, deletion in mid-contact, helpers, reflection,
  * and many entities (leaks are ASan's to find in the SAN=1 build). */
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -199,6 +200,23 @@ static void a_long_frame_runs_at_most_max_steps_and_drops_the_rest(void **state)
     /* the second long of time is not caught up later */
     progress(world, 1, 1.0 / 60.0);
     assert_int_equal(sx_ecs_step_count(world), 6);
+    ecs_fini(world);
+}
+
+/* Settings out of range run no step (issue 28: sub_steps = INT_MAX made a
+ * frame that never returns); back in range, stepping resumes. */
+static void sub_steps_beyond_the_limit_run_no_step(void **state) {
+    ecs_world_t *world = make_world();
+    (void)state;
+    ecs_singleton_ensure(world, SxPhysicsSettings)->sub_steps = INT_MAX;
+    progress(world, 3, 1.0 / 60.0);
+    assert_int_equal(sx_ecs_step_count(world), 0);
+    ecs_singleton_ensure(world, SxPhysicsSettings)->sub_steps = SX_MAX_SUB_STEPS + 1;
+    progress(world, 3, 1.0 / 60.0);
+    assert_int_equal(sx_ecs_step_count(world), 0);
+    ecs_singleton_ensure(world, SxPhysicsSettings)->sub_steps = SX_MAX_SUB_STEPS;
+    progress(world, 1, 1.0 / 60.0);
+    assert_int_equal(sx_ecs_step_count(world), 1);
     ecs_fini(world);
 }
 
@@ -946,6 +964,7 @@ int main(void) {
         cmocka_unit_test(ball_bounce_is_bit_identical_to_the_plain_world),
         cmocka_unit_test(fixed_tick_runs_whole_steps_and_stages_once_per_sub_step),
         cmocka_unit_test(a_long_frame_runs_at_most_max_steps_and_drops_the_rest),
+        cmocka_unit_test(sub_steps_beyond_the_limit_run_no_step),
         cmocka_unit_test(contact_begin_and_end_reach_observers_exactly_once),
         cmocka_unit_test(a_ball_through_a_sensor_gives_one_sensor_begin_and_end),
         cmocka_unit_test(teleport_and_velocity_writes_take_effect_at_the_next_step),

@@ -1001,6 +1001,41 @@ static void kinematic_paddle_pushes_a_box_without_being_pushed_back(void **state
     sx_world_destroy(w);
 }
 
+/* world.h: contacts cover each body's motion over the step (the speculative
+ * margin grows by the distance it can travel), so a body moving straight at
+ * a collider stops at it at any speed. A 0.1 m ball meets a 0.1 m wall at
+ * 60 Hz and 4 sub-steps from ten start positions spread over one sub-step's
+ * travel, at 11 m/s (within the old rule of thumb), 100 m/s (a step's travel
+ * is 17 times the wall's thickness) and 1000 m/s: it rests against the near
+ * face (within two slops) from every start. */
+static void fast_bodies_stop_at_a_thin_wall_at_any_speed(void **state) {
+    static const double speeds[3] = {11.0, 100.0, 1000.0};
+    const sx_shape wall = sx_box_shape(SX_R(0.05), SX_R(2.0));
+    const sx_shape ball = sx_circle_shape(sx_v2_zero(), SX_R(0.05));
+    int s, k;
+    (void)state;
+    for (s = 0; s < 3; ++s) {
+        double travel = speeds[s] / 240.0;
+        for (k = 0; k < 10; ++k) {
+            sx_world *w = make_world(sx_v2_zero());
+            sx_body_id b;
+            sx_vec2 p;
+            (void)add_body(w, SX_BODY_STATIC, sx_v2_zero(), SX_R(0.0), &wall, SX_R(0.0), SX_R(0.0),
+                           SX_R(0.0));
+            b = add_body(w, SX_BODY_DYNAMIC, sx_v2((sx_real)(-1.0 - 0.1 * k * travel), SX_R(0.0)),
+                         SX_R(0.0), &ball, SX_R(1.0), SX_R(0.0), SX_R(0.0));
+            assert_int_equal(
+                sx_body_set_linear_velocity(w, b, sx_v2((sx_real)speeds[s], SX_R(0.0))), SX_OK);
+            step_n(w, 30);
+            p = sx_body_get_position(w, b);
+            /* against the near face: centre at -0.1, within two slops */
+            assert_true(p.x <= SX_R(-0.1) + SX_R(0.01));
+            assert_true(p.x >= SX_R(-0.1) - SX_R(0.01));
+            sx_world_destroy(w);
+        }
+    }
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(bounce_apex_over_drop_is_restitution_squared),
@@ -1032,6 +1067,7 @@ int main(void) {
         cmocka_unit_test(mixed_shapes_in_a_box_run_20_seconds_without_escaping_or_blowing_up),
         cmocka_unit_test(bouncy_pile_comes_to_rest),
         cmocka_unit_test(kinematic_paddle_pushes_a_box_without_being_pushed_back),
+        cmocka_unit_test(fast_bodies_stop_at_a_thin_wall_at_any_speed),
     };
     return cmocka_run_group_tests_name("scenes", tests, sx_test_group_setup,
                                        sx_test_group_teardown);

@@ -169,9 +169,75 @@ static void validate_accepts_built_polygons_and_refuses_tampered_ones(void **sta
 #else
     assert_int_equal(sx_shape_validate(&s), SX_OK);
 #endif
-    /* Box edges at the top of the range: the check does not overflow. */
+    /* Box edges at the top of the range: the lean check does not overflow
+     * (the box passes it), and only its mass, which does, is refused. */
     s = sx_box_shape(SX_REAL_MAX, SX_REAL_MAX);
+    assert_int_equal(sx_shape_validate(&s), SX_ERR_NONFINITE);
+}
+
+/* Regression (issue 28): a circle of radius up to SX_REAL_MAX passed
+ * validation and had infinite mass properties (the world refused it only
+ * later, by its extent). Validation and the polygon builders now refuse any
+ * shape whose area or inertia at density 1 overflows sx_real with
+ * SX_ERR_NONFINITE; just below the limit a shape is valid and its mass
+ * properties are finite. */
+static void shapes_whose_mass_overflows_are_refused(void **state) {
+    /* a circle's polar inertia pi r^4 / 2 reaches SX_REAL_MAX at r_max */
+    const double r_max = pow((double)SX_REAL_MAX, 0.25) * pow(2.0 / PI_D, 0.25);
+    const sx_vec2 square[4] = {{SX_R(-1.0), SX_R(-1.0)},
+                               {SX_R(1.0), SX_R(-1.0)},
+                               {SX_R(1.0), SX_R(1.0)},
+                               {SX_R(-1.0), SX_R(1.0)}};
+    sx_vec2 big[4];
+    sx_shape s, before;
+    sx_mass_data md;
+    sx_compound_part part;
+    sx_compound c;
+    int i;
+    (void)state;
+    s = sx_circle_shape(sx_v2_zero(), SX_REAL_MAX);
+    assert_int_equal(sx_shape_validate(&s), SX_ERR_NONFINITE);
+    md = sx_shape_mass(&s, SX_R(1.0));
+    assert_true(md.mass == SX_R(0.0) && md.rotational_inertia == SX_R(0.0));
+    s = sx_circle_shape(sx_v2(SX_R(3.0), SX_R(-2.0)), (sx_real)(1.01 * r_max));
+    assert_int_equal(sx_shape_validate(&s), SX_ERR_NONFINITE);
+    s = sx_circle_shape(sx_v2(SX_R(3.0), SX_R(-2.0)), (sx_real)(0.99 * r_max));
     assert_int_equal(sx_shape_validate(&s), SX_OK);
+    md = sx_shape_mass(&s, SX_R(1.0));
+    assert_true(sx_is_finite(md.mass) && sx_is_finite(md.rotational_inertia));
+    assert_near(md.rotational_inertia, 0.5 * PI_D * pow(0.99 * r_max, 4.0),
+                1e-5 * (double)SX_REAL_MAX);
+    /* capsules: by the radius, or by the length with a small radius */
+    s = sx_capsule_shape(sx_v2_zero(), sx_v2(SX_R(1.0), SX_R(0.0)), SX_REAL_MAX);
+    assert_int_equal(sx_shape_validate(&s), SX_ERR_NONFINITE);
+    s = sx_capsule_shape(sx_v2(-SX_REAL_MAX / SX_R(4.0), SX_R(0.0)),
+                         sx_v2(SX_REAL_MAX / SX_R(4.0), SX_R(0.0)), SX_R(1.0));
+    assert_int_equal(sx_shape_validate(&s), SX_ERR_NONFINITE);
+    /* a segment has no mass: never refused for its size */
+    s = sx_segment_shape(sx_v2(-SX_REAL_MAX / SX_R(4.0), SX_R(0.0)),
+                         sx_v2(SX_REAL_MAX / SX_R(4.0), SX_R(0.0)));
+    assert_int_equal(sx_shape_validate(&s), SX_OK);
+    /* polygons: a box value, the builder on a large cloud, and a unit
+     * square rounded by a huge radius; the builder leaves *out alone */
+    s = sx_box_shape((sx_real)r_max, (sx_real)r_max);
+    assert_int_equal(sx_shape_validate(&s), SX_ERR_NONFINITE);
+    for (i = 0; i < 4; ++i)
+        big[i] = sx_scale(square[i], (sx_real)r_max);
+    memset(&before, 0x5A, sizeof before);
+    s = before;
+    assert_int_equal(sx_polygon_shape(big, 4, SX_R(0.0), &s), SX_ERR_NONFINITE);
+    assert_int_equal(sx_polygon_shape(square, 4, (sx_real)(2.0 * r_max), &s), SX_ERR_NONFINITE);
+    assert_true(memcmp(&s, &before, sizeof s) == 0);
+    for (i = 0; i < 4; ++i)
+        big[i] = sx_scale(square[i], (sx_real)(0.5 * r_max));
+    assert_int_equal(sx_polygon_shape(big, 4, SX_R(0.0), &s), SX_OK);
+    md = sx_shape_mass(&s, SX_R(1.0));
+    assert_true(sx_is_finite(md.mass) && sx_is_finite(md.rotational_inertia));
+    /* a compound part inherits the refusal */
+    part = sx_compound_part_make(sx_circle_shape(sx_v2_zero(), SX_REAL_MAX), sx_xform_identity());
+    c.parts = &part;
+    c.count = 1;
+    assert_int_equal(sx_compound_validate(&c), SX_ERR_NONFINITE);
 }
 
 /* ---- mass: closed forms ----------------------------------------------------- */
@@ -687,6 +753,7 @@ int main(void) {
         cmocka_unit_test(validate_accepts_good_circles_and_refuses_bad_ones),
         cmocka_unit_test(validate_accepts_good_segments_and_capsules_and_refuses_bad_ones),
         cmocka_unit_test(validate_accepts_built_polygons_and_refuses_tampered_ones),
+        cmocka_unit_test(shapes_whose_mass_overflows_are_refused),
         cmocka_unit_test(box_mass_is_density_times_area_and_inertia_m_w2_h2_over_12),
         cmocka_unit_test(disc_mass_is_pi_r2_and_inertia_m_r2_over_2),
         cmocka_unit_test(segment_has_no_mass_and_its_centroid_is_the_midpoint),

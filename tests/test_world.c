@@ -3,6 +3,8 @@
  * symplectic Euler's closed form, bad input, determinism, filtering and
  * memory. Scenes with contacts and known physical answers are in
  * test_scenes.c. */
+#include <limits.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "test_support.h"
@@ -66,6 +68,111 @@ static void world_create_refuses_bad_settings_with_null(void **state) {
     assert_int_equal(sx_world_body_count(w), 0);
     sx_world_destroy(w);
     sx_world_destroy(NULL);
+}
+
+/* Sets the int field of *d to its largest value (valid), one more and
+ * INT_MAX (both SX_ERR_CAPACITY, and no world), and leaves it at the
+ * largest. */
+static void assert_bound(sx_world_def *d, int *field, int largest) {
+    *field = largest;
+    assert_int_equal(sx_world_def_validate(d, NULL), SX_OK);
+    *field = largest + 1;
+    assert_int_equal(sx_world_def_validate(d, NULL), SX_ERR_CAPACITY);
+    *field = INT_MAX;
+    assert_int_equal(sx_world_def_validate(d, NULL), SX_ERR_CAPACITY);
+    assert_null(sx_world_create(d));
+    *field = largest;
+}
+
+/* Regression (issue 28): body_capacity = INT_MAX made the capacity
+ * doubling overflow an int, and sx_world_create looped forever at -O2; no
+ * upper bound on sub_steps and the iteration counts let INT_MAX make a step
+ * that never returns. Each refused value now has its status. */
+static void world_def_validate_gives_the_reason_and_bounds_every_size(void **state) {
+    sx_world_def d = sx_default_world_def();
+    (void)state;
+    assert_int_equal(sx_world_def_validate(&d, NULL), SX_OK);
+    assert_int_equal(sx_world_def_validate(NULL, NULL), SX_ERR_INVALID_ARG);
+    d.sub_steps = 0;
+    assert_int_equal(sx_world_def_validate(&d, NULL), SX_ERR_INVALID_ARG);
+    d = sx_default_world_def();
+    d.time_to_sleep = SX_R(1.0) / SX_R(0.0);
+    assert_int_equal(sx_world_def_validate(&d, NULL), SX_ERR_NONFINITE);
+    d = sx_default_world_def();
+    d.body_capacity = -1;
+    assert_int_equal(sx_world_def_validate(&d, NULL), SX_ERR_INVALID_ARG);
+    /* each bound: accepted at the bound, refused one past it and at INT_MAX */
+    d = sx_default_world_def();
+    assert_bound(&d, &d.sub_steps, SX_MAX_SUB_STEPS);
+    assert_bound(&d, &d.velocity_iterations, SX_MAX_ITERATIONS);
+    assert_bound(&d, &d.position_iterations, SX_MAX_ITERATIONS);
+    assert_bound(&d, &d.body_capacity, SX_WORLD_MAX_ITEMS);
+}
+
+/* An allocator that refuses any block above a limit and records the largest
+ * request (a huge reservation is asked for, refused, and leaves nothing). */
+typedef struct capped_allocator {
+    size_t limit, largest;
+} capped_allocator;
+
+static void *capped_alloc(size_t size, void *context) {
+    capped_allocator *c = (capped_allocator *)context;
+    if (size > c->largest) c->largest = size;
+    return size > c->limit ? NULL : malloc(size);
+}
+
+static void capped_free(void *memory, size_t size, void *context) {
+    (void)size;
+    (void)context;
+    free(memory);
+}
+
+static void the_largest_body_capacity_is_asked_for_once_and_refused_cleanly(void **state) {
+    capped_allocator c = {(size_t)1 << 24, 0};
+    sx_world_def d = sx_default_world_def();
+    size_t live = sx_live_bytes();
+    (void)state;
+    d.body_capacity = SX_WORLD_MAX_ITEMS;
+    sx_set_allocator(capped_alloc, capped_free, &c);
+    assert_null(sx_world_create(&d));
+    sx_set_allocator(NULL, NULL, NULL);
+    /* the exact reservation, not a doubled one: at least a byte per body,
+     * and no more than a kilobyte per body */
+    assert_true(c.largest >= (size_t)SX_WORLD_MAX_ITEMS);
+    assert_true(c.largest / (size_t)SX_WORLD_MAX_ITEMS < 1024);
+    assert_true(sx_live_bytes() == live);
+}
+
+/* A world at the largest sub-step and iteration counts steps, and returns. */
+static void a_world_at_the_largest_step_counts_steps_and_returns(void **state) {
+    sx_world_def d = sx_default_world_def();
+    sx_body_def bd = sx_default_body_def();
+    sx_collider_def cd = sx_default_collider_def();
+    sx_body_id ground, box;
+    sx_world *w;
+    sx_vec2 p;
+    (void)state;
+    d.sub_steps = SX_MAX_SUB_STEPS;
+    d.velocity_iterations = SX_MAX_ITERATIONS;
+    d.position_iterations = SX_MAX_ITERATIONS;
+    w = sx_world_create(&d);
+    assert_non_null(w);
+    bd.position = sx_v2(SX_R(0.0), SX_R(-1.0));
+    cd.shape = sx_box_shape(SX_R(5.0), SX_R(1.0));
+    assert_int_equal(sx_create_body(w, &bd, &ground), SX_OK);
+    assert_int_equal(sx_body_add_collider(w, ground, &cd, NULL), SX_OK);
+    bd.type = SX_BODY_DYNAMIC;
+    bd.position = sx_v2(SX_R(0.0), SX_R(0.5));
+    cd.shape = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    assert_int_equal(sx_create_body(w, &bd, &box), SX_OK);
+    assert_int_equal(sx_body_add_collider(w, box, &cd, NULL), SX_OK);
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    /* resting on the ground: within a slop of where it started */
+    p = sx_body_get_position(w, box);
+    assert_near(p.y, 0.5, 0.005);
+    assert_near(p.x, 0.0, 1e-4);
+    sx_world_destroy(w);
 }
 
 /* ---- handles ------------------------------------------------------------------ */
@@ -917,9 +1024,11 @@ static void overflowing_force_or_impulse_at_a_point_is_refused_not_nan(void **st
 }
 
 /* Found by fuzz/fuzz_world.c: a dynamic body with a circle of radius 2.4e28
- * (a valid shape) had mass inf and its centre of mass inf / inf = NaN. Such
- * a shape is now refused (it reaches beyond SX_HUGE); a mass that overflows
- * through its density still gives mass SX_REAL_MAX and no NaN. */
+ * (then a valid shape) had mass inf and its centre of mass inf / inf = NaN.
+ * Such a shape is now refused: by sx_shape_validate in the float build (its
+ * mass overflows), for reaching beyond SX_HUGE in the double one; a mass
+ * that overflows through its density still gives mass SX_REAL_MAX and no
+ * NaN. */
 static void a_collider_whose_mass_overflows_gives_no_nan(void **state) {
     sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
     sx_shape huge = sx_circle_shape(sx_v2_zero(), SX_R(2.36e28));
@@ -929,7 +1038,12 @@ static void a_collider_whose_mass_overflows_gives_no_nan(void **state) {
     int i;
     (void)state;
     cd.shape = huge;
+#ifdef SX_DOUBLE
+    /* its mass fits a double: refused for reaching beyond SX_HUGE */
     assert_int_equal(sx_body_add_collider(w, b, &cd, NULL), SX_ERR_INVALID_ARG);
+#else
+    assert_int_equal(sx_body_add_collider(w, b, &cd, NULL), SX_ERR_NONFINITE);
+#endif
     cd.shape = sx_circle_shape(sx_v2(SX_R(3.0), SX_R(0.0)), SX_R(1000.0));
     cd.density = SX_REAL_MAX;
     assert_int_equal(sx_body_add_collider(w, b, &cd, NULL), SX_OK);
@@ -1009,6 +1123,44 @@ static void colliders_beyond_huge_are_refused(void **state) {
         assert_true(sx_body_get_angular_velocity(w, b) == SX_R(0.0));
     }
     sx_world_destroy(w);
+}
+
+/* base.h: SX_HUGE is fixed at compile time, in length units, and does not
+ * follow a world's length_units_per_meter (issue 28 asked for it to be said
+ * precisely). In a world of 100 units per metre, whose slop is 100 times
+ * the default's, a collider's extent and a body's speed per sub-step are
+ * bounded by the same SX_HUGE units as in the default world. */
+static void huge_is_in_length_units_whatever_the_world_scale(void **state) {
+    static const sx_real units[2] = {SX_R(1.0), SX_R(100.0)};
+    int k;
+    (void)state;
+    for (k = 0; k < 2; ++k) {
+        sx_world_def d = sx_default_world_def();
+        sx_body_def bd = sx_default_body_def();
+        sx_collider_def cd = sx_default_collider_def();
+        sx_world *w;
+        sx_body_id b;
+        sx_vec2 v;
+        d.length_units_per_meter = units[k];
+        d.gravity = sx_v2_zero();
+        d.sub_steps = 1;
+        w = sx_world_create(&d);
+        assert_non_null(w);
+        assert_near(sx_world_linear_slop(w), 0.005 * (double)units[k], 1e-6 * (double)units[k]);
+        bd.type = SX_BODY_DYNAMIC;
+        assert_int_equal(sx_create_body(w, &bd, &b), SX_OK);
+        cd.shape = sx_box_shape(SX_R(1.01) * SX_HUGE, SX_R(1.0));
+        assert_int_equal(sx_body_add_collider(w, b, &cd, NULL), SX_ERR_INVALID_ARG);
+        cd.shape = sx_box_shape(SX_R(0.99) * SX_HUGE, SX_R(1.0));
+        assert_int_equal(sx_body_add_collider(w, b, &cd, NULL), SX_OK);
+        /* 4 SX_HUGE per step of 1 s: limited to SX_HUGE per sub-step */
+        assert_int_equal(
+            sx_body_set_linear_velocity(w, b, sx_v2(SX_R(4.0) * SX_HUGE, SX_R(0.0))), SX_OK);
+        assert_int_equal(sx_world_step(w, SX_R(1.0)), SX_OK);
+        v = sx_body_get_linear_velocity(w, b);
+        assert_near(v.x, (double)SX_HUGE, 1e-5 * (double)SX_HUGE);
+        sx_world_destroy(w);
+    }
 }
 
 /* Found by fuzz/fuzz_world.c (world-torque-overflow-nan): a force of about
@@ -1412,6 +1564,9 @@ static void destroying_bodies_mid_run_and_the_world_frees_everything(void **stat
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(world_create_refuses_bad_settings_with_null),
+        cmocka_unit_test(world_def_validate_gives_the_reason_and_bounds_every_size),
+        cmocka_unit_test(the_largest_body_capacity_is_asked_for_once_and_refused_cleanly),
+        cmocka_unit_test(a_world_at_the_largest_step_counts_steps_and_returns),
         cmocka_unit_test(body_handles_pack_into_u64_and_go_stale_after_destroy),
         cmocka_unit_test(create_body_rejects_bad_definitions),
         cmocka_unit_test(add_collider_validates_shape_and_material),
@@ -1439,6 +1594,7 @@ int main(void) {
         cmocka_unit_test(overflowing_force_or_impulse_at_a_point_is_refused_not_nan),
         cmocka_unit_test(a_collider_whose_mass_overflows_gives_no_nan),
         cmocka_unit_test(colliders_beyond_huge_are_refused),
+        cmocka_unit_test(huge_is_in_length_units_whatever_the_world_scale),
         cmocka_unit_test(a_finite_torque_that_overflows_the_spin_is_limited),
         cmocka_unit_test(the_speed_limit_keeps_direction_and_spares_ordinary_speeds),
         cmocka_unit_test(a_huge_restitution_rebounds_at_the_speed_limit),

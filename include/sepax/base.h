@@ -1,11 +1,19 @@
 /* sepax — base definitions: the real type, status codes, version, the assert
  * and allocator hooks, and the named tolerances.
  *
- * Everything else in sepax includes this header. It holds the only two pieces
- * of process-wide state in the library (the assert handler and the allocator
- * hooks); the geometry layers above it keep no state at all. Every tolerance
- * is derived from one length scale, SX_LENGTH_UNITS_PER_METER, so a game that
- * works in pixels or centimetres rescales them all at once. */
+ * Everything else in sepax includes this header. It holds the only
+ * process-wide state in the library: the assert handler and the allocator
+ * hooks (set once, before any world exists) and the live-byte counter
+ * (atomic); the geometry layers above it keep no state at all. Every
+ * tolerance is derived from one length scale, SX_LENGTH_UNITS_PER_METER, so a
+ * game that works in pixels or centimetres rescales them all at once.
+ *
+ * Threads: the math, shape and collide functions are pure and may run on any
+ * thread. Worlds share nothing with each other, so different worlds may be
+ * created, stepped, queried and destroyed on different threads at the same
+ * time without locking (world.h); what they do share is the allocator hooks,
+ * which must then be thread-safe themselves (malloc/free, the default, are),
+ * and the assert handler, which may be called from any of those threads. */
 #ifndef SEPAX_BASE_H
 #define SEPAX_BASE_H
 
@@ -60,7 +68,8 @@ typedef enum sx_status {
     SX_OK = 0,
     SX_ERR_INVALID_ARG,  /**< null pointer, negative size/radius/density, bad enum */
     SX_ERR_DEGENERATE,   /**< too few usable points, zero length/area */
-    SX_ERR_NONFINITE,    /**< NaN or infinity in the input */
+    SX_ERR_NONFINITE,    /**< NaN or infinity in the input, or in what it
+                              implies (a shape whose mass overflows) */
     SX_ERR_CAPACITY,     /**< more than a fixed capacity allows (e.g. hull vertices) */
     SX_ERR_NO_MEMORY,    /**< the allocator hook returned NULL */
     SX_ERR_STALE_HANDLE, /**< the handle's object was destroyed (or never existed) */
@@ -83,7 +92,9 @@ const char *sx_status_str(sx_status status);
 typedef void sx_assert_fn(const char *expression, const char *file, int line, void *context);
 
 /** Installs the assert handler (NULL restores the default). Not thread-safe:
- *  set it once at start-up. */
+ *  set it once at start-up, before any world exists or any other thread
+ *  calls sepax; the handler itself may then be called from any thread that
+ *  uses a world. */
 void sx_set_assert_handler(sx_assert_fn *handler, void *context);
 
 /** Reports a failed assertion through the installed handler. */
@@ -110,17 +121,23 @@ typedef void *sx_alloc_fn(size_t size, void *context);
 typedef void sx_free_fn(void *memory, size_t size, void *context);
 
 /** Routes all sepax memory through the given hooks (NULL, NULL restores
- *  malloc/free). Set it before creating anything: memory must be freed by the
- *  hooks that allocated it. Not thread-safe. */
+ *  malloc/free). Set it once at start-up, before any world exists or any
+ *  other thread calls sepax: memory must be freed by the hooks that
+ *  allocated it, and the call itself is not thread-safe. When worlds live on
+ *  several threads, the hooks are called from all of them at once and must
+ *  be thread-safe. */
 void sx_set_allocator(sx_alloc_fn *alloc, sx_free_fn *free_fn, void *context);
 
-/** Allocates through the hook and counts the bytes. size 0 returns NULL. */
+/** Allocates through the hook and counts the bytes. size 0 returns NULL.
+ *  Thread-safe when the hook is. */
 void *sx_alloc(size_t size);
 /** Frees a block from sx_alloc (NULL is ignored). `size` must be the size
- *  passed to sx_alloc. */
+ *  passed to sx_alloc. Thread-safe when the hook is. */
 void sx_free(void *memory, size_t size);
-/** Bytes currently allocated through sx_alloc and not yet freed (for leak
- *  checks in tests; a plain counter, not thread-safe). */
+/** Bytes currently allocated through sx_alloc and not yet freed, by every
+ *  world of every thread (for leak checks). The counter is atomic: it loses
+ *  no update when threads allocate at once, and while other threads
+ *  allocate it is a snapshot of a moving value. */
 size_t sx_live_bytes(void);
 
 /* ---- tolerances (all from one length scale) ----------------------------- */
@@ -150,7 +167,20 @@ size_t sx_live_bytes(void);
 
 /** Largest coordinate magnitude the library promises to handle (float build:
  *  1e5 m keeps sub-centimetre resolution; double: 1e9). Inputs beyond it are
- *  answered (no crash, no NaN) but with reduced precision. */
+ *  answered (no crash, no NaN) but with reduced precision.
+ *
+ *  SX_HUGE is fixed when the library is compiled, in length units: 1e5 (or
+ *  1e9) x SX_LENGTH_UNITS_PER_METER. It does not follow a world's run-time
+ *  length_units_per_meter (the geometry layers, which have no world, use it
+ *  too). A world uses it twice: a collider must lie within SX_HUGE of its
+ *  body's origin in x and y, and a body moves at most SX_HUGE per sub-step.
+ *  With length_units_per_meter L above SX_LENGTH_UNITS_PER_METER (a world in
+ *  centimetres, L = 100, in a library built at 1) those bounds are 1e5
+ *  units, a kilometre, stricter than the precision needs but far above
+ *  game speeds and sizes; with L below it (a world in kilometres) they are
+ *  looser than the precision of sx_real allows, and coordinates near
+ *  SX_HUGE have less resolution than the world's slop. To move SX_HUGE with
+ *  the units, build the library with -DSX_LENGTH_UNITS_PER_METER=L. */
 #ifdef SX_DOUBLE
 #define SX_HUGE (SX_R(1.0e9) * SX_LENGTH_UNITS_PER_METER)
 #else

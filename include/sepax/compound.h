@@ -22,10 +22,16 @@ extern "C" {
 
 /* ---- concave polygon outlines ------------------------------------------- */
 
+/** Most points of an outline sx_decompose_polygon takes: 2^29 - 1 (its
+ *  triangle indices must fit an int; the work grows as the square of the
+ *  count long before, about 0.3 s for 4000 points). */
+#define SX_DECOMPOSE_MAX_POINTS 0x1FFFFFFF
+
 /** Bytes of scratch memory sx_decompose_polygon needs for an outline of
  *  `count` points (a fixed linear bound: about (12 + SX_MAX_POLYGON_VERTICES)
  *  ints and one sx_vec2 per point, plus alignment slack). Returns 0 for
- *  count < 3 or a count so large the size would overflow size_t. */
+ *  count < 3, count above SX_DECOMPOSE_MAX_POINTS, or a count so large the
+ *  size would overflow size_t. */
 size_t sx_decompose_scratch_bytes(int count);
 
 /** Splits a simple polygon outline into convex polygons of at most
@@ -56,7 +62,8 @@ size_t sx_decompose_scratch_bytes(int count);
  *
  *  Errors, checked in this order (parts untouched, *part_count 0 except as
  *  said): SX_ERR_INVALID_ARG (points, parts or part_count NULL, scratch NULL
- *  with scratch_bytes > 0, count < 3); SX_ERR_CAPACITY (scratch_bytes below
+ *  with scratch_bytes > 0, count < 3); SX_ERR_CAPACITY (count above
+ *  SX_DECOMPOSE_MAX_POINTS, or scratch_bytes below
  *  sx_decompose_scratch_bytes(count)); SX_ERR_NONFINITE (a NaN/Inf
  *  coordinate); SX_ERR_DEGENERATE (fewer than 3 points left after cleaning:
  *  duplicates only, all collinear); SX_ERR_INVALID_ARG for an outline that
@@ -68,9 +75,11 @@ size_t sx_decompose_scratch_bytes(int count);
  *  outline into its lobes yourself);
  *  SX_ERR_DEGENERATE for zero area, when no ear can be found in the
  *  precision available (not observed for simple outlines), or when no part
- *  survives (far beyond SX_HUGE, where the parts' areas overflow); SX_ERR_CAPACITY
- *  when more than part_capacity parts are needed (then *part_count receives
- *  the number needed). */
+ *  survives (far beyond SX_HUGE, where the parts' areas round away);
+ *  SX_ERR_NONFINITE when a part's mass properties would overflow sx_real
+ *  (as sx_shape_validate refuses: an outline some 1e9 m across in the float
+ *  build); SX_ERR_CAPACITY when more than part_capacity parts are needed
+ *  (then *part_count receives the number needed). */
 sx_status sx_decompose_polygon(const sx_vec2 *points, int count, void *scratch,
                                size_t scratch_bytes, sx_shape *parts, int part_capacity,
                                int *part_count, int *triangle_count);

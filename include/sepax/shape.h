@@ -74,7 +74,8 @@ typedef struct sx_shape {
 /* ---- constructors ------------------------------------------------------- */
 
 /** A circle. Not checked: see sx_shape_validate (negative, NaN or infinite
- *  radius is invalid; zero is a point). */
+ *  radius is invalid, and one too large for finite mass properties; zero is
+ *  a point). */
 sx_shape sx_circle_shape(sx_vec2 center, sx_real radius);
 /** A point: a circle of radius 0. */
 sx_shape sx_point_shape(sx_vec2 p);
@@ -127,8 +128,10 @@ bool sx_validate_hull(const sx_hull *hull, sx_real tolerance);
 /** Builds a convex polygon from any point cloud: sx_compute_hull with
  *  SX_WELD_TOLERANCE, then unit outward normals and the area centroid.
  *  `radius` >= 0 rounds the corners. Errors as sx_compute_hull, plus
- *  SX_ERR_INVALID_ARG for a negative radius and SX_ERR_NONFINITE for a
- *  non-finite one. On error *out is left unchanged. */
+ *  SX_ERR_INVALID_ARG for a negative radius, SX_ERR_NONFINITE for a
+ *  non-finite one, and those of sx_polygon_from_hull (SX_ERR_NONFINITE for
+ *  a polygon or radius too large for finite mass properties). On error
+ *  *out is left unchanged. */
 sx_status sx_polygon_shape(const sx_vec2 *points, int count, sx_real radius, sx_shape *out);
 
 /** As sx_polygon_shape with an explicit weld tolerance (for shapes far smaller
@@ -144,7 +147,8 @@ sx_status sx_polygon_shape_ex(const sx_vec2 *points, int count, sx_real radius,
  *  sx_validate_hull(hull, 0) fails), SX_ERR_NONFINITE (NaN/Inf point or
  *  radius), SX_ERR_DEGENERATE (exactly zero area, e.g. all points collinear,
  *  or a sliver so far beyond SX_HUGE that its area, summed in wider
- *  precision, rounds to zero or below: no mass properties exist for it).
+ *  precision, rounds to zero or below: no mass properties exist for it),
+ *  SX_ERR_NONFINITE (mass properties beyond sx_real, as sx_shape_validate).
  *  What it returns always passes sx_shape_validate. On error *out is left
  *  unchanged. */
 sx_status sx_polygon_from_hull(const sx_hull *hull, sx_real radius, sx_shape *out);
@@ -159,9 +163,16 @@ sx_status sx_polygon_from_hull(const sx_hull *hull, sx_real radius, sx_shape *ou
  *  SX_ERR_NONFINITE
  *  (NaN/Inf in any used field); SX_ERR_DEGENERATE (a segment no longer than
  *  SX_REAL_EPSILON, a polygon of exactly zero area, or one whose area and
- *  centroid rounding cannot resolve, as sx_polygon_from_hull refuses).
+ *  centroid rounding cannot resolve, as sx_polygon_from_hull refuses);
+ *  SX_ERR_NONFINITE also for a finite shape so large that its area or its
+ *  rotational inertia at density 1 overflows sx_real, so that no body could
+ *  carry it (float build: a circle of radius above about 3.8e9, a square
+ *  of half-extent above about 3.4e9, rounded polygons and capsules alike;
+ *  double build: about 1e77; segments have no area and are never refused
+ *  for their size).
  *  Checked in that order per field group: count, finiteness, radius, area,
- *  convexity, normals, then the rounded area and centroid. A
+ *  convexity, normals, then the rounded area and centroid, then the mass
+ *  properties' range. A
  *  circle of radius 0 (a point) is valid; so is a capsule with a == b (a
  *  circle) or radius 0 (a segment). */
 sx_status sx_shape_validate(const sx_shape *shape);

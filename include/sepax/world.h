@@ -4,7 +4,10 @@
  * attached to them. Bodies and colliders are named by small handles (index +
  * generation) that pack into a uint64_t; a destroyed object's handle goes
  * stale and every call answers it with SX_ERR_STALE_HANDLE (or a zero value
- * for getters) instead of touching another object that reused the slot.
+ * for getters) instead of touching another object that reused the slot. A
+ * slot hands out generations 1 .. 2^32 - 1 and is then retired, never
+ * reused: a stale handle stays stale for good, at the cost of one slot's
+ * memory per 2^32 - 1 destroy/create cycles of that slot.
  *
  * One call of sx_world_step(world, dt) runs the public stages
  *
@@ -28,13 +31,27 @@
  * themselves, in this order, with their own code in between.
  *
  * Speed limit: in one sub-step a body turns at most SX_MAX_ROTATION and
- * moves at most SX_HUGE. sx_world_apply_forces and sx_world_integrate scale
- * faster velocities down to the limit (direction kept), so a finite torque
- * on a tiny inertia, a huge impulse or a huge dt gives a fast body, never an
- * infinite or NaN state. At the default 60 Hz and 4 sub-steps the rotation
+ * moves at most SX_HUGE (in length units: see SX_HUGE in base.h for worlds
+ * whose length_units_per_meter differs from SX_LENGTH_UNITS_PER_METER).
+ * sx_world_apply_forces and sx_world_integrate scale faster velocities down
+ * to the limit (direction kept), so a finite torque on a tiny inertia, a
+ * huge impulse or a huge dt gives a fast body, never an infinite or NaN
+ * state. At the default 60 Hz and 4 sub-steps the rotation
  * limit is 377 rad/s (3600 rpm); a faster spin needs more sub-steps (the
  * rotation update, q + h w q' renormalised, turns by atan(h w), less than a
  * quarter turn per sub-step, whatever w is).
+ *
+ * Fast bodies: contacts are found once per step, from the positions the
+ * step starts at, for every pair of shapes whose gap is within the
+ * speculative margin (speculative_slops x the linear slop: 2 cm by default)
+ * plus how far each body can move in the step at the velocity it starts
+ * with; the solver then lets no contact close by more than its gap. So a
+ * body moving straight at a collider stops at it however fast it goes. No
+ * time-of-impact sweep yet: a contact's normal and points are those of the
+ * step's start, so a fast body that turns, or one deflected by a third body
+ * within the step towards a collider it had no contact with, can end the
+ * step overlapping that collider, and sx_world_separate then pushes it out
+ * the shortest way (past the middle of a thin collider, the far side).
  *
  * Sleeping: islands of touching bodies that stay slow fall asleep and cost
  * no solver work until something touches or pushes them. Around the step: contact begin/end events,
@@ -60,7 +77,16 @@
  *
  * Units: metres, kilograms, seconds, radians. The contact tolerance (the
  * linear slop, 5 mm at one length unit per metre) scales with the world's
- * length_units_per_meter. */
+ * length_units_per_meter.
+ *
+ * Threads: a world is used by one thread at a time (no call on a world may
+ * overlap another call on the same world, getters and queries included;
+ * callbacks run on the calling thread). Different worlds share no state:
+ * any number of threads may each create, step, query and destroy their own
+ * worlds at the same time, without locking, with the default allocator or a
+ * thread-safe custom one (base.h: set the allocator and assert hooks once,
+ * before the first world). A world may move from one thread to another
+ * between calls if the program orders the hand-over (a mutex, a join). */
 #ifndef SEPAX_WORLD_H
 #define SEPAX_WORLD_H
 
@@ -77,6 +103,22 @@ extern "C" {
 /** Largest rotation (radians) of a body in one sub-step: a quarter turn
  *  (see "Speed limit" above). */
 #define SX_MAX_ROTATION (SX_R(0.5) * SX_PI)
+
+/** Most bodies, and most colliders, one world holds: 2^30 - 1 (a body or
+ *  collider more is SX_ERR_CAPACITY). The same bound holds for every list a
+ *  world keeps (contacts, broadphase pairs, sensor overlaps, events): a
+ *  step that would need more stops with SX_ERR_CAPACITY. Memory runs out
+ *  first on most machines (a body with one collider takes about 400 bytes
+ *  in the float build, 700 in the double one). */
+#define SX_WORLD_MAX_ITEMS 0x3FFFFFFF
+
+/** Most sub-steps per step (sx_world_def.sub_steps). */
+#define SX_MAX_SUB_STEPS 256
+
+/** Most velocity iterations, and most position iterations, per sub-step
+ *  (sx_world_def). With SX_MAX_SUB_STEPS, a step makes at most 65,536
+ *  solver passes over its contacts. */
+#define SX_MAX_ITERATIONS 256
 
 /* ---- handles ------------------------------------------------------------ */
 
@@ -114,16 +156,16 @@ sx_collider_id sx_collider_id_from_u64(uint64_t bits);
 typedef struct sx_world_def {
     /** Gravity in m/s^2. Default (0, -10). */
     sx_vec2 gravity;
-    /** Sub-steps per sx_world_step (>= 1). Default 4: each runs the solver
-     *  stages with h = dt / sub_steps on the step's contacts, which stiffens
-     *  stacks. */
+    /** Sub-steps per sx_world_step, 1 .. SX_MAX_SUB_STEPS. Default 4: each
+     *  runs the solver stages with h = dt / sub_steps on the step's
+     *  contacts, which stiffens stacks. */
     int sub_steps;
-    /** Sequential-impulse passes of sx_world_solve per sub-step (>= 1).
-     *  Default 4. */
+    /** Sequential-impulse passes of sx_world_solve per sub-step,
+     *  1 .. SX_MAX_ITERATIONS. Default 4. */
     int velocity_iterations;
-    /** Passes of sx_world_separate per sub-step (>= 0; 0 turns it off):
-     *  positional correction with rigid contacts (contact_hertz 0), relax
-     *  passes with soft ones. Default 1. */
+    /** Passes of sx_world_separate per sub-step, 0 .. SX_MAX_ITERATIONS (0
+     *  turns it off): positional correction with rigid contacts
+     *  (contact_hertz 0), relax passes with soft ones. Default 1. */
     int position_iterations;
     /** Fraction of the overlap beyond the slop that one correction iteration
      *  removes, in (0, 1]. Default 0.2 (Baumgarte's classic value: larger
@@ -156,9 +198,11 @@ typedef struct sx_world_def {
      *  lets them close exactly the gap in one sub-step. Default 4. */
     sx_real speculative_slops;
     /** Length units per metre (> 0): scales the linear slop (5 mm at 1).
-     *  Default SX_LENGTH_UNITS_PER_METER. */
+     *  Default SX_LENGTH_UNITS_PER_METER. It does not scale SX_HUGE, which
+     *  is fixed at compile time (see base.h). */
     sx_real length_units_per_meter;
-    /** Number of bodies to reserve room for at creation (>= 0). Default 0. */
+    /** Number of bodies to reserve room for at creation, 0 ..
+     *  SX_WORLD_MAX_ITEMS. Default 0. */
     int body_capacity;
     /** Lets groups of touching bodies that stay slow fall asleep (see
      *  sx_world_update_sleep). Default true. */
@@ -221,9 +265,10 @@ sx_real sx_world_linear_slop(const sx_world *world);
  *  Errors, with the world left
  *  untouched: SX_ERR_INVALID_ARG (NULL world, dt <= 0), SX_ERR_NONFINITE (dt
  *  NaN or infinite), SX_ERR_LOCKED (called from a callback of the world;
- *  the stages below answer it too). SX_ERR_NO_MEMORY: the contact list or the impact
- *  pass's scratch could not grow; the step stops after the stages already
- *  run. */
+ *  the stages below answer it too). SX_ERR_NO_MEMORY: the contact list or
+ *  the impact pass's scratch could not grow; SX_ERR_CAPACITY: a list would
+ *  pass SX_WORLD_MAX_ITEMS (more than 2^30 - 1 broadphase pairs or
+ *  contacts); either way the step stops after the stages already run. */
 sx_status sx_world_step(sx_world *world, sx_real dt);
 
 /** Stage 1: for every enabled, awake dynamic body, v += h (gravity x gravity_scale +
@@ -247,8 +292,9 @@ sx_status sx_world_apply_forces(sx_world *world, sx_real h);
  *  and each point keeps its accumulated impulses while its feature id
  *  persists (warm starting). An awake body that touches a sleeping one wakes
  *  its island. Pairs that start or stop having a manifold are recorded as
- *  contact events; then the sensors are updated (sensor events). Errors: SX_ERR_INVALID_ARG (NULL),
- * SX_ERR_NO_MEMORY, SX_ERR_LOCKED. */
+ *  contact events; then the sensors are updated (sensor events). Errors:
+ *  SX_ERR_INVALID_ARG (NULL), SX_ERR_NO_MEMORY, SX_ERR_CAPACITY (a list
+ *  would pass SX_WORLD_MAX_ITEMS), SX_ERR_LOCKED. */
 sx_status sx_world_collide(sx_world *world);
 
 /** Stage 3: the contacts of the last collide, on velocities. Each point's
@@ -451,19 +497,21 @@ sx_body_def sx_default_body_def(void);
 
 /** Creates a body. *out receives its handle (the null handle on error).
  *  Errors: SX_ERR_INVALID_ARG (NULL world/def/out, unknown type, negative
- *  damping), SX_ERR_NONFINITE, SX_ERR_NO_MEMORY, SX_ERR_CAPACITY (2^31 - 1
- *  body slots in use), SX_ERR_LOCKED (from a callback). A dynamic body
- *  without colliders of positive mass gets mass 1 kg and no rotational
- *  inertia (contacts cannot turn it; its own angular velocity, if set, is
- *  kept). */
+ *  damping), SX_ERR_NONFINITE, SX_ERR_NO_MEMORY, SX_ERR_CAPACITY
+ *  (SX_WORLD_MAX_ITEMS body slots in use or retired: see sx_destroy_body),
+ *  SX_ERR_LOCKED (from a callback). A dynamic body without colliders of
+ *  positive mass gets mass 1 kg and no rotational inertia (contacts cannot
+ *  turn it; its own angular velocity, if set, is kept). */
 sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *out);
 
 /** Destroys a body, its colliders and its contacts, and wakes its island and
  *  the bodies it touched. Cost: what it touches (its island, its contacts);
  *  the first destruction, teleport or retype after a collide also indexes
- *  the contacts by body, in one pass that the ones after it share.
- *  SX_ERR_INVALID_ARG (NULL world), SX_ERR_LOCKED (from a callback),
- *  SX_ERR_STALE_HANDLE. */
+ *  the contacts by body, in one pass that the ones after it share. Its slot
+ *  is reused by a later body with the next generation, or retired after
+ *  generation 2^32 - 1 (so no old handle ever names a new body; colliders'
+ *  slots likewise). SX_ERR_INVALID_ARG (NULL world), SX_ERR_LOCKED (from a
+ *  callback), SX_ERR_STALE_HANDLE. */
 sx_status sx_destroy_body(sx_world *world, sx_body_id body);
 
 /** True if the handle names a live body of this world. */
@@ -587,13 +635,15 @@ sx_collider_def sx_default_collider_def(void);
  *  the body gets mass SX_REAL_MAX, no rotational inertia and its centre of
  *  mass at its origin, never NaN. *out (may be NULL) receives the handle,
  *  the null handle on error.
- *  Errors: the status of sx_shape_validate for a bad shape;
+ *  Errors: the status of sx_shape_validate for a bad shape (among them
+ *  SX_ERR_NONFINITE for a shape whose mass properties overflow sx_real);
  *  SX_ERR_INVALID_ARG (NULL world/def, negative density, friction or
  *  restitution, a shape reaching farther than SX_HUGE from the body origin
  *  in x or y: beyond it the narrowphase has no precision left to offer the
  *  solver); SX_ERR_NONFINITE (non-finite density, friction or
- *  restitution); SX_ERR_STALE_HANDLE; SX_ERR_NO_MEMORY; SX_ERR_CAPACITY;
- *  SX_ERR_LOCKED (from a callback). */
+ *  restitution); SX_ERR_STALE_HANDLE; SX_ERR_NO_MEMORY; SX_ERR_CAPACITY
+ *  (SX_WORLD_MAX_ITEMS collider slots in use or retired); SX_ERR_LOCKED
+ *  (from a callback). */
 sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collider_def *def,
                                sx_collider_id *out);
 
@@ -624,7 +674,9 @@ sx_status sx_body_add_compound(sx_world *world, sx_body_id body, const sx_compou
  *  body origin in x or y; otherwise the status of
  *  sx_decompose_polygon (SX_ERR_NONFINITE for NaN/Inf, SX_ERR_INVALID_ARG
  *  for a self-intersecting outline such as a bow-tie, SX_ERR_DEGENERATE for
- *  all-collinear or zero-area outlines); SX_ERR_NO_MEMORY. */
+ *  all-collinear or zero-area outlines); SX_ERR_CAPACITY for count above
+ *  SX_DECOMPOSE_MAX_POINTS (or SX_WORLD_MAX_ITEMS collider slots in use);
+ *  SX_ERR_NO_MEMORY. */
 sx_status sx_body_add_outline(sx_world *world, sx_body_id body, const sx_vec2 *points, int count,
                               const sx_collider_def *def, sx_collider_id *out);
 
@@ -730,8 +782,11 @@ sx_status sx_world_draw(const sx_world *world, const sx_debug_draw *draw);
  * stay. */
 
 /** Checks a world def without creating anything: SX_OK when sx_world_create
- *  would accept it. SX_ERR_INVALID_ARG for a NULL def or a field outside its
- *  documented range, SX_ERR_NONFINITE for a NaN or infinite field. When
+ *  would accept it. SX_ERR_INVALID_ARG for a NULL def or a field below its
+ *  documented range (or outside it for a bounded real such as
+ *  correction_factor), SX_ERR_NONFINITE for a NaN or infinite field,
+ *  SX_ERR_CAPACITY for sub_steps above SX_MAX_SUB_STEPS, an iteration count
+ *  above SX_MAX_ITERATIONS or body_capacity above SX_WORLD_MAX_ITEMS. When
  *  `field` is not NULL it receives the name of the first refused field
  *  ("gravity", "sub_steps", ...; "def" for a NULL def), or NULL for SX_OK. */
 sx_status sx_world_def_validate(const sx_world_def *def, const char **field);
