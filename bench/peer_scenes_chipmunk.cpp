@@ -66,17 +66,21 @@ int chipmunk_add(void *world, const scene_body *sb) {
         body = cpSpaceAddBody(w->space, cpBodyNew(0.0, 0.0));
     else if (sb->kinematic)
         body = cpSpaceAddBody(w->space, cpBodyNewKinematic());
-    cpShape *shape = make_shape(body, sb->shape, sb->angle, sb->x, sb->y, !moving);
-    cpShapeSetFriction(shape, std::sqrt(sb->friction));
-    cpShapeSetElasticity(shape, std::sqrt(sb->restitution));
-    if (sb->dynamic) cpShapeSetDensity(shape, sb->density);
-    cpSpaceAddShape(w->space, shape);
+    /* The body is placed before its shape joins the space: the spatial index
+     * takes the shape's box at insertion and pairs it with every box it
+     * overlaps then, so shapes inserted at the origin would all pair with
+     * each other (memory and the first step quadratic in the body count). */
     if (moving) {
         cpBodySetPosition(body, cpv(sb->x, sb->y));
         cpBodySetAngle(body, sb->angle);
         cpBodySetVelocity(body, cpv(sb->vx, sb->vy));
         cpBodySetAngularVelocity(body, sb->w);
     }
+    cpShape *shape = make_shape(body, sb->shape, sb->angle, sb->x, sb->y, !moving);
+    cpShapeSetFriction(shape, std::sqrt(sb->friction));
+    cpShapeSetElasticity(shape, std::sqrt(sb->restitution));
+    if (sb->dynamic) cpShapeSetDensity(shape, sb->density);
+    cpSpaceAddShape(w->space, shape);
     w->bodies.push_back(body);
     w->shapes.push_back(shape);
     return (int)w->bodies.size() - 1;

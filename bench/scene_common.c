@@ -77,13 +77,14 @@ void md(const char *fmt, ...) {
     va_end(ap);
 }
 
-static char speed_notes[24][240];
+enum { SPEED_NOTES_MAX = 64 };
+static char speed_notes[SPEED_NOTES_MAX][240];
 static int speed_notes_n, speed_notes_off;
 
 void speed_notes_smoke(int smoke) { speed_notes_off = smoke; }
 
 void speed_note(const char *fmt, ...) {
-    if (speed_notes_n == 24 || speed_notes_off) return;
+    if (speed_notes_n == SPEED_NOTES_MAX || speed_notes_off) return;
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(speed_notes[speed_notes_n++], sizeof speed_notes[0], fmt, ap);
@@ -166,6 +167,23 @@ void set_capsule(scene_body *b, double half_length, double r) {
     b->shape.radius = r;
 }
 
+void set_segment(scene_body *b, double x0, double y0, double x1, double y1) {
+    b->shape.kind = BENCH_SEGMENT;
+    b->shape.count = 2;
+    b->shape.v[0][0] = x0;
+    b->shape.v[0][1] = y0;
+    b->shape.v[1][0] = x1;
+    b->shape.v[1][1] = y1;
+}
+
+void set_offset_box(scene_body *b, double hx, double hy, double cx, double cy) {
+    b->shape.kind = BENCH_POLYGON;
+    b->shape.count = 4;
+    const double c[4][2] = {
+        {cx - hx, cy - hy}, {cx + hx, cy - hy}, {cx + hx, cy + hy}, {cx - hx, cy + hy}};
+    memcpy(b->shape.v, c, sizeof c);
+}
+
 /* Regular n-gon of circumradius r, centred on its centroid. */
 void set_ngon(scene_body *b, int n, double r) {
     b->shape.kind = BENCH_POLYGON;
@@ -181,13 +199,17 @@ void set_ngon(scene_body *b, int n, double r) {
 void add_ground(scene_def *d, double half_width) {
     set_box(scene_add(d, 0, 0.0, -1.0, 0.0), half_width, 1.0);
 }
-void build_pyramid(scene_def *d, int base, double ground_half) {
-    add_ground(d, ground_half);
+void add_pyramid(scene_def *d, int base, double cx, double y0) {
     for (int i = 0; i < base; ++i)
         for (int j = i; j < base; ++j)
-            set_box(
-                scene_add(d, 1, (i + 1) * 0.5 + (j - i) * 1.0 - base * 0.5, (2 * i + 1) * 0.5, 0.0),
-                0.5, 0.5);
+            set_box(scene_add(d, 1, cx + (i + 1) * 0.5 + (j - i) * 1.0 - base * 0.5,
+                              y0 + (2 * i + 1) * 0.5, 0.0),
+                    0.5, 0.5);
+}
+
+void build_pyramid(scene_def *d, int base, double ground_half) {
+    add_ground(d, ground_half);
+    add_pyramid(d, base, 0.0, 0.0);
 }
 
 /* ---- the sepax engine ------------------------------------------------------ */
@@ -302,8 +324,8 @@ static const scene_engine scene_sepax = {sepax_create,  sepax_step, sepax_get,
 /* ---- the engine table -------------------------------------------------------- */
 
 const scene_engine *const engines[SCENE_ENGINE_COUNT] = {
-    &scene_sepax,   &scene_box2d3_sse2,  &scene_box2d, &scene_chipmunk,
-    &scene_box2d3_avx2, &scene_box2d3_scalar,
+    &scene_sepax,    &scene_box2d3_sse2, &scene_box2d,
+    &scene_chipmunk, &scene_box2d3_avx2, &scene_box2d3_scalar,
 };
 
 const char *const engine_names[SCENE_ENGINE_COUNT] = {
@@ -312,7 +334,7 @@ const char *const engine_names[SCENE_ENGINE_COUNT] = {
 #else
     "sepax",
 #endif
-    "box2d3", "box2d", "chipmunk", "box2d3-avx2", "box2d3-scalar",
+    "box2d3",       "box2d", "chipmunk", "box2d3-avx2", "box2d3-scalar",
 };
 
 const char *const engine_builds[SCENE_ENGINE_COUNT] = {

@@ -69,17 +69,30 @@ scene_body *scene_add(scene_def *d, int dynamic, double x, double y, double angl
 void set_box(scene_body *b, double hx, double hy);
 void set_circle(scene_body *b, double r);
 void set_capsule(scene_body *b, double half_length, double r);
+/** A two-sided segment from (x0, y0) to (x1, y1) in the body's frame. */
+void set_segment(scene_body *b, double x0, double y0, double x1, double y1);
+/** A box hx x hy centred at (cx, cy) in the body's frame (a polygon off the
+ *  body origin: several such bodies at one origin turn as one, like the
+ *  tumbler's walls). */
+void set_offset_box(scene_body *b, double hx, double hy, double cx, double cy);
 /** Regular n-gon of circumradius r, centred on its centroid. */
 void set_ngon(scene_body *b, int n, double r);
 /** docs/scenes.md's ground: a static box half_width x 1 centred at (0, -1). */
 void add_ground(scene_def *d, double half_width);
+/** The boxes of a pyramid of `base` unit boxes (half-extent 0.5), centred on
+ *  x = cx, its bottom row resting on y = y0. */
+void add_pyramid(scene_def *d, int base, double cx, double y0);
 /** docs/scenes.md's pyramid of `base` unit boxes on that ground. */
 void build_pyramid(scene_def *d, int base, double ground_half);
 
 /* ---- the throughput scenes (bench/throughput.c) ---------------------------------- */
 
 int large_pyramid(int steps, const char *out_dir);
-int mostly_asleep(int resting, int steps);
+int mostly_asleep(int resting, int steps, const char *out_dir);
 int rain(const int *sizes, int nsizes, int steps, double cap_ms, const char *out_dir);
+/* Box2D v3's benchmark scenes, rebuilt from their published descriptions. */
+int many_pyramids(int rows, int columns, int steps, const char *out_dir);
+int tumbler(int boxes, int steps, const char *out_dir);
+int smash(int columns, int rows, int steps, const char *out_dir);
 
 #endif /* SEPAX_BENCH_SCENE_COMMON_H */

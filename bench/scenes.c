@@ -1249,7 +1249,8 @@ int bench_scenes_run(const char *out_dir, int smoke, int level) {
     int failures = 0;
     if (WANT("large_pyramid"))
         failures += large_pyramid(smoke ? 3 : level == 1 ? 100 : level == 2 ? 500 : 200, out_dir);
-    if (WANT("mostly_asleep")) failures += mostly_asleep(smoke ? 2000 : 20000, smoke ? 3 : 60);
+    if (WANT("mostly_asleep"))
+        failures += mostly_asleep(smoke ? 2000 : 20000, smoke ? 3 : 60, out_dir);
     if (WANT("rain")) {
         static const int smoke_sizes[1] = {200};
         static const int sizes[4] = {1000, 4000, 16000, 64000};
@@ -1262,6 +1263,17 @@ int bench_scenes_run(const char *out_dir, int smoke, int level) {
         else
             failures += rain(sizes, 3, 100, 8e3, out_dir);
     }
+    /* Box2D v3's benchmark scenes; steps by level (default, --quick, --full),
+     * sized in bench/README.md */
+    static const int pyramids_steps[3] = {40, 20, 200}, tumbler_steps[3] = {200, 60, 750},
+                     smash_steps[3] = {100, 40, 300};
+    if (WANT("many_pyramids"))
+        failures += smoke ? many_pyramids(2, 2, 3, out_dir)
+                          : many_pyramids(20, 20, pyramids_steps[level], out_dir);
+    if (WANT("tumbler"))
+        failures += smoke ? tumbler(100, 3, out_dir) : tumbler(2000, tumbler_steps[level], out_dir);
+    if (WANT("smash"))
+        failures += smoke ? smash(20, 10, 3, out_dir) : smash(120, 80, smash_steps[level], out_dir);
     /* The accuracy sweeps, in report order. */
     static const struct {
         const char *scene, *err_name, *what;

@@ -15,7 +15,9 @@ extern "C" {
 #endif
 
 /** One rigid body with one shape in its local frame (bench_shape: circle,
- *  segment, capsule, box or sharp convex polygon centred on its centroid). */
+ *  segment, capsule, box or sharp convex polygon, usually centred on its
+ *  centroid; a polygon may sit off the body origin, which a kinematic body
+ *  turns about: the tumbler's walls). */
 typedef struct scene_body {
     int dynamic;   /**< 0: static (or kinematic, below) */
     int kinematic; /**< moved by its velocity only (dynamic is then 0) */
@@ -103,15 +105,26 @@ typedef struct svg_point {
 
 /** Writes a log-log scatter plot of error (y) against ms per step (x): one
  *  colour per series, each series' Pareto front (no other point of the
- *  series is both faster and more accurate) joined by a line. Returns 0 when
- *  the file cannot be written. */
+ *  series is both faster and more accurate) joined by a line, each point
+ *  labelled with its label (the configuration) in small type beside it. A
+ *  label ending in " (default)" marks the series' default configuration:
+ *  that point gets a ring. Returns 0 when the file cannot be written. */
 int svg_plot_write(const char *path, const char *title, const char *xlabel, const char *ylabel,
                    const svg_point *pts, int n, const char *const *series_names, int series_count);
 /** The same axes with each series' points joined in x order (a scaling
- *  curve). */
+ *  curve); labels show only as the points' tooltips. */
 int svg_plot_write_lines(const char *path, const char *title, const char *xlabel,
                          const char *ylabel, const svg_point *pts, int n,
                          const char *const *series_names, int series_count);
+/** Writes a horizontal bar chart on a linear axis from 0 (xlabel: what the
+ *  bars measure): for each group (a heading; none when there is one group
+ *  with an empty name) one bar per series, in the series' colour of the
+ *  other plots, its value printed at its end. values[g * series_count + s]
+ *  is series s in group g; a value that is not > 0 reads "not run". Returns
+ *  0 when the file cannot be written. */
+int svg_bars_write(const char *path, const char *title, const char *xlabel,
+                   const char *const *group_names, int group_count, const char *const *series_names,
+                   int series_count, const double *values);
 
 #ifdef __cplusplus
 }

@@ -1,8 +1,11 @@
 /* sepax benchmarks — the throughput scenes of docs/scenes.md on every engine of
  * the run, single thread: large_pyramid (ms per step and the top box's sag,
  * with the sub-step front of sepax and Box2D v3), mostly_asleep (a large
- * sleeping world plus a small awake group against the group alone) and rain
- * (ms per step against body count).
+ * sleeping world plus a small awake group against the group alone), rain
+ * (ms per step against body count), and three scenes of Box2D v3's own
+ * benchmark set rebuilt from their published descriptions: many_pyramids,
+ * tumbler and smash. Each scene draws one picture with every engine: bars of
+ * ms per step, or curves against body count for rain.
  *
  * Timing: wall clock around the stepping only, world creation excluded; the
  * first step is left out where it builds the engines' trees (docs/scenes.md:
@@ -16,6 +19,48 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* ---- shared by the scenes ---------------------------------------------------- */
+
+/* The bar chart of a scene: ms[g * SCENE_ENGINE_COUNT + e] for each group g
+ * (an engine that did not run has 0), linked from REPORT.md. */
+static int scene_bars(const char *out_dir, const char *scene, const char *file, const char *title,
+                      const char *const *groups, int ngroups, const double *ms) {
+    char path[1200];
+    snprintf(path, sizeof path, "%s/%s", out_dir, file);
+    if (!svg_bars_write(path, title, "ms per step (single thread; shorter is faster)", groups,
+                        ngroups, engine_names, SCENE_ENGINE_COUNT, ms)) {
+        fprintf(stderr, "sepax_bench: cannot write %s\n", path);
+        return 1;
+    }
+    md("\n![%s](%s)\n", scene, file);
+    return 0;
+}
+
+/* One headline note for a scene where sepax is slower than some peers,
+ * naming each of them with sepax's time over theirs. */
+static void note_slower(const char *scene, const double ms[SCENE_ENGINE_COUNT]) {
+    char peers[200] = "";
+    size_t len = 0;
+    for (int e = 1; e < SCENE_ENGINE_COUNT; ++e) {
+        if (!(ms[e] > 0) || !(ms[SCENE_SEPAX] > ms[e]) || len >= sizeof peers) continue;
+        len += (size_t)snprintf(peers + len, sizeof peers - len, "%s %.2fx %s", len ? "," : "",
+                                ms[SCENE_SEPAX] / ms[e], engine_names[e]);
+    }
+    if (len > 0) speed_note("%s: sepax %.2f ms/step,%s", scene, ms[SCENE_SEPAX], peers);
+}
+
+/* Steps an engine's world once untimed (the first step builds the engines'
+ * trees and contact sets), then `steps` - 1 timed: ms per step of steps
+ * 2..steps, as docs/scenes.md times them. *first_ms gets the first step's time. */
+static double time_after_first(int e, void *w, int steps, double *first_ms) {
+    double t0 = now_ms();
+    engines[e]->step(w, 1);
+    double t1 = now_ms();
+    if (first_ms) *first_ms = t1 - t0;
+    engines[e]->step(w, steps - 1);
+    return (now_ms() - t1) / (double)(steps > 1 ? steps - 1 : 1);
+}
 
 /* ---- large_pyramid --------------------------------------------------------- */
 
@@ -31,10 +76,7 @@ static int pyramid_once(const scene_def *d, int e, const scene_config *c, int st
                         pyramid_run *r) {
     void *w = engines[e]->create(d, c);
     if (!w) return 0;
-    engines[e]->step(w, 1);
-    double t0 = now_ms();
-    engines[e]->step(w, steps - 1);
-    r->ms = (now_ms() - t0) / (double)(steps > 1 ? steps - 1 : 1);
+    r->ms = time_after_first(e, w, steps, NULL);
     scene_state s;
     engines[e]->get(w, d->count - 1, &s);
     engines[e]->destroy(w);
@@ -52,14 +94,14 @@ int large_pyramid(int steps, const char *out_dir) {
     out("\n## large_pyramid: base 100 (%d boxes), %d steps of 1/60 s, time of steps 2..%d\n\n",
         d.count - 1, steps, steps);
     md("```\n");
-    out("%-14s %-28s %9s %9s %9s %9s\n", "engine", "configuration", "ms/step", "sx/this",
-        "top y", "sag");
+    out("%-14s %-28s %9s %9s %9s %9s\n", "engine", "configuration", "ms/step", "sx/this", "top y",
+        "sag");
     /* Every engine at its defaults, then the sub-step front of sepax and of
      * Box2D v3 (1, 2 and 8 sub-steps beside the default 4). */
     enum { MAXRUNS = 24 };
     pyramid_run runs[MAXRUNS];
     int nr = 0, failures = 0;
-    double sx_default_ms = 0.0;
+    double sx_default_ms = 0.0, default_ms[SCENE_ENGINE_COUNT] = {0};
     for (int pass = 0; pass < 2; ++pass) {
         for (int e = 0; e < SCENE_ENGINE_COUNT; ++e) {
             if (!engine_runs(e)) continue;
@@ -76,6 +118,7 @@ int large_pyramid(int steps, const char *out_dir) {
                     continue;
                 }
                 ++nr;
+                if (pass == 0) default_ms[e] = r->ms;
                 if (e == SCENE_SEPAX && pass == 0) sx_default_ms = r->ms;
                 char cfg[96], det[96];
                 config_name(e, &c, cfg, sizeof cfg);
@@ -107,14 +150,13 @@ int large_pyramid(int steps, const char *out_dir) {
         if (best) config_name(SCENE_SEPAX, &best->c, b, sizeof b);
         out("  box2d3 %-14s %7.2f ms sag %7.3f: sepax %-28s %s\n", a, runs[i].ms,
             99.5 - runs[i].top_y, b,
-            !best                      ? "(no sepax configuration sags so little)"
+            !best                    ? "(no sepax configuration sags so little)"
             : best->ms <= runs[i].ms ? "dominates it"
                                      : "sags less but is slower");
         if (!best || best->ms > runs[i].ms)
             speed_note("large_pyramid: no sepax configuration matches box2d3 %s (%.2f ms, sag "
                        "%.3f m)%s",
-                       a, runs[i].ms, 99.5 - runs[i].top_y,
-                       best ? " at no more time" : "");
+                       a, runs[i].ms, 99.5 - runs[i].top_y, best ? " at no more time" : "");
     }
     /* The picture: sag against ms per step, one series per engine. */
     {
@@ -122,7 +164,11 @@ int large_pyramid(int steps, const char *out_dir) {
         static char labels[MAXRUNS][96];
         char path[1200];
         for (int i = 0; i < nr; ++i) {
-            config_name(runs[i].engine, &runs[i].c, labels[i], sizeof labels[i]);
+            const scene_config def = default_config(runs[i].engine, 1.0 / 60.0);
+            char cfg[80];
+            config_name(runs[i].engine, &runs[i].c, cfg, sizeof cfg);
+            snprintf(labels[i], sizeof labels[i], "%s%s", cfg,
+                     runs[i].c.sub_steps == def.sub_steps ? " (default)" : "");
             pts[i].x = runs[i].ms;
             /* floor: a log axis cannot show a sag of 0 */
             pts[i].y = 99.5 - runs[i].top_y > 1e-4 ? 99.5 - runs[i].top_y : 1e-4;
@@ -130,14 +176,19 @@ int large_pyramid(int steps, const char *out_dir) {
             pts[i].label = labels[i];
         }
         snprintf(path, sizeof path, "%s/large_pyramid.svg", out_dir);
-        if (!svg_plot_write(path, "large_pyramid: top-box sag against ms per step",
-                            "ms per step", "sag of the top box (m)", pts, nr, engine_names,
-                            SCENE_ENGINE_COUNT)) {
+        if (!svg_plot_write(path, "large_pyramid: top-box sag against ms per step", "ms per step",
+                            "sag of the top box (m)", pts, nr, engine_names, SCENE_ENGINE_COUNT)) {
             fprintf(stderr, "sepax_bench: cannot write %s\n", path);
             ++failures;
         }
         md("\n![large_pyramid](large_pyramid.svg)\n");
     }
+    static const char *const group[1] = {""};
+    failures +=
+        scene_bars(out_dir, "large_pyramid, default configurations", "large_pyramid_bars.svg",
+                   "large_pyramid: base 100 (5,050 boxes), each engine's default "
+                   "configuration",
+                   group, 1, default_ms);
     scene_free(&d);
     return failures;
 }
@@ -157,7 +208,7 @@ static double time_steps(int e, void *w, int steps) {
     return (now_ms() - t0) / (double)steps;
 }
 
-int mostly_asleep(int resting, int steps) {
+int mostly_asleep(int resting, int steps, const char *out_dir) {
     scene_def d, a;
     if (!scene_init(&d, resting + 300)) return 1;
     if (!scene_init(&a, 300)) return 1;
@@ -177,7 +228,8 @@ int mostly_asleep(int resting, int steps) {
     out("%-14s %8s %8s %12s %12s %9s %9s\n", "engine", "asleep", "settle", "mixed ms", "alone ms",
         "ratio", "awake end");
     int failures = 0;
-    double mixed[SCENE_ENGINE_COUNT] = {0};
+    /* the bars: row 0 the mixed world, row 1 the awake group alone */
+    double mixed[2 * SCENE_ENGINE_COUNT] = {0};
     for (int e = 0; e < SCENE_ENGINE_COUNT; ++e) {
         if (!engine_runs(e)) continue;
         scene_config c = default_config(e, 1.0 / 60.0);
@@ -206,6 +258,7 @@ int mostly_asleep(int resting, int steps) {
         double ms_alone = time_steps(e, w2, steps);
         engines[e]->destroy(w2);
         mixed[e] = ms_mixed;
+        mixed[SCENE_ENGINE_COUNT + e] = ms_alone;
         out("%-14s %8d %8d %12.3f %12.3f %9.2f %9d\n", engine_names[e], asleep, settle, ms_mixed,
             ms_alone, ms_mixed / ms_alone, awake_after);
         char det[128];
@@ -221,10 +274,14 @@ int mostly_asleep(int resting, int steps) {
     md("```\n");
     out("ratio = mixed / alone (sepax's target: <= 2). Chipmunk's and Box2D 2.4's sleep timers "
         "differ from sepax's; 'asleep' says how many resting boxes each engine put to sleep.\n");
-    for (int e = 1; e < SCENE_ENGINE_COUNT; ++e)
-        if (mixed[e] > 0 && mixed[SCENE_SEPAX] > mixed[e])
-            speed_note("mostly_asleep: sepax %.3f ms/step, %.2fx %s", mixed[SCENE_SEPAX],
-                       mixed[SCENE_SEPAX] / mixed[e], engine_names[e]);
+    note_slower("mostly_asleep", mixed);
+    char g0[64], g1[64];
+    snprintf(g0, sizeof g0, "%d asleep + 200 awake", resting);
+    snprintf(g1, sizeof g1, "the 200 awake alone");
+    const char *const groups[2] = {g0, g1};
+    failures += scene_bars(out_dir, "mostly_asleep", "mostly_asleep.svg",
+                           "mostly_asleep: a sleeping world and its 200 awake boxes alone", groups,
+                           2, mixed);
     scene_free(&d);
     scene_free(&a);
     return failures;
@@ -318,10 +375,12 @@ int rain(const int *sizes, int nsizes, int steps, double cap_ms, const char *out
             csv_row("rain", e, &c, sizes[k], done, ms[e][k], "none", 0.0, det);
         }
         scene_free(&d);
-        for (int e = 1; e < SCENE_ENGINE_COUNT; ++e)
-            if (ms[e][k] > 0 && ms[SCENE_SEPAX][k] > ms[e][k])
-                speed_note("rain %d: sepax %.2f ms/step, %.2fx %s", sizes[k], ms[SCENE_SEPAX][k],
-                           ms[SCENE_SEPAX][k] / ms[e][k], engine_names[e]);
+        double at_k[SCENE_ENGINE_COUNT];
+        for (int e = 0; e < SCENE_ENGINE_COUNT; ++e)
+            at_k[e] = ms[e][k];
+        char scene[32];
+        snprintf(scene, sizeof scene, "rain %d", sizes[k]);
+        note_slower(scene, at_k);
     }
     if (nsizes >= 2) {
         out("log-log slope of ms/step against n (least squares, 1 = linear):");
@@ -368,5 +427,312 @@ int rain(const int *sizes, int nsizes, int steps, double cap_ms, const char *out
         }
         md("\n![rain scaling](rain.svg)\n");
     }
+    return failures;
+}
+
+/* ---- Box2D v3's benchmark scenes ----------------------------------------------- */
+
+/* What one engine's run of a scene reports. */
+typedef struct scene_result {
+    double ms, first_ms, err;
+    char details[160];
+} scene_result;
+
+typedef int (*scene_run_fn)(const void *ctx, int e, const scene_config *c, scene_result *r);
+
+/* Runs a scene on every engine at its default knobs (dt 1/60), prints and
+ * records a row per engine, notes where sepax is slower, draws the bars. */
+static int run_on_engines(const char *scene, const char *err_name, int bodies, int steps,
+                          scene_run_fn fn, const void *ctx, const char *out_dir,
+                          const char *title) {
+    md("```\n");
+    out("%-14s %9s %11s %8s %12s  %s\n", "engine", "ms/step", "step 1 (ms)", "sx/this", err_name,
+        "details");
+    double ms[SCENE_ENGINE_COUNT] = {0};
+    int failures = 0;
+    for (int e = 0; e < SCENE_ENGINE_COUNT; ++e) {
+        if (!engine_runs(e)) continue;
+        const scene_config c = default_config(e, 1.0 / 60.0);
+        scene_result r;
+        memset(&r, 0, sizeof r);
+        if (!fn(ctx, e, &c, &r)) {
+            fprintf(stderr, "sepax_bench: %s: %s failed\n", scene, engine_names[e]);
+            ++failures;
+            continue;
+        }
+        ms[e] = r.ms;
+        out("%-14s %9.3f %11.1f %8.2f %12.4g  %s\n", engine_names[e], r.ms, r.first_ms,
+            ms[SCENE_SEPAX] / r.ms, r.err, r.details);
+        csv_row(scene, e, &c, bodies, steps, r.ms, err_name, r.err, r.details);
+    }
+    md("```\n");
+    out("sx/this = sepax's ms / this row's ms (< 1: sepax is slower); steps 2..%d timed, "
+        "single thread, each engine's default knobs at dt 1/60.\n",
+        steps);
+    note_slower(scene, ms);
+    char file[64];
+    snprintf(file, sizeof file, "%s.svg", scene);
+    static const char *const group[1] = {""};
+    failures += scene_bars(out_dir, scene, file, title, group, 1, ms);
+    return failures;
+}
+
+/* Builds the scene in engine e and times it (time_after_first); NULL when
+ * the engine cannot build it. */
+static void *create_and_time(const scene_def *d, int e, const scene_config *c, int steps,
+                             scene_result *r) {
+    void *w = engines[e]->create(d, c);
+    if (w) r->ms = time_after_first(e, w, steps, &r->first_ms);
+    return w;
+}
+
+/* many_pyramids (upstream benchmark/many_pyramids, after docs/scenes.md): a grid
+ * of rows x columns pyramids of base 10 (55 unit boxes each), 11 m apart both
+ * ways as upstream places them; each pyramid stands on its own static
+ * segment 10.5 m long (upstream lays one long segment under each row). The
+ * figure: the largest drop of a pyramid's top box (starts 9.5 m above its
+ * ground). */
+typedef struct pyramids_ctx {
+    scene_def d;
+    int *tops;
+    int count, steps;
+} pyramids_ctx;
+
+static int pyramids_run(const void *ctx, int e, const scene_config *c, scene_result *r) {
+    const pyramids_ctx *p = ctx;
+    void *w = create_and_time(&p->d, e, c, p->steps, r);
+    if (!w) return 0;
+    double worst = 0.0, sum = 0.0;
+    int down = 0;
+    for (int k = 0; k < p->count; ++k) {
+        scene_state s;
+        engines[e]->get(w, p->tops[k], &s);
+        const double drop = p->d.bodies[p->tops[k]].y - s.y;
+        worst = fmax(worst, drop);
+        sum += drop;
+        down += drop > 0.5;
+    }
+    engines[e]->destroy(w);
+    r->err = worst;
+    snprintf(r->details, sizeof r->details, "mean_top_drop=%.4f;tops_down_over_0.5m=%d",
+             sum / p->count, down);
+    return 1;
+}
+
+int many_pyramids(int rows, int columns, int steps, const char *out_dir) {
+    enum { BASE = 10 };
+    const double pitch = BASE + 1.0;
+    pyramids_ctx p;
+    p.count = rows * columns;
+    p.steps = steps;
+    p.tops = malloc((size_t)p.count * sizeof *p.tops);
+    if (!p.tops || !scene_init(&p.d, p.count * (1 + BASE * (BASE + 1) / 2))) {
+        free(p.tops);
+        return 1;
+    }
+    for (int i = 0; i < rows; ++i) {
+        for (int j = 0; j < columns; ++j) {
+            const double cx = (j - 0.5 * (columns - 1)) * pitch, gy = i * pitch;
+            set_segment(scene_add(&p.d, 0, cx, gy, 0.0), -0.5 * pitch + 0.25, 0.0,
+                        0.5 * pitch - 0.25, 0.0);
+            add_pyramid(&p.d, BASE, cx, gy);
+            p.tops[i * columns + j] = p.d.count - 1;
+        }
+    }
+    const int boxes = p.d.count - p.count;
+    out("\n## many_pyramids: %d x %d pyramids of base %d (%d boxes), each on its own static "
+        "segment, %d steps of 1/60 s\n\n",
+        rows, columns, BASE, boxes, steps);
+    char title[96];
+    snprintf(title, sizeof title, "many_pyramids: %d x %d pyramids of base %d (%d boxes)", rows,
+             columns, BASE, boxes);
+    int failures = run_on_engines("many_pyramids", "max top drop m", boxes, steps, pyramids_run, &p,
+                                  out_dir, title);
+    scene_free(&p.d);
+    free(p.tops);
+    return failures;
+}
+
+/* tumbler (upstream benchmark/tumbler, after docs/scenes.md): a hollow box of four
+ * walls 1 m thick centred 10 m from its middle at (0, 10) (19 m inside),
+ * turning at upstream's 25 degrees per second. Upstream drives a dynamic box
+ * with a revolute motor; the scene interface has no joints, so here the four
+ * walls are kinematic bodies sharing one origin, as in upstream's washer.
+ *
+ * It is filled over time through the engines' add(): every 4th step a row of
+ * 18 boxes 0.7 m apart, 6.5 m above the middle (inside the circle the walls
+ * never cross), starts falling at 6 m/s. Rows keep 0.44 m apart while they
+ * fall (all accelerate alike), so a row never lands on the previous one; a
+ * spot where a box already is (the pile or a rebound) is skipped. The boxes
+ * are 0.25 m tall and 0.25 to 0.5 m wide (half-extents 0.125 x 0.125..0.25,
+ * the same sequence for every engine): about half the tumbler's area once
+ * full (upstream: 2,025 squares of half-extent 0.125, a third). Timed: the
+ * steps once all are in. The figure: boxes outside the walls in the
+ * tumbler's frame (must be 0). */
+enum { TUMBLER_ROW = 18, TUMBLER_ROW_EVERY = 4 };
+static const double TUMBLER_CY = 10.0, TUMBLER_INNER = 9.5, TUMBLER_SPAWN_DY = 6.5,
+                    TUMBLER_PITCH = 0.7, TUMBLER_V0 = 6.0;
+
+typedef struct tumbler_ctx {
+    scene_def walls, boxes;
+    int steps, max_fill_steps;
+} tumbler_ctx;
+
+/* Adds a row of boxes, leaving out each spot with a box centre closer than
+ * 0.56 m across (two boxes' widest half-diagonals) and 0.4 m up or down (a
+ * tilted box's half-diagonal and a new box's half-height; the previous row
+ * is 0.42-0.44 m below, by each engine's integrator); returns the number
+ * added, -1 when the engine refuses one. */
+static int tumbler_spawn(const tumbler_ctx *t, int e, void *w, int added) {
+    unsigned char taken[TUMBLER_ROW] = {0};
+    const double y = TUMBLER_CY + TUMBLER_SPAWN_DY, x0 = -0.5 * TUMBLER_PITCH * (TUMBLER_ROW - 1);
+    for (int i = 0; i < added; ++i) {
+        scene_state s;
+        engines[e]->get(w, t->walls.count + i, &s);
+        if (fabs(s.y - y) >= 0.4) continue;
+        for (int k = 0; k < TUMBLER_ROW; ++k)
+            if (fabs(s.x - (x0 + TUMBLER_PITCH * k)) < 0.56) taken[k] = 1;
+    }
+    int n = 0;
+    for (int k = 0; k < TUMBLER_ROW && added + n < t->boxes.count; ++k) {
+        if (taken[k]) continue;
+        scene_body b = t->boxes.bodies[added + n];
+        b.x = x0 + TUMBLER_PITCH * k;
+        b.y = y;
+        b.vy = -TUMBLER_V0;
+        if (engines[e]->add(w, &b) < 0) return -1;
+        ++n;
+    }
+    return n;
+}
+
+static int tumbler_run(const void *ctx, int e, const scene_config *c, scene_result *r) {
+    const tumbler_ctx *t = ctx;
+    void *w = engines[e]->create(&t->walls, c);
+    if (!w) return 0;
+    int added = 0, fill = 0;
+    while (added < t->boxes.count && fill < t->max_fill_steps) {
+        if (fill % TUMBLER_ROW_EVERY == 0) {
+            const int n = tumbler_spawn(t, e, w, added);
+            if (n < 0) {
+                engines[e]->destroy(w);
+                return 0;
+            }
+            added += n;
+        }
+        engines[e]->step(w, 1);
+        ++fill;
+    }
+    r->ms = time_after_first(e, w, t->steps, &r->first_ms);
+    scene_state wall;
+    engines[e]->get(w, 0, &wall);
+    const double cs = cos(wall.angle), sn = sin(wall.angle);
+    int escaped = 0;
+    for (int i = 0; i < added; ++i) {
+        scene_state s;
+        engines[e]->get(w, t->walls.count + i, &s);
+        const double dx = s.x, dy = s.y - TUMBLER_CY;
+        escaped +=
+            fabs(cs * dx + sn * dy) > TUMBLER_INNER || fabs(-sn * dx + cs * dy) > TUMBLER_INNER;
+    }
+    engines[e]->destroy(w);
+    r->err = escaped;
+    snprintf(r->details, sizeof r->details, "boxes=%d;fill_steps=%d;wall_angle=%.3f", added, fill,
+             wall.angle);
+    return 1;
+}
+
+int tumbler(int boxes, int steps, const char *out_dir) {
+    tumbler_ctx t;
+    t.steps = steps;
+    /* twice the steps of rows never skipped: a pile that keeps the spawn row
+     * busy for long stops the fill (the details print the boxes in) */
+    t.max_fill_steps = 2 * TUMBLER_ROW_EVERY * (boxes / TUMBLER_ROW + 1);
+    if (!scene_init(&t.walls, 4)) return 1;
+    if (!scene_init(&t.boxes, boxes)) {
+        scene_free(&t.walls);
+        return 1;
+    }
+    static const double walls[4][4] = {{0.5, 10.0, 10.0, 0.0},
+                                       {0.5, 10.0, -10.0, 0.0},
+                                       {10.0, 0.5, 0.0, 10.0},
+                                       {10.0, 0.5, 0.0, -10.0}};
+    for (int k = 0; k < 4; ++k) {
+        scene_body *b = scene_add(&t.walls, 0, 0.0, TUMBLER_CY, 0.0);
+        b->kinematic = 1;
+        b->w = 25.0 * PI / 180.0;
+        set_offset_box(b, walls[k][0], walls[k][1], walls[k][2], walls[k][3]);
+    }
+    bench_rng rng = bench_rng_make(91);
+    for (int i = 0; i < boxes; ++i)
+        set_box(scene_add(&t.boxes, 1, 0.0, 0.0, 0.0), bench_rng_range(&rng, 0.125, 0.25), 0.125);
+    out("\n## tumbler: kinematic box 19 m inside turning at 25 deg/s, filled with %d boxes "
+        "(0.25 m x 0.25..0.5 m) added in rows; %d steps of 1/60 s timed once full\n\n",
+        boxes, steps);
+    char title[96];
+    snprintf(title, sizeof title, "tumbler: %d boxes in a turning box, once full", boxes);
+    int failures =
+        run_on_engines("tumbler", "escaped boxes", boxes, steps, tumbler_run, &t, out_dir, title);
+    scene_free(&t.walls);
+    scene_free(&t.boxes);
+    return failures;
+}
+
+/* smash (upstream benchmark/smash): zero gravity; a ram (box of half-extent
+ * 4, density 8) at 40 m/s into a block of columns x rows touching squares of
+ * half-extent 0.2 (upstream: 120 x 80) with its left face at x = 29.8.
+ * Upstream creates the block asleep and starts the ram at x = -20; the scene
+ * interface cannot create sleeping bodies, so the block is awake from the
+ * start and the ram starts at x = 20, 5.8 m from it (contact at step 9): the
+ * timed steps are the smash. The figure: momentum drift, |P_end - P_0| / |P_0|
+ * (no gravity, no static body: contacts only exchange momentum); details:
+ * the ram's speed at the end. */
+typedef struct smash_ctx {
+    scene_def d;
+    int steps;
+} smash_ctx;
+
+static int smash_run(const void *ctx, int e, const scene_config *c, scene_result *r) {
+    const smash_ctx *m = ctx;
+    void *w = create_and_time(&m->d, e, c, m->steps, r);
+    if (!w) return 0;
+    double p0x = 0.0, p0y = 0.0, px = 0.0, py = 0.0, ram_vx = 0.0;
+    for (int i = 0; i < m->d.count; ++i) {
+        const scene_body *b = &m->d.bodies[i];
+        const double mass = b->density * 4.0 * b->shape.hx * b->shape.hy;
+        scene_state s;
+        engines[e]->get(w, i, &s);
+        p0x += mass * b->vx;
+        p0y += mass * b->vy;
+        px += mass * s.vx;
+        py += mass * s.vy;
+        if (i == 0) ram_vx = s.vx;
+    }
+    engines[e]->destroy(w);
+    r->err = hypot(px - p0x, py - p0y) / hypot(p0x, p0y);
+    snprintf(r->details, sizeof r->details, "ram_vx_end=%.3f", ram_vx);
+    return 1;
+}
+
+int smash(int columns, int rows, int steps, const char *out_dir) {
+    smash_ctx m;
+    m.steps = steps;
+    if (!scene_init(&m.d, 1 + columns * rows)) return 1;
+    m.d.gx = m.d.gy = 0.0;
+    scene_body *ram = scene_add(&m.d, 1, 20.0, 0.0, 0.0);
+    set_box(ram, 4.0, 4.0);
+    ram->density = 8.0;
+    ram->vx = 40.0;
+    for (int i = 0; i < columns; ++i)
+        for (int j = 0; j < rows; ++j)
+            set_box(scene_add(&m.d, 1, 30.0 + 0.4 * i, 0.4 * (j - 0.5 * rows), 0.0), 0.2, 0.2);
+    out("\n## smash: zero gravity, a ram (8 x 8 m, density 8) at 40 m/s into %d x %d touching "
+        "squares of 0.4 m, %d steps of 1/60 s\n\n",
+        columns, rows, steps);
+    char title[96];
+    snprintf(title, sizeof title, "smash: a ram into %d touching squares", columns * rows);
+    int failures = run_on_engines("smash", "momentum drift", columns * rows, steps, smash_run, &m,
+                                  out_dir, title);
+    scene_free(&m.d);
     return failures;
 }
