@@ -60,12 +60,13 @@ static inline sx_real sx_bounded_impulse(sx_real x) {
 }
 
 /* Applies an impulse along `dir` at the two anchors of a point. */
-static inline void sx_apply(sx_vec2 *va, sx_real *wa, sx_vec2 *vb, sx_real *wb, sx_real ma, sx_real ia,
-                     sx_real mb, sx_real ib, const sx_contact_point *p, sx_vec2 impulse) {
+static inline void sx_apply(sx_vec2 *va, sx_real *wa, sx_vec2 *vb, sx_real *wb, sx_real ma,
+                            sx_real ia, sx_real mb, sx_real ib, sx_vec2 ra, sx_vec2 rb,
+                            sx_vec2 impulse) {
     *va = sx_mul_sub(*va, ma, impulse);
-    *wa -= ia * sx_cross(p->anchor_a, impulse);
+    *wa -= ia * sx_cross(ra, impulse);
     *vb = sx_mul_add(*vb, mb, impulse);
-    *wb += ib * sx_cross(p->anchor_b, impulse);
+    *wb += ib * sx_cross(rb, impulse);
 }
 
 /* Stores the velocities a pass computed for the two bodies of a contact:
@@ -106,18 +107,18 @@ void sx_contacts_prepare(sx_world *world) {
             sx_real r1a = sx_cross(p1->anchor_a, n), r1b = sx_cross(p1->anchor_b, n);
             sx_real r2a = sx_cross(p2->anchor_a, n), r2b = sx_cross(p2->anchor_b, n);
             sx_real det;
-            c->k11 = ma + mb + ia * r1a * r1a + ib * r1b * r1b;
-            c->k22 = ma + mb + ia * r2a * r2a + ib * r2b * r2b;
-            c->k12 = ma + mb + ia * r1a * r2a + ib * r1b * r2b;
-            det = c->k11 * c->k22 - c->k12 * c->k12;
+            c->block.k11 = ma + mb + ia * r1a * r1a + ib * r1b * r1b;
+            c->block.k22 = ma + mb + ia * r2a * r2a + ib * r2b * r2b;
+            c->block.k12 = ma + mb + ia * r1a * r2a + ib * r1b * r2b;
+            det = c->block.k11 * c->block.k22 - c->block.k12 * c->block.k12;
             /* Solve the two points together only when K is well conditioned:
              * points almost on top of each other make K nearly singular, and
              * the sequential solve handles them. */
-            if (c->k11 * c->k11 < SX_BLOCK_MAX_CONDITION * det) {
+            if (c->block.k11 * c->block.k11 < SX_BLOCK_MAX_CONDITION * det) {
                 sx_real inv_det = SX_R(1.0) / det;
-                c->inv11 = c->k22 * inv_det;
-                c->inv22 = c->k11 * inv_det;
-                c->inv12 = -c->k12 * inv_det;
+                c->block.inv11 = c->block.k22 * inv_det;
+                c->block.inv22 = c->block.k11 * inv_det;
+                c->block.inv12 = -c->block.k12 * inv_det;
                 c->block_solve = true;
             }
         }
@@ -156,7 +157,7 @@ void sx_contacts_warm_start(sx_world *world) {
             sx_contact_point *p = &c->points[k];
             sx_vec2 impulse = sx_add(sx_scale(n, p->normal_impulse), sx_scale(t, p->tangent_impulse));
             p->impact_impulse = SX_R(0.0);
-            sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p, impulse);
+            sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p->anchor_a, p->anchor_b, impulse);
         }
         sx_store_velocities(a, va, wa, b, vb, wb);
     }
@@ -164,7 +165,7 @@ void sx_contacts_warm_start(sx_world *world) {
 
 /* The relative normal velocity a point's constraint wants to be >= 0: a
  * speculative point (gap s > 0) may approach at s / h. */
-static sx_real sx_normal_error(const sx_contact_point *p, sx_real vn, sx_real inv_h) {
+static sx_real sx_normal_error(const sx_constraint_point *p, sx_real vn, sx_real inv_h) {
     return p->gap > SX_R(0.0) ? vn + p->gap * inv_h : vn;
 }
 
@@ -175,19 +176,19 @@ static sx_real sx_normal_error(const sx_contact_point *p, sx_real vn, sx_real in
  * time, the two points of a face resting on a face undo each other's work,
  * which shows as a stack that rocks. Returns false if no case fits (round-off
  * on a degenerate K), leaving the velocities untouched. */
-static bool sx_solve_lcp2(const sx_contact *c, sx_real b1, sx_real b2, sx_real *x1, sx_real *x2) {
+static bool sx_solve_lcp2(const sx_block2 *k, sx_real b1, sx_real b2, sx_real *x1, sx_real *x2) {
     sx_real y1, y2;
     /* both push: x = -K^-1 b */
-    y1 = -(c->inv11 * b1 + c->inv12 * b2);
-    y2 = -(c->inv12 * b1 + c->inv22 * b2);
+    y1 = -(k->inv11 * b1 + k->inv12 * b2);
+    y2 = -(k->inv12 * b1 + k->inv22 * b2);
     if (y1 >= SX_R(0.0) && y2 >= SX_R(0.0)) goto done;
     /* only the first pushes; the second must then separate */
-    y1 = -b1 / c->k11;
+    y1 = -b1 / k->k11;
     y2 = SX_R(0.0);
-    if (y1 >= SX_R(0.0) && c->k12 * y1 + b2 >= SX_R(0.0)) goto done;
+    if (y1 >= SX_R(0.0) && k->k12 * y1 + b2 >= SX_R(0.0)) goto done;
     y1 = SX_R(0.0);
-    y2 = -b2 / c->k22;
-    if (y2 >= SX_R(0.0) && c->k12 * y2 + b1 >= SX_R(0.0)) goto done;
+    y2 = -b2 / k->k22;
+    if (y2 >= SX_R(0.0) && k->k12 * y2 + b1 >= SX_R(0.0)) goto done;
     y1 = SX_R(0.0);
     y2 = SX_R(0.0);
     if (b1 >= SX_R(0.0) && b2 >= SX_R(0.0)) goto done;
@@ -201,19 +202,18 @@ done:
 /* The block solve of the velocity iterations: the LCP for the accumulated
  * impulses x of both points, b = error of the current velocities minus what
  * the current impulses did. */
-static bool sx_block_solve(const sx_contact *c, const sx_contact_point *p1,
-                           const sx_contact_point *p2, sx_real vn1, sx_real vn2, sx_real inv_h,
+static bool sx_block_solve(const sx_constraint *c, const sx_constraint_point *p1,
+                           const sx_constraint_point *p2, sx_real vn1, sx_real vn2, sx_real inv_h,
                            sx_real *x1, sx_real *x2) {
     sx_real a1 = p1->normal_impulse, a2 = p2->normal_impulse;
-    sx_real b1 = sx_normal_error(p1, vn1, inv_h) - (c->k11 * a1 + c->k12 * a2);
-    sx_real b2 = sx_normal_error(p2, vn2, inv_h) - (c->k12 * a1 + c->k22 * a2);
-    return sx_solve_lcp2(c, b1, b2, x1, x2);
+    sx_real b1 = sx_normal_error(p1, vn1, inv_h) - (c->block.k11 * a1 + c->block.k12 * a2);
+    sx_real b2 = sx_normal_error(p2, vn2, inv_h) - (c->block.k12 * a1 + c->block.k22 * a2);
+    return sx_solve_lcp2(&c->block, b1, b2, x1, x2);
 }
 
-static sx_real sx_point_speed(sx_vec2 va, sx_real wa, sx_vec2 vb, sx_real wb,
-                              const sx_contact_point *p, sx_vec2 dir) {
-    sx_vec2 dv =
-        sx_sub(sx_add(vb, sx_cross_sv(wb, p->anchor_b)), sx_add(va, sx_cross_sv(wa, p->anchor_a)));
+static inline sx_real sx_point_speed(sx_vec2 va, sx_real wa, sx_vec2 vb, sx_real wb, sx_vec2 ra,
+                                     sx_vec2 rb, sx_vec2 dir) {
+    sx_vec2 dv = sx_sub(sx_add(vb, sx_cross_sv(wb, rb)), sx_add(va, sx_cross_sv(wa, ra)));
     return sx_dot(dv, dir);
 }
 
@@ -248,13 +248,13 @@ static sx_softness sx_make_softness(sx_real hertz, sx_real zeta, sx_real h) {
  * leaves speculative points alone: the next sub-step's solve, after its
  * impact pass, limits their approach (a relax pass that did would stop a
  * ball at the surface before the impact pass could see it arrive). */
-static void sx_solve_normal_point(sx_contact_point *p, sx_vec2 n, sx_vec2 *va, sx_real *wa,
+static void sx_solve_normal_point(sx_constraint_point *p, sx_vec2 n, sx_vec2 *va, sx_real *wa,
                                   sx_vec2 *vb, sx_real *wb, sx_real ma, sx_real ia, sx_real mb,
                                   sx_real ib, sx_real inv_h, const sx_softness *soft,
                                   sx_real max_push, bool relax) {
     sx_real vn, lambda, total;
     if (relax && p->gap > SX_R(0.0)) return;
-    vn = sx_point_speed(*va, *wa, *vb, *wb, p, n);
+    vn = sx_point_speed(*va, *wa, *vb, *wb, p->anchor_a, p->anchor_b, n);
     if (p->gap > SX_R(0.0)) {
         lambda = -p->normal_mass * (vn + p->gap * inv_h);
     } else if (soft != NULL) {
@@ -267,12 +267,12 @@ static void sx_solve_normal_point(sx_contact_point *p, sx_vec2 n, sx_vec2 *va, s
     total = sx_bounded_impulse(sx_maxr(p->normal_impulse + lambda, SX_R(0.0)));
     lambda = total - p->normal_impulse;
     p->normal_impulse = total;
-    sx_apply(va, wa, vb, wb, ma, ia, mb, ib, p, sx_scale(n, lambda));
+    sx_apply(va, wa, vb, wb, ma, ia, mb, ib, p->anchor_a, p->anchor_b, sx_scale(n, lambda));
 }
 
-/* One pass over the active contacts: sx_world_solve's (soft when the world's
+/* One pass over the constraints: sx_world_solve's (soft when the world's
  * contacts are) or a relax pass. */
-static void sx_contacts_pass(sx_world *world, sx_real h, bool relax) {
+static void sx_constraints_pass(sx_world *world, sx_real h, bool relax) {
     sx_real inv_h = SX_R(1.0) / h;
     /* the stiffness follows the sub-step (a spring faster than a quarter of
      * the sub-step rate is not resolved by it); contacts with a body the
@@ -282,48 +282,52 @@ static void sx_contacts_pass(sx_world *world, sx_real h, bool relax) {
     sx_softness moving = sx_make_softness(hertz, world->def.contact_damping_ratio, h);
     sx_softness fixed = sx_make_softness(SX_R(2.0) * hertz, world->def.contact_damping_ratio, h);
     sx_real max_push = world->def.max_correction_speed;
+    bool soft = !relax && world->def.contact_hertz > SX_R(0.0);
+    sx_solver_body *bodies = world->solver_bodies;
     int i, k;
-    for (i = 0; i < world->contact_count; ++i) {
-        sx_contact *c = &world->contacts[i];
-        sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
-        sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;
+    for (i = 0; i < world->constraint_count; ++i) {
+        sx_constraint *c = &world->constraints[i];
+        sx_solver_body *a = &bodies[c->body_a], *b = &bodies[c->body_b];
+        sx_real ma = c->inv_mass_a, ia = c->inv_inertia_a, mb = c->inv_mass_b, ib = c->inv_inertia_b;
         sx_vec2 va = a->v, vb = b->v, n = c->normal, t = sx_cross_vs(n, SX_R(1.0));
         sx_real wa = a->w, wb = b->w;
         const sx_softness *sft = NULL;
         bool solved = false;
-        if (!sx_contact_is_active(world, c)) continue;
-        if (!relax && world->def.contact_hertz > SX_R(0.0))
-            sft = (a->dynamic && b->dynamic) ? &moving : &fixed;
+        if (soft) sft = c->both_dynamic ? &moving : &fixed;
         /* Friction first, with the normal impulses of the last pass (or of
          * the warm start): the normal constraints then have the last word,
          * so a pass never ends with a point moving into the surface. A
          * frictionless contact costs nothing here. */
         if (c->friction > SX_R(0.0)) {
             for (k = 0; k < c->count; ++k) {
-                sx_contact_point *p = &c->points[k];
+                sx_constraint_point *p = &c->points[k];
                 sx_real limit = c->friction * p->normal_impulse;
-                sx_real lambda = -p->tangent_mass * sx_point_speed(va, wa, vb, wb, p, t);
+                sx_real lambda = -p->tangent_mass * sx_point_speed(va, wa, vb, wb, p->anchor_a,
+                                                                   p->anchor_b, t);
                 sx_real total =
                     sx_bounded_impulse(sx_clampr(p->tangent_impulse + lambda, -limit, limit));
                 lambda = total - p->tangent_impulse;
                 p->tangent_impulse = total;
-                sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p, sx_scale(t, lambda));
+                sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p->anchor_a, p->anchor_b,
+                         sx_scale(t, lambda));
             }
         }
         /* the rigid passes solve a face's two points together */
         if (c->block_solve && sft == NULL &&
             (!relax || (c->points[0].gap <= SX_R(0.0) && c->points[1].gap <= SX_R(0.0)))) {
-            sx_contact_point *p1 = &c->points[0], *p2 = &c->points[1];
+            sx_constraint_point *p1 = &c->points[0], *p2 = &c->points[1];
             sx_real x1, x2;
-            sx_real vn1 = sx_point_speed(va, wa, vb, wb, p1, n);
-            sx_real vn2 = sx_point_speed(va, wa, vb, wb, p2, n);
+            sx_real vn1 = sx_point_speed(va, wa, vb, wb, p1->anchor_a, p1->anchor_b, n);
+            sx_real vn2 = sx_point_speed(va, wa, vb, wb, p2->anchor_a, p2->anchor_b, n);
             /* an overflowed solution (not <= the bound: inf or NaN) is
              * left to the point-by-point solve below, which bounds it */
             if (sx_block_solve(c, p1, p2, vn1, vn2, inv_h, &x1, &x2) && x1 <= SX_IMPULSE_LIMIT &&
                 x2 <= SX_IMPULSE_LIMIT) {
                 sx_real d1 = x1 - p1->normal_impulse, d2 = x2 - p2->normal_impulse;
-                sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p1, sx_scale(n, d1));
-                sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p2, sx_scale(n, d2));
+                sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p1->anchor_a, p1->anchor_b,
+                         sx_scale(n, d1));
+                sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p2->anchor_a, p2->anchor_b,
+                         sx_scale(n, d2));
                 p1->normal_impulse = x1;
                 p2->normal_impulse = x2;
                 solved = true;
@@ -335,8 +339,130 @@ static void sx_contacts_pass(sx_world *world, sx_real h, bool relax) {
                                       sft, max_push, relax);
             }
         }
-        sx_store_velocities(a, va, wa, b, vb, wb);
+        a->v = va;
+        a->w = wa;
+        b->v = vb;
+        b->w = wb;
     }
+}
+
+/* Grows the solver's arrays for the current contacts and bodies. */
+static bool sx_solver_reserve(sx_world *world) {
+    int contacts = world->contact_count, bodies = 2 * contacts + 1;
+    void *p;
+    bool ok;
+    p = world->solver_bodies;
+    ok = sx_grow_array(&p, &world->solver_body_capacity, bodies, sizeof(sx_solver_body));
+    world->solver_bodies = (sx_solver_body *)p;
+    if (!ok) return false;
+    p = world->solver_slots;
+    ok = sx_grow_array(&p, &world->solver_slot_capacity, bodies, sizeof(int));
+    world->solver_slots = (int *)p;
+    if (!ok) return false;
+    /* zeroed: a body slot maps to no solver body until a gather names it */
+    p = world->solver_index;
+    ok = sx_grow_zeroed(&p, &world->solver_index_capacity, world->body_slots, sizeof(int));
+    world->solver_index = (int *)p;
+    if (!ok) return false;
+    p = world->constraints;
+    ok = sx_grow_array(&p, &world->constraint_capacity, contacts, sizeof(sx_constraint));
+    world->constraints = (sx_constraint *)p;
+    return ok;
+}
+
+/* The solver body of a body slot, given one the first time it is named:
+ * bodies that do not move share entry 0. */
+static int sx_solver_body_of(sx_world *world, int slot) {
+    const sx_body_sim *sim = &world->sims[slot];
+    int j = world->solver_index[slot];
+    if (j != 0 || !sim->moving) return j;
+    j = world->solver_body_count++;
+    world->solver_index[slot] = j;
+    world->solver_slots[j] = slot;
+    world->solver_bodies[j].v = sim->v;
+    world->solver_bodies[j].w = sim->w;
+    return j;
+}
+
+/* Copies the active contacts and their bodies' velocities into the solver's
+ * arrays; false when they could not grow (nothing copied). */
+static bool sx_solver_gather(sx_world *world) {
+    int i, k;
+    if (!sx_solver_reserve(world)) return false;
+    world->solver_bodies[0].v = sx_v2_zero();
+    world->solver_bodies[0].w = SX_R(0.0);
+    world->solver_body_count = 1;
+    world->constraint_count = 0;
+    for (i = 0; i < world->contact_count; ++i) {
+        const sx_contact *ct = &world->contacts[i];
+        const sx_body_sim *a = &world->sims[ct->body_a], *b = &world->sims[ct->body_b];
+        sx_constraint *c;
+        if (!sx_contact_is_active(world, ct)) continue;
+        c = &world->constraints[world->constraint_count++];
+        c->body_a = sx_solver_body_of(world, ct->body_a);
+        c->body_b = sx_solver_body_of(world, ct->body_b);
+        c->contact = i;
+        c->count = ct->count;
+        c->normal = ct->normal;
+        c->friction = ct->friction;
+        c->inv_mass_a = a->inv_mass;
+        c->inv_inertia_a = a->inv_inertia;
+        c->inv_mass_b = b->inv_mass;
+        c->inv_inertia_b = b->inv_inertia;
+        for (k = 0; k < ct->count; ++k) {
+            const sx_contact_point *src = &ct->points[k];
+            sx_constraint_point *p = &c->points[k];
+            p->anchor_a = src->anchor_a;
+            p->anchor_b = src->anchor_b;
+            p->gap = src->gap;
+            p->normal_impulse = src->normal_impulse;
+            p->tangent_impulse = src->tangent_impulse;
+            p->normal_mass = src->normal_mass;
+            p->tangent_mass = src->tangent_mass;
+        }
+        c->block = ct->block;
+        c->block_solve = ct->block_solve;
+        c->both_dynamic = a->dynamic && b->dynamic;
+    }
+    return true;
+}
+
+/* Hands the passes' results back: the velocities of the dynamic bodies
+ * (static and kinematic bodies keep theirs), the accumulated impulses to
+ * their contacts (warm start of the next sub-step, contact reports). */
+static void sx_solver_scatter(sx_world *world) {
+    int i, k;
+    for (i = 1; i < world->solver_body_count; ++i) {
+        int slot = world->solver_slots[i];
+        sx_body_sim *sim = &world->sims[slot];
+        if (sim->dynamic) {
+            sim->v = world->solver_bodies[i].v;
+            sim->w = world->solver_bodies[i].w;
+        }
+        world->solver_index[slot] = 0;
+    }
+    for (i = 0; i < world->constraint_count; ++i) {
+        const sx_constraint *c = &world->constraints[i];
+        sx_contact *ct = &world->contacts[c->contact];
+        for (k = 0; k < c->count; ++k) {
+            ct->points[k].normal_impulse = c->points[k].normal_impulse;
+            ct->points[k].tangent_impulse = c->points[k].tangent_impulse;
+        }
+    }
+    world->solver_body_count = 0;
+    world->constraint_count = 0;
+}
+
+/* Gathers, makes `passes` passes, scatters; false when the solver's arrays
+ * could not grow (no pass made). */
+static bool sx_solver_run(sx_world *world, sx_real h, int passes, bool relax) {
+    int it;
+    if (passes <= 0) return true;
+    if (!sx_solver_gather(world)) return false;
+    for (it = 0; it < passes; ++it)
+        sx_constraints_pass(world, h, relax);
+    sx_solver_scatter(world);
+    return true;
 }
 
 /* Turns a body by a small angle (the pseudo-impulse's rotation) and keeps
@@ -394,20 +520,21 @@ static void sx_contacts_push_out(sx_world *world, sx_real h, int passes) {
     }
 }
 
-void sx_contacts_solve(sx_world *world, sx_real h) { sx_contacts_pass(world, h, false); }
+bool sx_contacts_solve(sx_world *world, sx_real h, int passes) {
+    return sx_solver_run(world, h, passes, false);
+}
 
-void sx_contacts_relax(sx_world *world, sx_real h, int passes) {
-    int i, it;
+bool sx_contacts_relax(sx_world *world, sx_real h, int passes) {
+    int i;
     if (!(world->def.contact_hertz > SX_R(0.0))) {
         sx_contacts_push_out(world, h, passes);
-        return;
+        return true;
     }
     for (i = 0; i < world->contact_count; ++i) {
         sx_contact *c = &world->contacts[i];
         if (sx_contact_is_active(world, c)) sx_update_gaps(world, c);
     }
-    for (it = 0; it < passes; ++it)
-        sx_contacts_pass(world, h, true);
+    return sx_solver_run(world, h, passes, true);
 }
 
 /* ---- impacts ----------------------------------------------------------------
@@ -507,7 +634,7 @@ static bool sx_impact_time(const sx_world *world, const sx_contact *c, sx_real h
     int k;
     for (k = 0; k < c->count; ++k) {
         const sx_contact_point *p = &c->points[k];
-        sx_real approach = -sx_point_speed(a->v, a->w, b->v, b->w, p, c->normal);
+        sx_real approach = -sx_point_speed(a->v, a->w, b->v, b->w, p->anchor_a, p->anchor_b, c->normal);
         sx_real gap, t;
         if (!(approach > SX_R(0.0)) || approach < threshold) continue;
         gap = shifted ? sx_shifted_gap(world, c, p) : p->gap;
@@ -541,7 +668,7 @@ static void sx_resolve_impact(sx_world *world, sx_contact *c, sx_real h, sx_real
     int k;
     for (k = 0; k < c->count; ++k) {
         sx_contact_point *p = &c->points[k];
-        sx_real vn = sx_point_speed(va, wa, vb, wb, p, n), approach = -vn;
+        sx_real vn = sx_point_speed(va, wa, vb, wb, p->anchor_a, p->anchor_b, n), approach = -vn;
         if (!(approach > SX_R(0.0)) || approach * h < sx_shifted_gap(world, c, p)) continue;
         closing[k] = true;
         /* leave at e x approach: vn' = vn + (K x)_k >= e x approach, i.e.
@@ -550,10 +677,10 @@ static void sx_resolve_impact(sx_world *world, sx_contact *c, sx_real h, sx_real
         bias[k] = vn - rebound[k];
     }
     if (c->count == 2 && closing[0] && closing[1] && c->block_solve) {
-        if (sx_solve_lcp2(c, bias[0], bias[1], &x[0], &x[1]) && x[0] <= SX_IMPULSE_LIMIT &&
+        if (sx_solve_lcp2(&c->block, bias[0], bias[1], &x[0], &x[1]) && x[0] <= SX_IMPULSE_LIMIT &&
             x[1] <= SX_IMPULSE_LIMIT) {
-            sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, &c->points[0], sx_scale(n, x[0]));
-            sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, &c->points[1], sx_scale(n, x[1]));
+            sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, c->points[0].anchor_a, c->points[0].anchor_b, sx_scale(n, x[0]));
+            sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, c->points[1].anchor_a, c->points[1].anchor_b, sx_scale(n, x[1]));
             solved = true;
         }
     }
@@ -564,7 +691,7 @@ static void sx_resolve_impact(sx_world *world, sx_contact *c, sx_real h, sx_real
             sx_contact_point *p = &c->points[k];
             sx_real approach;
             if (!closing[k]) continue;
-            approach = -sx_point_speed(va, wa, vb, wb, p, n);
+            approach = -sx_point_speed(va, wa, vb, wb, p->anchor_a, p->anchor_b, n);
             if (!(approach > SX_R(0.0))) continue;
             if (approach >= threshold && !(e * approach <= max_rebound)) {
                 x[k] = p->normal_mass * (approach + max_rebound);
@@ -573,7 +700,7 @@ static void sx_resolve_impact(sx_world *world, sx_contact *c, sx_real h, sx_real
                        approach;
             }
             x[k] = sx_bounded_impulse(x[k]);
-            sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p, sx_scale(n, x[k]));
+            sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p->anchor_a, p->anchor_b, sx_scale(n, x[k]));
         }
     }
     for (k = 0; k < c->count; ++k) {
@@ -581,9 +708,9 @@ static void sx_resolve_impact(sx_world *world, sx_contact *c, sx_real h, sx_real
         sx_real limit = c->friction * x[k], lambda;
         p->impact_impulse += x[k];
         if (!(limit > SX_R(0.0))) continue;
-        lambda = -p->tangent_mass * sx_point_speed(va, wa, vb, wb, p, tangent);
+        lambda = -p->tangent_mass * sx_point_speed(va, wa, vb, wb, p->anchor_a, p->anchor_b, tangent);
         lambda = sx_bounded_impulse(sx_clampr(lambda, -limit, limit));
-        sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p, sx_scale(tangent, lambda));
+        sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p->anchor_a, p->anchor_b, sx_scale(tangent, lambda));
     }
     /* until t the bodies moved with their old velocities */
     sa->shift = sx_mul_sub(sa->shift, t, sx_sub(va, va0));
@@ -821,6 +948,10 @@ void sx_contacts_apply_impact_shifts(sx_world *world) {
 }
 
 void sx_contacts_free(sx_world *world) {
+    sx_free(world->solver_bodies, (size_t)world->solver_body_capacity * sizeof(sx_solver_body));
+    sx_free(world->solver_slots, (size_t)world->solver_slot_capacity * sizeof(int));
+    sx_free(world->solver_index, (size_t)world->solver_index_capacity * sizeof(int));
+    sx_free(world->constraints, (size_t)world->constraint_capacity * sizeof(sx_constraint));
     sx_free(world->impact_bodies, (size_t)world->impact_body_capacity * sizeof(sx_impact_body));
     sx_free(world->impact_adjacency, (size_t)world->impact_adjacency_capacity * sizeof(int));
     sx_free(world->impact_heap, (size_t)world->impact_heap_capacity * sizeof(int));

@@ -869,8 +869,7 @@ sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data
 
 sx_status sx_world_solve(sx_world *world, sx_real h) {
     sx_status s = sx_check_step(world, h);
-    bool impacts;
-    int it;
+    bool impacts, solved;
     if (s != SX_OK) return s;
     /* the impact pass works on the active bodies */
     s = sx_world_refresh_sets(world);
@@ -881,12 +880,11 @@ sx_status sx_world_solve(sx_world *world, sx_real h) {
     /* restitution first, impact by impact in time order (contact_solver.c
      * says why); the soft passes then solve what rests and slides */
     impacts = sx_contacts_impacts(world, h);
-    for (it = 0; it < world->def.velocity_iterations; ++it)
-        sx_contacts_solve(world, h);
+    solved = sx_contacts_solve(world, h, world->def.velocity_iterations);
     /* what the impulses did stays within the limit too (an impulse at its
      * bound on a light body overflows its velocity) */
     sx_limit_speeds(world, h);
-    return impacts ? SX_OK : SX_ERR_NO_MEMORY;
+    return impacts && solved ? SX_OK : SX_ERR_NO_MEMORY;
 }
 
 /* ---- stage 4: integrate -------------------------------------------------- */
@@ -914,13 +912,14 @@ sx_status sx_world_integrate(sx_world *world, sx_real h) {
 
 sx_status sx_world_separate(sx_world *world, sx_real h) {
     sx_status s = sx_check_step(world, h);
+    bool relaxed;
     if (s != SX_OK) return s;
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
     sx_world_purge_contacts(world);
-    sx_contacts_relax(world, h, world->def.position_iterations);
+    relaxed = sx_contacts_relax(world, h, world->def.position_iterations);
     sx_limit_speeds(world, h);
-    return SX_OK;
+    return relaxed ? SX_OK : SX_ERR_NO_MEMORY;
 }
 
 /* ---- the step ------------------------------------------------------------- */

@@ -88,6 +88,12 @@ typedef struct sx_collider {
     void *user_data;
 } sx_collider;
 
+/* A two-point manifold's 2x2 normal effective-mass matrix K (symmetric)
+ * and its inverse. */
+typedef struct sx_block2 {
+    sx_real k11, k12, k22, inv11, inv12, inv22;
+} sx_block2;
+
 typedef struct sx_contact_point {
     sx_vec2 anchor_a, anchor_b; /* from each centre of mass to the point, world, at collide */
     /* the same two anchors in their body frames: turned with the bodies,
@@ -126,12 +132,50 @@ typedef struct sx_contact {
     sx_contact_point points[2];
     /* two-point manifolds: the 2x2 normal effective-mass matrix K and its
      * inverse, when K is well conditioned (block_solve) */
-    sx_real k11, k12, k22, inv11, inv12, inv22;
+    sx_block2 block;
     bool block_solve;
     /* just moved back from the frozen store by a wake during collide: it
      * existed before, so it reports no begin event */
     bool thawed;
 } sx_contact;
+
+/* The solver's compact view of the step (contact_solver.c), rebuilt by each
+ * solve from the contacts and bodies: the velocity passes stream through
+ * these arrays and touch nothing else.
+ *
+ * A solver body is the velocity of one body that takes part in an active
+ * contact and moves (dynamic or kinematic); entry 0 is every body that does
+ * not move, with zero velocity, which the passes read and write like any
+ * other (zero inverse mass keeps it at exactly zero) so no pass branches on
+ * the body type. */
+typedef struct sx_solver_body {
+    sx_vec2 v;
+    sx_real w;
+} sx_solver_body;
+
+/* A contact point as the velocity passes see it. */
+typedef struct sx_constraint_point {
+    sx_vec2 anchor_a, anchor_b;
+    sx_real gap;
+    sx_real normal_impulse, tangent_impulse;
+    sx_real normal_mass, tangent_mass;
+} sx_constraint_point;
+
+/* An active contact as the velocity passes see it: solver body indices, the
+ * bodies' inverse masses copied in (no body record is read), and the points. */
+typedef struct sx_constraint {
+    int body_a, body_b; /* solver body indices (0: the body that does not move) */
+    int contact;        /* index in world->contacts, for the impulses' way back */
+    int count;
+    sx_vec2 normal;
+    sx_real friction;
+    sx_real inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
+    sx_constraint_point points[2];
+    sx_block2 block;
+    bool block_solve;
+    /* both bodies dynamic: soft contacts take the softer stiffness */
+    bool both_dynamic;
+} sx_constraint;
 
 /* What the broadphase needs to know of a collider. Pairs are reported when
  * one side is AWAKE, or a MOVING_KINEMATIC body meets an ASLEEP one (so it
@@ -284,6 +328,16 @@ struct sx_world {
      * applies the moves */
     bool impact_shifts_pending;
 
+    /* the solver's compact arrays (sx_constraint above); solver_index maps
+     * a body slot to its solver body while a solve runs, 0 otherwise */
+    sx_solver_body *solver_bodies;
+    int *solver_slots; /* per solver body: its body slot */
+    int *solver_index; /* per body slot */
+    sx_constraint *constraints;
+    int solver_body_count, constraint_count;
+    int solver_body_capacity, solver_slot_capacity, solver_index_capacity;
+    int constraint_capacity;
+
     int *island_parent; /* union-find scratch, per body slot */
     sx_real *island_time;
     int parent_capacity, time_capacity;
@@ -395,16 +449,19 @@ void sx_contacts_warm_start(sx_world *world);
 /* The impact pass (restitution): false when its scratch could not grow (the
  * pass is then skipped). */
 bool sx_contacts_impacts(sx_world *world, sx_real h);
-/* One velocity pass over the contacts: soft (push-out of the overlap at the
- * world's contact stiffness) when contact_hertz > 0, otherwise rigid. */
-void sx_contacts_solve(sx_world *world, sx_real h);
+/* `passes` velocity passes over the active contacts, on the solver's compact
+ * arrays (gathered before, velocities and impulses handed back after): soft
+ * (push-out of the overlap at the world's contact stiffness) when
+ * contact_hertz > 0, otherwise rigid. false when the arrays could not grow
+ * (no pass made). */
+bool sx_contacts_solve(sx_world *world, sx_real h, int passes);
 /* Moves the bodies by the corrections of the last impact pass and clears
  * them (called by sx_world_integrate). */
 void sx_contacts_apply_impact_shifts(sx_world *world);
 void sx_contacts_free(sx_world *world);
 /* The relax passes of sx_world_separate: the gaps from the positions after
  * integrate, then `passes` rigid passes. */
-void sx_contacts_relax(sx_world *world, sx_real h, int passes);
+bool sx_contacts_relax(sx_world *world, sx_real h, int passes);
 
 /* sensor.c */
 /* Finds the sensor overlaps at the current positions and records the sensor

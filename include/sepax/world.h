@@ -317,8 +317,8 @@ sx_status sx_world_collide(sx_world *world);
  *  restitution <= 1 no impulse of this stage adds kinetic energy, and
  *  penetration is not turned into velocity here (see sx_world_separate).
  *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE,
- *  SX_ERR_NO_MEMORY (the impact pass's scratch could not grow: the pass is
- *  skipped, the iterations still run), SX_ERR_LOCKED. */
+ *  SX_ERR_NO_MEMORY (the impact pass's or the iterations' scratch could
+ *  not grow: that part is skipped, the rest still runs), SX_ERR_LOCKED. */
 sx_status sx_world_solve(sx_world *world, sx_real h);
 
 /** Stage 4: symplectic Euler positions: centre of mass += h v, rotation
@@ -343,7 +343,9 @@ sx_status sx_world_integrate(sx_world *world, sx_real h);
  *  Baumgarte velocity bias because a bias turns overlap into velocity, which
  *  comes out as kinetic energy (bodies created overlapping fly apart); split
  *  impulses would do the same work with a second set of velocities.
- *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE, SX_ERR_LOCKED. */
+ *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE,
+ *  SX_ERR_NO_MEMORY (the relax passes' scratch could not grow: no pass),
+ *  SX_ERR_LOCKED. */
 sx_status sx_world_separate(sx_world *world, sx_real h);
 
 /** Clears every body's force and torque accumulators (the last stage of a
