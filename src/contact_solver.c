@@ -142,27 +142,6 @@ static void sx_update_gaps(const sx_world *world, sx_contact *c) {
         c->points[k].gap = sx_current_gap(a, b, c->normal, &c->points[k]);
 }
 
-void sx_contacts_warm_start(sx_world *world) {
-    int i, k;
-    for (i = 0; i < world->contact_count; ++i) {
-        sx_contact *c = &world->contacts[i];
-        sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
-        sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;
-        sx_vec2 n = c->normal, t = sx_cross_vs(n, SX_R(1.0));
-        sx_vec2 va = a->v, vb = b->v;
-        sx_real wa = a->w, wb = b->w;
-        if (!sx_contact_is_active(world, c)) continue;
-        sx_update_gaps(world, c);
-        for (k = 0; k < c->count; ++k) {
-            sx_contact_point *p = &c->points[k];
-            sx_vec2 impulse = sx_add(sx_scale(n, p->normal_impulse), sx_scale(t, p->tangent_impulse));
-            p->impact_impulse = SX_R(0.0);
-            sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p->anchor_a, p->anchor_b, impulse);
-        }
-        sx_store_velocities(a, va, wa, b, vb, wb);
-    }
-}
-
 /* The relative normal velocity a point's constraint wants to be >= 0: a
  * speculative point (gap s > 0) may approach at s / h. */
 static sx_real sx_normal_error(const sx_constraint_point *p, sx_real vn, sx_real inv_h) {
@@ -384,9 +363,33 @@ static int sx_solver_body_of(sx_world *world, int slot) {
     return j;
 }
 
+/* The warm start of one constraint on its solver bodies; the contact's
+ * impact impulses start the sub-step at zero. */
+static void sx_warm_start(sx_world *world, sx_contact *ct, const sx_constraint *c) {
+    sx_solver_body *a = &world->solver_bodies[c->body_a], *b = &world->solver_bodies[c->body_b];
+    sx_real ma = c->inv_mass_a, ia = c->inv_inertia_a, mb = c->inv_mass_b, ib = c->inv_inertia_b;
+    sx_vec2 n = c->normal, t = sx_cross_vs(n, SX_R(1.0));
+    sx_vec2 va = a->v, vb = b->v;
+    sx_real wa = a->w, wb = b->w;
+    int k;
+    for (k = 0; k < c->count; ++k) {
+        const sx_constraint_point *p = &c->points[k];
+        sx_vec2 impulse = sx_add(sx_scale(n, p->normal_impulse), sx_scale(t, p->tangent_impulse));
+        ct->points[k].impact_impulse = SX_R(0.0);
+        sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p->anchor_a, p->anchor_b, impulse);
+    }
+    a->v = va;
+    a->w = wa;
+    b->v = vb;
+    b->w = wb;
+}
+
 /* Copies the active contacts and their bodies' velocities into the solver's
- * arrays; false when they could not grow (nothing copied). */
-static bool sx_solver_gather(sx_world *world) {
+ * arrays; false when they could not grow (nothing copied). `warm`: the
+ * start of a solve, in the same walk over the contacts: each point's gap
+ * from the current positions, and the warm start (last sub-step's impulses
+ * applied again). */
+static bool sx_solver_gather(sx_world *world, bool warm) {
     int i, k;
     if (!sx_solver_reserve(world)) return false;
     world->solver_bodies[0].v = sx_v2_zero();
@@ -394,10 +397,11 @@ static bool sx_solver_gather(sx_world *world) {
     world->solver_body_count = 1;
     world->constraint_count = 0;
     for (i = 0; i < world->contact_count; ++i) {
-        const sx_contact *ct = &world->contacts[i];
+        sx_contact *ct = &world->contacts[i];
         const sx_body_sim *a = &world->sims[ct->body_a], *b = &world->sims[ct->body_b];
         sx_constraint *c;
         if (!sx_contact_is_active(world, ct)) continue;
+        if (warm) sx_update_gaps(world, ct);
         c = &world->constraints[world->constraint_count++];
         c->body_a = sx_solver_body_of(world, ct->body_a);
         c->body_b = sx_solver_body_of(world, ct->body_b);
@@ -423,8 +427,24 @@ static bool sx_solver_gather(sx_world *world) {
         c->block = ct->block;
         c->block_solve = ct->block_solve;
         c->both_dynamic = a->dynamic && b->dynamic;
+        if (warm) sx_warm_start(world, ct, c);
     }
+    world->solver_gathered = true;
     return true;
+}
+
+/* The velocities of the solver bodies into the dynamic bodies (static and
+ * kinematic bodies keep theirs: for them the passes only added 0 x impulse,
+ * which is rounding at best and NaN from an overflow). */
+static void sx_solver_store_velocities(sx_world *world) {
+    int i;
+    for (i = 1; i < world->solver_body_count; ++i) {
+        sx_body_sim *sim = &world->sims[world->solver_slots[i]];
+        if (sim->dynamic) {
+            sim->v = world->solver_bodies[i].v;
+            sim->w = world->solver_bodies[i].w;
+        }
+    }
 }
 
 /* Hands the passes' results back: the velocities of the dynamic bodies
@@ -432,15 +452,9 @@ static bool sx_solver_gather(sx_world *world) {
  * their contacts (warm start of the next sub-step, contact reports). */
 static void sx_solver_scatter(sx_world *world) {
     int i, k;
-    for (i = 1; i < world->solver_body_count; ++i) {
-        int slot = world->solver_slots[i];
-        sx_body_sim *sim = &world->sims[slot];
-        if (sim->dynamic) {
-            sim->v = world->solver_bodies[i].v;
-            sim->w = world->solver_bodies[i].w;
-        }
-        world->solver_index[slot] = 0;
-    }
+    sx_solver_store_velocities(world);
+    for (i = 1; i < world->solver_body_count; ++i)
+        world->solver_index[world->solver_slots[i]] = 0;
     for (i = 0; i < world->constraint_count; ++i) {
         const sx_constraint *c = &world->constraints[i];
         sx_contact *ct = &world->contacts[c->contact];
@@ -451,17 +465,27 @@ static void sx_solver_scatter(sx_world *world) {
     }
     world->solver_body_count = 0;
     world->constraint_count = 0;
+    world->solver_gathered = false;
 }
 
-/* Gathers, makes `passes` passes, scatters; false when the solver's arrays
- * could not grow (no pass made). */
+/* Gathers (unless the warm start did), makes `passes` passes, scatters;
+ * false when the solver's arrays could not grow (no pass made). */
 static bool sx_solver_run(sx_world *world, sx_real h, int passes, bool relax) {
     int it;
-    if (passes <= 0) return true;
-    if (!sx_solver_gather(world)) return false;
+    if (!world->solver_gathered) {
+        if (passes <= 0) return true;
+        if (!sx_solver_gather(world, false)) return false;
+    }
     for (it = 0; it < passes; ++it)
         sx_constraints_pass(world, h, relax);
     sx_solver_scatter(world);
+    return true;
+}
+
+bool sx_contacts_warm_start(sx_world *world) {
+    if (!sx_solver_gather(world, true)) return false;
+    /* the impact pass works on the bodies' own velocities */
+    sx_solver_store_velocities(world);
     return true;
 }
 
@@ -521,6 +545,21 @@ static void sx_contacts_push_out(sx_world *world, sx_real h, int passes) {
 }
 
 bool sx_contacts_solve(sx_world *world, sx_real h, int passes) {
+    int i, k;
+    if (!world->solver_gathered) return false;
+    if (world->impact_shifts_pending) {
+        /* the impact pass changed velocities and gaps: read them again */
+        for (i = 1; i < world->solver_body_count; ++i) {
+            const sx_body_sim *sim = &world->sims[world->solver_slots[i]];
+            world->solver_bodies[i].v = sim->v;
+            world->solver_bodies[i].w = sim->w;
+        }
+        for (i = 0; i < world->constraint_count; ++i) {
+            sx_constraint *c = &world->constraints[i];
+            for (k = 0; k < c->count; ++k)
+                c->points[k].gap = world->contacts[c->contact].points[k].gap;
+        }
+    }
     return sx_solver_run(world, h, passes, false);
 }
 

@@ -869,14 +869,14 @@ sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data
 
 sx_status sx_world_solve(sx_world *world, sx_real h) {
     sx_status s = sx_check_step(world, h);
-    bool impacts, solved;
+    bool warmed, impacts, solved;
     if (s != SX_OK) return s;
     /* the impact pass works on the active bodies */
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
     sx_world_purge_contacts(world);
     sx_limit_speeds(world, h);
-    sx_contacts_warm_start(world);
+    warmed = sx_contacts_warm_start(world);
     /* restitution first, impact by impact in time order (contact_solver.c
      * says why); the soft passes then solve what rests and slides */
     impacts = sx_contacts_impacts(world, h);
@@ -884,7 +884,7 @@ sx_status sx_world_solve(sx_world *world, sx_real h) {
     /* what the impulses did stays within the limit too (an impulse at its
      * bound on a light body overflows its velocity) */
     sx_limit_speeds(world, h);
-    return impacts && solved ? SX_OK : SX_ERR_NO_MEMORY;
+    return warmed && impacts && solved ? SX_OK : SX_ERR_NO_MEMORY;
 }
 
 /* ---- stage 4: integrate -------------------------------------------------- */

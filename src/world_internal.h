@@ -337,6 +337,9 @@ struct sx_world {
     int solver_body_count, constraint_count;
     int solver_body_capacity, solver_slot_capacity, solver_index_capacity;
     int constraint_capacity;
+    /* the arrays hold the current solve's gather (from the warm start to
+     * the scatter after the passes) */
+    bool solver_gathered;
 
     int *island_parent; /* union-find scratch, per body slot */
     sx_real *island_time;
@@ -443,17 +446,20 @@ sx_status sx_broadphase_query(const sx_broadphase *bp, sx_aabb box, int **out, i
 /* Once per collide: the effective masses and the block-solve matrices of
  * the new contacts, from their anchors (fixed for the step). */
 void sx_contacts_prepare(sx_world *world);
-/* Start of a sub-step's solve: every active point's gap from the current
- * positions, then the warm start. */
-void sx_contacts_warm_start(sx_world *world);
+/* Start of a sub-step's solve: gathers the solver's compact arrays, every
+ * active point's gap from the current positions, then the warm start (the
+ * bodies' velocities updated too, for the impact pass). false when the
+ * arrays could not grow (nothing done; sx_contacts_solve then refuses). */
+bool sx_contacts_warm_start(sx_world *world);
 /* The impact pass (restitution): false when its scratch could not grow (the
  * pass is then skipped). */
 bool sx_contacts_impacts(sx_world *world, sx_real h);
-/* `passes` velocity passes over the active contacts, on the solver's compact
- * arrays (gathered before, velocities and impulses handed back after): soft
+/* `passes` velocity passes over the active contacts, on the arrays the warm
+ * start gathered (velocities and gaps read again after an impact pass that
+ * changed them; velocities and impulses handed back after): soft
  * (push-out of the overlap at the world's contact stiffness) when
- * contact_hertz > 0, otherwise rigid. false when the arrays could not grow
- * (no pass made). */
+ * contact_hertz > 0, otherwise rigid. false without a gather (no pass
+ * made). */
 bool sx_contacts_solve(sx_world *world, sx_real h, int passes);
 /* Moves the bodies by the corrections of the last impact pass and clears
  * them (called by sx_world_integrate). */
