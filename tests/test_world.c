@@ -143,6 +143,58 @@ static void the_largest_body_capacity_is_asked_for_once_and_refused_cleanly(void
     assert_true(sx_live_bytes() == live);
 }
 
+/* An allocator that refuses everything (the solver's scratch then cannot
+ * grow). */
+static void *refusing_alloc(size_t size, void *context) {
+    (void)size;
+    (void)context;
+    return NULL;
+}
+
+/* The velocity passes work on arrays the solve grows on its first call: when
+ * they cannot grow, solve answers SX_ERR_NO_MEMORY and leaves the bodies as
+ * they were (no pass on half-gathered data), and the next solve with memory
+ * works. The same for the relax passes of soft contacts. */
+static void solve_without_memory_for_its_arrays_refuses_and_changes_nothing(void **state) {
+    sx_world_def d = sx_default_world_def();
+    sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(1.0)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_body_id b;
+    sx_world *w;
+    sx_vec2 v0, p0;
+    sx_real h = DT / (sx_real)d.sub_steps;
+    size_t live = sx_live_bytes();
+    int soft;
+    (void)state;
+    for (soft = 0; soft < 2; ++soft) {
+        d.contact_hertz = soft ? SX_R(30.0) : SX_R(0.0);
+        w = sx_world_create(&d);
+        assert_non_null(w);
+        make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-1.0)), &ground);
+        /* a little overlap, falling: the passes would change the velocity */
+        b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.49)), &box);
+        assert_int_equal(sx_body_set_linear_velocity(w, b, sx_v2(SX_R(0.0), SX_R(-1.0))), SX_OK);
+        assert_int_equal(sx_world_begin_step(w, DT), SX_OK);
+        assert_int_equal(sx_world_collide(w), SX_OK);
+        assert_int_equal(sx_world_contact_count(w), 1);
+        v0 = sx_body_get_linear_velocity(w, b);
+        p0 = sx_body_get_position(w, b);
+        sx_set_allocator(refusing_alloc, capped_free, NULL);
+        assert_int_equal(sx_world_solve(w, h), SX_ERR_NO_MEMORY);
+        assert_vec2_near(sx_body_get_linear_velocity(w, b), v0, 0.0);
+        if (soft) {
+            assert_int_equal(sx_world_separate(w, h), SX_ERR_NO_MEMORY);
+            assert_vec2_near(sx_body_get_position(w, b), p0, 0.0);
+        }
+        sx_set_allocator(NULL, NULL, NULL);
+        /* with memory: the contact stops the fall */
+        assert_int_equal(sx_world_solve(w, h), SX_OK);
+        assert_true(sx_body_get_linear_velocity(w, b).y > SX_R(-1e-3));
+        assert_int_equal(sx_world_separate(w, h), SX_OK);
+        sx_world_destroy(w);
+    }
+    assert_true(sx_live_bytes() == live);
+}
+
 /* A world at the largest sub-step and iteration counts steps, and returns. */
 static void a_world_at_the_largest_step_counts_steps_and_returns(void **state) {
     sx_world_def d = sx_default_world_def();
@@ -1602,6 +1654,7 @@ int main(void) {
         cmocka_unit_test(an_overflowing_contact_impulse_gives_no_nan),
         cmocka_unit_test(separating_a_body_of_the_largest_mass_gives_no_nan),
         cmocka_unit_test(a_denormal_time_step_is_one_sub_step),
+        cmocka_unit_test(solve_without_memory_for_its_arrays_refuses_and_changes_nothing),
         cmocka_unit_test(a_needle_small_collider_gives_no_nan),
         cmocka_unit_test(destroying_bodies_mid_run_and_the_world_frees_everything),
     };
