@@ -250,8 +250,10 @@ static void sx_solve_normal_point(sx_constraint_point *p, sx_vec2 n, sx_vec2 *va
 }
 
 /* One pass over the constraints: sx_world_solve's (soft when the world's
- * contacts are) or a relax pass. */
-static void sx_constraints_pass(sx_world *world, sx_real h, bool relax) {
+ * contacts are) or a relax pass. `last`: the last pass of the solve also
+ * hands each constraint's impulses back to its contact as it goes (the
+ * stores overlap the solve, where a walk of their own waited on memory). */
+static void sx_constraints_pass(sx_world *world, sx_real h, bool relax, bool last) {
     sx_real inv_h = SX_R(1.0) / h;
     /* the stiffness follows the sub-step (a spring faster than a quarter of
      * the sub-step rate is not resolved by it); contacts with a body the
@@ -322,6 +324,13 @@ static void sx_constraints_pass(sx_world *world, sx_real h, bool relax) {
         a->w = wa;
         b->v = vb;
         b->w = wb;
+        if (last) {
+            sx_contact_point *out = world->contacts[c->contact].points;
+            for (k = 0; k < c->count; ++k) {
+                out[k].normal_impulse = c->points[k].normal_impulse;
+                out[k].tangent_impulse = c->points[k].tangent_impulse;
+            }
+        }
     }
 }
 
@@ -447,22 +456,15 @@ static void sx_solver_store_velocities(sx_world *world) {
     }
 }
 
-/* Hands the passes' results back: the velocities of the dynamic bodies
- * (static and kinematic bodies keep theirs), the accumulated impulses to
- * their contacts (warm start of the next sub-step, contact reports). */
+/* Hands the velocities of the dynamic bodies back (static and kinematic
+ * bodies keep theirs) and ends the gather; the last pass handed the
+ * accumulated impulses to the contacts (warm start of the next sub-step,
+ * contact reports). */
 static void sx_solver_scatter(sx_world *world) {
-    int i, k;
+    int i;
     sx_solver_store_velocities(world);
     for (i = 1; i < world->solver_body_count; ++i)
         world->solver_index[world->solver_slots[i]] = 0;
-    for (i = 0; i < world->constraint_count; ++i) {
-        const sx_constraint *c = &world->constraints[i];
-        sx_contact *ct = &world->contacts[c->contact];
-        for (k = 0; k < c->count; ++k) {
-            ct->points[k].normal_impulse = c->points[k].normal_impulse;
-            ct->points[k].tangent_impulse = c->points[k].tangent_impulse;
-        }
-    }
     world->solver_body_count = 0;
     world->constraint_count = 0;
     world->solver_gathered = false;
@@ -477,7 +479,7 @@ static bool sx_solver_run(sx_world *world, sx_real h, int passes, bool relax) {
         if (!sx_solver_gather(world, false)) return false;
     }
     for (it = 0; it < passes; ++it)
-        sx_constraints_pass(world, h, relax);
+        sx_constraints_pass(world, h, relax, it == passes - 1);
     sx_solver_scatter(world);
     return true;
 }
