@@ -196,6 +196,25 @@ static inline sx_real sx_point_speed(sx_vec2 va, sx_real wa, sx_vec2 vb, sx_real
     return sx_dot(dv, dir);
 }
 
+/* The relative speed along dir (normal or tangent) at a point whose anchors
+ * have the moments r_a x dir and r_b x dir. */
+static inline sx_real sx_lever_speed(sx_vec2 va, sx_real wa, sx_vec2 vb, sx_real wb, sx_vec2 dir,
+                                     sx_real r_a, sx_real r_b) {
+    return sx_dot(sx_sub(vb, va), dir) + wb * r_b - wa * r_a;
+}
+
+/* An impulse lambda along dir at a point whose anchors have the moments r_a
+ * x dir and r_b x dir. */
+static inline void sx_lever_apply(sx_vec2 *va, sx_real *wa, sx_vec2 *vb, sx_real *wb, sx_real ma,
+                                  sx_real ia, sx_real mb, sx_real ib, sx_vec2 dir, sx_real r_a,
+                                  sx_real r_b, sx_real lambda) {
+    sx_vec2 impulse = sx_scale(dir, lambda);
+    *va = sx_mul_sub(*va, ma, impulse);
+    *wa -= ia * (lambda * r_a);
+    *vb = sx_mul_add(*vb, mb, impulse);
+    *wb += ib * (lambda * r_b);
+}
+
 /* A soft contact (Catto, "Soft Constraints", GDC 2011): the overlap is a
  * stiff spring of frequency `hertz` and damping ratio `zeta` solved
  * implicitly over the sub-step h, which makes the push-out a velocity bias
@@ -233,7 +252,7 @@ static void sx_solve_normal_point(sx_constraint_point *p, sx_vec2 n, sx_vec2 *va
                                   sx_real max_push, bool relax) {
     sx_real vn, lambda, total;
     if (relax && p->gap > SX_R(0.0)) return;
-    vn = sx_point_speed(*va, *wa, *vb, *wb, p->anchor_a, p->anchor_b, n);
+    vn = sx_lever_speed(*va, *wa, *vb, *wb, n, p->rn_a, p->rn_b);
     if (p->gap > SX_R(0.0)) {
         lambda = -p->normal_mass * (vn + p->gap * inv_h);
     } else if (soft != NULL) {
@@ -246,7 +265,7 @@ static void sx_solve_normal_point(sx_constraint_point *p, sx_vec2 n, sx_vec2 *va
     total = sx_bounded_impulse(sx_maxr(p->normal_impulse + lambda, SX_R(0.0)));
     lambda = total - p->normal_impulse;
     p->normal_impulse = total;
-    sx_apply(va, wa, vb, wb, ma, ia, mb, ib, p->anchor_a, p->anchor_b, sx_scale(n, lambda));
+    sx_lever_apply(va, wa, vb, wb, ma, ia, mb, ib, n, p->rn_a, p->rn_b, lambda);
 }
 
 /* One pass over the constraints: sx_world_solve's (soft when the world's
@@ -283,14 +302,13 @@ static void sx_constraints_pass(sx_world *world, sx_real h, bool relax, bool las
             for (k = 0; k < c->count; ++k) {
                 sx_constraint_point *p = &c->points[k];
                 sx_real limit = c->friction * p->normal_impulse;
-                sx_real lambda = -p->tangent_mass * sx_point_speed(va, wa, vb, wb, p->anchor_a,
-                                                                   p->anchor_b, t);
+                sx_real lambda =
+                    -p->tangent_mass * sx_lever_speed(va, wa, vb, wb, t, p->rt_a, p->rt_b);
                 sx_real total =
                     sx_bounded_impulse(sx_clampr(p->tangent_impulse + lambda, -limit, limit));
                 lambda = total - p->tangent_impulse;
                 p->tangent_impulse = total;
-                sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p->anchor_a, p->anchor_b,
-                         sx_scale(t, lambda));
+                sx_lever_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, t, p->rt_a, p->rt_b, lambda);
             }
         }
         /* the rigid passes solve a face's two points together */
@@ -298,17 +316,15 @@ static void sx_constraints_pass(sx_world *world, sx_real h, bool relax, bool las
             (!relax || (c->points[0].gap <= SX_R(0.0) && c->points[1].gap <= SX_R(0.0)))) {
             sx_constraint_point *p1 = &c->points[0], *p2 = &c->points[1];
             sx_real x1, x2;
-            sx_real vn1 = sx_point_speed(va, wa, vb, wb, p1->anchor_a, p1->anchor_b, n);
-            sx_real vn2 = sx_point_speed(va, wa, vb, wb, p2->anchor_a, p2->anchor_b, n);
+            sx_real vn1 = sx_lever_speed(va, wa, vb, wb, n, p1->rn_a, p1->rn_b);
+            sx_real vn2 = sx_lever_speed(va, wa, vb, wb, n, p2->rn_a, p2->rn_b);
             /* an overflowed solution (not <= the bound: inf or NaN) is
              * left to the point-by-point solve below, which bounds it */
             if (sx_block_solve(c, p1, p2, vn1, vn2, inv_h, &x1, &x2) && x1 <= SX_IMPULSE_LIMIT &&
                 x2 <= SX_IMPULSE_LIMIT) {
                 sx_real d1 = x1 - p1->normal_impulse, d2 = x2 - p2->normal_impulse;
-                sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p1->anchor_a, p1->anchor_b,
-                         sx_scale(n, d1));
-                sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p2->anchor_a, p2->anchor_b,
-                         sx_scale(n, d2));
+                sx_lever_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, n, p1->rn_a, p1->rn_b, d1);
+                sx_lever_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, n, p2->rn_a, p2->rn_b, d2);
                 p1->normal_impulse = x1;
                 p2->normal_impulse = x2;
                 solved = true;
@@ -385,7 +401,10 @@ static void sx_warm_start(sx_world *world, sx_contact *ct, const sx_constraint *
         const sx_constraint_point *p = &c->points[k];
         sx_vec2 impulse = sx_add(sx_scale(n, p->normal_impulse), sx_scale(t, p->tangent_impulse));
         ct->points[k].impact_impulse = SX_R(0.0);
-        sx_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, p->anchor_a, p->anchor_b, impulse);
+        va = sx_mul_sub(va, ma, impulse);
+        wa -= ia * (p->normal_impulse * p->rn_a + p->tangent_impulse * p->rt_a);
+        vb = sx_mul_add(vb, mb, impulse);
+        wb += ib * (p->normal_impulse * p->rn_b + p->tangent_impulse * p->rt_b);
     }
     a->v = va;
     a->w = wa;
@@ -425,8 +444,10 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
         for (k = 0; k < ct->count; ++k) {
             const sx_contact_point *src = &ct->points[k];
             sx_constraint_point *p = &c->points[k];
-            p->anchor_a = src->anchor_a;
-            p->anchor_b = src->anchor_b;
+            p->rn_a = sx_cross(src->anchor_a, ct->normal);
+            p->rn_b = sx_cross(src->anchor_b, ct->normal);
+            p->rt_a = sx_cross(src->anchor_a, sx_cross_vs(ct->normal, SX_R(1.0)));
+            p->rt_b = sx_cross(src->anchor_b, sx_cross_vs(ct->normal, SX_R(1.0)));
             p->gap = src->gap;
             p->normal_impulse = src->normal_impulse;
             p->tangent_impulse = src->tangent_impulse;

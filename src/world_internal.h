@@ -153,9 +153,11 @@ typedef struct sx_solver_body {
     sx_real w;
 } sx_solver_body;
 
-/* A contact point as the velocity passes see it. */
+/* A contact point as the velocity passes see it: the anchors enter only as
+ * their moments about the normal and the tangent (anchor x normal, anchor x
+ * tangent), which is all a pass needs of them. */
 typedef struct sx_constraint_point {
-    sx_vec2 anchor_a, anchor_b;
+    sx_real rn_a, rn_b, rt_a, rt_b;
     sx_real gap;
     sx_real normal_impulse, tangent_impulse;
     sx_real normal_mass, tangent_mass;

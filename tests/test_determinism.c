@@ -50,8 +50,8 @@ typedef struct det_pin {
 
 static const det_pin det_pins[] = {
     /* build    state hash             narrowphase hash */
-    {"float", 0xb47d94ea4875cd3cull, 0x4d1bf48ab77e19cbull},
-    {"double", 0x76a844bb5862b87full, 0x8963162b0ec798e3ull},
+    {"float", 0x98a6d1823f850441ull, 0x4d1bf48ab77e19cbull},
+    {"double", 0x39440b0abac6a72full, 0x8963162b0ec798e3ull},
 };
 
 #ifdef SX_DOUBLE
