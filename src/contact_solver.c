@@ -8,8 +8,8 @@
  * motion of a step), which is what the speculative and positional terms
  * aim at.
  *
- * Data: each sub-step's warm start walks the contacts once and copies what
- * the velocity passes read into compact arrays (world_internal.h,
+ * Data: each sub-step's gather walks the contacts once and copies what
+ * the velocity passes read into compact arrays, warm-starting the copies (world_internal.h,
  * sx_constraint and sx_solver_body); the passes touch nothing else, and the
  * last one hands the impulses back to the contacts as it goes. The passes
  * are bound by the chain of dependent operations within a contact (each
@@ -37,7 +37,7 @@
  * a stiff damped spring whose push-out the relax passes take back.
  *
  * Restitution is not part of these iterations: an impact pass before them
- * resolves the impacts one at a time in time-of-impact order (see "impacts"
+ * (and before the warm start reaches the bodies) resolves the impacts one at a time in time-of-impact order (see "impacts"
  * below for the design and why), with impulses kept apart from the
  * iterations' accumulators.
  *
@@ -396,9 +396,9 @@ static int sx_solver_body_of(sx_world *world, int slot) {
     return j;
 }
 
-/* The warm start of one constraint on its solver bodies; the contact's
- * impact impulses start the sub-step at zero. */
-static void sx_warm_start(sx_world *world, sx_contact *ct, const sx_constraint *c) {
+/* The warm start of one constraint on its solver bodies (last sub-step's
+ * accumulated impulses applied again). */
+static void sx_warm_start(sx_world *world, const sx_constraint *c) {
     sx_solver_body *a = &world->solver_bodies[c->body_a], *b = &world->solver_bodies[c->body_b];
     sx_real ma = c->inv_mass_a, ia = c->inv_inertia_a, mb = c->inv_mass_b, ib = c->inv_inertia_b;
     sx_vec2 n = c->normal, t = sx_cross_vs(n, SX_R(1.0));
@@ -408,7 +408,6 @@ static void sx_warm_start(sx_world *world, sx_contact *ct, const sx_constraint *
     for (k = 0; k < c->count; ++k) {
         const sx_constraint_point *p = &c->points[k];
         sx_vec2 impulse = sx_add(sx_scale(n, p->normal_impulse), sx_scale(t, p->tangent_impulse));
-        ct->points[k].impact_impulse = SX_R(0.0);
         va = sx_mul_sub(va, ma, impulse);
         wa -= ia * (p->normal_impulse * p->rn_a + p->tangent_impulse * p->rt_a);
         vb = sx_mul_add(vb, mb, impulse);
@@ -423,8 +422,9 @@ static void sx_warm_start(sx_world *world, sx_contact *ct, const sx_constraint *
 /* Copies the active contacts and their bodies' velocities into the solver's
  * arrays; false when they could not grow (nothing copied). `warm`: the
  * start of a solve, in the same walk over the contacts: each point's gap
- * from the current positions, and the warm start (last sub-step's impulses
- * applied again). */
+ * from the current positions, the impact impulses zeroed, and the warm
+ * start on the solver bodies only (the bodies keep their own velocities
+ * for the impact pass). */
 static bool sx_solver_gather(sx_world *world, bool warm) {
     int i, k;
     if (!sx_solver_reserve(world)) return false;
@@ -465,7 +465,11 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
         c->block = ct->block;
         c->block_solve = ct->block_solve;
         c->both_dynamic = a->dynamic && b->dynamic;
-        if (warm) sx_warm_start(world, ct, c);
+        if (warm) {
+            for (k = 0; k < ct->count; ++k)
+                ct->points[k].impact_impulse = SX_R(0.0);
+            sx_warm_start(world, c);
+        }
     }
     world->solver_gathered = true;
     return true;
@@ -499,7 +503,7 @@ static void sx_solver_scatter(sx_world *world) {
     world->solver_gathered = false;
 }
 
-/* Gathers (unless the warm start did), makes `passes` passes, scatters;
+/* Gathers (unless the start of the solve did), makes `passes` passes, scatters;
  * false when the solver's arrays could not grow (no pass made). */
 static bool sx_solver_run(sx_world *world, sx_real h, int passes, bool relax) {
     int it;
@@ -513,11 +517,8 @@ static bool sx_solver_run(sx_world *world, sx_real h, int passes, bool relax) {
     return true;
 }
 
-bool sx_contacts_warm_start(sx_world *world) {
-    if (!sx_solver_gather(world, true)) return false;
-    /* the impact pass works on the bodies' own velocities */
-    sx_solver_store_velocities(world);
-    return true;
+bool sx_contacts_gather(sx_world *world) {
+    return sx_solver_gather(world, true);
 }
 
 /* Turns a body by a small angle (the pseudo-impulse's rotation) and keeps
@@ -579,7 +580,8 @@ bool sx_contacts_solve(sx_world *world, sx_real h, int passes) {
     int i, k;
     if (!world->solver_gathered) return false;
     if (world->impact_shifts_pending) {
-        /* the impact pass changed velocities and gaps: read them again */
+        /* the impact pass changed velocities and gaps: the warm start of the
+         * gather is redone on the velocities the impacts left */
         for (i = 1; i < world->solver_body_count; ++i) {
             const sx_body_sim *sim = &world->sims[world->solver_slots[i]];
             world->solver_bodies[i].v = sim->v;
@@ -589,6 +591,7 @@ bool sx_contacts_solve(sx_world *world, sx_real h, int passes) {
             sx_constraint *c = &world->constraints[i];
             for (k = 0; k < c->count; ++k)
                 c->points[k].gap = world->contacts[c->contact].points[k].gap;
+            sx_warm_start(world, c);
         }
     }
     return sx_solver_run(world, h, passes, false);
@@ -610,7 +613,7 @@ bool sx_contacts_relax(sx_world *world, sx_real h, int passes) {
 /* ---- impacts ----------------------------------------------------------------
  *
  * Restitution is resolved by an impact pass that runs once per sub-step,
- * after the warm start and before the velocity iterations. Why a pass of its
+ * before the warm start and the velocity iterations. Why a pass of its
  * own: the velocity iterations solve every contact of the sub-step at once,
  * and a simultaneous solve cannot produce a Newton's cradle. With the
  * speculative margin (20 mm) wider than the cradle's 1 mm gaps, all four
@@ -653,7 +656,13 @@ bool sx_contacts_relax(sx_world *world, sx_real h, int passes) {
  * Energy: an impact asks only approaching points to leave at e x their
  * approach speed, so for e <= 1 the kinetic energy cannot grow (the change is
  * 1/2 sum x_i (1 - e_i) vn_i <= 0 over the points that push); the friction
- * impulse only reduces the sliding speed. Momentum: every impulse acts on
+ * impulse only reduces the sliding speed. That holds for each impulse on the
+ * velocities it meets, so for any chain of them at any mass ratio, as long
+ * as those are the bodies' own velocities. Hence the pass runs before the
+ * warm start: after it, a light body pinched under a heavy one carried the
+ * last sub-step's support impulses as velocity towards the heavy one, the
+ * pass bounced that, and the iterations could not take back a rebound (the
+ * bounced impulse doubled every sub-step). Momentum: every impulse acts on
  * both bodies, equal and opposite. Cost: one scan of the contacts with
  * restitution per sub-step; the heap and the contact lists per body are built
  * only in sub-steps that have an impact. Known limits: an exchange beyond

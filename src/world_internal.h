@@ -449,10 +449,12 @@ sx_status sx_broadphase_query(const sx_broadphase *bp, sx_aabb box, int **out, i
  * the new contacts, from their anchors (fixed for the step). */
 void sx_contacts_prepare(sx_world *world);
 /* Start of a sub-step's solve: gathers the solver's compact arrays, every
- * active point's gap from the current positions, then the warm start (the
- * bodies' velocities updated too, for the impact pass). false when the
- * arrays could not grow (nothing done; sx_contacts_solve then refuses). */
-bool sx_contacts_warm_start(sx_world *world);
+ * active point's gap from the current positions, and the warm start on the
+ * solver's copies of the velocities only: the bodies keep their own for the
+ * impact pass, and sx_contacts_solve redoes the warm start on what the
+ * impacts left if there were any. false when the arrays could not grow
+ * (nothing done; sx_contacts_solve then refuses). */
+bool sx_contacts_gather(sx_world *world);
 /* The impact pass (restitution): false when its scratch could not grow (the
  * pass is then skipped). */
 bool sx_contacts_impacts(sx_world *world, sx_real h);
