@@ -24,6 +24,14 @@
  *    pass on the body: per point x_n sqrt(1 + mu^2) (its friction is at most
  *    mu x_n). Summed over the points of the last solve's impacts, both
  *    bodies of each.
+ *  - the rounding of a two-point impact: the impact pass solves both points
+ *    of a two-point contact together, a 2x2 system of condition number up
+ *    to 1000 (the block solver's limit, SX_BLOCK_MAX_CONDITION in
+ *    contact_solver.c), so its impulses x are exact only within about
+ *    1000 epsilon relative; impulses off by dx change the energy by about
+ *    dx . K x, at most 2 x 1000 epsilon times the energy of the impulses
+ *    alone (1/2 x . K x; bounded here per body by (sum x)^2 / m +
+ *    (sum |r| x)^2 / I, widened by 1 + mu for friction).
  *  - separation: sx_world_separate moves positions only; its change of E
  *    (the work of lifting a body out of an overlap, or of letting it sink
  *    into its place) is measured and added, and it must leave every
@@ -140,22 +148,50 @@ static inline void fz_energy_begin(fz_energy *e, sx_world *world, sx_vec2 gravit
     e->velocities_kept = true;
 }
 
-/* |acc| of the audited body `id`, 0 for any other (static) body. */
-static inline double fz_energy_accel_of(const fz_energy *e, sx_body_id id) {
+/* The index of body `id` among the audited ones, -1 if not audited. */
+static inline int fz_energy_index(const fz_energy *e, sx_body_id id) {
     int i;
     for (i = 0; i < e->count; ++i) {
-        if (e->bodies[i].index == id.index && e->bodies[i].generation == id.generation) {
-            double ax, ay;
-            fz_energy_accel(e, i, (double)sx_body_get_mass(e->world, id), &ax, &ay);
-            return sqrt(ax * ax + ay * ay);
-        }
+        if (e->bodies[i].index == id.index && e->bodies[i].generation == id.generation) return i;
     }
-    return 0.0;
+    return -1;
 }
 
-/* The impacts' allowance of the last solve (see the top of the file). */
+/* |acc| of the audited body `id`, 0 for any other (static) body. */
+static inline double fz_energy_accel_of(const fz_energy *e, sx_body_id id) {
+    int i = fz_energy_index(e, id);
+    double ax, ay;
+    if (i < 0) return 0.0;
+    fz_energy_accel(e, i, (double)sx_body_get_mass(e->world, id), &ax, &ay);
+    return sqrt(ax * ax + ay * ay);
+}
+
+/* The block solver's largest condition number (SX_BLOCK_MAX_CONDITION in
+ * src/contact_solver.c). */
+#define FZ_ENERGY_BLOCK_CONDITION 1000.0
+
+/* A bound on the energy of contact c's impact impulses alone on the audited
+ * body `id` (0 for any other: static), friction widened in by 1 + mu. */
+static inline double fz_energy_alone(const fz_energy *e, sx_body_id id, const sx_contact_data *c) {
+    double p = 0.0, l = 0.0, m, inertia, widen = 1.0 + e->max_friction;
+    sx_vec2 centre;
+    int k;
+    if (fz_energy_index(e, id) < 0) return 0.0;
+    m = (double)sx_body_get_mass(e->world, id);
+    inertia = (double)sx_body_get_inertia(e->world, id);
+    centre = sx_body_get_world_center(e->world, id);
+    for (k = 0; k < c->count; ++k) {
+        double x = fabs((double)c->impact_impulses[k]);
+        p += x;
+        l += x * (double)sx_length(sx_sub(c->points[k], centre));
+    }
+    if (!(m > 0.0)) return 0.0;
+    return 0.5 * widen * widen * (p * p / m + (inertia > 0.0 ? l * l / inertia : 0.0));
+}
+
+/* The impacts' allowances of the last solve (see the top of the file). */
 static inline double fz_energy_impact_allowance(const fz_energy *e) {
-    double sum = 0.0, widen = sqrt(1.0 + e->max_friction * e->max_friction);
+    double sum = 0.0, block = 0.0, widen = sqrt(1.0 + e->max_friction * e->max_friction);
     int n = sx_world_contact_count(e->world), i, k;
     for (i = 0; i < n; ++i) {
         sx_contact_data c;
@@ -166,8 +202,10 @@ static inline double fz_energy_impact_allowance(const fz_energy *e) {
         if (impulse > 0.0) {
             sum += impulse * (fz_energy_accel_of(e, c.body_a) + fz_energy_accel_of(e, c.body_b));
         }
+        if (c.count == 2 && c.impact_impulses[0] > SX_R(0.0) && c.impact_impulses[1] > SX_R(0.0))
+            block += fz_energy_alone(e, c.body_a, &c) + fz_energy_alone(e, c.body_b, &c);
     }
-    return 0.5 * e->h * widen * sum;
+    return 0.5 * e->h * widen * sum + 2.0 * FZ_ENERGY_BLOCK_CONDITION * fz_energy_epsilon() * block;
 }
 
 /* True when body i's velocities equal those saved in v and w. */
