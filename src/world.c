@@ -883,6 +883,7 @@ sx_status sx_world_solve(sx_world *world, sx_real h) {
     warmed = sx_contacts_gather(world);
     impacts = sx_contacts_impacts(world, h);
     solved = sx_contacts_solve(world, h, world->def.velocity_iterations);
+    if (solved) sx_contacts_energy_guard(world, h);
     /* what the impulses did stays within the limit too (an impulse at its
      * bound on a light body overflows its velocity) */
     sx_limit_speeds(world, h);
