@@ -26,7 +26,14 @@
  *    WLD_STRICT_NAN);
  *  - queries and contacts are well formed (unit normals, 1..2 points,
  *    hits within the ray);
- *  - after sx_world_destroy, sx_live_bytes() is back where it started. */
+ *  - after sx_world_destroy, sx_live_bytes() is back where it started.
+ *
+ * An input whose first byte is 2 mod 4 builds a pinched scene instead and
+ * steps it under fuzz_energy.h's energy audit (see "pinched scenes" below):
+ * light bodies under heavy ones at mass ratios past 10^6, any restitution,
+ * and the total energy never above its start plus the work of gravity and
+ * the applied forces, within the allowances derived there. */
+#include "fuzz_energy.h"
 #include "fuzz_input.h"
 
 #define WLD_MAX_COMMANDS 48
@@ -643,6 +650,181 @@ static sx_world *wld_create(fz_reader *r, bool *sane) {
     return w;
 }
 
+/* ---- pinched scenes under the energy audit ---------------------------------
+ * (Each byte is read in its own statement: two reads among the arguments of
+ * one call are made in an order C leaves open, and gcc and clang differed,
+ * so an input found by the clang fuzzer replayed as another scene in the
+ * gcc test build.)
+ *
+ * An input whose first byte is 2 mod 4 builds a scene instead (the command
+ * interpreter reads such a byte as "default world def" and ignores its bit
+ * 1, so each command input has an equal with that bit clear, and the corpus
+ * files that had it set were rewritten so): a static ground, sometimes walls
+ * and a slanted block to pinch against, and 2 to WLD_PINCH_BODIES bodies
+ * of masses 10^-2 to 10^4 kg per square metre and sizes 2 cm to 1.5 m (mass
+ * ratios past 10^6) stacked on top of one another so that light ones are
+ * pinched, with any restitution in [0, 1], friction, velocities, spins,
+ * gravity scales and constant forces; then up to WLD_PINCH_STEPS steps
+ * through fuzz_energy.h's audit, which checks after every sub-step that the
+ * total energy stays within its start plus what gravity and the forces put
+ * in (the allowances and their derivation are in fuzz_energy.h). Also: every
+ * stage answers SX_OK and no state turns NaN or infinite. */
+#define WLD_PINCH_BODIES 8
+#define WLD_PINCH_STEPS 16
+
+/* A value in [lo, hi] on a log scale, from one byte. */
+static double wld_log_range(fz_reader *r, double lo, double hi) {
+    return lo * pow(hi / lo, (double)fz_u8(r) / 255.0);
+}
+
+static sx_shape wld_pinch_shape(fz_reader *r, double size) {
+    uint8_t k = fz_u8(r);
+    sx_real s = (sx_real)size, t = (sx_real)(size * (0.3 + 0.7 * (double)fz_u8(r) / 255.0));
+    switch (k % 4u) {
+    case 0: return sx_circle_shape(sx_v2_zero(), s);
+    case 1: return sx_box_shape(s, t);
+    case 2: return sx_capsule_shape(sx_v2(-s + t, SX_R(0.0)), sx_v2(s - t, SX_R(0.0)), t);
+    default: {
+        sx_vec2 p[6];
+        sx_shape shape;
+        int n = 3 + (int)(k / 4u % 4u), i;
+        for (i = 0; i < n; ++i) {
+            double a = 6.283185307179586 * (double)i / (double)n;
+            p[i] = sx_v2((sx_real)(size * cos(a)), (sx_real)(size * sin(a)));
+        }
+        FZ_CHECK(sx_polygon_shape(p, n, SX_R(0.0), &shape) == SX_OK);
+        return shape;
+    }
+    }
+}
+
+static void wld_pinch_static(sx_world *w, sx_vec2 p, sx_real angle, sx_shape shape, double friction,
+                             double restitution) {
+    sx_body_def bd = sx_default_body_def();
+    sx_collider_def cd = sx_default_collider_def();
+    sx_body_id id;
+    bd.position = p;
+    bd.angle = angle;
+    FZ_CHECK(sx_create_body(w, &bd, &id) == SX_OK);
+    cd.shape = shape;
+    cd.friction = (sx_real)friction;
+    cd.restitution = (sx_real)restitution;
+    FZ_CHECK(sx_body_add_collider(w, id, &cd, NULL) == SX_OK);
+}
+
+/* A restitution: often 0, 1/2 or 1, else any in [0, 1]. */
+static double wld_pinch_restitution(fz_reader *r) {
+    uint8_t k = fz_u8(r);
+    switch (k % 4u) {
+    case 0: return 0.0;
+    case 1: return 1.0;
+    case 2: return 0.5;
+    default: return (double)(k / 4u) / 63.0;
+    }
+}
+
+static void wld_pinch_scene(fz_reader *r) {
+    static const double thresholds[4] = {1.0, 0.0, 0.25, 3.0};
+    static const double slops[4] = {4.0, 0.0, 1.0, 16.0};
+    static const double scales[8] = {1.0, 1.0, 1.0, 1.0, 0.5, 2.0, 0.0, -1.0};
+    sx_world_def def = sx_default_world_def();
+    sx_world *w;
+    sx_body_id bodies[WLD_PINCH_BODIES];
+    sx_vec2 forces[WLD_PINCH_BODIES];
+    double gravity_scales[WLD_PINCH_BODIES], max_friction, top = 0.0, dt;
+    uint8_t k = fz_u8(r), layout = fz_u8(r);
+    int n = 2 + (int)(fz_u8(r) % (WLD_PINCH_BODIES - 1)), i, steps;
+    fz_energy audit;
+    def.enable_sleep = false;
+    def.sub_steps = 1 + (int)(k % 8u);
+    def.velocity_iterations = 1 + (int)(k / 8u % 8u);
+    def.position_iterations = (int)(k / 64u);
+    def.restitution_threshold = (sx_real)thresholds[layout % 4u];
+    def.speculative_slops = (sx_real)slops[layout / 4u % 4u];
+    switch (layout / 16u % 4u) {
+    case 0: def.gravity = sx_v2(SX_R(0.0), SX_R(-10.0)); break;
+    case 1: def.gravity = sx_v2(SX_R(0.0), SX_R(-30.0)); break;
+    case 2:
+        def.gravity.x = (sx_real)fz_int8(r) / SX_R(8.0);
+        def.gravity.y = (sx_real)fz_int8(r) / SX_R(8.0);
+        break;
+    default: def.gravity = sx_v2_zero(); break;
+    }
+    dt = 1.0 / (30.0 * (double)(1 + layout / 64u % 4u));
+    w = sx_world_create(&def);
+    FZ_CHECK(w != NULL);
+    max_friction = (double)fz_u8(r) / 128.0;
+    wld_pinch_static(w, sx_v2(SX_R(0.0), SX_R(-1.0)), SX_R(0.0),
+                     sx_box_shape(SX_R(20.0), SX_R(1.0)), max_friction, wld_pinch_restitution(r));
+    if (layout & 128u) { /* walls 2 m apart and a slanted block to wedge against */
+        double e = wld_pinch_restitution(r);
+        wld_pinch_static(w, sx_v2(SX_R(-1.5), SX_R(2.0)), SX_R(0.0),
+                         sx_box_shape(SX_R(0.5), SX_R(3.0)), max_friction, e);
+        wld_pinch_static(w, sx_v2(SX_R(1.5), SX_R(2.0)), SX_R(0.0),
+                         sx_box_shape(SX_R(0.5), SX_R(3.0)), max_friction, e);
+        wld_pinch_static(w, sx_v2(SX_R(0.9), SX_R(0.2)), (sx_real)fz_int8(r) / SX_R(128.0),
+                         sx_box_shape(SX_R(0.4), SX_R(0.2)), max_friction, e);
+    }
+    for (i = 0; i < n; ++i) {
+        sx_body_def bd = sx_default_body_def();
+        sx_collider_def cd = sx_default_collider_def();
+        double size = wld_log_range(r, 0.02, 1.5), density = wld_log_range(r, 1e-2, 1e4), accel;
+        uint8_t flags = fz_u8(r);
+        bd.type = SX_BODY_DYNAMIC;
+        /* on top of the last, touching or a little into it or above it */
+        bd.position.x = (sx_real)((double)fz_int8(r) / 128.0 * size);
+        bd.position.y = (sx_real)(top + size * (0.9 + 0.2 * (double)fz_u8(r) / 255.0));
+        top = (double)bd.position.y + size;
+        bd.angle = (sx_real)fz_int8(r) / SX_R(40.0);
+        if (flags & 1u) {
+            bd.linear_velocity.x = (sx_real)fz_int8(r) / SX_R(12.8);
+            bd.linear_velocity.y = (sx_real)fz_int8(r) / SX_R(12.8);
+        }
+        if (flags & 2u) bd.angular_velocity = (sx_real)fz_int8(r) / SX_R(12.8);
+        bd.fixed_rotation = (flags & 4u) != 0;
+        gravity_scales[i] = scales[flags / 8u % 8u];
+        bd.gravity_scale = (sx_real)gravity_scales[i];
+        FZ_CHECK(sx_create_body(w, &bd, &bodies[i]) == SX_OK);
+        cd.shape = wld_pinch_shape(r, size);
+        cd.density = (sx_real)density;
+        cd.friction = (sx_real)(max_friction * (double)fz_u8(r) / 255.0);
+        cd.restitution = (sx_real)wld_pinch_restitution(r);
+        FZ_CHECK(sx_body_add_collider(w, bodies[i], &cd, NULL) == SX_OK);
+        WLD_LOG("  body %d: shape %d size %g density %g at (%g, %g) angle %g v (%g, %g) w %g "
+                "fixed %d gravity x %g friction %g restitution %g\n",
+                i, (int)cd.shape.type, size, density, (double)bd.position.x, (double)bd.position.y,
+                (double)bd.angle, (double)bd.linear_velocity.x, (double)bd.linear_velocity.y,
+                (double)bd.angular_velocity, (int)bd.fixed_rotation, gravity_scales[i],
+                (double)cd.friction, (double)cd.restitution);
+        /* a constant force of up to 10 m/s^2 on the body's mass */
+        accel = flags & 64u ? 10.0 / 128.0 : 0.0;
+        forces[i].x = (sx_real)(accel * (double)fz_int8(r) * (double)sx_body_get_mass(w, bodies[i]));
+        forces[i].y = (sx_real)(accel * (double)fz_int8(r) * (double)sx_body_get_mass(w, bodies[i]));
+    }
+    WLD_LOG("pinch: %d bodies, sub %d vel %d pos %d threshold %g slops %g gravity (%g, %g) dt %g "
+            "friction <= %g walls %d\n",
+            n, def.sub_steps, def.velocity_iterations, def.position_iterations,
+            (double)def.restitution_threshold, (double)def.speculative_slops, (double)def.gravity.x,
+            (double)def.gravity.y, dt, max_friction, (layout & 128u) != 0);
+    fz_energy_begin(&audit, w, def.gravity, def.sub_steps, dt, bodies, forces, gravity_scales, n,
+                    max_friction);
+    steps = 1 + (int)(fz_u8(r) % WLD_PINCH_STEPS);
+    for (i = 0; i < steps; ++i) {
+        int b;
+        FZ_CHECK(fz_energy_step(&audit) == SX_OK);
+        WLD_LOG("  step %d: E %.9g start %.9g allowance %.9g worst %.3g\n", i, audit.energy,
+                audit.start, audit.allowance, audit.worst);
+        for (b = 0; b < n; ++b) {
+            FZ_CHECK(sx_vec2_is_finite(sx_body_get_world_center(w, bodies[b])));
+            FZ_CHECK(sx_vec2_is_finite(sx_body_get_linear_velocity(w, bodies[b])));
+            FZ_CHECK(sx_is_finite(sx_body_get_angular_velocity(w, bodies[b])));
+        }
+        FZ_CHECK(audit.velocities_kept);
+        FZ_CHECK(fz_energy_held(&audit));
+    }
+    sx_world_destroy(w);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     fz_reader r = fz_reader_make(data, size);
@@ -650,6 +832,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     wld_state s;
     int c;
     memset(&s, 0, sizeof s);
+    if (size > 0 && data[0] % 4u == 2u) {
+        r.pos = 1;
+        wld_pinch_scene(&r);
+        FZ_CHECK(sx_live_bytes() == live);
+        return 0;
+    }
     FZ_CHECK(sx_world_create(NULL) == NULL);
     s.w = wld_create(&r, &s.sane);
     s.bounded = true;

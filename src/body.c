@@ -297,6 +297,10 @@ sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *ou
     if (slot < world->impact_body_capacity) {
         memset(&world->impact_bodies[slot], 0, sizeof(world->impact_bodies[slot]));
     }
+    /* nor the energy credit of the body that had the slot */
+    if (slot < world->group_body_capacity) {
+        memset(&world->group_bodies[slot], 0, sizeof(world->group_bodies[slot]));
+    }
     info->generation = generation;
     info->alive = true;
     info->enabled = def->enabled;

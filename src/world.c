@@ -876,11 +876,14 @@ sx_status sx_world_solve(sx_world *world, sx_real h) {
     if (s != SX_OK) return s;
     sx_world_purge_contacts(world);
     sx_limit_speeds(world, h);
-    warmed = sx_contacts_warm_start(world);
-    /* restitution first, impact by impact in time order (contact_solver.c
-     * says why); the soft passes then solve what rests and slides */
+    /* the gather warm-starts the solver's copies only: restitution first,
+     * impact by impact in time order, on the bodies' own velocities
+     * (contact_solver.c says why); then the warm start and the passes solve
+     * what rests and slides */
+    warmed = sx_contacts_gather(world);
     impacts = sx_contacts_impacts(world, h);
     solved = sx_contacts_solve(world, h, world->def.velocity_iterations);
+    if (solved) sx_contacts_energy_guard(world, h);
     /* what the impulses did stays within the limit too (an impulse at its
      * bound on a light body overflows its velocity) */
     sx_limit_speeds(world, h);

@@ -241,6 +241,22 @@ typedef struct sx_impact_body {
     int start, count;
 } sx_impact_body;
 
+/* Per body, for the solver's energy guard (contact_solver.c): the velocities
+ * before the warm start; the group of bodies the contacts join (union-find
+ * link, the root itself once built; epoch: the build that last made the body
+ * a member); credit: the kinetic energy the solver took from the body that
+ * it may give back (kept from sub-step to sub-step); at a group's root the
+ * group's sums: f (energy the solve gave), a (energy of the velocity changes
+ * alone), credit_sum and mass_sum. */
+typedef struct sx_group_body {
+    sx_vec2 v;
+    sx_real w;
+    sx_real credit;
+    sx_real f, a, credit_sum, mass_sum;
+    int parent;
+    unsigned epoch;
+} sx_group_body;
+
 /* Per contact, for the impact pass: the time of impact within the sub-step,
  * the position in the heap (-1: not queued) and how many times the pass
  * resolved it in this sub-step. */
@@ -320,6 +336,15 @@ struct sx_world {
     int sensor_begin_count, sensor_begin_capacity, sensor_end_count, sensor_end_capacity;
 
     /* scratch of the impact pass (contact_solver.c), grown on demand */
+    /* scratch of the solver's energy guard (contact_solver.c): per body
+     * slot, and the slots of the bodies in a group (members); groups_ready:
+     * the last gather built the groups */
+    sx_group_body *group_bodies;
+    int *group_members;
+    int group_body_capacity, group_member_capacity, group_member_count;
+    unsigned group_epoch;
+    bool groups_ready;
+    bool groups_driven; /* some active contact has a kinematic body */
     sx_impact_body *impact_bodies;      /* per body slot */
     int *impact_adjacency;              /* contact indices grouped by body */
     int *impact_heap;                   /* contact indices ordered by (time, index) */
@@ -449,10 +474,16 @@ sx_status sx_broadphase_query(const sx_broadphase *bp, sx_aabb box, int **out, i
  * the new contacts, from their anchors (fixed for the step). */
 void sx_contacts_prepare(sx_world *world);
 /* Start of a sub-step's solve: gathers the solver's compact arrays, every
- * active point's gap from the current positions, then the warm start (the
- * bodies' velocities updated too, for the impact pass). false when the
- * arrays could not grow (nothing done; sx_contacts_solve then refuses). */
-bool sx_contacts_warm_start(sx_world *world);
+ * active point's gap from the current positions, and the warm start on the
+ * solver's copies of the velocities only: the bodies keep their own for the
+ * impact pass, and sx_contacts_solve redoes the warm start on what the
+ * impacts left if there were any. false when the arrays could not grow
+ * (nothing done; sx_contacts_solve then refuses). */
+bool sx_contacts_gather(sx_world *world);
+/* After the passes: scales down the impulses of each group of touching
+ * bodies that got more energy from the warm start and the passes than the
+ * solver took from it before (its credit), and keeps the credit left. */
+void sx_contacts_energy_guard(sx_world *world, sx_real h);
 /* The impact pass (restitution): false when its scratch could not grow (the
  * pass is then skipped). */
 bool sx_contacts_impacts(sx_world *world, sx_real h);

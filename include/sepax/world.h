@@ -299,26 +299,37 @@ sx_status sx_world_collide(sx_world *world);
 
 /** Stage 3: the contacts of the last collide, on velocities. Each point's
  *  separation at the current positions (the anchors of collide time turned
- *  with the bodies), warm start, then the impact pass (restitution): the contacts approaching at the
- *  restitution threshold or faster that close their gap within this
- *  sub-step are resolved one at a time in order of their time of impact,
- *  each at most once per sub-step, each approaching point leaving at e times
- *  its approach speed (e = max(e_a, e_b); both points of a two-point contact
- *  at once), with Coulomb friction on that impulse; after each impact the
- *  other contacts of its two bodies are looked at again with the new
- *  velocities, so an impulse travels down a row of touching bodies (Newton's
- *  cradle). Each impact also records the time-of-impact correction of its
- *  bodies' positions, applied by sx_world_integrate. Then
- *  `velocity_iterations` passes of Coulomb friction (|tangent impulse| <= mu
- *  x normal impulse, mu = sqrt(mu_a mu_b)) and non-penetration (accumulated
- *  normal impulse >= 0; a speculative point may close its gap in this
- *  sub-step but not more); the two normal constraints of a two-point contact
- *  are solved together, exactly (a 2x2 complementarity problem). With every
- *  restitution <= 1 no impulse of this stage adds kinetic energy, and
- *  penetration is not turned into velocity here (see sx_world_separate).
- *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE,
- *  SX_ERR_NO_MEMORY (the impact pass's or the iterations' scratch could
- *  not grow: that part is skipped, the rest still runs), SX_ERR_LOCKED. */
+ *  with the bodies), then the impact pass (restitution), on the velocities
+ *  the bodies arrive with: the contacts approaching at the restitution
+ *  threshold or faster that close their gap within this sub-step are
+ *  resolved one at a time in order of their time of impact, each
+ *  approaching point leaving at e times its approach speed
+ *  (e = max(e_a, e_b); both points of a two-point contact at once), with
+ *  Coulomb friction on that impulse; after each impact the other contacts
+ *  of its two bodies are looked at again with the new velocities, so an
+ *  impulse travels down a row of touching bodies (Newton's cradle). Each
+ *  impact also records the time-of-impact correction of its bodies'
+ *  positions, applied by sx_world_integrate. Then the warm start (the last
+ *  sub-step's accumulated impulses) and `velocity_iterations` passes of
+ *  Coulomb friction (|tangent impulse| <= mu x normal impulse,
+ *  mu = sqrt(mu_a mu_b)) and non-penetration (accumulated normal impulse
+ *  >= 0; a speculative point may close its gap in this sub-step but not
+ *  more); the two normal constraints of a two-point contact are solved
+ *  together, exactly (a 2x2 complementarity problem). Energy: with every
+ *  restitution <= 1 no impulse of the impact pass adds kinetic energy, for
+ *  chained and simultaneous impacts at any mass ratio; the warm start and
+ *  the passes never give a group of touching bodies more energy than they
+ *  took from the same bodies in earlier sub-steps (a heavy body on a light
+ *  support that the passes cannot hold exactly sags and springs back;
+ *  beyond that the group's impulses are scaled down), the energy being the
+ *  one the step conserves (kinetic, less m acc . x, plus h m acc . v / 2,
+ *  acc = gravity x gravity scale + force / mass; kinematic bodies' work
+ *  aside). Penetration is not turned into velocity here (see
+ *  sx_world_separate). Errors: SX_ERR_INVALID_ARG (NULL, h <= 0),
+ *  SX_ERR_NONFINITE, SX_ERR_NO_MEMORY (scratch could not grow: without the
+ *  impact pass's the pass is skipped, without the energy guard's the
+ *  passes start cold; the passes still run; without the passes' own,
+ *  none run), SX_ERR_LOCKED. */
 sx_status sx_world_solve(sx_world *world, sx_real h);
 
 /** Stage 4: symplectic Euler positions: centre of mass += h v, rotation
