@@ -333,49 +333,56 @@ void sx_contacts_energy_guard(sx_world *world, sx_real h) {
     if (world->groups_ready) sx_groups_settle(world, sx_groups_measure(world, h));
 }
 
-void sx_contacts_prepare(sx_world *world) {
-    int i, k;
-    for (i = 0; i < world->contact_count; ++i) {
-        sx_contact *c = &world->contacts[i];
-        const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
-        sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;
-        sx_vec2 n = c->normal, t = sx_cross_vs(n, SX_R(1.0));
-        for (k = 0; k < c->count; ++k) {
-            sx_contact_point *p = &c->points[k];
-            sx_vec2 ra = p->anchor_a, rb = p->anchor_b;
-            sx_real rna = sx_cross(ra, n), rnb = sx_cross(rb, n);
-            sx_real rta = sx_cross(ra, t), rtb = sx_cross(rb, t);
-            sx_real kn = ma + mb + ia * rna * rna + ib * rnb * rnb;
-            sx_real kt = ma + mb + ia * rta * rta + ib * rtb * rtb;
-            p->normal_mass = kn > SX_R(0.0) ? SX_R(1.0) / kn : SX_R(0.0);
-            p->tangent_mass = kt > SX_R(0.0) ? SX_R(1.0) / kt : SX_R(0.0);
-        }
-        c->block_solve = false;
-        if (c->count == 2) {
-            const sx_contact_point *p1 = &c->points[0], *p2 = &c->points[1];
-            sx_real r1a = sx_cross(p1->anchor_a, n), r1b = sx_cross(p1->anchor_b, n);
-            sx_real r2a = sx_cross(p2->anchor_a, n), r2b = sx_cross(p2->anchor_b, n);
-            sx_real det;
-            c->block.k11 = ma + mb + ia * r1a * r1a + ib * r1b * r1b;
-            c->block.k22 = ma + mb + ia * r2a * r2a + ib * r2b * r2b;
-            c->block.k12 = ma + mb + ia * r1a * r2a + ib * r1b * r2b;
-            det = c->block.k11 * c->block.k22 - c->block.k12 * c->block.k12;
-            /* Solve the two points together only when K is well conditioned:
-             * points almost on top of each other make K nearly singular, and
-             * the sequential solve handles them. */
-            if (c->block.k11 * c->block.k11 < SX_BLOCK_MAX_CONDITION * det) {
-                sx_real inv_det = SX_R(1.0) / det;
-                c->block.inv11 = c->block.k22 * inv_det;
-                c->block.inv22 = c->block.k11 * inv_det;
-                c->block.inv12 = -c->block.k12 * inv_det;
-                c->block_solve = true;
-            }
+/* The effective masses of contact c's points, and its block, from its
+ * current anchors: the impulses a pass computes with them must be the ones
+ * its levers apply (an impact pass with a stale mass gives back more than
+ * e x the approach). */
+static void sx_contact_masses(const sx_world *world, sx_contact *c) {
+    const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
+    sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;
+    sx_vec2 n = c->normal, t = sx_cross_vs(n, SX_R(1.0));
+    int k;
+    for (k = 0; k < c->count; ++k) {
+        sx_contact_point *p = &c->points[k];
+        sx_vec2 ra = p->anchor_a, rb = p->anchor_b;
+        sx_real rna = sx_cross(ra, n), rnb = sx_cross(rb, n);
+        sx_real rta = sx_cross(ra, t), rtb = sx_cross(rb, t);
+        sx_real kn = ma + mb + ia * rna * rna + ib * rnb * rnb;
+        sx_real kt = ma + mb + ia * rta * rta + ib * rtb * rtb;
+        p->normal_mass = kn > SX_R(0.0) ? SX_R(1.0) / kn : SX_R(0.0);
+        p->tangent_mass = kt > SX_R(0.0) ? SX_R(1.0) / kt : SX_R(0.0);
+    }
+    c->block_solve = false;
+    if (c->count == 2) {
+        const sx_contact_point *p1 = &c->points[0], *p2 = &c->points[1];
+        sx_real r1a = sx_cross(p1->anchor_a, n), r1b = sx_cross(p1->anchor_b, n);
+        sx_real r2a = sx_cross(p2->anchor_a, n), r2b = sx_cross(p2->anchor_b, n);
+        sx_real det;
+        c->block.k11 = ma + mb + ia * r1a * r1a + ib * r1b * r1b;
+        c->block.k22 = ma + mb + ia * r2a * r2a + ib * r2b * r2b;
+        c->block.k12 = ma + mb + ia * r1a * r2a + ib * r1b * r2b;
+        det = c->block.k11 * c->block.k22 - c->block.k12 * c->block.k12;
+        /* Solve the two points together only when K is well conditioned:
+         * points almost on top of each other make K nearly singular, and
+         * the sequential solve handles them. */
+        if (c->block.k11 * c->block.k11 < SX_BLOCK_MAX_CONDITION * det) {
+            sx_real inv_det = SX_R(1.0) / det;
+            c->block.inv11 = c->block.k22 * inv_det;
+            c->block.inv22 = c->block.k11 * inv_det;
+            c->block.inv12 = -c->block.k12 * inv_det;
+            c->block_solve = true;
         }
     }
 }
 
+void sx_contacts_prepare(sx_world *world) {
+    int i;
+    for (i = 0; i < world->contact_count; ++i)
+        sx_contact_masses(world, &world->contacts[i]);
+}
+
 /* The separation of point p at the bodies' current positions: the anchors
- * turned with their bodies, the normal kept from collide time (the
+ * turned with their bodies, along the normal of collide time (the
  * first-order update the sub-steps need between two collides). */
 static sx_real sx_current_gap(const sx_body_sim *a, const sx_body_sim *b, sx_vec2 n,
                               const sx_contact_point *p) {
@@ -384,11 +391,36 @@ static sx_real sx_current_gap(const sx_body_sim *a, const sx_body_sim *b, sx_vec
     return p->base + sx_dot(d, n);
 }
 
+/* The levers of a contact between two dynamic bodies at their current
+ * centres. The levers of collide time reach two points a multiple of the
+ * normal apart; as the centres move through the sub-steps those points
+ * slide apart across the normal, and equal and opposite impulses at them
+ * change the angular momentum. So the slide is taken up by the levers (A's
+ * share slip_a, B's the rest): the points stay a multiple of the normal
+ * apart, and the impulses have no net moment. The effective masses follow
+ * the levers (an impact with a stale mass gives back more than e x the
+ * approach). Contacts with a static or kinematic body keep their levers:
+ * no angular momentum is kept there. */
+static void sx_slide_levers(const sx_world *world, sx_contact *c) {
+    const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
+    sx_vec2 n = c->normal, centres = sx_sub(b->center, a->center);
+    int k;
+    for (k = 0; k < c->count; ++k) {
+        sx_contact_point *p = &c->points[k];
+        sx_vec2 d = sx_add(centres, sx_sub(p->lever_b, p->lever_a));
+        sx_vec2 slide = sx_mul_sub(d, sx_dot(d, n), n);
+        p->anchor_a = sx_mul_add(p->lever_a, c->slip_a, slide);
+        p->anchor_b = sx_mul_sub(p->lever_b, SX_R(1.0) - c->slip_a, slide);
+    }
+    sx_contact_masses(world, c);
+}
+
 static void sx_update_gaps(const sx_world *world, sx_contact *c) {
     const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
     int k;
     for (k = 0; k < c->count; ++k)
         c->points[k].gap = sx_current_gap(a, b, c->normal, &c->points[k]);
+    if (c->slides) sx_slide_levers(world, c);
 }
 
 /* The relative normal velocity a point's constraint wants to be >= 0: a

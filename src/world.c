@@ -693,6 +693,14 @@ static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, c
     c->friction = sx_sqrt(ca->friction * cb->friction);
     c->restitution = sx_maxr(ca->restitution, cb->restitution);
     c->count = m->count;
+    c->slides = ba->dynamic && bb->dynamic;
+    /* the point under a circle stays under its centre: the other side's
+     * lever takes the slide */
+    {
+        bool round_a = ca->part_count == 0 && ca->shape.type == SX_SHAPE_CIRCLE;
+        bool round_b = cb->part_count == 0 && cb->shape.type == SX_SHAPE_CIRCLE;
+        c->slip_a = round_a == round_b ? SX_R(0.5) : round_a ? SX_R(0.0) : SX_R(1.0);
+    }
     for (k = 0; k < m->count; ++k) {
         const sx_manifold_point *mp = &m->points[k];
         sx_contact_point *p = &c->points[k];
@@ -705,6 +713,8 @@ static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, c
          * gap and its friction at impact with it */
         p->anchor_a = sx_sub(sx_mul_add(mp->point, SX_R(0.5) * mp->depth, m->normal), ba->center);
         p->anchor_b = sx_sub(sx_mul_sub(mp->point, SX_R(0.5) * mp->depth, m->normal), bb->center);
+        p->lever_a = p->anchor_a;
+        p->lever_b = p->anchor_b;
         p->rel_a = sx_inv_rotate(ba->xf.q, p->anchor_a);
         p->rel_b = sx_inv_rotate(bb->xf.q, p->anchor_b);
         p->separation = -mp->depth;

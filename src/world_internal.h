@@ -95,7 +95,10 @@ typedef struct sx_block2 {
 } sx_block2;
 
 typedef struct sx_contact_point {
-    sx_vec2 anchor_a, anchor_b; /* from each centre of mass to the point, world, at collide */
+    /* from each centre of mass to the point, world: the levers the solver
+     * applies impulses at (moved through the sub-steps, see sx_current_point
+     * in contact_solver.c), and those of collide time */
+    sx_vec2 anchor_a, anchor_b, lever_a, lever_b;
     /* the same two anchors in their body frames: turned with the bodies,
      * they give the point's separation as the bodies move through the
      * sub-steps (sx_current_gap in contact_solver.c) */
@@ -127,6 +130,11 @@ typedef struct sx_contact {
     int part_a, part_b;
     int body_a, body_b;
     sx_vec2 normal; /* world, from A to B, at collide time (kept for the step) */
+    /* both bodies dynamic: the levers follow the bodies through the
+     * sub-steps, A's taking the share slip_a of the points' slide across
+     * the normal and B's the rest (sx_current_point in contact_solver.c) */
+    bool slides;
+    sx_real slip_a;
     sx_real friction, restitution;
     int count;
     sx_contact_point points[2];
