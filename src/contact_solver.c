@@ -333,52 +333,56 @@ void sx_contacts_energy_guard(sx_world *world, sx_real h) {
     if (world->groups_ready) sx_groups_settle(world, sx_groups_measure(world, h));
 }
 
-/* The effective masses of contact c's points, and its block, from its
- * current anchors: the impulses a pass computes with them must be the ones
- * its levers apply (an impact pass with a stale mass gives back more than
- * e x the approach). */
-static void sx_contact_masses(const sx_world *world, sx_contact *c) {
+/* The normal effective masses of contact c's points, and its block, from
+ * its current levers: the impulses a pass computes with them must be the
+ * ones the levers apply (an impact pass with a stale mass gives back more
+ * than e x the approach). */
+static void sx_normal_masses(const sx_world *world, sx_contact *c) {
     const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
     sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;
-    sx_vec2 n = c->normal, t = sx_cross_vs(n, SX_R(1.0));
-    int k;
-    for (k = 0; k < c->count; ++k) {
-        sx_contact_point *p = &c->points[k];
-        sx_vec2 ra = p->anchor_a, rb = p->anchor_b;
-        sx_real rna = sx_cross(ra, n), rnb = sx_cross(rb, n);
-        sx_real rta = sx_cross(ra, t), rtb = sx_cross(rb, t);
-        sx_real kn = ma + mb + ia * rna * rna + ib * rnb * rnb;
-        sx_real kt = ma + mb + ia * rta * rta + ib * rtb * rtb;
-        p->normal_mass = kn > SX_R(0.0) ? SX_R(1.0) / kn : SX_R(0.0);
-        p->tangent_mass = kt > SX_R(0.0) ? SX_R(1.0) / kt : SX_R(0.0);
+    sx_vec2 n = c->normal;
+    sx_real k[2] = {SX_R(0.0), SX_R(0.0)}, rna[2], rnb[2], det;
+    int i;
+    for (i = 0; i < c->count; ++i) {
+        sx_contact_point *p = &c->points[i];
+        rna[i] = sx_cross(p->anchor_a, n);
+        rnb[i] = sx_cross(p->anchor_b, n);
+        k[i] = ma + mb + ia * rna[i] * rna[i] + ib * rnb[i] * rnb[i];
+        p->normal_mass = k[i] > SX_R(0.0) ? SX_R(1.0) / k[i] : SX_R(0.0);
     }
     c->block_solve = false;
-    if (c->count == 2) {
-        const sx_contact_point *p1 = &c->points[0], *p2 = &c->points[1];
-        sx_real r1a = sx_cross(p1->anchor_a, n), r1b = sx_cross(p1->anchor_b, n);
-        sx_real r2a = sx_cross(p2->anchor_a, n), r2b = sx_cross(p2->anchor_b, n);
-        sx_real det;
-        c->block.k11 = ma + mb + ia * r1a * r1a + ib * r1b * r1b;
-        c->block.k22 = ma + mb + ia * r2a * r2a + ib * r2b * r2b;
-        c->block.k12 = ma + mb + ia * r1a * r2a + ib * r1b * r2b;
-        det = c->block.k11 * c->block.k22 - c->block.k12 * c->block.k12;
-        /* Solve the two points together only when K is well conditioned:
-         * points almost on top of each other make K nearly singular, and
-         * the sequential solve handles them. */
-        if (c->block.k11 * c->block.k11 < SX_BLOCK_MAX_CONDITION * det) {
-            sx_real inv_det = SX_R(1.0) / det;
-            c->block.inv11 = c->block.k22 * inv_det;
-            c->block.inv22 = c->block.k11 * inv_det;
-            c->block.inv12 = -c->block.k12 * inv_det;
-            c->block_solve = true;
-        }
+    if (c->count != 2) return;
+    c->block.k11 = k[0];
+    c->block.k22 = k[1];
+    c->block.k12 = ma + mb + ia * rna[0] * rna[1] + ib * rnb[0] * rnb[1];
+    det = c->block.k11 * c->block.k22 - c->block.k12 * c->block.k12;
+    /* Solve the two points together only when K is well conditioned: points
+     * almost on top of each other make K nearly singular, and the
+     * sequential solve handles them. */
+    if (c->block.k11 * c->block.k11 < SX_BLOCK_MAX_CONDITION * det) {
+        sx_real inv_det = SX_R(1.0) / det;
+        c->block.inv11 = c->block.k22 * inv_det;
+        c->block.inv22 = c->block.k11 * inv_det;
+        c->block.inv12 = -c->block.k12 * inv_det;
+        c->block_solve = true;
     }
 }
 
 void sx_contacts_prepare(sx_world *world) {
-    int i;
-    for (i = 0; i < world->contact_count; ++i)
-        sx_contact_masses(world, &world->contacts[i]);
+    int i, k;
+    for (i = 0; i < world->contact_count; ++i) {
+        sx_contact *c = &world->contacts[i];
+        const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
+        sx_real m = a->inv_mass + b->inv_mass, ia = a->inv_inertia, ib = b->inv_inertia;
+        sx_vec2 t = sx_cross_vs(c->normal, SX_R(1.0));
+        for (k = 0; k < c->count; ++k) {
+            sx_contact_point *p = &c->points[k];
+            sx_real rta = sx_cross(p->anchor_a, t), rtb = sx_cross(p->anchor_b, t);
+            sx_real kt = m + ia * rta * rta + ib * rtb * rtb;
+            p->tangent_mass = kt > SX_R(0.0) ? SX_R(1.0) / kt : SX_R(0.0);
+        }
+        sx_normal_masses(world, c);
+    }
 }
 
 /* The separation of point p at the bodies' current positions: the anchors
@@ -391,28 +395,39 @@ static sx_real sx_current_gap(const sx_body_sim *a, const sx_body_sim *b, sx_vec
     return p->base + sx_dot(d, n);
 }
 
+/* How far (in linear slops) the levers move before sx_slide_levers moves
+ * them: the moment the impulses of a resting contact may leave behind is
+ * this times their sum. */
+#define SX_LEVER_TOLERANCE SX_R(1e-2)
+
 /* The levers of a contact between two dynamic bodies at their current
  * centres. The levers of collide time reach two points a multiple of the
  * normal apart; as the centres move through the sub-steps those points
- * slide apart across the normal, and equal and opposite impulses at them
- * change the angular momentum. So the slide is taken up by the levers (A's
- * share slip_a, B's the rest): the points stay a multiple of the normal
- * apart, and the impulses have no net moment. The effective masses follow
+ * slide apart along the tangent (by the change of the centres' offset
+ * across the normal), and equal and opposite impulses at them change the
+ * angular momentum. So the slide is taken up by the levers (A's share
+ * slip_a, B's the rest): the points stay a multiple of the normal apart,
+ * and the impulses have no net moment. The normal effective masses follow
  * the levers (an impact with a stale mass gives back more than e x the
- * approach). Contacts with a static or kinematic body keep their levers:
- * no angular momentum is kept there. */
+ * approach); the tangent ones stay (a slide along the tangent changes no
+ * lever's moment about it). Contacts with a static or kinematic body keep
+ * their levers: no angular momentum is kept there. */
 static void sx_slide_levers(const sx_world *world, sx_contact *c) {
     const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
-    sx_vec2 n = c->normal, centres = sx_sub(b->center, a->center);
+    sx_vec2 t = sx_cross_vs(c->normal, SX_R(1.0));
+    sx_real slid = sx_dot(sx_sub(sx_sub(b->center, a->center), c->centres), t);
+    sx_real step = slid - c->slid;
     int k;
+    /* a resting contact keeps its levers and masses (their recompute was a
+     * tenth of a resting pile's step) */
+    if (!(sx_absr(step) > SX_LEVER_TOLERANCE * world->linear_slop)) return;
+    c->slid = slid;
     for (k = 0; k < c->count; ++k) {
         sx_contact_point *p = &c->points[k];
-        sx_vec2 d = sx_add(centres, sx_sub(p->lever_b, p->lever_a));
-        sx_vec2 slide = sx_mul_sub(d, sx_dot(d, n), n);
-        p->anchor_a = sx_mul_add(p->lever_a, c->slip_a, slide);
-        p->anchor_b = sx_mul_sub(p->lever_b, SX_R(1.0) - c->slip_a, slide);
+        p->anchor_a = sx_mul_add(p->anchor_a, c->slip_a * step, t);
+        p->anchor_b = sx_mul_sub(p->anchor_b, (SX_R(1.0) - c->slip_a) * step, t);
     }
-    sx_contact_masses(world, c);
+    sx_normal_masses(world, c);
 }
 
 static void sx_update_gaps(const sx_world *world, sx_contact *c) {

@@ -694,6 +694,8 @@ static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, c
     c->restitution = sx_maxr(ca->restitution, cb->restitution);
     c->count = m->count;
     c->slides = ba->dynamic && bb->dynamic;
+    c->slid = SX_R(0.0);
+    c->centres = sx_sub(bb->center, ba->center);
     /* the point under a circle stays under its centre: the other side's
      * lever takes the slide */
     {
@@ -713,8 +715,6 @@ static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, c
          * gap and its friction at impact with it */
         p->anchor_a = sx_sub(sx_mul_add(mp->point, SX_R(0.5) * mp->depth, m->normal), ba->center);
         p->anchor_b = sx_sub(sx_mul_sub(mp->point, SX_R(0.5) * mp->depth, m->normal), bb->center);
-        p->lever_a = p->anchor_a;
-        p->lever_b = p->anchor_b;
         p->rel_a = sx_inv_rotate(ba->xf.q, p->anchor_a);
         p->rel_b = sx_inv_rotate(bb->xf.q, p->anchor_b);
         p->separation = -mp->depth;
