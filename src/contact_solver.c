@@ -407,19 +407,22 @@ static sx_real sx_current_gap(const sx_body_sim *a, const sx_body_sim *b, sx_vec
  * across the normal), and equal and opposite impulses at them change the
  * angular momentum. So the slide is taken up by the levers (A's share
  * slip_a, B's the rest): the points stay a multiple of the normal apart,
- * and the impulses have no net moment. The normal effective masses follow
- * the levers (an impact with a stale mass gives back more than e x the
- * approach); the tangent ones stay (a slide along the tangent changes no
- * lever's moment about it). Contacts with a static or kinematic body keep
- * their levers: no angular momentum is kept there. */
+ * and the impulses have no net moment. The tangent effective masses stay
+ * right (a slide along the tangent changes no lever's moment about it);
+ * the normal ones are left for the velocity passes, whose answer does not
+ * depend on them (a pass stops changing the impulses where the velocities
+ * meet the constraints, whatever mass it divides by: a stale one only
+ * slows it), and made right by the impact pass, whose one impulse must be
+ * exact (with a stale mass it gives back more than e x the approach).
+ * Contacts with a static or kinematic body keep their levers: no angular
+ * momentum is kept there. */
 static void sx_slide_levers(const sx_world *world, sx_contact *c) {
     const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
     sx_vec2 t = sx_cross_vs(c->normal, SX_R(1.0));
     sx_real slid = sx_dot(sx_sub(sx_sub(b->center, a->center), c->centres), t);
     sx_real step = slid - c->slid;
     int k;
-    /* a resting contact keeps its levers and masses (their recompute was a
-     * tenth of a resting pile's step) */
+    /* a resting contact keeps its levers (fewer stores) */
     if (!(sx_absr(step) > SX_LEVER_TOLERANCE * world->linear_slop)) return;
     c->slid = slid;
     for (k = 0; k < c->count; ++k) {
@@ -427,7 +430,6 @@ static void sx_slide_levers(const sx_world *world, sx_contact *c) {
         p->anchor_a = sx_mul_add(p->anchor_a, c->slip_a * step, t);
         p->anchor_b = sx_mul_sub(p->anchor_b, (SX_R(1.0) - c->slip_a) * step, t);
     }
-    sx_normal_masses(world, c);
 }
 
 static void sx_update_gaps(const sx_world *world, sx_contact *c) {
@@ -1033,6 +1035,8 @@ static bool sx_impact_time(const sx_world *world, const sx_contact *c, sx_real h
  * points together when the manifold's block is well conditioned; then
  * friction; then the bodies' time-of-impact shifts. */
 static void sx_resolve_impact(sx_world *world, sx_contact *c, sx_real h, sx_real t) {
+    /* the normal masses of the levers that slid (sx_slide_levers) */
+    if (c->slides) sx_normal_masses(world, c);
     sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
     sx_impact_body *sa = &world->impact_bodies[c->body_a], *sb = &world->impact_bodies[c->body_b];
     sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;

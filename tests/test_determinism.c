@@ -50,8 +50,8 @@ typedef struct det_pin {
 
 static const det_pin det_pins[] = {
     /* build    state hash             narrowphase hash */
-    {"float", 0x421ede3a0e1c4454ull, 0x4d1bf48ab77e19cbull},
-    {"double", 0x535e1ca1ca730822ull, 0x8963162b0ec798e3ull},
+    {"float", 0x263b07dbca15d11aull, 0x4d1bf48ab77e19cbull},
+    {"double", 0xa6084371dfae29b6ull, 0x8963162b0ec798e3ull},
 };
 
 #ifdef SX_DOUBLE
