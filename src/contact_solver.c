@@ -2,7 +2,8 @@
  * positional correction, on the contacts of the step's one collide.
  *
  * The contacts are prepared once per collide (effective masses, the block
- * matrices, anchors fixed for the step). Each sub-step then reads every
+ * matrices, anchors; between two dynamic bodies the anchors then slide with
+ * the bodies, sx_slide_levers). Each sub-step then reads every
  * point's separation from the bodies' current positions (the anchors turned
  * with the bodies, along the normal of collide time: first order in the
  * motion of a step), which is what the speculative and positional terms
@@ -566,6 +567,30 @@ static void sx_solve_normal_point(sx_constraint_point *p, sx_vec2 n, sx_vec2 *va
     sx_lever_apply(va, wa, vb, wb, ma, ia, mb, ib, n, p->rn_a, p->rn_b, lambda);
 }
 
+/* The friction of a two-point contact as one constraint: the tangent
+ * rows of the two points differ only in the levers' components along the
+ * normal (r x t = -r . n), which the two points of a face share, so solved
+ * one after the other they did the same work twice, on the longest chain
+ * of dependent operations of a pass. One row at the mean lever, within mu
+ * times the sum of the normal impulses; the total is shared between the
+ * points in proportion to their normal impulses (each within its own
+ * cone), which is what the warm start and the contact reports see. */
+static SX_ALWAYS_INLINE void sx_friction_row2(sx_constraint *c, sx_vec2 *va, sx_real *wa,
+                                              sx_vec2 *vb, sx_real *wb, sx_vec2 t) {
+    sx_constraint_point *p1 = &c->points[0], *p2 = &c->points[1];
+    sx_real rta = SX_R(0.5) * (p1->rt_a + p2->rt_a), rtb = SX_R(0.5) * (p1->rt_b + p2->rt_b);
+    sx_real mass = SX_R(0.5) * (p1->tangent_mass + p2->tangent_mass);
+    sx_real normal = p1->normal_impulse + p2->normal_impulse, limit = c->friction * normal;
+    sx_real old = p1->tangent_impulse + p2->tangent_impulse;
+    sx_real lambda = -mass * sx_lever_speed(*va, *wa, *vb, *wb, t, rta, rtb);
+    sx_real total = sx_bounded_impulse(sx_clampr(old + lambda, -limit, limit));
+    p1->tangent_impulse = normal > SX_R(0.0) ? total * (p1->normal_impulse / normal)
+                                             : SX_R(0.5) * total;
+    p2->tangent_impulse = total - p1->tangent_impulse;
+    sx_lever_apply(va, wa, vb, wb, c->inv_mass_a, c->inv_inertia_a, c->inv_mass_b,
+                   c->inv_inertia_b, t, rta, rtb, total - old);
+}
+
 /* One pass over the constraints: sx_world_solve's (soft when the world's
  * contacts are) or a relax pass. `last`: the last pass of the solve also
  * hands each constraint's impulses back to its contact as it goes (the
@@ -596,7 +621,9 @@ static void sx_constraints_pass(sx_world *world, sx_real h, bool relax, bool las
          * the warm start): the normal constraints then have the last word,
          * so a pass never ends with a point moving into the surface. A
          * frictionless contact costs nothing here. */
-        if (c->friction > SX_R(0.0)) {
+        if (c->friction > SX_R(0.0) && c->count == 2) {
+            sx_friction_row2(c, &va, &wa, &vb, &wb, t);
+        } else if (c->friction > SX_R(0.0)) {
             for (k = 0; k < c->count; ++k) {
                 sx_constraint_point *p = &c->points[k];
                 sx_real limit = c->friction * p->normal_impulse;
