@@ -2,7 +2,8 @@
  * positional correction, on the contacts of the step's one collide.
  *
  * The contacts are prepared once per collide (effective masses, the block
- * matrices, anchors fixed for the step). Each sub-step then reads every
+ * matrices, anchors; between two dynamic bodies the anchors then slide with
+ * the bodies, sx_slide_levers). Each sub-step then reads every
  * point's separation from the bodies' current positions (the anchors turned
  * with the bodies, along the normal of collide time: first order in the
  * motion of a step), which is what the speculative and positional terms
@@ -333,49 +334,60 @@ void sx_contacts_energy_guard(sx_world *world, sx_real h) {
     if (world->groups_ready) sx_groups_settle(world, sx_groups_measure(world, h));
 }
 
+/* The normal effective masses of contact c's points, and its block, from
+ * its current levers: the impulses a pass computes with them must be the
+ * ones the levers apply (an impact pass with a stale mass gives back more
+ * than e x the approach). */
+static void sx_normal_masses(const sx_world *world, sx_contact *c) {
+    const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
+    sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;
+    sx_vec2 n = c->normal;
+    sx_real k[2] = {SX_R(0.0), SX_R(0.0)}, rna[2], rnb[2], det;
+    int i;
+    for (i = 0; i < c->count; ++i) {
+        sx_contact_point *p = &c->points[i];
+        rna[i] = sx_cross(p->anchor_a, n);
+        rnb[i] = sx_cross(p->anchor_b, n);
+        k[i] = ma + mb + ia * rna[i] * rna[i] + ib * rnb[i] * rnb[i];
+        p->normal_mass = k[i] > SX_R(0.0) ? SX_R(1.0) / k[i] : SX_R(0.0);
+    }
+    c->block_solve = false;
+    if (c->count != 2) return;
+    c->block.k11 = k[0];
+    c->block.k22 = k[1];
+    c->block.k12 = ma + mb + ia * rna[0] * rna[1] + ib * rnb[0] * rnb[1];
+    det = c->block.k11 * c->block.k22 - c->block.k12 * c->block.k12;
+    /* Solve the two points together only when K is well conditioned: points
+     * almost on top of each other make K nearly singular, and the
+     * sequential solve handles them. */
+    if (c->block.k11 * c->block.k11 < SX_BLOCK_MAX_CONDITION * det) {
+        sx_real inv_det = SX_R(1.0) / det;
+        c->block.inv11 = c->block.k22 * inv_det;
+        c->block.inv22 = c->block.k11 * inv_det;
+        c->block.inv12 = -c->block.k12 * inv_det;
+        c->block_solve = true;
+    }
+}
+
 void sx_contacts_prepare(sx_world *world) {
     int i, k;
     for (i = 0; i < world->contact_count; ++i) {
         sx_contact *c = &world->contacts[i];
         const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
-        sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;
-        sx_vec2 n = c->normal, t = sx_cross_vs(n, SX_R(1.0));
+        sx_real m = a->inv_mass + b->inv_mass, ia = a->inv_inertia, ib = b->inv_inertia;
+        sx_vec2 t = sx_cross_vs(c->normal, SX_R(1.0));
         for (k = 0; k < c->count; ++k) {
             sx_contact_point *p = &c->points[k];
-            sx_vec2 ra = p->anchor_a, rb = p->anchor_b;
-            sx_real rna = sx_cross(ra, n), rnb = sx_cross(rb, n);
-            sx_real rta = sx_cross(ra, t), rtb = sx_cross(rb, t);
-            sx_real kn = ma + mb + ia * rna * rna + ib * rnb * rnb;
-            sx_real kt = ma + mb + ia * rta * rta + ib * rtb * rtb;
-            p->normal_mass = kn > SX_R(0.0) ? SX_R(1.0) / kn : SX_R(0.0);
+            sx_real rta = sx_cross(p->anchor_a, t), rtb = sx_cross(p->anchor_b, t);
+            sx_real kt = m + ia * rta * rta + ib * rtb * rtb;
             p->tangent_mass = kt > SX_R(0.0) ? SX_R(1.0) / kt : SX_R(0.0);
         }
-        c->block_solve = false;
-        if (c->count == 2) {
-            const sx_contact_point *p1 = &c->points[0], *p2 = &c->points[1];
-            sx_real r1a = sx_cross(p1->anchor_a, n), r1b = sx_cross(p1->anchor_b, n);
-            sx_real r2a = sx_cross(p2->anchor_a, n), r2b = sx_cross(p2->anchor_b, n);
-            sx_real det;
-            c->block.k11 = ma + mb + ia * r1a * r1a + ib * r1b * r1b;
-            c->block.k22 = ma + mb + ia * r2a * r2a + ib * r2b * r2b;
-            c->block.k12 = ma + mb + ia * r1a * r2a + ib * r1b * r2b;
-            det = c->block.k11 * c->block.k22 - c->block.k12 * c->block.k12;
-            /* Solve the two points together only when K is well conditioned:
-             * points almost on top of each other make K nearly singular, and
-             * the sequential solve handles them. */
-            if (c->block.k11 * c->block.k11 < SX_BLOCK_MAX_CONDITION * det) {
-                sx_real inv_det = SX_R(1.0) / det;
-                c->block.inv11 = c->block.k22 * inv_det;
-                c->block.inv22 = c->block.k11 * inv_det;
-                c->block.inv12 = -c->block.k12 * inv_det;
-                c->block_solve = true;
-            }
-        }
+        sx_normal_masses(world, c);
     }
 }
 
 /* The separation of point p at the bodies' current positions: the anchors
- * turned with their bodies, the normal kept from collide time (the
+ * turned with their bodies, along the normal of collide time (the
  * first-order update the sub-steps need between two collides). */
 static sx_real sx_current_gap(const sx_body_sim *a, const sx_body_sim *b, sx_vec2 n,
                               const sx_contact_point *p) {
@@ -384,11 +396,49 @@ static sx_real sx_current_gap(const sx_body_sim *a, const sx_body_sim *b, sx_vec
     return p->base + sx_dot(d, n);
 }
 
+/* How far (in linear slops) the levers move before sx_slide_levers moves
+ * them: the moment the impulses of a resting contact may leave behind is
+ * this times their sum. */
+#define SX_LEVER_TOLERANCE SX_R(1e-2)
+
+/* The levers of a contact between two dynamic bodies at their current
+ * centres. The levers of collide time reach two points a multiple of the
+ * normal apart; as the centres move through the sub-steps those points
+ * slide apart along the tangent (by the change of the centres' offset
+ * across the normal), and equal and opposite impulses at them change the
+ * angular momentum. So the slide is taken up by the levers (A's share
+ * slip_a, B's the rest): the points stay a multiple of the normal apart,
+ * and the impulses have no net moment. The tangent effective masses stay
+ * right (a slide along the tangent changes no lever's moment about it);
+ * the normal ones are left for the velocity passes, whose answer does not
+ * depend on them (a pass stops changing the impulses where the velocities
+ * meet the constraints, whatever mass it divides by: a stale one only
+ * slows it), and made right by the impact pass, whose one impulse must be
+ * exact (with a stale mass it gives back more than e x the approach).
+ * Contacts with a static or kinematic body keep their levers: no angular
+ * momentum is kept there. */
+static void sx_slide_levers(const sx_world *world, sx_contact *c) {
+    const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
+    sx_vec2 t = sx_cross_vs(c->normal, SX_R(1.0));
+    sx_real slid = sx_dot(sx_sub(sx_sub(b->center, a->center), c->centres), t);
+    sx_real step = slid - c->slid;
+    int k;
+    /* a resting contact keeps its levers (fewer stores) */
+    if (!(sx_absr(step) > SX_LEVER_TOLERANCE * world->linear_slop)) return;
+    c->slid = slid;
+    for (k = 0; k < c->count; ++k) {
+        sx_contact_point *p = &c->points[k];
+        p->anchor_a = sx_mul_add(p->anchor_a, c->slip_a * step, t);
+        p->anchor_b = sx_mul_sub(p->anchor_b, (SX_R(1.0) - c->slip_a) * step, t);
+    }
+}
+
 static void sx_update_gaps(const sx_world *world, sx_contact *c) {
     const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
     int k;
     for (k = 0; k < c->count; ++k)
         c->points[k].gap = sx_current_gap(a, b, c->normal, &c->points[k]);
+    if (c->slides) sx_slide_levers(world, c);
 }
 
 /* The relative normal velocity a point's constraint wants to be >= 0: a
@@ -517,6 +567,30 @@ static void sx_solve_normal_point(sx_constraint_point *p, sx_vec2 n, sx_vec2 *va
     sx_lever_apply(va, wa, vb, wb, ma, ia, mb, ib, n, p->rn_a, p->rn_b, lambda);
 }
 
+/* The friction of a two-point contact as one constraint: the tangent
+ * rows of the two points differ only in the levers' components along the
+ * normal (r x t = -r . n), which the two points of a face share, so solved
+ * one after the other they did the same work twice, on the longest chain
+ * of dependent operations of a pass. One row at the mean lever, within mu
+ * times the sum of the normal impulses; the total is shared between the
+ * points in proportion to their normal impulses (each within its own
+ * cone), which is what the warm start and the contact reports see. */
+static SX_ALWAYS_INLINE void sx_friction_row2(sx_constraint *c, sx_vec2 *va, sx_real *wa,
+                                              sx_vec2 *vb, sx_real *wb, sx_vec2 t) {
+    sx_constraint_point *p1 = &c->points[0], *p2 = &c->points[1];
+    sx_real rta = SX_R(0.5) * (p1->rt_a + p2->rt_a), rtb = SX_R(0.5) * (p1->rt_b + p2->rt_b);
+    sx_real mass = SX_R(0.5) * (p1->tangent_mass + p2->tangent_mass);
+    sx_real normal = p1->normal_impulse + p2->normal_impulse, limit = c->friction * normal;
+    sx_real old = p1->tangent_impulse + p2->tangent_impulse;
+    sx_real lambda = -mass * sx_lever_speed(*va, *wa, *vb, *wb, t, rta, rtb);
+    sx_real total = sx_bounded_impulse(sx_clampr(old + lambda, -limit, limit));
+    p1->tangent_impulse = normal > SX_R(0.0) ? total * (p1->normal_impulse / normal)
+                                             : SX_R(0.5) * total;
+    p2->tangent_impulse = total - p1->tangent_impulse;
+    sx_lever_apply(va, wa, vb, wb, c->inv_mass_a, c->inv_inertia_a, c->inv_mass_b,
+                   c->inv_inertia_b, t, rta, rtb, total - old);
+}
+
 /* One pass over the constraints: sx_world_solve's (soft when the world's
  * contacts are) or a relax pass. `last`: the last pass of the solve also
  * hands each constraint's impulses back to its contact as it goes (the
@@ -547,7 +621,9 @@ static void sx_constraints_pass(sx_world *world, sx_real h, bool relax, bool las
          * the warm start): the normal constraints then have the last word,
          * so a pass never ends with a point moving into the surface. A
          * frictionless contact costs nothing here. */
-        if (c->friction > SX_R(0.0)) {
+        if (c->friction > SX_R(0.0) && c->count == 2) {
+            sx_friction_row2(c, &va, &wa, &vb, &wb, t);
+        } else if (c->friction > SX_R(0.0)) {
             for (k = 0; k < c->count; ++k) {
                 sx_constraint_point *p = &c->points[k];
                 sx_real limit = c->friction * p->normal_impulse;
@@ -986,6 +1062,8 @@ static bool sx_impact_time(const sx_world *world, const sx_contact *c, sx_real h
  * points together when the manifold's block is well conditioned; then
  * friction; then the bodies' time-of-impact shifts. */
 static void sx_resolve_impact(sx_world *world, sx_contact *c, sx_real h, sx_real t) {
+    /* the normal masses of the levers that slid (sx_slide_levers) */
+    if (c->slides) sx_normal_masses(world, c);
     sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
     sx_impact_body *sa = &world->impact_bodies[c->body_a], *sb = &world->impact_bodies[c->body_b];
     sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;

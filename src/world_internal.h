@@ -95,7 +95,10 @@ typedef struct sx_block2 {
 } sx_block2;
 
 typedef struct sx_contact_point {
-    sx_vec2 anchor_a, anchor_b; /* from each centre of mass to the point, world, at collide */
+    /* from each centre of mass to the point, world: the levers the solver
+     * applies impulses at (of collide time, then moved through the
+     * sub-steps: sx_slide_levers in contact_solver.c) */
+    sx_vec2 anchor_a, anchor_b;
     /* the same two anchors in their body frames: turned with the bodies,
      * they give the point's separation as the bodies move through the
      * sub-steps (sx_current_gap in contact_solver.c) */
@@ -127,6 +130,14 @@ typedef struct sx_contact {
     int part_a, part_b;
     int body_a, body_b;
     sx_vec2 normal; /* world, from A to B, at collide time (kept for the step) */
+    /* both bodies dynamic: the levers follow the bodies through the
+     * sub-steps, A's taking the share slip_a of the slide across the normal
+     * and B's the rest; the slide so far (along the tangent) and the
+     * centres' offset at collide it is measured from (sx_slide_levers in
+     * contact_solver.c) */
+    bool slides;
+    sx_real slip_a, slid;
+    sx_vec2 centres;
     sx_real friction, restitution;
     int count;
     sx_contact_point points[2];
