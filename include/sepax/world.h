@@ -760,6 +760,41 @@ typedef struct sx_world_ray_hit {
  *  non-finite ray, zero translation). */
 bool sx_world_cast_ray(const sx_world *world, const sx_ray_input *ray, sx_world_ray_hit *out);
 
+/** A hit of a world shape cast. */
+typedef struct sx_world_shape_hit {
+    sx_collider_id collider;
+    sx_body_id body;
+    sx_vec2 point;    /**< world point of the collider's surface where the shape touches it */
+    sx_vec2 normal;   /**< unit surface normal there, facing the cast shape */
+    sx_real fraction; /**< the shape touches after moving fraction x translation */
+    int part;         /**< the compound part hit first (0 for a plain collider) */
+} sx_world_shape_hit;
+
+/** Called for each collider sx_world_cast_shape_all hits; return false to
+ *  stop. The world is locked meanwhile, as during a query callback. */
+typedef bool sx_shape_cast_fn(const sx_world_shape_hit *hit, void *context);
+
+/** Sweeps `shape` placed by xf along `translation` (world, metres; the shape
+ *  does not turn) against every collider whose filter collides with
+ *  `filter` (the rule of sx_filter; NULL: every collider) and returns true
+ *  with the first hit in *out (on equal fractions, the lower collider
+ *  slot). Each collider is cast as sx_shape_cast casts (the fraction is
+ *  where the surfaces meet, never past it; a collider the shape already
+ *  touches or overlaps is hit at fraction 0, with the normal of sx_mtv).
+ *  Sensors are not hit, nor are the colliders of disabled bodies. false,
+ *  with *out zeroed, for no hit or bad input (NULL pointers, an invalid
+ *  shape, a non-finite transform or translation). */
+bool sx_world_cast_shape(const sx_world *world, const sx_shape *shape, sx_xform xf,
+                         sx_vec2 translation, const sx_filter *filter, sx_world_shape_hit *out);
+
+/** As sx_world_cast_shape, but reports every collider the sweep hits (each
+ *  once, with its first hit) in collider-slot order, not sorted by
+ *  fraction. fn may be NULL (just count). Returns the number reported (0 for
+ *  bad input). */
+int sx_world_cast_shape_all(const sx_world *world, const sx_shape *shape, sx_xform xf,
+                            sx_vec2 translation, const sx_filter *filter, sx_shape_cast_fn *fn,
+                            void *context);
+
 /* ---- debug draw ------------------------------------------------------------ */
 
 /** Callbacks for sx_world_draw; any may be NULL (that kind is not drawn). The
