@@ -88,6 +88,7 @@ sx_body_def sx_default_body_def(void) {
     d.fixed_rotation = false;
     d.enable_sleep = true;
     d.enabled = true;
+    d.bullet = false;
     d.user_data = NULL;
     return d;
 }
@@ -306,6 +307,7 @@ sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *ou
     info->enabled = def->enabled;
     info->fixed_rotation = def->fixed_rotation;
     info->enable_sleep = def->enable_sleep;
+    info->bullet = def->bullet;
     info->type = def->type;
     info->user_data = def->user_data;
     info->first_collider = -1;

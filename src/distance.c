@@ -71,7 +71,7 @@ typedef struct sx_simplex_vertex {
 } sx_simplex_vertex;
 
 typedef struct sx_gjk_result {
-    sx_vec2 pa, pb; /* closest points of the cores, working frame */
+    sx_vec2 pa, pb;   /* closest points of the cores, working frame */
     sx_real distance; /* between the cores */
     int iterations;
     bool overlap; /* the cores touch or cross */
@@ -250,7 +250,7 @@ static bool sx_place(const sx_proxy *b, sx_xform rel, sx_vec2 *out) {
 }
 
 sx_status sx_shape_distance(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                      sx_distance_output *out) {
+                            sx_distance_output *out) {
     sx_proxy pa, pb;
     sx_vec2 bp[SX_MAX_POLYGON_VERTICES], n;
     sx_gjk_result g;

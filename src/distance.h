@@ -20,7 +20,8 @@ typedef struct sx_proxy {
 sx_status sx_proxy_make(const sx_shape *s, const sx_xform *offset, sx_proxy *out);
 
 /** sx_time_of_impact on proxies whose frames follow the motions (checked
- *  by the caller: finite, target >= 0). */
+ *  by the caller: finite). A negative target asks for the first overlap of
+ *  that depth of the rounded parts (the cores touching end it too). */
 void sx_proxy_toi(const sx_proxy *a, const sx_motion *ma, const sx_proxy *b, const sx_motion *mb,
                   sx_real target, sx_toi_output *out);
 

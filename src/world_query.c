@@ -287,9 +287,7 @@ static bool sx_cast_bounds(const sx_world *world, const sx_shape *shape, sx_xfor
 static bool sx_cast_sees(const sx_world *world, int i, const sx_filter *filter) {
     const sx_collider *c = &world->colliders[i];
     if (!sx_queryable(world, i) || c->sensor) return false;
-    if (filter == NULL) return true;
-    if (filter->group == c->filter.group && filter->group != 0) return filter->group > 0;
-    return (filter->category & c->filter.mask) != 0 && (c->filter.category & filter->mask) != 0;
+    return filter == NULL || sx_filters_collide(filter, &c->filter);
 }
 
 bool sx_world_cast_shape(const sx_world *world, const sx_shape *shape, sx_xform xf,

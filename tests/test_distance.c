@@ -164,10 +164,9 @@ static void circle_and_box_distance_is_analytic(void **state) {
     sx_shape c = sx_circle_shape(sx_v2_zero(), SX_R(0.5)), box = sx_box_shape(SX_R(1.0), SX_R(2.0));
     sx_distance_output d;
     (void)state;
-    assert_int_equal(
-        sx_shape_distance(&c, sx_xform_make(sx_v2(SX_R(-4.0), SX_R(1.0)), SX_R(0.3)), &box,
-                          sx_xform_identity(), &d),
-        SX_OK);
+    assert_int_equal(sx_shape_distance(&c, sx_xform_make(sx_v2(SX_R(-4.0), SX_R(1.0)), SX_R(0.3)),
+                                       &box, sx_xform_identity(), &d),
+                     SX_OK);
     assert_near(d.distance, 2.5, EPS);
     assert_vec2_near(d.normal, sx_v2(SX_R(1.0), SX_R(0.0)), EPS);
     assert_vec2_near(d.point_a, sx_v2(SX_R(-3.5), SX_R(1.0)), EPS);
@@ -196,8 +195,8 @@ static void circle_and_box_distance_is_analytic(void **state) {
 
 static void parallel_segments_distance(void **state) {
     sx_shape a = sx_segment_shape(sx_v2(SX_R(-1.0), SX_R(0.0)), sx_v2(SX_R(1.0), SX_R(0.0)));
-    sx_shape b = sx_capsule_shape(sx_v2(SX_R(-3.0), SX_R(0.0)), sx_v2(SX_R(3.0), SX_R(0.0)),
-                                  SX_R(0.25));
+    sx_shape b =
+        sx_capsule_shape(sx_v2(SX_R(-3.0), SX_R(0.0)), sx_v2(SX_R(3.0), SX_R(0.0)), SX_R(0.25));
     sx_distance_output d;
     (void)state;
     assert_int_equal(sx_shape_distance(&a, sx_xform_identity(), &b,
@@ -216,24 +215,21 @@ static void circle_cast_at_a_box_hits_its_face(void **state) {
     sx_shape c = sx_circle_shape(sx_v2_zero(), SX_R(0.5)), box = sx_box_shape(SX_R(1.0), SX_R(1.0));
     sx_shape_cast_output o;
     (void)state;
-    assert_int_equal(sx_shape_cast(&c, sx_xform_identity(), sx_v2(SX_R(10.0), SX_R(0.0)),
-                                   SX_R(1.0), &box,
-                                   sx_xform_make(sx_v2(SX_R(5.0), SX_R(0.2)), SX_R(0.0)), &o),
+    assert_int_equal(sx_shape_cast(&c, sx_xform_identity(), sx_v2(SX_R(10.0), SX_R(0.0)), SX_R(1.0),
+                                   &box, sx_xform_make(sx_v2(SX_R(5.0), SX_R(0.2)), SX_R(0.0)), &o),
                      SX_OK);
     assert_true(o.hit);
     assert_near(o.fraction, 0.35, EPS);
     assert_vec2_near(o.normal, sx_v2(SX_R(-1.0), SX_R(0.0)), EPS);
     assert_vec2_near(o.point, sx_v2(SX_R(4.0), SX_R(0.0)), EPS);
     /* short of the box: a miss */
-    assert_int_equal(sx_shape_cast(&c, sx_xform_identity(), sx_v2(SX_R(10.0), SX_R(0.0)),
-                                   SX_R(0.3), &box,
-                                   sx_xform_make(sx_v2(SX_R(5.0), SX_R(0.2)), SX_R(0.0)), &o),
+    assert_int_equal(sx_shape_cast(&c, sx_xform_identity(), sx_v2(SX_R(10.0), SX_R(0.0)), SX_R(0.3),
+                                   &box, sx_xform_make(sx_v2(SX_R(5.0), SX_R(0.2)), SX_R(0.0)), &o),
                      SX_OK);
     assert_false(o.hit);
     /* passing above it: a miss */
-    assert_int_equal(sx_shape_cast(&c, sx_xform_identity(), sx_v2(SX_R(10.0), SX_R(0.0)),
-                                   SX_R(1.0), &box,
-                                   sx_xform_make(sx_v2(SX_R(5.0), SX_R(1.6)), SX_R(0.0)), &o),
+    assert_int_equal(sx_shape_cast(&c, sx_xform_identity(), sx_v2(SX_R(10.0), SX_R(0.0)), SX_R(1.0),
+                                   &box, sx_xform_make(sx_v2(SX_R(5.0), SX_R(1.6)), SX_R(0.0)), &o),
                      SX_OK);
     assert_false(o.hit);
 }
@@ -244,11 +240,10 @@ static void box_cast_turned_hits_a_segment_with_its_corner(void **state) {
     sx_shape_cast_output o;
     double h = 0.5 * sqrt(2.0);
     (void)state;
-    assert_int_equal(sx_shape_cast(&box, sx_xform_make(sx_v2(SX_R(0.0), SX_R(3.0)),
-                                                       SX_R(0.25) * SX_PI),
-                                   sx_v2(SX_R(0.0), SX_R(-4.0)), SX_R(1.0), &seg,
-                                   sx_xform_identity(), &o),
-                     SX_OK);
+    assert_int_equal(
+        sx_shape_cast(&box, sx_xform_make(sx_v2(SX_R(0.0), SX_R(3.0)), SX_R(0.25) * SX_PI),
+                      sx_v2(SX_R(0.0), SX_R(-4.0)), SX_R(1.0), &seg, sx_xform_identity(), &o),
+        SX_OK);
     assert_true(o.hit);
     assert_near(o.fraction, (3.0 - h) / 4.0, EPS);
     assert_vec2_near(o.normal, sx_v2(SX_R(0.0), SX_R(1.0)), 10 * EPS);
@@ -427,7 +422,8 @@ static void hostile_input_answers_a_status(void **state) {
     sx_shape c = sx_circle_shape(sx_v2_zero(), SX_R(0.5)), box = sx_box_shape(SX_R(1.0), SX_R(1.0));
     sx_shape bad = sx_circle_shape(sx_v2_zero(), SX_R(-1.0));
     sx_shape nanc = sx_circle_shape(sx_v2((sx_real)NAN, SX_R(0.0)), SX_R(1.0));
-    sx_xform id = sx_xform_identity(), nanx = sx_xform_make(sx_v2((sx_real)NAN, SX_R(0.0)), SX_R(0.0));
+    sx_xform id = sx_xform_identity(),
+             nanx = sx_xform_make(sx_v2((sx_real)NAN, SX_R(0.0)), SX_R(0.0));
     sx_distance_output d;
     sx_shape_cast_output o;
     sx_toi_output t;
@@ -446,9 +442,9 @@ static void hostile_input_answers_a_status(void **state) {
     assert_false(o.hit);
     assert_int_equal(sx_shape_cast(&c, id, sx_v2(SX_R(1.0), SX_R(0.0)), SX_R(-1.0), &box, id, &o),
                      SX_ERR_INVALID_ARG);
-    assert_int_equal(sx_shape_cast(&c, id, sx_v2(SX_R(1.0), SX_R(0.0)), (sx_real)INFINITY, &box, id,
-                                   &o),
-                     SX_ERR_NONFINITE);
+    assert_int_equal(
+        sx_shape_cast(&c, id, sx_v2(SX_R(1.0), SX_R(0.0)), (sx_real)INFINITY, &box, id, &o),
+        SX_ERR_NONFINITE);
     /* an enormous translation: a hit or an error, never a NaN */
     {
         sx_status s = sx_shape_cast(&c, sx_xform_make(sx_v2(SX_R(-5.0), SX_R(0.0)), SX_R(0.0)),

@@ -302,7 +302,6 @@ typedef struct sx_ray_hit {
  *  a cast whose hit point would overflow sx_real. */
 bool sx_ray_cast(const sx_shape *s, sx_xform x, const sx_ray_input *ray, sx_ray_hit *out);
 
-
 /* ---- distance, shape cast and time of impact ----------------------------- */
 
 /* These work on the convex cores of the shapes (a circle's centre, a
@@ -358,7 +357,7 @@ typedef struct sx_distance_output {
  *  along the normal. Symmetric: swapping A and B swaps the points and
  *  negates the normal. SX_OK, or an error as described above. */
 sx_status sx_shape_distance(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                      sx_distance_output *out);
+                            sx_distance_output *out);
 
 /** Where a cast shape first touches another. */
 typedef struct sx_shape_cast_output {
@@ -408,9 +407,9 @@ typedef struct sx_motion {
 
 /** How a time of impact ended. */
 typedef enum sx_toi_state {
-    SX_TOI_SEPARATED = 0, /**< no contact over the motion: fraction 1 */
-    SX_TOI_HIT,           /**< gap within target .. target + SX_TOI_TOLERANCE at fraction */
-    SX_TOI_STARTS_CLOSE,  /**< gap already within target + tolerance (or overlap) at 0 */
+    SX_TOI_SEPARATED = 0,  /**< no contact over the motion: fraction 1 */
+    SX_TOI_HIT,            /**< gap within target .. target + SX_TOI_TOLERANCE at fraction */
+    SX_TOI_STARTS_CLOSE,   /**< gap already within target + tolerance (or overlap) at 0 */
     SX_TOI_ITERATION_LIMIT /**< SX_TOI_MAX_ITERATIONS used: fraction is the last
                                 reached, where the gap is still above target */
 } sx_toi_state;
