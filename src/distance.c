@@ -224,11 +224,21 @@ static void sx_gjk(const sx_vec2 *a, int na, const sx_vec2 *b, int nb, sx_gjk_re
     r->distance = r->overlap ? SX_R(0.0) : sx_length(sx_sub(r->pb, r->pa));
 }
 
+/* False when the coordinates overflowed on the way (far beyond SX_HUGE). */
+static bool sx_gjk_finite(const sx_gjk_result *g) {
+    return sx_vec2_is_finite(g->pa) && sx_vec2_is_finite(g->pb) && sx_is_finite(g->distance);
+}
+
 /* The gap of the rounded shapes (negative when overlapping) and the unit
  * normal from A to B; false when the cores touch or cross (no normal). */
 static bool sx_gap(const sx_gjk_result *g, sx_real ra, sx_real rb, sx_real *gap, sx_vec2 *n) {
-    if (g->overlap || !(g->distance > SX_R(0.0))) return false;
-    *n = sx_scale(sx_sub(g->pb, g->pa), SX_R(1.0) / g->distance);
+    sx_vec2 d = sx_sub(g->pb, g->pa);
+    sx_real m = sx_maxr(sx_absr(d.x), sx_absr(d.y));
+    if (g->overlap || !(g->distance > SX_R(0.0)) || !(m > SX_R(0.0))) return false;
+    /* scaled by the larger component first: a gap down among the
+     * denormals still gives a unit normal */
+    d = sx_v2(d.x / m, d.y / m);
+    *n = sx_scale(d, SX_R(1.0) / sx_length(d));
     *gap = g->distance - ra - rb;
     return true;
 }
@@ -249,8 +259,8 @@ static bool sx_place(const sx_proxy *b, sx_xform rel, sx_vec2 *out) {
     return true;
 }
 
-sx_status sx_shape_distance(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                            sx_distance_output *out) {
+static sx_status sx_distance_run(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                                 sx_distance_output *out) {
     sx_proxy pa, pb;
     sx_vec2 bp[SX_MAX_POLYGON_VERTICES], n;
     sx_gjk_result g;
@@ -263,6 +273,7 @@ sx_status sx_shape_distance(const sx_shape *a, sx_xform xa, const sx_shape *b, s
     if (!sx_xform_is_finite(xa) || !sx_xform_is_finite(xb)) return SX_ERR_NONFINITE;
     if (!sx_place(&pb, sx_xform_inv_mul(xa, xb), bp)) return SX_ERR_NONFINITE;
     sx_gjk(pa.p, pa.count, bp, pb.count, &g);
+    if (!sx_gjk_finite(&g)) return SX_ERR_NONFINITE;
     out->iterations = g.iterations;
     if (sx_gap(&g, pa.radius, pb.radius, &gap, &n)) {
         out->normal = sx_rotate(xa.q, n);
@@ -292,10 +303,23 @@ sx_status sx_shape_distance(const sx_shape *a, sx_xform xa, const sx_shape *b, s
     return SX_OK;
 }
 
+sx_status sx_shape_distance(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                            sx_distance_output *out) {
+    sx_status s = sx_distance_run(a, xa, b, xb, out);
+    if (s == SX_OK && !(sx_is_finite(out->distance) && sx_vec2_is_finite(out->point_a) &&
+                        sx_vec2_is_finite(out->point_b) && sx_vec2_is_finite(out->normal))) {
+        /* the answer overflowed sx_real on its way back to world space */
+        s = SX_ERR_NONFINITE;
+    }
+    if (s != SX_OK && out != NULL) memset(out, 0, sizeof(*out));
+    return s;
+}
+
 /* ---- shape cast --------------------------------------------------------- */
 
-sx_status sx_shape_cast(const sx_shape *a, sx_xform xa, sx_vec2 translation, sx_real max_fraction,
-                        const sx_shape *b, sx_xform xb, sx_shape_cast_output *out) {
+static sx_status sx_cast_run(const sx_shape *a, sx_xform xa, sx_vec2 translation,
+                             sx_real max_fraction, const sx_shape *b, sx_xform xb,
+                             sx_shape_cast_output *out) {
     sx_proxy pa, pb;
     sx_vec2 b0[SX_MAX_POLYGON_VERTICES], bt[SX_MAX_POLYGON_VERTICES], u, n = sx_v2_zero();
     sx_real t = SX_R(0.0), gap = SX_R(0.0), rate = SX_R(0.0);
@@ -320,6 +344,10 @@ sx_status sx_shape_cast(const sx_shape *a, sx_xform xa, sx_vec2 translation, sx_
         for (i = 0; i < pb.count; ++i)
             bt[i] = sx_mul_add(b0[i], -t, u);
         sx_gjk(pa.p, pa.count, bt, pb.count, &g);
+        if (!sx_gjk_finite(&g)) {
+            memset(out, 0, sizeof(*out));
+            return SX_ERR_NONFINITE;
+        }
         out->iterations = iter;
         apart = sx_gap(&g, pa.radius, pb.radius, &gap, &n);
         if (!apart || gap <= SX_CAST_TARGET + SX_TOI_TOLERANCE) break;
@@ -352,6 +380,17 @@ sx_status sx_shape_cast(const sx_shape *a, sx_xform xa, sx_vec2 translation, sx_
     }
     out->fraction = t;
     return SX_OK;
+}
+
+sx_status sx_shape_cast(const sx_shape *a, sx_xform xa, sx_vec2 translation, sx_real max_fraction,
+                        const sx_shape *b, sx_xform xb, sx_shape_cast_output *out) {
+    sx_status s = sx_cast_run(a, xa, translation, max_fraction, b, xb, out);
+    if (s == SX_OK && !(sx_is_finite(out->fraction) && sx_vec2_is_finite(out->point) &&
+                        sx_vec2_is_finite(out->normal))) {
+        s = SX_ERR_NONFINITE;
+    }
+    if (s != SX_OK && out != NULL) memset(out, 0, sizeof(*out));
+    return s;
 }
 
 /* ---- time of impact ------------------------------------------------------ */
@@ -396,6 +435,13 @@ void sx_proxy_toi(const sx_proxy *a, const sx_motion *ma, const sx_proxy *b, con
             return;
         }
         sx_gjk(a->p, a->count, bp, b->count, &g);
+        if (!sx_gjk_finite(&g)) {
+            /* overflow far out: nothing to say past here */
+            memset(out, 0, sizeof(*out));
+            out->state = SX_TOI_SEPARATED;
+            out->fraction = SX_R(1.0);
+            return;
+        }
         if (!sx_gap(&g, a->radius, b->radius, &gap, &n)) {
             /* cores touching: only at the start (each advance stops short) */
             out->state = t == SX_R(0.0) ? SX_TOI_STARTS_CLOSE : SX_TOI_HIT;
@@ -448,5 +494,10 @@ sx_status sx_time_of_impact(const sx_shape *a, const sx_motion *ma, const sx_sha
     }
     if (target < SX_R(0.0)) return SX_ERR_INVALID_ARG;
     sx_proxy_toi(&pa, ma, &pb, mb, target, out);
+    if (!(sx_vec2_is_finite(out->point_a) && sx_vec2_is_finite(out->point_b) &&
+          sx_vec2_is_finite(out->normal))) {
+        memset(out, 0, sizeof(*out));
+        return SX_ERR_NONFINITE;
+    }
     return SX_OK;
 }

@@ -181,6 +181,18 @@ static sx_status sx_sweep_body(sx_world *world, int slot, const sx_motion *m, sx
         const sx_body_sim *o = &world->sims[oc->body];
         if (oc->body == slot || !oc->alive || oc->sensor) continue;
         if (o->dynamic && !bullet) continue;
+        /* the broadphase holds a moving collider's bounds grown by its
+         * reach; the sweep meets it where it ended */
+        if (o->moving) {
+            sx_aabb ob = sx_collider_aabb(oc, o->xf);
+            sx_vec2 mid = sx_scale(sx_add(ob.lower, ob.upper), SX_R(0.5));
+            sx_real reach = max_ext + world->margin + sx_length(sx_sub(ob.upper, mid));
+            if (!sx_aabb_overlaps(ob, box) ||
+                sx_distance_sq(sx_closest_point_on_segment(m->c0, m->c1, mid, NULL), mid) >
+                    reach * reach) {
+                continue;
+            }
+        }
         sx_sweep_pair(world, slot, m, cj, &t);
     }
     if (t < SX_R(1.0)) {

@@ -311,8 +311,8 @@ bool sx_ray_cast(const sx_shape *s, sx_xform x, const sx_ray_input *ray, sx_ray_
  * (unknown type, negative or non-finite radius, polygon count outside
  * 3..SX_MAX_POLYGON_VERTICES) answers SX_ERR_INVALID_ARG, a NaN or infinite
  * coordinate, transform or motion SX_ERR_NONFINITE (also when placing one
- * shape in the other's frame overflows sx_real). On any error the output is
- * zeroed. */
+ * shape in the other's frame, or carrying the answer back to world space,
+ * overflows sx_real). On any error the output is zeroed. */
 
 /** Most GJK iterations of one distance query; two cores of at most
  *  SX_MAX_POLYGON_VERTICES points converge long before (each iteration adds
