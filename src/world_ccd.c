@@ -32,10 +32,18 @@ sx_status sx_ccd_record(sx_world *world) {
     /* 0 is never a live stamp: fresh (zeroed) slots never match */
     if (stamp == 0u) stamp = 1u;
     world->ccd_stamp = stamp;
+    world->ccd_kinematic_moving = 0;
     for (k = 0; k < world->active_body_count; ++k) {
         int slot = world->active_bodies[k];
         const sx_body_sim *b = &world->sims[slot];
         sx_ccd_pose *p = &world->ccd_poses[slot];
+        /* only the awake dynamic bodies are swept (their stamp says so) */
+        if (!b->dynamic || !b->awake) {
+            if (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0)) {
+                world->ccd_kinematic_moving = 1;
+            }
+            continue;
+        }
         p->center = b->center;
         p->q = b->xf.q;
         p->v = b->v;
@@ -45,9 +53,14 @@ sx_status sx_ccd_record(sx_world *world) {
     return SX_OK;
 }
 
+void sx_ccd_forget(sx_world *world, int slot) {
+    if (slot < world->ccd_pose_capacity) world->ccd_poses[slot].ext_valid = false;
+}
+
 void sx_ccd_free(sx_world *world) {
     sx_free(world->ccd_poses, (size_t)world->ccd_pose_capacity * sizeof(sx_ccd_pose));
     sx_free(world->ccd_found, (size_t)world->ccd_found_capacity * sizeof(int));
+    sx_free(world->ccd_sweep, (size_t)world->ccd_sweep_capacity * sizeof(int));
 }
 
 /* The proxy of part k of a collider, in its body's frame. */
@@ -61,7 +74,8 @@ static int sx_part_count(const sx_collider *c) { return c->part_count > 0 ? c->p
 /* The farthest reach of a body's colliders from its centre of mass, and its
  * thinnest half extent (a disc's radius, a polygon's least distance from
  * its vertices' mean to an edge, plus rounding; never below the slop). */
-static void sx_body_extents(const sx_world *world, int slot, sx_real *max_ext, sx_real *min_ext) {
+static void sx_measure_extents(const sx_world *world, int slot, sx_real *max_ext,
+                               sx_real *min_ext) {
     sx_vec2 lc = world->sims[slot].local_center;
     int ci, k, i;
     *max_ext = SX_R(0.0);
@@ -90,6 +104,17 @@ static void sx_body_extents(const sx_world *world, int slot, sx_real *max_ext, s
         }
     }
     *min_ext = sx_maxr(*min_ext, world->linear_slop);
+}
+
+/* sx_measure_extents, cached in the pose record until sx_ccd_forget. */
+static void sx_body_extents(sx_world *world, int slot, sx_real *max_ext, sx_real *min_ext) {
+    sx_ccd_pose *p = &world->ccd_poses[slot];
+    if (!p->ext_valid) {
+        sx_measure_extents(world, slot, &p->max_ext, &p->min_ext);
+        p->ext_valid = true;
+    }
+    *max_ext = p->max_ext;
+    *min_ext = p->min_ext;
 }
 
 /* The turn of body slot since its recorded pose: the representative of the
@@ -172,8 +197,15 @@ static sx_status sx_sweep_body(sx_world *world, int slot, const sx_motion *m, sx
     int i;
     sx_status s;
     world->ccd_found_count = 0;
-    s = sx_broadphase_query(&world->bp, box, &world->ccd_found, &world->ccd_found_count,
-                            &world->ccd_found_capacity);
+    /* a body that is not a bullet meets only static and kinematic
+     * colliders: the moving set matters only when a kinematic one moves */
+    if (bullet || world->ccd_kinematic_moving) {
+        s = sx_broadphase_query(&world->bp, box, &world->ccd_found, &world->ccd_found_count,
+                                &world->ccd_found_capacity);
+    } else {
+        s = sx_broadphase_query_fixed(&world->bp, box, &world->ccd_found,
+                                      &world->ccd_found_count, &world->ccd_found_capacity);
+    }
     if (s != SX_OK) return s;
     for (i = 0; i < world->ccd_found_count; ++i) {
         int cj = world->ccd_found[i];
@@ -223,29 +255,30 @@ static sx_status sx_sweep_body(sx_world *world, int slot, const sx_motion *m, sx
 }
 
 /* Whether body slot needs the sweep, and its motion and reach if so. */
-static bool sx_needs_sweep(const sx_world *world, int slot, sx_motion *m, sx_real *max_ext) {
+static bool sx_needs_sweep(sx_world *world, int slot) {
     const sx_body_sim *b = &world->sims[slot];
     const sx_ccd_pose *p = &world->ccd_poses[slot];
     sx_vec2 d = sx_sub(b->center, p->center);
-    sx_real moved = sx_length(d), min_ext, half = SX_R(0.5) * world->margin;
-    sx_real off = sx_length(sx_mul_add(d, -world->ccd_dt, p->v));
+    /* where it ended against where collide foresaw (gravity bends the path
+     * by far less than the margin) */
+    sx_vec2 off = sx_mul_add(d, -world->ccd_dt, p->v);
+    sx_real half = SX_R(0.5) * world->margin, max_ext, min_ext, sweep, moved;
     sx_rot dq = sx_rot_inv_mul(p->q, b->xf.q);
-    bool escaped = moved > world->ccd_dt * sx_length(p->v) + half;
-    /* off its foreseen path (gravity bends it by far less than the margin) */
-    bool deflected = off > half;
     /* turns under a quarter of the angular slop move no point far enough
      * to matter, and are not worth the extents */
     bool turned = dq.c < SX_R(0.0) || sx_absr(dq.s) > SX_R(0.25) * SX_ANGULAR_SLOP;
-    bool bullet = world->infos[slot].bullet;
-    sx_real sweep;
-    if (!escaped && !turned && !deflected && !bullet) return false;
-    sx_body_extents(world, slot, max_ext, &min_ext);
-    *m = sx_body_motion(world, slot);
-    if (escaped) return true;
-    /* how far its farthest point strayed: the turn, the bend of its path,
-     * and for a bullet the whole path */
-    sweep = sx_absr(m->angle1 - m->angle0) * *max_ext + (bullet ? moved : off);
-    return sweep > SX_R(0.5) * min_ext;
+    /* the cold body data only when there are bullets at all */
+    bool bullet = world->bullet_count > 0 && world->infos[slot].bullet;
+    /* leaving its collide-time bounds (going farther than dt |v| + half)
+     * strays more than half from that end point too: one test for both */
+    if (!(sx_length_sq(off) > half * half) && !turned && !bullet) return false;
+    sx_body_extents(world, slot, &max_ext, &min_ext);
+    moved = sx_length(d);
+    /* how far its farthest point strayed: the turn (a small one by its
+     * sine), the bend of its path, and for a bullet the whole path */
+    sweep = (turned ? sx_absr(sx_turn(b, p, world->ccd_dt)) : sx_absr(dq.s)) * max_ext +
+            (bullet ? moved : sx_length(off));
+    return moved > world->ccd_dt * sx_length(p->v) + half || sweep > SX_R(0.5) * min_ext;
 }
 
 sx_status sx_world_continuous(sx_world *world) {
@@ -256,23 +289,34 @@ sx_status sx_world_continuous(sx_world *world) {
     if (!(world->ccd_dt > SX_R(0.0))) return SX_OK;
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
-    /* the others first, then the bullets against their final paths */
-    for (pass = 0; pass < 2; ++pass) {
-        for (k = 0; k < world->active_body_count; ++k) {
-            int slot = world->active_bodies[k];
-            const sx_body_sim *b = &world->sims[slot];
+    /* one pass over the moving bodies finds those to sweep; then the others
+     * are swept, and the bullets last, against the others' final poses */
+    for (k = 0; k < world->active_body_count; ++k) {
+        int slot = world->active_bodies[k];
+        /* the stamp marks the bodies that were awake and dynamic at collide
+         * (a body changed since is swept as it was then, harmlessly) */
+        if (slot >= world->ccd_pose_capacity || world->ccd_poses[slot].stamp != world->ccd_stamp ||
+            !sx_needs_sweep(world, slot) || !world->sims[slot].dynamic) {
+            continue;
+        }
+        if (!sx_push_int(&world->ccd_sweep, &world->ccd_sweep_count, &world->ccd_sweep_capacity,
+                         slot)) {
+            return SX_ERR_NO_MEMORY;
+        }
+    }
+    for (pass = 0; pass < (world->bullet_count > 0 ? 2 : 1); ++pass) {
+        for (k = 0; k < world->ccd_sweep_count; ++k) {
+            int slot = world->ccd_sweep[k];
             sx_motion m;
-            sx_real max_ext;
-            if (!b->dynamic || !b->awake || slot >= world->ccd_pose_capacity ||
-                world->ccd_poses[slot].stamp != world->ccd_stamp ||
-                world->infos[slot].bullet != (pass == 1) ||
-                !sx_needs_sweep(world, slot, &m, &max_ext)) {
-                continue;
-            }
+            sx_real max_ext, min_ext;
+            if (world->bullet_count > 0 && world->infos[slot].bullet != (pass == 1)) continue;
+            sx_body_extents(world, slot, &max_ext, &min_ext);
+            m = sx_body_motion(world, slot);
             s = sx_sweep_body(world, slot, &m, max_ext, pass == 1);
             if (s != SX_OK) return s;
         }
     }
+    world->ccd_sweep_count = 0;
     /* once per collide */
     world->ccd_dt = SX_R(0.0);
     return SX_OK;
@@ -283,6 +327,7 @@ sx_status sx_body_set_bullet(sx_world *world, sx_body_id body, bool bullet) {
     if (world == NULL) return SX_ERR_INVALID_ARG;
     slot = sx_body_slot(world, body);
     if (slot < 0) return SX_ERR_STALE_HANDLE;
+    world->bullet_count += (bullet ? 1 : 0) - (world->infos[slot].bullet ? 1 : 0);
     world->infos[slot].bullet = bullet;
     return SX_OK;
 }

@@ -274,6 +274,10 @@ typedef struct sx_ccd_pose {
     sx_rot q;
     sx_vec2 v; /* at collide: the look-ahead its bounds and margins were grown by */
     uint32_t stamp;
+    /* the body's reach from its centre of mass and thinnest half extent,
+     * kept until its colliders or mass change (ext_valid) */
+    sx_real max_ext, min_ext;
+    bool ext_valid;
 } sx_ccd_pose;
 
 struct sx_world {
@@ -341,6 +345,10 @@ struct sx_world {
     int ccd_pose_capacity;
     uint32_t ccd_stamp;
     sx_real ccd_dt; /* the step the recorded poses start (0: none) */
+    int ccd_kinematic_moving; /* a kinematic body moves this step (sx_ccd_record) */
+    int *ccd_sweep; /* the bodies to sweep this step */
+    int ccd_sweep_count, ccd_sweep_capacity;
+    int bullet_count; /* live bodies with the bullet flag (body.c, world_ccd.c) */
     int *ccd_found;
     int ccd_found_count, ccd_found_capacity;
 
@@ -476,6 +484,8 @@ sx_status sx_world_refresh_sets(sx_world *world);
 sx_status sx_ccd_record(sx_world *world);
 /* Frees its arrays (sx_world_destroy). */
 void sx_ccd_free(sx_world *world);
+/* Forgets body slot's cached extents (its colliders or mass changed). */
+void sx_ccd_forget(sx_world *world, int slot);
 
 /* True if two collision filters let their colliders collide (sx_filter). */
 static inline bool sx_filters_collide(const sx_filter *a, const sx_filter *b) {
@@ -500,6 +510,10 @@ sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const un
  * whose bounds overlap box, in no particular order. */
 sx_status sx_broadphase_query(const sx_broadphase *bp, sx_aabb box, int **out, int *count,
                               int *capacity);
+/* The same for the fixed set only (static colliders, kinematic ones at rest
+ * and sleeping ones): logarithmic, where the moving set is a linear pass. */
+sx_status sx_broadphase_query_fixed(const sx_broadphase *bp, sx_aabb box, int **out, int *count,
+                                    int *capacity);
 
 /* contact_solver.c */
 /* Once per collide: the effective masses and the block-solve matrices of
