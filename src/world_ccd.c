@@ -54,7 +54,11 @@ sx_status sx_ccd_record(sx_world *world) {
 }
 
 void sx_ccd_forget(sx_world *world, int slot) {
-    if (slot < world->ccd_pose_capacity) world->ccd_poses[slot].ext_valid = false;
+    /* also no sweep this step: a new body in a reused slot has no pose */
+    if (slot < world->ccd_pose_capacity) {
+        world->ccd_poses[slot].ext_valid = false;
+        world->ccd_poses[slot].stamp = 0u;
+    }
 }
 
 void sx_ccd_free(sx_world *world) {

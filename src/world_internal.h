@@ -484,7 +484,8 @@ sx_status sx_world_refresh_sets(sx_world *world);
 sx_status sx_ccd_record(sx_world *world);
 /* Frees its arrays (sx_world_destroy). */
 void sx_ccd_free(sx_world *world);
-/* Forgets body slot's cached extents (its colliders or mass changed). */
+/* Forgets body slot's cached extents and pose (its colliders or mass
+ * changed, or it was just created). */
 void sx_ccd_forget(sx_world *world, int slot);
 
 /* True if two collision filters let their colliders collide (sx_filter). */

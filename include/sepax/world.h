@@ -320,7 +320,12 @@ sx_status sx_world_collide(sx_world *world);
  *  within the target of a collider is left to its contact until it gets a
  *  quarter slop deeper than it started (a fast turn pressed into a contact
  *  can sink that much a step); shapes whose cores already touch are left to
- *  the contact. Slow bodies cost a comparison each. Errors:
+ *  the contact. Two fast dynamic bodies that are not bullets are not swept
+ *  against each other (their speculative contacts hold them while each
+ *  keeps to its straight path), and a body put back may overlap another
+ *  dynamic body until the next step separates them. A body whose colliders
+ *  or mass change between sx_world_collide and this stage is not swept.
+ *  Slow bodies cost a comparison each. Errors:
  *  SX_ERR_INVALID_ARG (NULL), SX_ERR_LOCKED, SX_ERR_NO_MEMORY (the query
  *  scratch could not grow). Without a collide since the last call: SX_OK,
  *  nothing moves. */
