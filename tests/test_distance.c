@@ -375,11 +375,10 @@ static void spinning_blade_toi_stops_before_the_ball(void **state) {
     }
 }
 
-static void random_tois_are_never_past_contact(void **state) {
-    sx_test_rng rng = sx_test_rng_make(31);
+static void check_random_tois(sx_vec2 offset, double tol, uint64_t seed) {
+    sx_test_rng rng = sx_test_rng_make(seed);
     int i, hits = 0;
     double target = (double)SX_LINEAR_SLOP;
-    (void)state;
     for (i = 0; i < 800; ++i) {
         int ka, kb, k;
         sx_shape a = qf_random_shape(&rng, &ka), b = qf_random_shape(&rng, &kb);
@@ -387,8 +386,8 @@ static void random_tois_are_never_past_contact(void **state) {
         sx_toi_output o;
         ma.local_center = qf_random_vec(&rng, -1.0, 1.0);
         mb.local_center = qf_random_vec(&rng, -1.0, 1.0);
-        ma.c0 = qf_random_vec(&rng, -10.0, 10.0);
-        mb.c0 = qf_random_vec(&rng, -10.0, 10.0);
+        ma.c0 = sx_add(qf_random_vec(&rng, -10.0, 10.0), offset);
+        mb.c0 = sx_add(qf_random_vec(&rng, -10.0, 10.0), offset);
         ma.c1 = sx_add(mb.c0, qf_random_vec(&rng, -3.0, 3.0));
         mb.c1 = sx_add(mb.c0, qf_random_vec(&rng, -2.0, 2.0));
         ma.angle0 = sx_test_rng_range(&rng, -3.0, 3.0);
@@ -404,16 +403,32 @@ static void random_tois_are_never_past_contact(void **state) {
             sx_xform xa = motion_xf(&ma, t), xb = motion_xf(&mb, t);
             sx_shape ca = core_of(&a), cb = core_of(&b);
             assert_false(sx_overlap(&ca, xa, &cb, xb));
-            assert_true(ref_gap(&a, xa, &b, xb) > (ld)(target - (double)QF_TOL * 10));
+            assert_true(ref_gap(&a, xa, &b, xb) > (ld)(target - tol));
         }
         if (o.state == SX_TOI_HIT) {
             ++hits;
             assert_true(ref_gap(&a, motion_xf(&ma, (double)o.fraction), &b,
                                 motion_xf(&mb, (double)o.fraction)) <=
-                        (ld)(target + (double)SX_TOI_TOLERANCE + (double)QF_TOL * 10));
+                        (ld)(target + (double)SX_TOI_TOLERANCE + tol));
         }
     }
     assert_true(hits > 150);
+}
+
+static void random_tois_are_never_past_contact(void **state) {
+    (void)state;
+    check_random_tois(sx_v2_zero(), 10.0 * (double)QF_TOL, 31);
+}
+
+/* 1e4 m out: float coordinates there are 1e-3 apart, the answer is good to
+ * a few of those */
+static void random_tois_far_from_the_origin_are_never_past_contact(void **state) {
+    (void)state;
+#ifdef SX_DOUBLE
+    check_random_tois(sx_v2(SX_R(1e4), SX_R(-1e4)), 1e-8, 32);
+#else
+    check_random_tois(sx_v2(SX_R(1e4), SX_R(-1e4)), 5e-3, 32);
+#endif
 }
 
 /* ---- hostile input ---------------------------------------------------------- */
@@ -488,6 +503,7 @@ int main(void) {
         cmocka_unit_test(toi_of_a_head_on_pair_is_analytic),
         cmocka_unit_test(spinning_blade_toi_stops_before_the_ball),
         cmocka_unit_test(random_tois_are_never_past_contact),
+        cmocka_unit_test(random_tois_far_from_the_origin_are_never_past_contact),
         cmocka_unit_test(hostile_input_answers_a_status),
     };
     return cmocka_run_group_tests_name("distance", tests, sx_test_group_setup,
