@@ -7,10 +7,11 @@
  * What that misses is motion collide did not foresee: a body knocked on
  * faster than it was going, or one turning so far that a contact's
  * linearised separation no longer holds (a spinning blade). So collide
- * records each moving body's pose and speed (sx_ccd_record), and after the
- * sub-steps sx_world_continuous looks at each awake dynamic body: only one
- * that went farther than its recorded speed allows, or turned more than
- * half its thinnest extent at its farthest point, or a fast bullet, is
+ * records each awake dynamic body's pose and velocity (sx_ccd_record), and
+ * after the sub-steps sx_world_continuous looks at each of them: only one
+ * that went farther than its recorded velocity allows, strayed from the
+ * path it foresaw or turned, by more than half its thinnest extent at its
+ * farthest point, or a fast bullet, is
  * swept from the recorded pose to the final one against the colliders its
  * swept box meets in the broadphase (conservative advancement, distance.c)
  * and put back at the earliest time of impact, keeping its velocity. Box2D
