@@ -53,8 +53,8 @@ static void dst_cast(const sx_shape *a, sx_xform xa, sx_vec2 tr, sx_real max_fra
     }
 }
 
-static void dst_toi(const sx_shape *a, const sx_motion *ma, const sx_shape *b,
-                    const sx_motion *mb, sx_real target) {
+static void dst_toi(const sx_shape *a, const sx_motion *ma, const sx_shape *b, const sx_motion *mb,
+                    sx_real target) {
     sx_toi_output o;
     sx_status s = sx_time_of_impact(a, ma, b, mb, target, &o);
     FZ_CHECK(fz_status_known(s));

@@ -208,8 +208,8 @@ static sx_status sx_sweep_body(sx_world *world, int slot, const sx_motion *m, sx
         s = sx_broadphase_query(&world->bp, box, &world->ccd_found, &world->ccd_found_count,
                                 &world->ccd_found_capacity);
     } else {
-        s = sx_broadphase_query_fixed(&world->bp, box, &world->ccd_found,
-                                      &world->ccd_found_count, &world->ccd_found_capacity);
+        s = sx_broadphase_query_fixed(&world->bp, box, &world->ccd_found, &world->ccd_found_count,
+                                      &world->ccd_found_capacity);
     }
     if (s != SX_OK) return s;
     for (i = 0; i < world->ccd_found_count; ++i) {
@@ -240,10 +240,10 @@ static sx_status sx_sweep_body(sx_world *world, int slot, const sx_motion *m, sx
          * move adds no energy; a move the motion cannot pay for (a slow body
          * driven by a large force, pushed along by the position correction)
          * is not made */
-        lift = -sx_dot(sx_add(sx_scale(world->def.gravity, b->gravity_scale / b->inv_mass),
-                              b->force),
-                       sx_sub(back, b->center)) -
-               b->torque * turn;
+        lift =
+            -sx_dot(sx_add(sx_scale(world->def.gravity, b->gravity_scale / b->inv_mass), b->force),
+                    sx_sub(back, b->center)) -
+            b->torque * turn;
         ke = SX_R(0.5) * sx_dot(b->v, b->v) / b->inv_mass;
         if (b->inv_inertia > SX_R(0.0)) ke += SX_R(0.5) * b->w * b->w / b->inv_inertia;
         if (lift > SX_R(0.0)) {
