@@ -92,6 +92,7 @@ int box2d_add(void *world, const scene_body *sb) {
     bd.angle = (float)sb->angle;
     bd.linearVelocity.Set((float)sb->vx, (float)sb->vy);
     bd.angularVelocity = (float)sb->w;
+    bd.bullet = sb->bullet != 0;
     b2Body *body = w->world.CreateBody(&bd);
     add_fixture(body, *sb);
     w->bodies.push_back(body);

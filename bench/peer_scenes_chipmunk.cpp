@@ -8,7 +8,8 @@
  * elasticity where Box2D and sepax take sqrt(mu_a mu_b) and max(e_a, e_b):
  * each shape gets sqrt(mu) and sqrt(e), so a contact between equal values
  * mixes to the same number in all three engines. Sleeping uses Chipmunk's
- * own idle time (0.5 s, as sepax's time_to_sleep). Collision slop is left at
+ * own idle time (0.5 s, as sepax's time_to_sleep). Chipmunk has no
+ * continuous collision: scene_body.bullet is ignored. Collision slop is left at
  * Chipmunk's default (0.1 length units: Chipmunk lets stacks sink that deep
  * by design; the scenes report it). */
 #include <chipmunk/chipmunk.h>

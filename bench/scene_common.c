@@ -258,6 +258,7 @@ static int sepax_add(void *w, const scene_body *b) {
     bd.angle = (sx_real)b->angle;
     bd.linear_velocity = sx_v2((sx_real)b->vx, (sx_real)b->vy);
     bd.angular_velocity = (sx_real)b->w;
+    bd.bullet = b->bullet != 0;
     sx_collider_def cd = sx_default_collider_def();
     cd.density = (sx_real)b->density;
     cd.friction = (sx_real)b->friction;

@@ -94,5 +94,8 @@ int rain(const int *sizes, int nsizes, int steps, double cap_ms, const char *out
 int many_pyramids(int rows, int columns, int steps, const char *out_dir);
 int tumbler(int boxes, int steps, const char *out_dir);
 int smash(int columns, int rows, int steps, const char *out_dir);
+/* Fast projectiles (bullets) at a wall of thin dynamic boxes with a thin
+ * static wall behind it; the figure is the number that tunnel through. */
+int bullets(int projectiles, int steps, const char *out_dir);
 
 #endif /* SEPAX_BENCH_SCENE_COMMON_H */

@@ -1272,6 +1272,8 @@ int bench_scenes_run(const char *out_dir, int smoke, int level) {
                           : many_pyramids(20, 20, pyramids_steps[level], out_dir);
     if (WANT("tumbler"))
         failures += smoke ? tumbler(100, 3, out_dir) : tumbler(2000, tumbler_steps[level], out_dir);
+    if (WANT("bullets"))
+        failures += smoke ? bullets(20, 3, out_dir) : bullets(400, level == 1 ? 60 : 120, out_dir);
     if (WANT("smash"))
         failures += smoke ? smash(20, 10, 3, out_dir) : smash(120, 80, smash_steps[level], out_dir);
     /* The accuracy sweeps, in report order. */

@@ -25,6 +25,7 @@ typedef struct scene_body {
     double vx, vy, w;
     bench_shape shape;
     double density, friction, restitution;
+    int bullet; /**< continuous collision against dynamic bodies too (sepax, both Box2Ds) */
 } scene_body;
 
 typedef struct scene_def {

@@ -187,6 +187,7 @@ static void sx_ecs_build(sx_ecs_state *st, ecs_entity_t e, sx_ecs_link *link, co
         def.angular_damping = b->angular_damping;
         def.gravity_scale = b->gravity_scale;
         def.fixed_rotation = b->fixed_rotation;
+        def.bullet = b->bullet;
         link->built = *b;
     } else {
         memset(&link->built, 0, sizeof(link->built));
@@ -390,6 +391,10 @@ static void sx_ecs_push(sx_ecs_state *st, ecs_entity_t e, sx_ecs_link *link, con
         sx_body_set_type(w, link->body, b->type);
         link->built.type = b->type;
     }
+    if (b != NULL && b->bullet != link->built.bullet) {
+        sx_body_set_bullet(w, link->body, b->bullet);
+        link->built.bullet = b->bullet;
+    }
     if (t->position.x != link->position.x || t->position.y != link->position.y ||
         t->angle != link->angle) {
         sx_body_set_transform(w, link->body, t->position, t->angle);
@@ -511,6 +516,7 @@ static void sx_ecs_separate_system(ecs_iter_t *it) {
 static void sx_ecs_end_step(ecs_iter_t *it) {
     sx_world *w = ecs_field(it, SxPhysicsWorld, 0)->world;
     const SxPhysicsSettings *s = ecs_field(it, SxPhysicsSettings, 1);
+    sx_world_continuous(w);
     sx_world_clear_forces(w);
     if (s->enable_sleep) sx_world_update_sleep(w, sx_ecs_h(it));
 }
@@ -864,6 +870,29 @@ ecs_entity_t sx_ecs_entity_of(const ecs_world_t *world, sx_body_id body) {
     return sx_ecs_entity_at(st, body);
 }
 
+ecs_entity_t sx_ecs_cast_ray(const ecs_world_t *world, const sx_ray_input *ray,
+                             sx_world_ray_hit *out) {
+    const sx_ecs_state *st = sx_ecs_state_of(world);
+    sx_world_ray_hit hit;
+    if (out != NULL) memset(out, 0, sizeof(*out));
+    if (st == NULL || !sx_world_cast_ray(st->world, ray, &hit)) return 0;
+    if (out != NULL) *out = hit;
+    return sx_ecs_entity_of(world, hit.body);
+}
+
+ecs_entity_t sx_ecs_cast_shape(const ecs_world_t *world, const sx_shape *shape, sx_xform xf,
+                               sx_vec2 translation, const sx_filter *filter,
+                               sx_world_shape_hit *out) {
+    const sx_ecs_state *st = sx_ecs_state_of(world);
+    sx_world_shape_hit hit;
+    if (out != NULL) memset(out, 0, sizeof(*out));
+    if (st == NULL || !sx_world_cast_shape(st->world, shape, xf, translation, filter, &hit)) {
+        return 0;
+    }
+    if (out != NULL) *out = hit;
+    return sx_ecs_entity_of(world, hit.body);
+}
+
 sx_body_id sx_ecs_body_of(const ecs_world_t *world, ecs_entity_t e) {
     const sx_ecs_state *st = sx_ecs_state_of(world);
     const sx_ecs_link *link = st != NULL ? sx_ecs_find(st, e) : NULL;
@@ -898,6 +927,7 @@ static void sx_ecs_reflect(ecs_world_t *world) {
                                    {.name = "angular_damping", .type = real},
                                    {.name = "gravity_scale", .type = real},
                                    {.name = "fixed_rotation", .type = ecs_id(ecs_bool_t)},
+                                   {.name = "bullet", .type = ecs_id(ecs_bool_t)},
                                    {.name = "awake", .type = ecs_id(ecs_bool_t)}}});
     ecs_struct(world, {.entity = ecs_id(SxPhysicsSettings),
                        .members = {{.name = "gravity", .type = vec2},

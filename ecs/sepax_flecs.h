@@ -148,6 +148,9 @@ typedef struct SxBody {
     sx_real angular_damping;
     sx_real gravity_scale;
     bool fixed_rotation;
+    /** As sx_body_def.bullet: swept against dynamic bodies too (continuous
+     *  collision). Changing it takes effect at the next step. */
+    bool bullet;
     /** Output: false while the body sleeps. */
     bool awake;
 } SxBody;
@@ -309,6 +312,18 @@ sx_world *sx_ecs_world(const ecs_world_t *world);
  *  the module's world); 0 for a NULL world, a null or stale handle, or a
  *  body the module did not create. */
 ecs_entity_t sx_ecs_entity_of(const ecs_world_t *world, sx_body_id body);
+/** Casts a ray (sx_world_cast_ray) through the module's world: the entity
+ *  of the closest collider hit (its body's entity, or the static
+ *  collider's), with the hit in *out (may be NULL); 0 for no hit, bad input,
+ *  or a hit on a body the module did not create. */
+ecs_entity_t sx_ecs_cast_ray(const ecs_world_t *world, const sx_ray_input *ray,
+                             sx_world_ray_hit *out);
+/** Casts a shape (sx_world_cast_shape, filter NULL: every collider) through
+ *  the module's world: the entity first hit, with the hit in *out (may be
+ *  NULL); 0 as sx_ecs_cast_ray. */
+ecs_entity_t sx_ecs_cast_shape(const ecs_world_t *world, const sx_shape *shape, sx_xform xf,
+                               sx_vec2 translation, const sx_filter *filter,
+                               sx_world_shape_hit *out);
 /** The module's body of an entity (the null handle before the entity's
  *  first fixed step, after its SxBody or SxCollider is removed, or for a
  *  NULL world). */

@@ -256,6 +256,17 @@ static inline sx_status fz_energy_step(fz_energy *e) {
             e->worst = after - (e->start + e->allowance);
         ++e->sub_steps_run;
     }
+    {
+        /* continuous collision moves bodies back along their paths and
+         * pays for any height regained from their velocities: no allowance
+         * beyond rounding */
+        double scale;
+        if ((st = sx_world_continuous(e->world)) != SX_OK) return st;
+        e->energy = fz_energy_measure(e, &scale);
+        e->allowance += FZ_ENERGY_ROUNDINGS * fz_energy_epsilon() * scale;
+        if (e->energy - (e->start + e->allowance) > e->worst)
+            e->worst = e->energy - (e->start + e->allowance);
+    }
     if ((st = sx_world_clear_forces(e->world)) != SX_OK) return st;
     return sx_world_update_sleep(e->world, (sx_real)e->dt);
 }

@@ -88,6 +88,7 @@ sx_body_def sx_default_body_def(void) {
     d.fixed_rotation = false;
     d.enable_sleep = true;
     d.enabled = true;
+    d.bullet = false;
     d.user_data = NULL;
     return d;
 }
@@ -140,6 +141,7 @@ void sx_body_update_mass(sx_world *world, int slot) {
     sx_real mass = SX_R(0.0), inertia = SX_R(0.0);
     sx_vec2 weighted = sx_v2_zero(), lc = sx_v2_zero();
     int c;
+    sx_ccd_forget(world, slot);
     if (info->type == SX_BODY_DYNAMIC) {
         for (c = info->first_collider; c >= 0; c = world->colliders[c].next) {
             const sx_collider *col = &world->colliders[c];
@@ -306,6 +308,8 @@ sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *ou
     info->enabled = def->enabled;
     info->fixed_rotation = def->fixed_rotation;
     info->enable_sleep = def->enable_sleep;
+    info->bullet = def->bullet;
+    world->bullet_count += def->bullet ? 1 : 0;
     info->type = def->type;
     info->user_data = def->user_data;
     info->first_collider = -1;
@@ -381,6 +385,7 @@ sx_status sx_destroy_body(sx_world *world, sx_body_id body) {
     }
     info->first_collider = -1;
     info->alive = false;
+    world->bullet_count -= info->bullet ? 1 : 0;
     world->sets_dirty = true;
     info->next_free = -1;
     if (sx_generation_next(&info->generation)) {

@@ -382,13 +382,22 @@ sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const un
     return sx_sort_pairs(bp, slot_count);
 }
 
-sx_status sx_broadphase_query(const sx_broadphase *bp, sx_aabb box, int **out, int *count,
-                              int *capacity) {
+sx_status sx_broadphase_query_fixed(const sx_broadphase *bp, sx_aabb box, int **out, int *count,
+                                    int *capacity) {
     const sx_sorted_box *b;
-    int at = -1, i;
+    int at = -1;
     while ((b = sx_fixed_next(bp, box, &at)) != NULL) {
         if (!sx_push_int(out, count, capacity, b->slot)) return SX_ERR_NO_MEMORY;
     }
+    return SX_OK;
+}
+
+sx_status sx_broadphase_query(const sx_broadphase *bp, sx_aabb box, int **out, int *count,
+                              int *capacity) {
+    const sx_sorted_box *b;
+    int i;
+    sx_status s = sx_broadphase_query_fixed(bp, box, out, count, capacity);
+    if (s != SX_OK) return s;
     /* the moving set is small: a plain pass, stopping past box on x */
     for (i = 0; i < bp->order_count; ++i) {
         b = &bp->sorted[i];

@@ -175,6 +175,7 @@ void sx_world_destroy(sx_world *world) {
     sx_free(world->active_bodies, (size_t)world->active_body_capacity * sizeof(int));
     sx_free(world->active_colliders, (size_t)world->active_collider_capacity * sizeof(int));
     sx_broadphase_free(&world->bp);
+    sx_ccd_free(world);
     sx_contacts_free(world);
     sx_free(world->begin_events, (size_t)world->begin_capacity * sizeof(sx_contact_event));
     sx_free(world->end_events, (size_t)world->end_capacity * sizeof(sx_contact_event));
@@ -424,11 +425,6 @@ sx_status sx_world_clear_forces(sx_world *world) {
 }
 
 /* ---- stage 2: collision ------------------------------------------------- */
-
-static bool sx_filters_collide(const sx_filter *a, const sx_filter *b) {
-    if (a->group == b->group && a->group != 0) return a->group > 0;
-    return (a->category & b->mask) != 0 && (b->category & a->mask) != 0;
-}
 
 /* Copies the warm-starting impulses of the old contact's point with the
  * same feature id, if any. */
@@ -780,6 +776,8 @@ sx_status sx_world_collide(sx_world *world) {
     s = sx_broadphase_update(&world->bp, world->aabbs, world->bp_kind, world->collider_slots,
                              world->active_colliders, world->active_collider_count);
     if (s != SX_OK) return s;
+    s = sx_ccd_record(world);
+    if (s != SX_OK) return s;
 
     /* Contacts of sleeping bodies leave the list for the frozen store (the
      * pile keeps its contacts, reports no end events, and warm-starts when it
@@ -960,6 +958,8 @@ sx_status sx_world_step(sx_world *world, sx_real dt) {
         sx_world_integrate(world, h);
         sx_world_separate(world, h);
     }
+    s = sx_world_continuous(world);
+    if (s != SX_OK) return s;
     sx_world_clear_forces(world);
     return sx_world_update_sleep(world, dt);
 }

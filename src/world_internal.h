@@ -47,6 +47,7 @@ typedef struct sx_body_info {
     bool enabled;
     bool fixed_rotation;
     bool enable_sleep;
+    bool bullet; /* swept against dynamic bodies too (world_ccd.c) */
     sx_body_type type;
     sx_real mass, inertia;
     void *user_data;
@@ -277,6 +278,19 @@ typedef struct sx_impact_contact {
     int count;
 } sx_impact_contact;
 
+/* Where a body was when the step's collide ran (world_ccd.c): the
+ * continuous pass sweeps it from there; stamp tells which collide. */
+typedef struct sx_ccd_pose {
+    sx_vec2 center;
+    sx_rot q;
+    sx_vec2 v; /* at collide: the look-ahead its bounds and margins were grown by */
+    uint32_t stamp;
+    /* the body's reach from its centre of mass and thinnest half extent,
+     * kept until its colliders or mass change (ext_valid) */
+    sx_real max_ext, min_ext;
+    bool ext_valid;
+} sx_ccd_pose;
+
 struct sx_world {
     sx_world_def def;
     sx_real linear_slop;
@@ -335,6 +349,19 @@ struct sx_world {
     bool sets_dirty;
 
     sx_broadphase bp;
+
+    /* continuous collision (world_ccd.c): per body slot its pose at the last
+     * collide, the stamp of that collide, and the query scratch */
+    sx_ccd_pose *ccd_poses;
+    int ccd_pose_capacity;
+    uint32_t ccd_stamp;
+    sx_real ccd_dt; /* the step the recorded poses start (0: none) */
+    int ccd_kinematic_moving; /* a kinematic body moves this step (sx_ccd_record) */
+    int *ccd_sweep; /* the bodies to sweep this step */
+    int ccd_sweep_count, ccd_sweep_capacity;
+    int bullet_count; /* live bodies with the bullet flag (body.c, world_ccd.c) */
+    int *ccd_found;
+    int ccd_found_count, ccd_found_capacity;
 
     sx_contact_event *begin_events, *end_events;
     int begin_count, begin_capacity, end_count, end_capacity;
@@ -462,6 +489,22 @@ bool sx_push_int(int **array, int *count, int *capacity, int value);
  * kind and stale bounds with them. */
 sx_status sx_world_refresh_sets(sx_world *world);
 
+/* world_ccd.c */
+/* Records where the moving bodies are, for the continuous pass at the end
+ * of the step (sx_world_collide calls it). */
+sx_status sx_ccd_record(sx_world *world);
+/* Frees its arrays (sx_world_destroy). */
+void sx_ccd_free(sx_world *world);
+/* Forgets body slot's cached extents and pose (its colliders or mass
+ * changed, or it was just created). */
+void sx_ccd_forget(sx_world *world, int slot);
+
+/* True if two collision filters let their colliders collide (sx_filter). */
+static inline bool sx_filters_collide(const sx_filter *a, const sx_filter *b) {
+    if (a->group == b->group && a->group != 0) return a->group > 0;
+    return (a->category & b->mask) != 0 && (b->category & a->mask) != 0;
+}
+
 /* broadphase.c */
 void sx_broadphase_init(sx_broadphase *bp);
 void sx_broadphase_free(sx_broadphase *bp);
@@ -479,6 +522,10 @@ sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const un
  * whose bounds overlap box, in no particular order. */
 sx_status sx_broadphase_query(const sx_broadphase *bp, sx_aabb box, int **out, int *count,
                               int *capacity);
+/* The same for the fixed set only (static colliders, kinematic ones at rest
+ * and sleeping ones): logarithmic, where the moving set is a linear pass. */
+sx_status sx_broadphase_query_fixed(const sx_broadphase *bp, sx_aabb box, int **out, int *count,
+                                    int *capacity);
 
 /* contact_solver.c */
 /* Once per collide: the effective masses and the block-solve matrices of

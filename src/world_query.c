@@ -234,3 +234,105 @@ sx_status sx_world_draw(const sx_world *world, const sx_debug_draw *draw) {
     sx_walk_end(locked);
     return SX_OK;
 }
+
+/* ---- shape casts ---------------------------------------------------------- */
+
+/* The first hit of the cast on collider slot i (the earliest of its parts);
+ * false for a miss. */
+static bool sx_cast_collider(const sx_world *world, int i, const sx_shape *shape, sx_xform xf,
+                             sx_vec2 translation, sx_aabb swept, sx_world_shape_hit *out) {
+    const sx_collider *c = &world->colliders[i];
+    sx_xform bx = world->sims[c->body].xf;
+    sx_compound_part tmp;
+    sx_compound view;
+    bool any = false;
+    int k;
+    if (!sx_aabb_overlaps(sx_collider_aabb(c, bx), swept)) return false;
+    view = sx_collider_compound(c, &tmp);
+    for (k = 0; k < view.count; ++k) {
+        sx_shape_cast_output o;
+        sx_xform px = sx_xform_mul(bx, view.parts[k].offset);
+        if (!sx_aabb_overlaps(sx_shape_aabb(&view.parts[k].shape, px), swept)) continue;
+        if (sx_shape_cast(shape, xf, translation, SX_R(1.0), &view.parts[k].shape, px, &o) !=
+                SX_OK ||
+            !o.hit || (any && !(o.fraction < out->fraction))) {
+            continue;
+        }
+        any = true;
+        sx_handles(world, i, &out->collider, &out->body);
+        out->point = o.point;
+        out->normal = o.normal;
+        out->fraction = o.fraction;
+        out->part = k;
+    }
+    return any;
+}
+
+/* The swept bounds of a cast, false for bad input. */
+static bool sx_cast_bounds(const sx_world *world, const sx_shape *shape, sx_xform xf,
+                           sx_vec2 translation, sx_aabb *swept) {
+    sx_aabb a;
+    sx_xform end = xf;
+    if (world == NULL || shape == NULL || sx_shape_validate(shape) != SX_OK ||
+        !sx_xform_is_finite(xf) || !sx_vec2_is_finite(translation)) {
+        return false;
+    }
+    end.p = sx_add(xf.p, translation);
+    if (!sx_vec2_is_finite(end.p)) return false;
+    a = sx_shape_aabb(shape, xf);
+    *swept = sx_aabb_union(a, sx_shape_aabb(shape, end));
+    return sx_aabb_is_valid(*swept);
+}
+
+static bool sx_cast_sees(const sx_world *world, int i, const sx_filter *filter) {
+    const sx_collider *c = &world->colliders[i];
+    if (!sx_queryable(world, i) || c->sensor) return false;
+    return filter == NULL || sx_filters_collide(filter, &c->filter);
+}
+
+bool sx_world_cast_shape(const sx_world *world, const sx_shape *shape, sx_xform xf,
+                         sx_vec2 translation, const sx_filter *filter, sx_world_shape_hit *out) {
+    sx_aabb swept;
+    sx_xform end;
+    bool any = false;
+    int i;
+    if (out != NULL) memset(out, 0, sizeof(*out));
+    if (out == NULL || !sx_cast_bounds(world, shape, xf, translation, &swept)) return false;
+    for (i = 0; i < world->collider_slots; ++i) {
+        sx_world_shape_hit h;
+        if (!sx_cast_sees(world, i, filter) ||
+            !sx_cast_collider(world, i, shape, xf, translation, swept, &h)) {
+            continue;
+        }
+        /* strictly closer only: equal fractions keep the lower slot */
+        if (any && !(h.fraction < out->fraction)) continue;
+        any = true;
+        *out = h;
+        /* later colliders only matter if they are hit sooner */
+        end = xf;
+        end.p = sx_mul_add(xf.p, h.fraction, translation);
+        swept = sx_aabb_union(sx_shape_aabb(shape, xf), sx_shape_aabb(shape, end));
+    }
+    return any;
+}
+
+int sx_world_cast_shape_all(const sx_world *world, const sx_shape *shape, sx_xform xf,
+                            sx_vec2 translation, const sx_filter *filter, sx_shape_cast_fn *fn,
+                            void *context) {
+    sx_aabb swept;
+    sx_world *locked;
+    int i, found = 0;
+    if (!sx_cast_bounds(world, shape, xf, translation, &swept)) return 0;
+    locked = fn != NULL ? sx_walk_begin(world) : NULL;
+    for (i = 0; i < world->collider_slots; ++i) {
+        sx_world_shape_hit h;
+        if (!sx_cast_sees(world, i, filter) ||
+            !sx_cast_collider(world, i, shape, xf, translation, swept, &h)) {
+            continue;
+        }
+        ++found;
+        if (fn != NULL && (!fn(&h, context) || world->destroy_pending)) break;
+    }
+    if (locked != NULL) sx_walk_end(locked);
+    return found;
+}

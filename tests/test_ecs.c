@@ -958,6 +958,59 @@ static void settings_iterations_reach_the_world(void **state) {
     ecs_fini(world);
 }
 
+/* A bullet entity (SxBody.bullet) knocked into a thin dynamic box by a fast
+ * ball stops at the box, as in the plain world; ray and shape casts through
+ * the module return the entity they hit. */
+static void bullet_flag_and_casts_through_the_module(void **state) {
+    ecs_world_t *world = make_world();
+    ecs_entity_t box, ball, shooter, ground;
+    SxBody *b;
+    sx_ray_input ray;
+    sx_world_ray_hit rh;
+    sx_world_shape_hit sh;
+    sx_shape probe = sx_circle_shape(sx_v2_zero(), SX_R(0.1));
+    int k;
+    (void)state;
+    set_gravity(world, sx_v2_zero());
+    ground = add_ground(world);
+    box = add_dynamic(world, sx_v2(SX_R(0.0), SX_R(3.0)), sx_box_shape(SX_R(0.025), SX_R(1.0)));
+    ball =
+        add_dynamic(world, sx_v2(SX_R(-1.0), SX_R(3.0)), sx_circle_shape(sx_v2_zero(), SX_R(0.05)));
+    shooter =
+        add_dynamic(world, sx_v2(SX_R(-1.5), SX_R(3.0)), sx_circle_shape(sx_v2_zero(), SX_R(0.05)));
+    b = ecs_get_mut(world, ball, SxBody);
+    b->bullet = true;
+    b = ecs_get_mut(world, shooter, SxBody);
+    b->bullet = true;
+    b->velocity = sx_v2(SX_R(300.0), SX_R(0.0));
+    progress(world, 1, 1.0 / 60.0);
+    assert_true(sx_body_is_bullet(sx_ecs_world(world), sx_ecs_body_of(world, ball)));
+    assert_false(sx_body_is_bullet(sx_ecs_world(world), sx_ecs_body_of(world, box)));
+    for (k = 0; k < 10; ++k) {
+        sx_vec2 d;
+        progress(world, 1, 1.0 / 60.0);
+        d = sx_xform_inv_point(
+            sx_body_get_transform(sx_ecs_world(world), sx_ecs_body_of(world, box)),
+            position_of(world, ball));
+        assert_true((double)d.x < -0.075 + 0.01);
+    }
+    /* casts: straight down onto the ground, and sideways onto the box */
+    ray.origin = sx_v2(SX_R(5.0), SX_R(10.0));
+    ray.translation = sx_v2(SX_R(0.0), SX_R(-20.0));
+    ray.max_fraction = SX_R(1.0);
+    assert_true(sx_ecs_cast_ray(world, &ray, &rh) == ground);
+    assert_near(rh.point.y, 0.0, 1e-4);
+    assert_true(sx_ecs_cast_shape(world, &probe,
+                                  sx_xform_make(sx_v2(SX_R(5.0), SX_R(10.0)), SX_R(0.0)),
+                                  sx_v2(SX_R(0.0), SX_R(-20.0)), NULL, &sh) == ground);
+    assert_near(sh.point.y, 0.0, 1e-4);
+    ray.translation = sx_v2(SX_R(0.0), SX_R(5.0));
+    assert_true(sx_ecs_cast_ray(world, &ray, &rh) == 0);
+    assert_false(rh.fraction != SX_R(0.0));
+    assert_true(sx_ecs_cast_shape(world, NULL, sx_xform_identity(), sx_v2_zero(), NULL, &sh) == 0);
+    ecs_fini(world);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(box_falls_onto_static_ground_and_comes_to_rest),
@@ -985,6 +1038,7 @@ int main(void) {
         cmocka_unit_test(the_interpolation_fraction_is_the_accumulator_over_the_step),
         cmocka_unit_test(settings_iterations_reach_the_world),
         cmocka_unit_test(entities_deleted_in_a_query_callback_leave_the_world_at_the_next_step),
+        cmocka_unit_test(bullet_flag_and_casts_through_the_module),
     };
     return cmocka_run_group_tests_name("ecs", tests, sx_test_group_setup, sx_test_group_teardown);
 }

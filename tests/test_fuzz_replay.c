@@ -45,6 +45,9 @@ static void replay_fail(const char *expr, const char *file, int line) {
 #define LLVMFuzzerTestOneInput replay_world_one
 #include "../fuzz/fuzz_world.c"
 #undef LLVMFuzzerTestOneInput
+#define LLVMFuzzerTestOneInput replay_distance_one
+#include "../fuzz/fuzz_distance.c"
+#undef LLVMFuzzerTestOneInput
 
 typedef int replay_fn(const uint8_t *data, size_t size);
 
@@ -52,8 +55,8 @@ typedef int replay_fn(const uint8_t *data, size_t size);
 #define REPLAY_MAX_FILES 512
 #define REPLAY_MAX_BYTES 4096 /* the fuzzers run with -max_len=1024 */
 
-static const char *const replay_corpora[] = {"hull",     "collide",   "query",
-                                             "compound", "decompose", "world"};
+static const char *const replay_corpora[] = {"hull",      "collide", "query",   "compound",
+                                             "decompose", "world",   "distance"};
 
 static int replay_cmp_names(const void *a, const void *b) {
     return strcmp(*(const char *const *)a, *(const char *const *)b);
@@ -139,6 +142,11 @@ static void world_harness_passes_every_corpus_file(void **state) {
     replay_all(replay_world_one, "world");
 }
 
+static void distance_harness_passes_every_corpus_file(void **state) {
+    (void)state;
+    replay_all(replay_distance_one, "distance");
+}
+
 /* The empty input and a run of every byte value decode to something in each
  * harness (the reader pads with zeros), so short or odd files never crash. */
 static void every_harness_accepts_empty_and_all_byte_values(void **state) {
@@ -154,6 +162,7 @@ static void every_harness_accepts_empty_and_all_byte_values(void **state) {
     assert_int_equal(replay_compound_one(NULL, 0), 0);
     assert_int_equal(replay_decompose_one(NULL, 0), 0);
     assert_int_equal(replay_world_one(NULL, 0), 0);
+    assert_int_equal(replay_distance_one(NULL, 0), 0);
     for (i = 0; i < 256; i += 7) {
         assert_int_equal(replay_hull_one(all + i, (size_t)(256 - i)), 0);
         assert_int_equal(replay_collide_one(all + i, (size_t)(256 - i)), 0);
@@ -161,6 +170,7 @@ static void every_harness_accepts_empty_and_all_byte_values(void **state) {
         assert_int_equal(replay_compound_one(all + i, (size_t)(256 - i)), 0);
         assert_int_equal(replay_decompose_one(all + i, (size_t)(256 - i)), 0);
         assert_int_equal(replay_world_one(all + i, (size_t)(256 - i)), 0);
+        assert_int_equal(replay_distance_one(all + i, (size_t)(256 - i)), 0);
     }
 }
 
@@ -172,6 +182,7 @@ int main(void) {
         cmocka_unit_test(compound_harness_passes_every_corpus_file),
         cmocka_unit_test(decompose_harness_passes_every_corpus_file),
         cmocka_unit_test(world_harness_passes_every_corpus_file),
+        cmocka_unit_test(distance_harness_passes_every_corpus_file),
         cmocka_unit_test(every_harness_accepts_empty_and_all_byte_values),
     };
     return cmocka_run_group_tests_name("fuzz_replay", tests, sx_test_group_setup,

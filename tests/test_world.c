@@ -573,6 +573,7 @@ static void stages_called_one_by_one_equal_the_step(void **state) {
             assert_int_equal(sx_world_integrate(wb, h), SX_OK);
             assert_int_equal(sx_world_separate(wb, h), SX_OK);
         }
+        assert_int_equal(sx_world_continuous(wb), SX_OK);
         assert_int_equal(sx_world_clear_forces(wb), SX_OK);
     }
     for (i = 0; i < 8; ++i) {

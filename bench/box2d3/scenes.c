@@ -98,6 +98,7 @@ static int b3_add(void *w, const scene_body *b) {
     bd.position = v2(b->x, b->y);
     bd.rotation = exact_rot(b->angle);
     bd.linearVelocity = v2(b->vx, b->vy);
+    bd.isBullet = b->bullet != 0;
     bd.angularVelocity = (float)b->w;
     b2BodyId id = b2CreateBody(bw->world, &bd);
     if (!add_shape(id, b)) return -1;

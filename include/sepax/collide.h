@@ -302,6 +302,146 @@ typedef struct sx_ray_hit {
  *  a cast whose hit point would overflow sx_real. */
 bool sx_ray_cast(const sx_shape *s, sx_xform x, const sx_ray_input *ray, sx_ray_hit *out);
 
+/* ---- distance, shape cast and time of impact ----------------------------- */
+
+/* These work on the convex cores of the shapes (a circle's centre, a
+ * segment's or capsule's segment, a polygon's vertices) plus their radii, by
+ * GJK on the Minkowski difference of the cores, in A's local frame. Shapes
+ * are checked as the point queries check them: a NULL or unusable shape
+ * (unknown type, negative or non-finite radius, polygon count outside
+ * 3..SX_MAX_POLYGON_VERTICES) answers SX_ERR_INVALID_ARG, a NaN or infinite
+ * coordinate, transform or motion SX_ERR_NONFINITE (also when placing one
+ * shape in the other's frame, or carrying the answer back to world space,
+ * overflows sx_real). On any error the output is zeroed. */
+
+/** Most GJK iterations of one distance query; two cores of at most
+ *  SX_MAX_POLYGON_VERTICES points converge long before (each iteration adds
+ *  a new support pair or stops). */
+#define SX_GJK_MAX_ITERATIONS 32
+
+/** Most conservative-advancement iterations of one shape cast or time of
+ *  impact. A pure translation reaches a flat face in one or two; a grazing
+ *  pass along a curved surface, or a fast turn, needs more. At the cap the
+ *  answer is the last fraction reached, which is never past contact (see
+ *  sx_toi_state). */
+#define SX_TOI_MAX_ITERATIONS 40
+
+/** Where a shape cast stops short of contact while it iterates (the reported
+ *  fraction is then extrapolated to the contact, see sx_shape_cast). */
+#define SX_CAST_TARGET (SX_R(0.1) * SX_LINEAR_SLOP)
+
+/** Tolerance of the stopping test of shape casts and times of impact: they
+ *  stop once the gap is within this above the target separation. */
+#define SX_TOI_TOLERANCE (SX_R(0.05) * SX_LINEAR_SLOP)
+
+/** The distance between two shapes and their closest points. */
+typedef struct sx_distance_output {
+    /** World point of A closest to B, and of B closest to A (on the rounded
+     *  surfaces). Overlapping shapes: both are one point in the overlap. */
+    sx_vec2 point_a, point_b;
+    /** World unit vector from A towards B (point_b - point_a over the
+     *  distance when apart). Overlapping shapes: the contact normal of
+     *  sx_collide (zero in the rare case it finds no point). */
+    sx_vec2 normal;
+    /** Gap in metres, >= 0; 0 when the shapes touch or overlap. */
+    sx_real distance;
+    /** GJK iterations used (1..SX_GJK_MAX_ITERATIONS). */
+    int iterations;
+    /** True when the shapes overlap beyond touching (or their cores cross). */
+    bool overlap;
+} sx_distance_output;
+
+/** The distance between two shapes placed by xa and xb, with their closest
+ *  points and the normal from A to B. Exact for every pair up to rounding:
+ *  GJK finds the closest features of the cores, and the radii are taken off
+ *  along the normal. Symmetric: swapping A and B swaps the points and
+ *  negates the normal. SX_OK, or an error as described above. */
+sx_status sx_shape_distance(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                            sx_distance_output *out);
+
+/** Where a cast shape first touches another. */
+typedef struct sx_shape_cast_output {
+    /** World point of B's surface where A touches it. Starting overlapped:
+     *  a point in the overlap. */
+    sx_vec2 point;
+    /** World unit normal of B's surface at the hit, facing A (against the
+     *  cast). Starting overlapped: the direction of sx_mtv (A's way out), or
+     *  against the translation when the MTV is zero. */
+    sx_vec2 normal;
+    /** A touches B after moving fraction x translation. */
+    sx_real fraction;
+    /** Conservative-advancement iterations used. */
+    int iterations;
+    bool hit;
+} sx_shape_cast_output;
+
+/** Sweeps shape A, placed by xa, along `translation` (world, metres; A does
+ *  not turn) up to max_fraction of it, against shape B placed by xb. On a
+ *  hit out->hit is true and out->fraction in [0, max_fraction] is where the
+ *  rounded surfaces meet: the advancement stops SX_CAST_TARGET short of
+ *  contact (within SX_TOI_TOLERANCE) and extrapolates the last gap along
+ *  the normal, which is exact for a flat face and never past contact for a
+ *  curved one (the gap of two convex shapes under translation is a convex
+ *  function of the fraction). Shapes within SX_CAST_TARGET + SX_TOI_TOLERANCE
+ *  of each other, or overlapping, at the start hit at fraction 0. A zero
+ *  translation hits (at 0) only such shapes. After SX_TOI_MAX_ITERATIONS
+ *  the last fraction reached is reported as a hit (it is short of contact).
+ *  The work happens in A's frame, so shapes far from the origin keep their
+ *  precision. Errors: SX_ERR_INVALID_ARG (NULL, unusable shape,
+ *  max_fraction < 0), SX_ERR_NONFINITE (non-finite transform, translation
+ *  or max_fraction). */
+sx_status sx_shape_cast(const sx_shape *a, sx_xform xa, sx_vec2 translation, sx_real max_fraction,
+                        const sx_shape *b, sx_xform xb, sx_shape_cast_output *out);
+
+/** The motion of a shape over a step: its frame turns about the point
+ *  `local_center` (shape frame, usually a body's centre of mass), which
+ *  moves in a straight line from c0 to c1 (world) while the angle goes
+ *  linearly from angle0 to angle1 (radians; any difference, several turns
+ *  included). At fraction t the frame is q = rot(angle0 + t (angle1 -
+ *  angle0)), p = c0 + t (c1 - c0) - q local_center. */
+typedef struct sx_motion {
+    sx_vec2 local_center;
+    sx_vec2 c0, c1;
+    sx_real angle0, angle1;
+} sx_motion;
+
+/** How a time of impact ended. */
+typedef enum sx_toi_state {
+    SX_TOI_SEPARATED = 0,  /**< no contact over the motion: fraction 1 */
+    SX_TOI_HIT,            /**< gap within target .. target + SX_TOI_TOLERANCE at fraction */
+    SX_TOI_STARTS_CLOSE,   /**< gap already within target + tolerance (or overlap) at 0 */
+    SX_TOI_ITERATION_LIMIT /**< SX_TOI_MAX_ITERATIONS used: fraction is the last
+                                reached, where the gap is still above target */
+} sx_toi_state;
+
+/** The answer of sx_time_of_impact. */
+typedef struct sx_toi_output {
+    sx_toi_state state;
+    /** In [0, 1]: the first fraction of the motions at which the gap comes
+     *  down to the target (see state). */
+    sx_real fraction;
+    /** World unit normal from A to B at that fraction (zero when separated
+     *  or starting overlapped). */
+    sx_vec2 normal;
+    /** World points of A and B closest to each other at that fraction. */
+    sx_vec2 point_a, point_b;
+    int iterations;
+} sx_toi_output;
+
+/** The first fraction of two motions at which shapes A and B come within
+ *  `target` metres (>= 0; a world uses SX_LINEAR_SLOP, so a body stops just
+ *  short of contact, never past it). Conservative advancement: at each
+ *  iteration the gap d and the normal n come from sx_shape_distance's GJK, and the
+ *  motions advance by (d - target) over a bound of how fast any point can
+ *  close the gap along n (the relative velocity of the centres along n plus
+ *  |turn| x the farthest core point from its centre, for each shape), so no
+ *  step can pass the contact. The answer is never past the true time of
+ *  impact (up to rounding); see sx_toi_state for the cases. Errors:
+ *  SX_ERR_INVALID_ARG (NULL, unusable shape, target < 0),
+ *  SX_ERR_NONFINITE (a non-finite motion or target). */
+sx_status sx_time_of_impact(const sx_shape *a, const sx_motion *ma, const sx_shape *b,
+                            const sx_motion *mb, sx_real target, sx_toi_output *out);
+
 #ifdef __cplusplus
 }
 #endif

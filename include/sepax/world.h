@@ -21,7 +21,8 @@
  *   sx_world_integrate(h)     positions from the new velocities
  *   sx_world_separate(h)      positional correction (or the relax pass)
  *
- * and then sx_world_clear_forces() and sx_world_update_sleep(dt). Contacts
+ * and then sx_world_continuous() (fast bodies swept to their time of impact),
+ * sx_world_clear_forces() and sx_world_update_sleep(dt). Contacts
  * are found once per step; inside the sub-steps each contact point's
  * separation follows the bodies' motion (its anchors turn with the bodies,
  * the normal stays), so the sub-steps stay accurate without running the
@@ -299,6 +300,39 @@ sx_status sx_world_apply_forces(sx_world *world, sx_real h);
  *  would pass SX_WORLD_MAX_ITEMS), SX_ERR_LOCKED. */
 sx_status sx_world_collide(sx_world *world);
 
+/** Stage 6 (once per step, after the sub-steps; sx_world_step runs it):
+ *  continuous collision. An awake dynamic body is swept from where it was
+ *  at the step's sx_world_collide to where the sub-steps left it (its centre
+ *  of mass on a straight path, its angle turning evenly) when the
+ *  speculative contacts of that collide may have missed part of its motion:
+ *  it went farther than its speed at collide time allowed, or strayed from
+ *  that straight path (knocked on or deflected), or turned, by more than
+ *  half its thinnest extent at its farthest point (a spinning blade).
+ *  Bullets (sx_body_def.bullet) are swept whenever they move that much. The
+ *  sweep (sx_time_of_impact, target SX_LINEAR_SLOP) runs against static and
+ *  kinematic colliders, and for bullets against dynamic ones too, all at
+ *  their final poses; sensors and filtered pairs are skipped. A body that
+ *  would hit is put back at its earliest time of impact, just short of
+ *  contact: the rest of the step's motion is dropped and its velocity kept
+ *  (the next collide finds the contact and the solver stops it there),
+ *  scaled down just enough to pay for the work gravity and the applied
+ *  force and torque did over the dropped part, so no energy is added (a
+ *  move back its motion cannot pay for, as for a slow body driven by a
+ *  large force, is not made). A body that starts the step
+ *  within the target of a collider is left to its contact until it gets a
+ *  quarter slop deeper than it started (a fast turn pressed into a contact
+ *  can sink that much a step); shapes whose cores already touch are left to
+ *  the contact. Two fast dynamic bodies that are not bullets are not swept
+ *  against each other (their speculative contacts hold them while each
+ *  keeps to its straight path), and a body put back may overlap another
+ *  dynamic body until the next step separates them. A body whose colliders
+ *  or mass change between sx_world_collide and this stage is not swept.
+ *  Slow bodies cost a comparison each. Errors:
+ *  SX_ERR_INVALID_ARG (NULL), SX_ERR_LOCKED, SX_ERR_NO_MEMORY (the query
+ *  scratch could not grow). Without a collide since the last call: SX_OK,
+ *  nothing moves. */
+sx_status sx_world_continuous(sx_world *world);
+
 /** Stage 3: the contacts of the last collide, on velocities. Each point's
  *  separation at the current positions (the anchors of collide time turned
  *  with the bodies; between two dynamic bodies the levers the impulses act
@@ -507,6 +541,11 @@ typedef struct sx_body_def {
      *  player character); default true. The world's enable_sleep still
      *  switches sleeping off for every body. */
     bool enable_sleep;
+    /** A fast body that must not pass through other dynamic bodies either
+     *  (a projectile): continuous collision sweeps it against dynamic bodies
+     *  as well as static and kinematic ones (see sx_world_continuous).
+     *  Default false. */
+    bool bullet;
     void *user_data; /**< returned by sx_body_get_user_data; default NULL */
 } sx_body_def;
 
@@ -570,6 +609,12 @@ bool sx_body_is_awake(const sx_world *world, sx_body_id body);
  *  one wakes again at the next collide). SX_ERR_INVALID_ARG (NULL),
  *  SX_ERR_STALE_HANDLE. Static and kinematic bodies ignore it (SX_OK). */
 sx_status sx_body_set_awake(sx_world *world, sx_body_id body, bool awake);
+
+/** Makes a body a bullet or not (sx_body_def.bullet). SX_ERR_INVALID_ARG
+ *  (NULL world), SX_ERR_STALE_HANDLE. */
+sx_status sx_body_set_bullet(sx_world *world, sx_body_id body, bool bullet);
+/** True if the body is a bullet (false for a stale handle). */
+bool sx_body_is_bullet(const sx_world *world, sx_body_id body);
 
 /** Allows or forbids sleeping for this body (sx_body_def.enable_sleep);
  *  forbidding wakes it. SX_ERR_INVALID_ARG (NULL), SX_ERR_STALE_HANDLE. */
@@ -764,6 +809,41 @@ typedef struct sx_world_ray_hit {
  *  slot). false, with *out zeroed, for no hit or bad input (NULL pointers,
  *  non-finite ray, zero translation). */
 bool sx_world_cast_ray(const sx_world *world, const sx_ray_input *ray, sx_world_ray_hit *out);
+
+/** A hit of a world shape cast. */
+typedef struct sx_world_shape_hit {
+    sx_collider_id collider;
+    sx_body_id body;
+    sx_vec2 point;    /**< world point of the collider's surface where the shape touches it */
+    sx_vec2 normal;   /**< unit surface normal there, facing the cast shape */
+    sx_real fraction; /**< the shape touches after moving fraction x translation */
+    int part;         /**< the compound part hit first (0 for a plain collider) */
+} sx_world_shape_hit;
+
+/** Called for each collider sx_world_cast_shape_all hits; return false to
+ *  stop. The world is locked meanwhile, as during a query callback. */
+typedef bool sx_shape_cast_fn(const sx_world_shape_hit *hit, void *context);
+
+/** Sweeps `shape` placed by xf along `translation` (world, metres; the shape
+ *  does not turn) against every collider whose filter collides with
+ *  `filter` (the rule of sx_filter; NULL: every collider) and returns true
+ *  with the first hit in *out (on equal fractions, the lower collider
+ *  slot). Each collider is cast as sx_shape_cast casts (the fraction is
+ *  where the surfaces meet, never past it; a collider the shape already
+ *  touches or overlaps is hit at fraction 0, with the normal of sx_mtv).
+ *  Sensors are not hit, nor are the colliders of disabled bodies. false,
+ *  with *out zeroed, for no hit or bad input (NULL pointers, an invalid
+ *  shape, a non-finite transform or translation). */
+bool sx_world_cast_shape(const sx_world *world, const sx_shape *shape, sx_xform xf,
+                         sx_vec2 translation, const sx_filter *filter, sx_world_shape_hit *out);
+
+/** As sx_world_cast_shape, but reports every collider the sweep hits (each
+ *  once, with its first hit) in collider-slot order, not sorted by
+ *  fraction. fn may be NULL (just count). Returns the number reported (0 for
+ *  bad input). */
+int sx_world_cast_shape_all(const sx_world *world, const sx_shape *shape, sx_xform xf,
+                            sx_vec2 translation, const sx_filter *filter, sx_shape_cast_fn *fn,
+                            void *context);
 
 /* ---- debug draw ------------------------------------------------------------ */
 
