@@ -220,6 +220,12 @@ static sx_status sx_check_step(const sx_world *world, sx_real h) {
     return SX_OK;
 }
 
+/* How far a moving collider's broadphase box reaches past its bounds, in
+ * linear slops (5 cm at the default scale): a larger box is re-inserted
+ * less often but keeps more candidate pairs to test each step, and makes
+ * the sweep's boxes wider. */
+#define SX_FAT_SLOPS SX_R(10.0)
+
 /* ---- active sets ------------------------------------------------------------ */
 
 /* The fattened bounds of a collider (half the margin on each side: bounds
@@ -768,7 +774,8 @@ sx_status sx_world_collide(sx_world *world) {
     for (i = 0; i < world->active_collider_count; ++i)
         sx_collider_bounds(world, world->active_colliders[i]);
     s = sx_broadphase_update(&world->bp, world->aabbs, world->bp_kind, world->collider_slots,
-                             world->active_colliders, world->active_collider_count);
+                             world->active_colliders, world->active_collider_count,
+                             SX_FAT_SLOPS * world->linear_slop);
     if (s != SX_OK) return s;
 
     /* Contacts of sleeping bodies leave the list for the frozen store (the

@@ -139,7 +139,7 @@ static void broadphase_pairs_equal_brute_force_through_sleep_teleport_create_des
     sx_test_rng rng = sx_test_rng_make(20261123u);
     sx_body_id ids[MAX_IDS];
     int count = 0, step, sub, i, total_pairs = 0, max_pairs = 0, asleep_seen = 0, max_sensed = 0;
-    int kinematic_asleep = 0;
+    int kinematic_asleep = 0, tree_calls = 0, sweep_calls = 0;
     sx_body_id plough;
     sx_shape blade = sx_box_shape(SX_R(1.0), SX_R(0.3));
     sx_world *w;
@@ -280,6 +280,12 @@ static void broadphase_pairs_equal_brute_force_through_sleep_teleport_create_des
                 kinds[k] = expected_kind(w, k);
             assert_int_equal(sx_world_collide(w), SX_OK);
             pairs = check_pairs(w, kinds, &kinematic_asleep);
+            /* the moving colliders' candidates come from the tree or from
+             * the sweep, as many left their fat boxes or few */
+            if (w->bp.tree_valid)
+                ++tree_calls;
+            else
+                ++sweep_calls;
             check_sensors(w);
             if (w->sensor_count > max_sensed) max_sensed = w->sensor_count;
             total_pairs += pairs;
@@ -298,13 +304,17 @@ static void broadphase_pairs_equal_brute_force_through_sleep_teleport_create_des
         }
     }
     printf("  1500 steps: %d pairs checked (at most %d at once; %d of a moving kinematic body with "
-           "a sleeping one), sleeping bodies in %d steps, up to %d sensor overlaps\n",
-           total_pairs, max_pairs, kinematic_asleep, asleep_seen, max_sensed);
+           "a sleeping one), sleeping bodies in %d steps, up to %d sensor overlaps; %d collides "
+           "with the tree, %d with the sweep\n",
+           total_pairs, max_pairs, kinematic_asleep, asleep_seen, max_sensed, tree_calls,
+           sweep_calls);
     /* the scene must exercise what it claims to */
     assert_true(max_pairs > 50);
     assert_true(kinematic_asleep > 20);
     assert_true(asleep_seen > 100);
     assert_true(max_sensed > 3);
+    assert_true(tree_calls > 100);
+    assert_true(sweep_calls > 20);
     sx_world_destroy(w);
 }
 
