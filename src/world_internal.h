@@ -313,6 +313,14 @@ struct sx_world {
     sx_contact *frozen, *thaw;
     int frozen_count, frozen_capacity, thaw_count, thaw_capacity;
     bool thaw_pending;
+    /* the bodies woken since the last thaw (thaw_mark: 1 per listed body
+     * slot, room for every slot); thaw_all: a wake could not be listed, the
+     * thaw tests every frozen contact */
+    int *thaw_bodies;
+    int thaw_body_count, thaw_body_capacity;
+    unsigned char *thaw_mark;
+    int thaw_mark_capacity;
+    bool thaw_all;
     /* Contacts removed since the last collide (a body or collider
      * destroyed): they stay in place with count 0 (body_contacts.c) */
     int contact_dead, frozen_dead;
@@ -342,6 +350,16 @@ struct sx_world {
     int *visitors; /* sensor scratch */
     int visitor_count, visitor_capacity;
     bool sets_dirty;
+    /* Bodies that only woke or fell asleep since the last refresh, while
+     * sets_dirty is false (sx_world_note_awake): the refresh redoes them
+     * and their colliders alone (woken_mark: 1 per listed body slot;
+     * changed, collider_mark, set_scratch, set_keep: its scratch). */
+    int *woken, *changed, *set_scratch;
+    int woken_count, woken_capacity, changed_count, changed_capacity, set_scratch_capacity;
+    unsigned char *woken_mark, *collider_mark;
+    int woken_mark_capacity, collider_mark_capacity;
+    bool *set_keep;
+    int set_keep_capacity;
 
     sx_broadphase bp;
 
@@ -468,8 +486,13 @@ bool sx_push_int(int **array, int *count, int *capacity, int value);
 
 /* world.c */
 /* Rebuilds the active sets if sets_dirty, and every collider's broadphase
- * kind and stale bounds with them. */
+ * kind and stale bounds with them; otherwise redoes the bodies noted by
+ * sx_world_note_awake. */
 sx_status sx_world_refresh_sets(sx_world *world);
+/* Notes that a body woke or fell asleep and nothing else changed: the next
+ * refresh of the active sets redoes it alone (or everything, if memory for
+ * the note runs out). */
+void sx_world_note_awake(sx_world *world, int slot);
 
 /* broadphase.c */
 void sx_broadphase_init(sx_broadphase *bp);
