@@ -370,7 +370,8 @@ static sx_status sx_refresh_woken(sx_world *world) {
     int i, k = world->woken_count, nc = 0;
     void *p;
     sx_status s = SX_OK;
-    qsort(world->woken, (size_t)k, sizeof(int), sx_int_cmp);
+    /* (qsort's array may not be NULL, even for no elements) */
+    if (k > 1) qsort(world->woken, (size_t)k, sizeof(int), sx_int_cmp);
     p = world->set_keep;
     if (!sx_grow_array(&p, &world->set_keep_capacity, k, sizeof(bool))) return SX_ERR_NO_MEMORY;
     world->set_keep = (bool *)p;
@@ -394,7 +395,7 @@ static sx_status sx_refresh_woken(sx_world *world) {
         }
     }
     nc = world->changed_count;
-    qsort(world->changed, (size_t)nc, sizeof(int), sx_int_cmp);
+    if (nc > 1) qsort(world->changed, (size_t)nc, sizeof(int), sx_int_cmp);
     p = world->set_keep;
     if (!sx_grow_array(&p, &world->set_keep_capacity, nc, sizeof(bool))) return SX_ERR_NO_MEMORY;
     world->set_keep = (bool *)p;
