@@ -607,6 +607,12 @@ sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const un
     bp->pair_count = 0;
     s = sx_grow_slots(bp, slot_count);
     if (s != SX_OK) return s;
+    /* many colliders changed at once (a pile fell asleep): the tree is
+     * dropped and built again when needed rather than taken apart leaf by
+     * leaf */
+    if (bp->tree_valid && bp->touched_count > bp->tree.leaf_count / SX_SWEEP_SHARE) {
+        bp->tree_valid = false;
+    }
     /* colliders that changed kind or bounds leave the tree (a moving one
      * comes back below) and look for candidates again */
     for (i = 0; i < bp->touched_count; ++i) {
