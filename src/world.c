@@ -719,6 +719,40 @@ static sx_status sx_push_contact(sx_contact **array, int *count, int *capacity,
 }
 
 /* Moves the sleeping contacts of the current list into the frozen store. */
+/* sx_freeze_contacts when the frozen store is empty and most contacts
+ * freeze (a pile fell asleep), from the first sleeping contact `first`:
+ * the list's buffer becomes the store (the sleeping contacts compacted in
+ * place) and the few awake ones move to the store's old buffer, so the
+ * pile's contacts are neither copied nor written to fresh pages. Same
+ * contents and order as the copying way. */
+static sx_status sx_freeze_by_swap(sx_world *world, int first, int sleeping) {
+    int i, f = 0, m = first, awake = world->contact_count - sleeping;
+    void *p = world->frozen;
+    sx_status s = sx_reserve_array(&p, &world->frozen_capacity, awake, sizeof(sx_contact));
+    sx_contact *list = world->contacts;
+    world->frozen = (sx_contact *)p;
+    if (s != SX_OK) return s;
+    if (first > 0) memcpy(world->frozen, list, (size_t)first * sizeof(sx_contact));
+    for (i = first; i < world->contact_count; ++i) {
+        if (sx_contact_sleeps(world, &list[i])) {
+            if (f != i) list[f] = list[i];
+            ++f;
+        } else {
+            world->frozen[m++] = list[i];
+        }
+    }
+    {
+        int c = world->contact_capacity;
+        world->contacts = world->frozen;
+        world->contact_capacity = world->frozen_capacity;
+        world->contact_count = m;
+        world->frozen = list;
+        world->frozen_capacity = c;
+        world->frozen_count = f;
+    }
+    return SX_OK;
+}
+
 static sx_status sx_freeze_contacts(sx_world *world) {
     int i, n = 0;
     for (i = 0; i < world->contact_count; ++i) {
@@ -726,13 +760,19 @@ static sx_status sx_freeze_contacts(sx_world *world) {
         if (sx_contact_sleeps(world, c)) {
             sx_status s;
             if (n == i) {
-                /* the first to freeze: room for all that may follow, in one
-                 * allocation (a pile of 20,000 falling asleep at once grew
-                 * the store seven times, 15 MB of copies and fresh pages) */
+                /* the first to freeze (rare: a step where bodies fell
+                 * asleep): how many follow decides the way */
+                int j, sleeping = 0;
                 void *p = world->frozen;
+                for (j = i; j < world->contact_count; ++j)
+                    sleeping += sx_contact_sleeps(world, &world->contacts[j]) ? 1 : 0;
+                if (world->frozen_count == 0 && sleeping > world->contact_count / 2) {
+                    return sx_freeze_by_swap(world, i, sleeping);
+                }
+                /* room for all that follow in one allocation (a pile of
+                 * 20,000 falling asleep grew the store seven times) */
                 s = sx_reserve_array(&p, &world->frozen_capacity,
-                                     world->frozen_count + world->contact_count - i,
-                                     sizeof(sx_contact));
+                                     world->frozen_count + sleeping, sizeof(sx_contact));
                 world->frozen = (sx_contact *)p;
                 if (s != SX_OK) return s;
             }
