@@ -1,55 +1,68 @@
 /* sepax — the broadphase: which collider pairs are worth a narrowphase call.
  *
- * Two sets (world_internal.h has the layout). The colliders the step moves
- * are swept on x: kept in an array ordered by the lower x of their
- * (fattened) bounds, an order that survives from one call to the next, so
- * the insertion sort that restores it costs about one pass when bodies move
- * a little per step; the sweep visits, for each collider, only the colliders
- * whose lower x lies inside its x extent and tests their y extents. Each
- * moving collider then searches the set of fixed and sleeping colliders,
- * sorted by lower x, from the first box that could reach it (binary search,
- * bounded by the widest narrow box), plus the short list of wide boxes (over
- * 8 times the median width: grounds, walls). That set changes only when a
- * collider joins it, leaves it or is moved while in it: the entries of those
- * colliders are redone and merged in (linear in the set, once per change,
- * not per step), so a sleeping pile or a static level costs nothing per
- * step. Measured (2026-11-23, 2 shared cores) against the single sweep over
- * every collider it replaced: mostly_asleep (20,000 sleeping boxes and 200
- * falling ones) cost 38.8 times the 200 alone with one sweep, 1.3 to 2.0
- * times with the two sets; on the all-awake rain scaling scene the two are
- * level (16,000 bodies: 24.7 and 24.6 ms per step), and sorting newcomers
- * apart cut the first step of 64,000 bodies created in a grid from 4.6 s
- * (insertion sort, quadratic) to 62 ms. The rain scene's ms per step grows
- * with a log-log slope of 0.76 to 1.00 (two runs) from 1,000 to 64,000
- * bodies. Enlarged bounds for moving colliders (kept while the body stays
- * inside them, as in a dynamic tree) were measured too: 0.05 m and 0.1 m
- * extensions gave 27.9 and 28.3 ms per step on 16,000 settled bodies against
- * 28.2 recomputing every collide, and 9.7 to 10.1 against 9.9 while they
- * fall: no gain, and more narrowphase pairs; recomputing keeps the sweep
- * exact. Pairs with no awake dynamic collider (static-static,
- * static-kinematic, kinematic-kinematic, anything with a sleeping body) are
- * not reported: nothing there can respond; the one exception is a moving
- * kinematic body meeting a sleeping one, which must wake it. Pairs come out sorted by key, so the
- * contact list and the solver's order are the same on every run (determinism). */
+ * Two sets (world_internal.h has the layout). The fixed and sleeping
+ * colliders sit in an array sorted by lower x, searched from the first box
+ * that could reach a query (binary search, bounded by the widest narrow
+ * box), plus the short list of wide boxes (over 8 times the median width:
+ * grounds, walls); that set changes only when a collider joins it, leaves
+ * it or is moved while in it, so a sleeping pile or a static level costs
+ * nothing per step.
+ *
+ * The moving colliders have fat boxes: their bounds grown by a margin,
+ * kept while the bounds stay inside. While few leave their fat box per
+ * call (a resting pile, a few bodies moving through a level), they live in
+ * a dynamic AABB tree (aabb_tree.c) and the pairs whose fat boxes overlap
+ * (the candidates) persist from call to call in a list sorted by key: only
+ * the colliders re-inserted or changed (kind, bounds) query the tree and
+ * the fixed set for new candidates, which are sorted and merged in while
+ * the candidates whose fat boxes parted drop out, and the answer is the
+ * candidates whose exact bounds overlap. When many leave their fat box (a
+ * rain: a query each would cost more), the call sweeps the moving bounds on
+ * x instead, in an order kept from call to call so its insertion sort costs
+ * about one pass, and queries the fixed set with each; the tree and the
+ * candidates are rebuilt when the world calms down (with hysteresis: the
+ * rebuild costs a query per collider). Either way the answer is the pairs
+ * whose bounds overlap, the same as testing every collider against every
+ * other, in key order, so contacts, solver order and the determinism
+ * hashes depend on neither the margin, nor the tree's shape, nor the mode.
+ * The x sweep alone visited every collider in an x range: a tall pile made
+ * that O(n) per collider every step.
+ *
+ * Pairs with no awake dynamic collider (static-static, static-kinematic,
+ * kinematic-kinematic, anything with a sleeping body) are not reported:
+ * nothing there can respond; the one exception is a moving kinematic body
+ * meeting a sleeping one, which must wake it. */
 #include <stdlib.h>
 
 #include "world_internal.h"
 
-void sx_broadphase_init(sx_broadphase *bp) { memset(bp, 0, sizeof(*bp)); }
+void sx_broadphase_init(sx_broadphase *bp) {
+    memset(bp, 0, sizeof(*bp));
+    sx_tree_init(&bp->tree);
+}
 
 void sx_broadphase_free(sx_broadphase *bp) {
+    sx_tree_free(&bp->tree);
     sx_free(bp->order, (size_t)bp->order_capacity * sizeof(int));
+    sx_free(bp->sorted, (size_t)bp->sorted_capacity * sizeof(sx_sorted_box));
     sx_free(bp->mark, (size_t)bp->mark_capacity);
+    sx_free(bp->proxy, (size_t)bp->proxy_capacity * sizeof(int));
+    sx_free(bp->fat, (size_t)bp->fat_capacity * sizeof(sx_aabb));
+    sx_free(bp->qmark, (size_t)bp->qmark_capacity);
+    sx_free(bp->requery, (size_t)bp->requery_capacity * sizeof(int));
+    sx_free(bp->hits, (size_t)bp->hit_capacity * sizeof(int));
+    sx_free(bp->cand, (size_t)bp->cand_capacity * sizeof(uint64_t));
+    sx_free(bp->cand_next, (size_t)bp->cand_next_capacity * sizeof(uint64_t));
+    sx_free(bp->fresh, (size_t)bp->fresh_capacity * sizeof(uint64_t));
     sx_free(bp->pairs, (size_t)bp->pair_capacity * sizeof(uint64_t));
     sx_free(bp->scratch, (size_t)bp->scratch_capacity * sizeof(uint64_t));
-    sx_free(bp->sorted, (size_t)bp->sorted_capacity * sizeof(sx_sorted_box));
     sx_free(bp->fixed, (size_t)bp->fixed_capacity * sizeof(sx_sorted_box));
     sx_free(bp->fixed_next, (size_t)bp->fixed_next_capacity * sizeof(sx_sorted_box));
     sx_free(bp->added, (size_t)bp->added_capacity * sizeof(sx_sorted_box));
     sx_free(bp->wide, (size_t)bp->wide_capacity * sizeof(int));
     sx_free(bp->touched, (size_t)bp->touched_capacity * sizeof(int));
     sx_free(bp->tmark, (size_t)bp->tmark_capacity);
-    memset(bp, 0, sizeof(*bp));
+    sx_broadphase_init(bp);
 }
 
 static bool sx_kinds_pair(unsigned char a, unsigned char b) {
@@ -58,11 +71,11 @@ static bool sx_kinds_pair(unsigned char a, unsigned char b) {
            (a == SX_BP_ASLEEP && b == SX_BP_MOVING_KINEMATIC);
 }
 
-/* Sorts the pair keys ascending: an LSD radix sort over the packed key
- * (lo << bits | hi, bits enough for any slot), a byte per pass. Linear in
- * the pairs, and it needs no comparison callback. */
-static sx_status sx_sort_pairs(sx_broadphase *bp, int slot_count) {
-    int bits = 1, passes, pass, i, n = bp->pair_count;
+/* Sorts the new candidates' keys ascending: an LSD radix sort over the
+ * packed key (lo << bits | hi, bits enough for any slot), a byte per pass.
+ * Linear in the pairs, and it needs no comparison callback. */
+static sx_status sx_sort_fresh(sx_broadphase *bp, int slot_count) {
+    int bits = 1, passes, pass, i, n = bp->fresh_count;
     uint64_t *src, *dst;
     void *p;
     bool ok;
@@ -74,10 +87,10 @@ static sx_status sx_sort_pairs(sx_broadphase *bp, int slot_count) {
     bp->scratch = (uint64_t *)p;
     if (!ok) return SX_ERR_NO_MEMORY;
     for (i = 0; i < n; ++i) {
-        uint64_t k = bp->pairs[i];
-        bp->pairs[i] = ((k >> 32) << bits) | (k & 0xFFFFFFFFu);
+        uint64_t k = bp->fresh[i];
+        bp->fresh[i] = ((k >> 32) << bits) | (k & 0xFFFFFFFFu);
     }
-    src = bp->pairs;
+    src = bp->fresh;
     dst = bp->scratch;
     passes = (2 * bits + 7) / 8;
     for (pass = 0; pass < passes; ++pass) {
@@ -97,21 +110,21 @@ static sx_status sx_sort_pairs(sx_broadphase *bp, int slot_count) {
     }
     for (i = 0; i < n; ++i) {
         uint64_t k = src[i];
-        bp->pairs[i] = ((k >> bits) << 32) | (k & (((uint64_t)1 << bits) - 1u));
+        bp->fresh[i] = ((k >> bits) << 32) | (k & (((uint64_t)1 << bits) - 1u));
     }
     return SX_OK;
 }
 
-static sx_status sx_add_pair(sx_broadphase *bp, int a, int b) {
-    void *p = bp->pairs;
+static sx_status sx_add_fresh(sx_broadphase *bp, int a, int b) {
+    void *p = bp->fresh;
     int lo = a < b ? a : b, hi = a < b ? b : a;
-    if (bp->pair_count == bp->pair_capacity) {
+    if (bp->fresh_count == bp->fresh_capacity) {
         sx_status s =
-            sx_reserve_array(&p, &bp->pair_capacity, bp->pair_count + 1, sizeof(uint64_t));
-        bp->pairs = (uint64_t *)p;
+            sx_reserve_array(&p, &bp->fresh_capacity, bp->fresh_count + 1, sizeof(uint64_t));
+        bp->fresh = (uint64_t *)p;
         if (s != SX_OK) return s;
     }
-    bp->pairs[bp->pair_count++] = ((uint64_t)(uint32_t)lo << 32) | (uint64_t)(uint32_t)hi;
+    bp->fresh[bp->fresh_count++] = ((uint64_t)(uint32_t)lo << 32) | (uint64_t)(uint32_t)hi;
     return SX_OK;
 }
 
@@ -222,10 +235,6 @@ static sx_status sx_update_fixed(sx_broadphase *bp, const sx_aabb *aabbs, const 
     return SX_OK;
 }
 
-static bool sx_y_overlap(const sx_aabb *a, const sx_aabb *b) {
-    return !(b->lower.y > a->upper.y || b->upper.y < a->lower.y);
-}
-
 /* Walks the fixed set's boxes that overlap `box`: the narrow ones from the
  * first whose lower x could reach it (binary search, bounded by the widest
  * narrow box), then the wide list. Start with *at = -1; NULL at the end. */
@@ -266,36 +275,157 @@ static const sx_sorted_box *sx_fixed_next(const sx_broadphase *bp, sx_aabb box, 
     return NULL;
 }
 
-/* Pairs one moving box with the fixed set. */
-static sx_status sx_query_fixed(sx_broadphase *bp, const sx_sorted_box *a) {
-    const sx_sorted_box *b;
-    int at = -1;
-    while ((b = sx_fixed_next(bp, a->box, &at)) != NULL) {
-        if (!sx_kinds_pair(a->kind, b->kind)) continue;
-        if (sx_add_pair(bp, a->slot, b->slot) != SX_OK) return SX_ERR_NO_MEMORY;
+/* Above one in this many moving colliders out of their fat box in one
+ * call, the call sweeps instead of using the tree. */
+#define SX_SWEEP_SHARE 4
+#define SX_CALM_CALLS 8
+
+/* Grows the per-slot arrays to slot_count: new proxies -1, new marks 0. */
+static sx_status sx_grow_slots(sx_broadphase *bp, int slot_count) {
+    int old = bp->proxy_capacity, i;
+    void *p = bp->proxy;
+    bool ok = sx_grow_array(&p, &bp->proxy_capacity, slot_count, sizeof(int));
+    bp->proxy = (int *)p;
+    if (!ok) return SX_ERR_NO_MEMORY;
+    for (i = old; i < bp->proxy_capacity; ++i)
+        bp->proxy[i] = -1;
+    p = bp->fat;
+    ok = sx_grow_array(&p, &bp->fat_capacity, slot_count, sizeof(sx_aabb));
+    bp->fat = (sx_aabb *)p;
+    if (!ok) return SX_ERR_NO_MEMORY;
+    p = bp->qmark;
+    ok = sx_grow_zeroed(&p, &bp->qmark_capacity, slot_count, 1);
+    bp->qmark = (unsigned char *)p;
+    return ok ? SX_OK : SX_ERR_NO_MEMORY;
+}
+
+/* Queues a slot to look for new candidates (once per call). */
+static sx_status sx_requery(sx_broadphase *bp, int slot) {
+    if (bp->qmark[slot]) return SX_OK;
+    if (!sx_push_int(&bp->requery, &bp->requery_count, &bp->requery_capacity, slot)) {
+        return SX_ERR_NO_MEMORY;
+    }
+    bp->qmark[slot] = 1;
+    return SX_OK;
+}
+
+/* The tree box of a moving collider: its bounds grown by the margin. A
+ * collider whose bounds are not finite gets the whole plane, so it meets
+ * every collider, as sx_aabb_overlaps says its bounds do. */
+static sx_aabb sx_fat_box(sx_aabb b, sx_real margin) {
+    if (!(sx_vec2_is_finite(b.lower) && sx_vec2_is_finite(b.upper))) {
+        return sx_aabb_make(sx_v2(-SX_REAL_MAX, -SX_REAL_MAX), sx_v2(SX_REAL_MAX, SX_REAL_MAX));
+    }
+    return sx_aabb_fatten(b, margin);
+}
+
+/* Appends to bp->hits the moving colliders of the sweep order whose
+ * bounds overlap box: from the first whose lower x could reach it (binary
+ * search, bounded by the widest box) to the first past it. */
+static sx_status sx_sorted_hits(sx_broadphase *bp, sx_aabb box) {
+    const sx_real from = box.lower.x - bp->sorted_width;
+    int i = 0, hi = bp->order_count;
+    while (i < hi) {
+        int mid = i + (hi - i) / 2;
+        if (bp->sorted[mid].box.lower.x < from)
+            i = mid + 1;
+        else
+            hi = mid;
+    }
+    for (; i < bp->order_count; ++i) {
+        const sx_sorted_box *b = &bp->sorted[i];
+        if (b->box.lower.x > box.upper.x) break;
+        if (sx_aabb_overlaps(box, b->box) &&
+            !sx_push_int(&bp->hits, &bp->hit_count, &bp->hit_capacity, b->slot)) {
+            return SX_ERR_NO_MEMORY;
+        }
     }
     return SX_OK;
 }
 
-sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const unsigned char *kind,
-                               int slot_count, const int *moving, int moving_count) {
-    void *p;
-    int i, n = 0;
-    bool ok;
+/* The new candidates of a queued slot a: hits (in bp->hits) of kinds that
+ * pair, and for a moving collider its fixed-set candidates too (fixed and
+ * sleeping colliders never pair among themselves). */
+static sx_status sx_fresh_of(sx_broadphase *bp, const unsigned char *kind, int a) {
+    int k;
     sx_status s;
-    bp->pair_count = 0;
-    s = sx_update_fixed(bp, aabbs, kind, slot_count);
-    if (s != SX_OK) return s;
-    p = bp->mark;
-    ok = sx_grow_zeroed(&p, &bp->mark_capacity, slot_count, 1);
+    for (k = 0; k < bp->hit_count; ++k) {
+        int b = bp->hits[k];
+        if (b == a || !sx_kinds_pair(kind[a], kind[b])) continue;
+        s = sx_add_fresh(bp, a, b);
+        if (s != SX_OK) return s;
+    }
+    if (!sx_is_fixed_kind(kind[a])) {
+        const sx_sorted_box *f;
+        int at = -1;
+        while ((f = sx_fixed_next(bp, bp->fat[a], &at)) != NULL) {
+            if (!sx_kinds_pair(kind[a], f->kind)) continue;
+            s = sx_add_fresh(bp, a, f->slot);
+            if (s != SX_OK) return s;
+        }
+    }
+    return SX_OK;
+}
+
+/* Few moving colliders left their fat box: they are re-inserted in the
+ * tree (built whole if the last call swept), and the queued slots query
+ * it. */
+static sx_status sx_tree_moving(sx_broadphase *bp, const unsigned char *kind, const int *moving,
+                                int moving_count) {
+    int i;
+    sx_status s;
+    /* the sweep order goes stale while the tree serves: the next sweep
+     * sorts afresh rather than insertion-sort an order long out of date */
+    bp->order_count = 0;
+    if (!bp->tree_valid) {
+        /* after a sweep: the tree and the candidates are found afresh */
+        s = sx_tree_build(&bp->tree, moving, bp->fat, moving_count, bp->proxy);
+        if (s != SX_OK) return s;
+        bp->tree_valid = true;
+        bp->cand_count = 0;
+        for (i = 0; i < moving_count; ++i) {
+            s = sx_requery(bp, moving[i]);
+            if (s != SX_OK) return s;
+        }
+    } else {
+        for (i = 0; i < moving_count; ++i) {
+            int m = moving[i];
+            if (!bp->qmark[m]) continue;
+            if (bp->proxy[m] >= 0) sx_tree_remove(&bp->tree, bp->proxy[m]);
+            bp->proxy[m] = sx_tree_insert(&bp->tree, bp->fat[m], m);
+            if (bp->proxy[m] < 0) return SX_ERR_NO_MEMORY;
+        }
+    }
+    bp->fresh_count = 0;
+    for (i = 0; i < bp->requery_count; ++i) {
+        int a = bp->requery[i];
+        bp->qmark[a] = 0;
+        bp->hit_count = 0;
+        s = sx_tree_query(&bp->tree, bp->fat[a], &bp->hits, &bp->hit_count, &bp->hit_capacity);
+        if (s == SX_OK) s = sx_fresh_of(bp, kind, a);
+        if (s != SX_OK) return s;
+    }
+    bp->requery_count = 0;
+    return SX_OK;
+}
+
+/* Puts the moving colliders' fat boxes in sweep order (by lower x, ties by
+ * slot): last call's order for those still moving, restored by an
+ * insertion sort (about one pass: few boxes changed), and the newcomers
+ * sorted on their own and merged in (a thousand bodies created in a grid
+ * would make the insertion sort quadratic). */
+static sx_status sx_order_moving(sx_broadphase *bp, const sx_aabb *boxes,
+                                 const unsigned char *kind, int slot_count, const int *moving,
+                                 int moving_count) {
+    void *p = bp->mark;
+    int i, j, n = 0, out = 0;
+    bool ok = sx_grow_zeroed(&p, &bp->mark_capacity, slot_count, 1);
     bp->mark = (unsigned char *)p;
     if (!ok) return SX_ERR_NO_MEMORY;
     p = bp->order;
     ok = sx_grow_array(&p, &bp->order_capacity, moving_count + 1, sizeof(int));
     bp->order = (int *)p;
     if (!ok) return SX_ERR_NO_MEMORY;
-
-    /* keep last call's order for the colliders still moving */
     for (i = 0; i < moving_count; ++i)
         bp->mark[moving[i]] = 1;
     for (i = 0; i < bp->order_count; ++i) {
@@ -305,23 +435,19 @@ sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const un
             bp->mark[c] = 2;
         }
     }
-    /* insertion sort of those by lower x (ties broken by slot so the order
-     * is total): about one pass, as they moved a little since */
     for (i = 1; i < n; ++i) {
-        int c = bp->order[i], j = i - 1;
-        sx_real x = aabbs[c].lower.x;
+        int c = bp->order[i];
+        sx_real x = boxes[c].lower.x;
+        j = i - 1;
         while (j >= 0) {
             int d = bp->order[j];
-            sx_real y = aabbs[d].lower.x;
+            sx_real y = boxes[d].lower.x;
             if (y < x || (y == x && d < c)) break;
             bp->order[j + 1] = d;
             --j;
         }
         bp->order[j + 1] = c;
     }
-    /* the newcomers (woken, created, started) sorted on their own and
-     * merged in: a thousand bodies created in a grid would make the
-     * insertion sort quadratic */
     bp->added_count = 0;
     for (i = 0; i < moving_count; ++i) {
         int c = moving[i];
@@ -330,7 +456,7 @@ sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const un
             ok = sx_grow_array(&p, &bp->added_capacity, bp->added_count + 1, sizeof(sx_sorted_box));
             bp->added = (sx_sorted_box *)p;
             if (!ok) return SX_ERR_NO_MEMORY;
-            bp->added[bp->added_count].box = aabbs[c];
+            bp->added[bp->added_count].box = boxes[c];
             bp->added[bp->added_count].slot = c;
             bp->added[bp->added_count++].kind = kind[c];
         }
@@ -338,48 +464,88 @@ sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const un
     }
     if (bp->added_count > 1)
         qsort(bp->added, (size_t)bp->added_count, sizeof(sx_sorted_box), sx_box_cmp);
-
     p = bp->sorted;
     ok = sx_grow_array(&p, &bp->sorted_capacity, n + bp->added_count, sizeof(sx_sorted_box));
     bp->sorted = (sx_sorted_box *)p;
     if (!ok) return SX_ERR_NO_MEMORY;
-    {
-        int j = 0, out = 0;
-        for (i = 0; i < n; ++i) {
-            sx_sorted_box e;
-            e.box = aabbs[bp->order[i]];
+    bp->sorted_width = SX_R(0.0);
+    for (i = 0, j = 0; i <= n; ++i) {
+        sx_sorted_box e;
+        if (i < n) {
+            e.box = boxes[bp->order[i]];
             e.slot = bp->order[i];
             e.kind = kind[e.slot];
-            while (j < bp->added_count && sx_box_before(&bp->added[j], &e))
-                bp->sorted[out++] = bp->added[j++];
-            bp->sorted[out++] = e;
         }
-        while (j < bp->added_count)
+        while (j < bp->added_count && (i == n || sx_box_before(&bp->added[j], &e)))
             bp->sorted[out++] = bp->added[j++];
-        n = out;
+        if (i < n) bp->sorted[out++] = e;
     }
     p = bp->order;
-    ok = sx_grow_array(&p, &bp->order_capacity, n, sizeof(int));
+    ok = sx_grow_array(&p, &bp->order_capacity, out, sizeof(int));
     bp->order = (int *)p;
     if (!ok) return SX_ERR_NO_MEMORY;
-    for (i = 0; i < n; ++i)
+    for (i = 0; i < out; ++i) {
+        const sx_aabb *b = &bp->sorted[i].box;
         bp->order[i] = bp->sorted[i].slot;
-    bp->order_count = n;
+        bp->sorted_width = sx_maxr(bp->sorted_width, b->upper.x - b->lower.x);
+    }
+    bp->order_count = out;
+    return SX_OK;
+}
 
+/* Many moving colliders left their fat box (a rain, a scene's first step):
+ * re-inserting and querying them all would cost more than a sweep, which
+ * finds every pair of moving bounds that overlap, cache-friendly, in one
+ * pass over the x order, and then each moving collider's fixed-set pairs.
+ * That is the answer itself (no candidates kept: the call that next uses
+ * the tree builds it and finds the candidates afresh). */
+static sx_status sx_sweep_moving(sx_broadphase *bp, const sx_aabb *aabbs,
+                                 const unsigned char *kind, int slot_count, const int *moving,
+                                 int moving_count) {
+    int i, j, n;
+    sx_status s = sx_order_moving(bp, aabbs, kind, slot_count, moving, moving_count);
+    if (s != SX_OK) return s;
+    bp->tree_valid = false;
+    bp->cand_count = 0;
+    for (i = 0; i < bp->requery_count; ++i)
+        bp->qmark[bp->requery[i]] = 0;
+    bp->requery_count = 0;
+    for (i = 0; i < moving_count; ++i)
+        bp->proxy[moving[i]] = 0; /* has a fat box; no leaf */
+    bp->fresh_count = 0;
+    n = bp->order_count;
     for (i = 0; i < n; ++i) {
         const sx_sorted_box *a = &bp->sorted[i];
-        int j;
+        const sx_sorted_box *f;
+        int at = -1;
         for (j = i + 1; j < n; ++j) {
             const sx_sorted_box *b = &bp->sorted[j];
             if (b->box.lower.x > a->box.upper.x) break;
             if (!sx_kinds_pair(a->kind, b->kind)) continue;
-            if (!sx_y_overlap(&a->box, &b->box)) continue;
-            if (sx_add_pair(bp, a->slot, b->slot) != SX_OK) return SX_ERR_NO_MEMORY;
+            if (b->box.lower.y > a->box.upper.y || b->box.upper.y < a->box.lower.y) continue;
+            s = sx_add_fresh(bp, a->slot, b->slot);
+            if (s != SX_OK) return s;
         }
-        s = sx_query_fixed(bp, a);
-        if (s != SX_OK) return s;
+        while ((f = sx_fixed_next(bp, a->box, &at)) != NULL) {
+            if (!sx_kinds_pair(a->kind, f->kind)) continue;
+            s = sx_add_fresh(bp, a->slot, f->slot);
+            if (s != SX_OK) return s;
+        }
     }
-    return sx_sort_pairs(bp, slot_count);
+    s = sx_sort_fresh(bp, slot_count);
+    if (s != SX_OK) return s;
+    {
+        /* the sorted pairs are the answer */
+        uint64_t *t = bp->pairs;
+        int c = bp->pair_capacity;
+        bp->pairs = bp->fresh;
+        bp->pair_capacity = bp->fresh_capacity;
+        bp->pair_count = bp->fresh_count;
+        bp->fresh = t;
+        bp->fresh_capacity = c;
+        bp->fresh_count = 0;
+    }
+    return SX_OK;
 }
 
 sx_status sx_broadphase_query_fixed(const sx_broadphase *bp, sx_aabb box, int **out, int *count,
@@ -392,17 +558,137 @@ sx_status sx_broadphase_query_fixed(const sx_broadphase *bp, sx_aabb box, int **
     return SX_OK;
 }
 
-sx_status sx_broadphase_query(const sx_broadphase *bp, sx_aabb box, int **out, int *count,
-                              int *capacity) {
-    const sx_sorted_box *b;
-    int i;
-    sx_status s = sx_broadphase_query_fixed(bp, box, out, count, capacity);
+/* Merges the sorted new candidates into the kept ones (those still in
+ * range, of kinds that pair, with fat boxes that overlap) and writes the
+ * answer: the candidates whose exact bounds overlap, in key order. */
+static sx_status sx_merge_candidates(sx_broadphase *bp, const sx_aabb *aabbs,
+                                     const unsigned char *kind, int slot_count) {
+    int i = 0, j = 0, out = 0, need = bp->cand_count + bp->fresh_count;
+    void *p = bp->cand_next;
+    bool ok = sx_grow_array(&p, &bp->cand_next_capacity, need, sizeof(uint64_t));
+    bp->cand_next = (uint64_t *)p;
+    if (!ok) return SX_ERR_NO_MEMORY;
+    p = bp->pairs;
+    ok = sx_grow_array(&p, &bp->pair_capacity, need, sizeof(uint64_t));
+    bp->pairs = (uint64_t *)p;
+    if (!ok) return SX_ERR_NO_MEMORY;
+    bp->pair_count = 0;
+    while (i < bp->cand_count || j < bp->fresh_count) {
+        uint64_t key;
+        int a, b;
+        if (j >= bp->fresh_count || (i < bp->cand_count && bp->cand[i] < bp->fresh[j])) {
+            key = bp->cand[i++];
+            a = (int)(key >> 32);
+            b = (int)(key & 0xFFFFFFFFu);
+            if (b >= slot_count || kind[a] == SX_BP_OUT || kind[b] == SX_BP_OUT ||
+                !sx_kinds_pair(kind[a], kind[b]) ||
+                !sx_aabb_overlaps(bp->fat[a], bp->fat[b])) {
+                continue;
+            }
+        } else {
+            /* found by a query: valid as it is; once, whatever repeats it */
+            key = bp->fresh[j];
+            while (j < bp->fresh_count && bp->fresh[j] == key)
+                ++j;
+            if (i < bp->cand_count && bp->cand[i] == key) ++i;
+            a = (int)(key >> 32);
+            b = (int)(key & 0xFFFFFFFFu);
+        }
+        bp->cand_next[out++] = key;
+        if (sx_aabb_overlaps(aabbs[a], aabbs[b])) bp->pairs[bp->pair_count++] = key;
+    }
+    {
+        uint64_t *t = bp->cand;
+        int c = bp->cand_capacity;
+        bp->cand = bp->cand_next;
+        bp->cand_capacity = bp->cand_next_capacity;
+        bp->cand_next = t;
+        bp->cand_next_capacity = c;
+    }
+    bp->cand_count = out;
+    return SX_OK;
+}
+
+sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const unsigned char *kind,
+                               int slot_count, const int *moving, int moving_count,
+                               sx_real fat_margin) {
+    int i, escaped;
+    sx_status s;
+    bp->pair_count = 0;
+    s = sx_grow_slots(bp, slot_count);
     if (s != SX_OK) return s;
-    /* the moving set is small: a plain pass, stopping past box on x */
-    for (i = 0; i < bp->order_count; ++i) {
-        b = &bp->sorted[i];
-        if (b->box.lower.x > box.upper.x) break;
-        if (sx_aabb_overlaps(box, b->box) && !sx_push_int(out, count, capacity, b->slot)) {
+    /* many colliders changed at once (a pile fell asleep): the tree is
+     * dropped and built again when needed rather than taken apart leaf by
+     * leaf */
+    if (bp->tree_valid && bp->touched_count > bp->tree.leaf_count / SX_SWEEP_SHARE) {
+        bp->tree_valid = false;
+    }
+    /* colliders that changed kind or bounds leave the tree (a moving one
+     * comes back below) and look for candidates again */
+    for (i = 0; i < bp->touched_count; ++i) {
+        int slot = bp->touched[i];
+        if (slot >= slot_count) continue;
+        if (bp->proxy[slot] >= 0 && bp->tree_valid) sx_tree_remove(&bp->tree, bp->proxy[slot]);
+        bp->proxy[slot] = -1;
+        if (kind[slot] == SX_BP_OUT) continue;
+        if (sx_is_fixed_kind(kind[slot])) bp->fat[slot] = aabbs[slot];
+        s = sx_requery(bp, slot);
+        if (s != SX_OK) return s;
+    }
+    s = sx_update_fixed(bp, aabbs, kind, slot_count);
+    if (s != SX_OK) return s;
+    /* moving colliders whose bounds left their fat box get a new one */
+    escaped = 0;
+    for (i = 0; i < moving_count; ++i) {
+        int m = moving[i];
+        if (bp->proxy[m] >= 0 && sx_aabb_contains(bp->fat[m], aabbs[m])) continue;
+        bp->fat[m] = sx_fat_box(aabbs[m], fat_margin);
+        s = sx_requery(bp, m);
+        if (s != SX_OK) return s;
+        ++escaped;
+    }
+    /* hysteresis: going back to the tree costs a build and a query per
+     * moving collider, so a sweeping world returns only after
+     * SX_CALM_CALLS calls in a row calmer than the share that makes a tree
+     * world sweep (bodies falling from rest in step leave their fat boxes
+     * every other call at first) */
+    if (bp->tree_valid) {
+        bp->calm_calls = escaped > moving_count / SX_SWEEP_SHARE ? 0 : SX_CALM_CALLS;
+    } else if (escaped > moving_count / (4 * SX_SWEEP_SHARE)) {
+        bp->calm_calls = 0;
+    } else {
+        ++bp->calm_calls;
+    }
+    if (bp->calm_calls < SX_CALM_CALLS) {
+        return sx_sweep_moving(bp, aabbs, kind, slot_count, moving, moving_count);
+    }
+    s = sx_tree_moving(bp, kind, moving, moving_count);
+    if (s != SX_OK) return s;
+    s = sx_sort_fresh(bp, slot_count);
+    if (s != SX_OK) return s;
+    return sx_merge_candidates(bp, aabbs, kind, slot_count);
+}
+
+sx_status sx_broadphase_query(sx_broadphase *bp, const sx_aabb *aabbs, sx_aabb box, int **out,
+                              int *count, int *capacity) {
+    const sx_sorted_box *b;
+    int at = -1, i;
+    sx_status s;
+    while ((b = sx_fixed_next(bp, box, &at)) != NULL) {
+        if (!sx_push_int(out, count, capacity, b->slot)) return SX_ERR_NO_MEMORY;
+    }
+    /* the moving colliders by their fat boxes, kept where the bounds
+     * overlap */
+    bp->hit_count = 0;
+    if (bp->tree_valid) {
+        s = sx_tree_query(&bp->tree, box, &bp->hits, &bp->hit_count, &bp->hit_capacity);
+    } else {
+        s = sx_sorted_hits(bp, box);
+    }
+    if (s != SX_OK) return s;
+    for (i = 0; i < bp->hit_count; ++i) {
+        int slot = bp->hits[i];
+        if (sx_aabb_overlaps(aabbs[slot], box) && !sx_push_int(out, count, capacity, slot)) {
             return SX_ERR_NO_MEMORY;
         }
     }

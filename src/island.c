@@ -30,10 +30,25 @@ static void sx_union(int *parent, int a, int b) {
 }
 
 static void sx_wake_one(sx_world *world, int slot) {
+    void *p = world->thaw_mark;
     world->sims[slot].awake = true;
-    /* its contacts may wait in the frozen store */
+    /* its contacts may wait in the frozen store: the next thaw looks at the
+     * contacts of the bodies listed here */
     world->thaw_pending = true;
-    world->sets_dirty = true;
+    if (sx_grow_zeroed(&p, &world->thaw_mark_capacity, world->body_slots, 1)) {
+        world->thaw_mark = (unsigned char *)p;
+        if (!world->thaw_mark[slot]) {
+            if (sx_push_int(&world->thaw_bodies, &world->thaw_body_count,
+                            &world->thaw_body_capacity, slot)) {
+                world->thaw_mark[slot] = 1;
+            } else {
+                world->thaw_all = true;
+            }
+        }
+    } else {
+        world->thaw_all = true;
+    }
+    sx_world_note_awake(world, slot);
     world->infos[slot].sleep_time = SX_R(0.0);
     world->infos[slot].island = -1;
     world->infos[slot].island_next = -1;
@@ -153,7 +168,7 @@ sx_status sx_world_update_sleep(sx_world *world, sx_real dt) {
         b->w = SX_R(0.0);
         world->infos[i].island = r;
         world->infos[i].island_next = -1;
-        world->sets_dirty = true;
+        sx_world_note_awake(world, i);
     }
     /* Chain each new sleeping island's members behind its root (the root is
      * a member: the union-find ran over these very bodies). The active

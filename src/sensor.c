@@ -93,7 +93,7 @@ sx_status sx_sensors_update(sx_world *world) {
         /* the broadphase's sets hold every colliding collider's (fattened)
          * bounds as of this collide */
         world->visitor_count = 0;
-        st = sx_broadphase_query(&world->bp, box, &world->visitors, &world->visitor_count,
+        st = sx_broadphase_query(&world->bp, world->aabbs, box, &world->visitors, &world->visitor_count,
                                  &world->visitor_capacity);
         if (st != SX_OK) return st;
         /* visitors in slot order: the keys come out sorted */

@@ -174,6 +174,14 @@ void sx_world_destroy(sx_world *world) {
     sx_free(world->thaw, (size_t)world->thaw_capacity * sizeof(sx_contact));
     sx_free(world->active_bodies, (size_t)world->active_body_capacity * sizeof(int));
     sx_free(world->active_colliders, (size_t)world->active_collider_capacity * sizeof(int));
+    sx_free(world->woken, (size_t)world->woken_capacity * sizeof(int));
+    sx_free(world->thaw_bodies, (size_t)world->thaw_body_capacity * sizeof(int));
+    sx_free(world->thaw_mark, (size_t)world->thaw_mark_capacity);
+    sx_free(world->woken_mark, (size_t)world->woken_mark_capacity);
+    sx_free(world->changed, (size_t)world->changed_capacity * sizeof(int));
+    sx_free(world->collider_mark, (size_t)world->collider_mark_capacity);
+    sx_free(world->set_scratch, (size_t)world->set_scratch_capacity * sizeof(int));
+    sx_free(world->set_keep, (size_t)world->set_keep_capacity * sizeof(bool));
     sx_broadphase_free(&world->bp);
     sx_ccd_free(world);
     sx_contacts_free(world);
@@ -221,6 +229,12 @@ static sx_status sx_check_step(const sx_world *world, sx_real h) {
     return SX_OK;
 }
 
+/* How far a moving collider's broadphase box reaches past its bounds, in
+ * linear slops (5 cm at the default scale): a larger box is re-inserted
+ * less often but keeps more candidate pairs to test each step, and makes
+ * the sweep's boxes wider. */
+#define SX_FAT_SLOPS SX_R(10.0)
+
 /* ---- active sets ------------------------------------------------------------ */
 
 /* The fattened bounds of a collider (half the margin on each side: bounds
@@ -260,10 +274,172 @@ static void sx_collider_bounds(sx_world *world, int slot) {
     world->aabbs[slot] = sx_aabb_fatten(u, half + reach);
 }
 
+/* Brings collider i's broadphase kind up to date with its body; *kind
+ * receives it. Bodies the step does not move keep their bounds: they are
+ * recomputed when the body stops (its last move came after the last
+ * bounds) or is teleported (aabb_stale); collide recomputes the others. */
+static sx_status sx_refresh_collider(sx_world *world, int i, unsigned char *kind_out) {
+    sx_collider *c = &world->colliders[i];
+    const sx_body_sim *b = &world->sims[c->body];
+    unsigned char prev = world->bp_kind[i], kind = SX_BP_OUT;
+    if (!c->alive || c->sensor || !world->infos[c->body].enabled) {
+        kind = SX_BP_OUT;
+    } else if (b->dynamic) {
+        kind = b->awake ? SX_BP_AWAKE : SX_BP_ASLEEP;
+    } else if (b->moving && (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0))) {
+        kind = SX_BP_MOVING_KINEMATIC;
+    } else {
+        kind = SX_BP_FIXED;
+    }
+    world->bp_kind[i] = kind;
+    *kind_out = kind;
+    if (kind == SX_BP_OUT) {
+        return prev != SX_BP_OUT ? sx_broadphase_touch(&world->bp, i, world->collider_slots) : SX_OK;
+    }
+    if (kind != prev || c->aabb_stale) {
+        sx_collider_bounds(world, i);
+        c->aabb_stale = false;
+        return sx_broadphase_touch(&world->bp, i, world->collider_slots);
+    }
+    return SX_OK;
+}
+
+static bool sx_kind_moves(unsigned char kind) {
+    return kind == SX_BP_AWAKE || kind == SX_BP_MOVING_KINEMATIC;
+}
+
+static int sx_int_cmp(const void *pa, const void *pb) {
+    int a = *(const int *)pa, b = *(const int *)pb;
+    return a < b ? -1 : (a > b ? 1 : 0);
+}
+
+void sx_world_note_awake(sx_world *world, int slot) {
+    void *p = world->woken_mark;
+    if (world->sets_dirty) return; /* the full rebuild sees it */
+    if (!sx_grow_zeroed(&p, &world->woken_mark_capacity, world->body_slots, 1)) {
+        world->sets_dirty = true;
+        return;
+    }
+    world->woken_mark = (unsigned char *)p;
+    if (world->woken_mark[slot]) return;
+    if (!sx_push_int(&world->woken, &world->woken_count, &world->woken_capacity, slot)) {
+        world->sets_dirty = true;
+        return;
+    }
+    world->woken_mark[slot] = 1;
+}
+
+/* Merges into *list (sorted slots, *count of them) the sorted `changed`
+ * slots that `keep` says belong, dropping the listed slots marked in
+ * `mark`: the list stays in slot order at a cost of the list plus the
+ * changes. */
+static sx_status sx_merge_slots(sx_world *world, int **list, int *count, int *capacity,
+                                const unsigned char *mark, const int *changed, int changed_count,
+                                const bool *keep) {
+    int i = 0, j = 0, n = 0;
+    void *p = world->set_scratch;
+    if (!sx_grow_array(&p, &world->set_scratch_capacity, *count + changed_count, sizeof(int))) {
+        return SX_ERR_NO_MEMORY;
+    }
+    world->set_scratch = (int *)p;
+    while (i < *count || j < changed_count) {
+        if (j >= changed_count || (i < *count && (*list)[i] < changed[j])) {
+            int v = (*list)[i++];
+            if (!mark[v]) world->set_scratch[n++] = v;
+        } else {
+            if (i < *count && (*list)[i] == changed[j]) ++i;
+            if (keep[j]) world->set_scratch[n++] = changed[j];
+            ++j;
+        }
+    }
+    {
+        int *t = *list, c = *capacity;
+        *list = world->set_scratch;
+        *capacity = world->set_scratch_capacity;
+        world->set_scratch = t;
+        world->set_scratch_capacity = c;
+    }
+    *count = n;
+    return SX_OK;
+}
+
+/* The active sets after bodies only woke or fell asleep (sx_world_note_awake):
+ * those bodies and their colliders are redone and merged in, at a cost of
+ * the active sets plus the changes, where the full rebuild walks every
+ * slot (a sleeping world of 20,000 bodies paid that for each wake). */
+static sx_status sx_refresh_woken(sx_world *world) {
+    int i, k = world->woken_count, nc = 0;
+    void *p;
+    sx_status s = SX_OK;
+    /* (qsort's array may not be NULL, even for no elements) */
+    if (k > 1) qsort(world->woken, (size_t)k, sizeof(int), sx_int_cmp);
+    p = world->set_keep;
+    if (!sx_grow_array(&p, &world->set_keep_capacity, k, sizeof(bool))) return SX_ERR_NO_MEMORY;
+    world->set_keep = (bool *)p;
+    for (i = 0; i < k; ++i) {
+        const sx_body_sim *b = &world->sims[world->woken[i]];
+        world->set_keep[i] = world->infos[world->woken[i]].alive && b->moving && b->awake;
+    }
+    s = sx_merge_slots(world, &world->active_bodies, &world->active_body_count,
+                       &world->active_body_capacity, world->woken_mark, world->woken, k,
+                       world->set_keep);
+    if (s != SX_OK) return s;
+    /* their colliders: kinds redone, listed in slot order */
+    world->changed_count = 0;
+    for (i = 0; i < k; ++i) {
+        int c;
+        if (!world->infos[world->woken[i]].alive) continue;
+        for (c = world->infos[world->woken[i]].first_collider; c >= 0; c = world->colliders[c].next) {
+            if (!sx_push_int(&world->changed, &world->changed_count, &world->changed_capacity, c)) {
+                return SX_ERR_NO_MEMORY;
+            }
+        }
+    }
+    nc = world->changed_count;
+    if (nc > 1) qsort(world->changed, (size_t)nc, sizeof(int), sx_int_cmp);
+    p = world->set_keep;
+    if (!sx_grow_array(&p, &world->set_keep_capacity, nc, sizeof(bool))) return SX_ERR_NO_MEMORY;
+    world->set_keep = (bool *)p;
+    p = world->collider_mark;
+    if (!sx_grow_zeroed(&p, &world->collider_mark_capacity, world->collider_slots, 1)) {
+        return SX_ERR_NO_MEMORY;
+    }
+    world->collider_mark = (unsigned char *)p;
+    for (i = 0; i < nc; ++i) {
+        unsigned char kind;
+        s = sx_refresh_collider(world, world->changed[i], &kind);
+        if (s != SX_OK) return s;
+        world->set_keep[i] = sx_kind_moves(kind);
+        world->collider_mark[world->changed[i]] = 1;
+    }
+    s = sx_merge_slots(world, &world->active_colliders, &world->active_collider_count,
+                       &world->active_collider_capacity, world->collider_mark, world->changed, nc,
+                       world->set_keep);
+    for (i = 0; i < nc; ++i)
+        world->collider_mark[world->changed[i]] = 0;
+    return s;
+}
+
+/* Forgets the bodies noted by sx_world_note_awake. */
+static void sx_clear_woken(sx_world *world) {
+    int i;
+    for (i = 0; i < world->woken_count; ++i)
+        world->woken_mark[world->woken[i]] = 0;
+    world->woken_count = 0;
+}
+
 sx_status sx_world_refresh_sets(sx_world *world) {
     int i;
     sx_status s;
-    if (!world->sets_dirty) return SX_OK;
+    if (!world->sets_dirty) {
+        if (world->woken_count == 0) return SX_OK;
+        s = sx_refresh_woken(world);
+        /* on failure the full rebuild redoes everything next time */
+        if (s != SX_OK) world->sets_dirty = true;
+        sx_clear_woken(world);
+        return s;
+    }
+    sx_clear_woken(world);
     world->active_body_count = 0;
     world->active_collider_count = 0;
     world->sensor_collider_count = 0;
@@ -276,45 +452,19 @@ sx_status sx_world_refresh_sets(sx_world *world) {
         }
     }
     for (i = 0; i < world->collider_slots; ++i) {
-        sx_collider *c = &world->colliders[i];
-        const sx_body_sim *b = &world->sims[c->body];
-        unsigned char prev = world->bp_kind[i], kind = SX_BP_OUT;
-        if (!c->alive || c->sensor || !world->infos[c->body].enabled) {
-            kind = SX_BP_OUT;
-        } else if (b->dynamic) {
-            kind = b->awake ? SX_BP_AWAKE : SX_BP_ASLEEP;
-        } else if (b->moving && (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0))) {
-            kind = SX_BP_MOVING_KINEMATIC;
-        } else {
-            kind = SX_BP_FIXED;
-        }
-        world->bp_kind[i] = kind;
+        const sx_collider *c = &world->colliders[i];
+        unsigned char kind;
         if (c->alive && c->sensor && world->infos[c->body].enabled &&
             !sx_push_int(&world->sensor_colliders, &world->sensor_collider_count,
                          &world->sensor_collider_capacity, i)) {
             return SX_ERR_NO_MEMORY;
         }
-        if (kind == SX_BP_OUT) {
-            if (prev != SX_BP_OUT) {
-                s = sx_broadphase_touch(&world->bp, i, world->collider_slots);
-                if (s != SX_OK) return s;
-            }
-            continue;
-        }
-        if ((kind == SX_BP_AWAKE || kind == SX_BP_MOVING_KINEMATIC) &&
+        s = sx_refresh_collider(world, i, &kind);
+        if (s != SX_OK) return s;
+        if (sx_kind_moves(kind) &&
             !sx_push_int(&world->active_colliders, &world->active_collider_count,
                          &world->active_collider_capacity, i)) {
             return SX_ERR_NO_MEMORY;
-        }
-        /* Bodies the step does not move keep their bounds: they are
-         * recomputed when the body stops (its last move came after the last
-         * bounds) or is teleported (aabb_stale); collide recomputes the
-         * others. */
-        if (kind != prev || c->aabb_stale) {
-            sx_collider_bounds(world, i);
-            c->aabb_stale = false;
-            s = sx_broadphase_touch(&world->bp, i, world->collider_slots);
-            if (s != SX_OK) return s;
         }
     }
     world->sets_dirty = false;
@@ -565,16 +715,69 @@ static sx_status sx_push_contact(sx_contact **array, int *count, int *capacity,
 }
 
 /* Moves the sleeping contacts of the current list into the frozen store. */
+/* sx_freeze_contacts when the frozen store is empty and most contacts
+ * freeze (a pile fell asleep), from the first sleeping contact `first`:
+ * the list's buffer becomes the store (the sleeping contacts compacted in
+ * place) and the few awake ones move to the store's old buffer, so the
+ * pile's contacts are neither copied nor written to fresh pages. Same
+ * contents and order as the copying way. */
+static sx_status sx_freeze_by_swap(sx_world *world, int first, int sleeping) {
+    int i, f = 0, m = first, awake = world->contact_count - sleeping;
+    void *p = world->frozen;
+    sx_status s = sx_reserve_array(&p, &world->frozen_capacity, awake, sizeof(sx_contact));
+    sx_contact *list = world->contacts;
+    world->frozen = (sx_contact *)p;
+    if (s != SX_OK) return s;
+    if (first > 0) memcpy(world->frozen, list, (size_t)first * sizeof(sx_contact));
+    for (i = first; i < world->contact_count; ++i) {
+        if (sx_contact_sleeps(world, &list[i])) {
+            if (f != i) list[f] = list[i];
+            ++f;
+        } else {
+            world->frozen[m++] = list[i];
+        }
+    }
+    {
+        int c = world->contact_capacity;
+        world->contacts = world->frozen;
+        world->contact_capacity = world->frozen_capacity;
+        world->contact_count = m;
+        world->frozen = list;
+        world->frozen_capacity = c;
+        world->frozen_count = f;
+    }
+    return SX_OK;
+}
+
 static sx_status sx_freeze_contacts(sx_world *world) {
     int i, n = 0;
     for (i = 0; i < world->contact_count; ++i) {
         const sx_contact *c = &world->contacts[i];
         if (sx_contact_sleeps(world, c)) {
-            sx_status s =
-                sx_push_contact(&world->frozen, &world->frozen_count, &world->frozen_capacity, c);
+            sx_status s;
+            if (n == i) {
+                /* the first to freeze (rare: a step where bodies fell
+                 * asleep): how many follow decides the way */
+                int j, sleeping = 0;
+                void *p = world->frozen;
+                for (j = i; j < world->contact_count; ++j)
+                    sleeping += sx_contact_sleeps(world, &world->contacts[j]) ? 1 : 0;
+                if (world->frozen_count == 0 && sleeping > world->contact_count / 2) {
+                    return sx_freeze_by_swap(world, i, sleeping);
+                }
+                /* room for all that follow in one allocation (a pile of
+                 * 20,000 falling asleep grew the store seven times) */
+                s = sx_reserve_array(&p, &world->frozen_capacity,
+                                     world->frozen_count + sleeping, sizeof(sx_contact));
+                world->frozen = (sx_contact *)p;
+                if (s != SX_OK) return s;
+            }
+            s = sx_push_contact(&world->frozen, &world->frozen_count, &world->frozen_capacity, c);
             if (s != SX_OK) return s;
         } else {
-            world->contacts[n++] = *c;
+            /* in place until the first gap: most steps freeze nothing */
+            if (n != i) world->contacts[n] = *c;
+            ++n;
         }
     }
     world->contact_count = n;
@@ -607,19 +810,35 @@ static bool sx_has_key(const sx_contact *list, int count, uint64_t key) {
 /* Moves the frozen contacts that have an awake dynamic body again into the
  * current list (kept sorted by key), marked `thawed` when asked, if a body
  * woke since the last call; drops the contacts removed since then. A pair
- * the list already holds keeps the list's contact. */
+ * the list already holds keeps the list's contact. Only a contact with a
+ * body woken since the last call (thaw_mark) can have become active: the
+ * others are passed over on their body indices alone, without reading the
+ * bodies. */
 static sx_status sx_thaw_contacts(sx_world *world, bool mark) {
     int i, j, out, n = 0, k = 0;
     void *p;
     sx_status s;
-    bool thaw = world->thaw_pending;
+    bool thaw = world->thaw_pending, all = world->thaw_all;
+    const unsigned char *woke;
+    p = world->thaw_mark;
+    /* bodies created since the last wake have slots past the marks */
+    if (thaw && !all && !sx_grow_zeroed(&p, &world->thaw_mark_capacity, world->body_slots, 1)) {
+        all = true;
+    }
+    world->thaw_mark = (unsigned char *)p;
+    woke = world->thaw_mark;
     world->thaw_pending = false;
+    world->thaw_all = false;
     world->thaw_count = 0;
     for (i = 0; i < world->frozen_count; ++i) {
         const sx_contact *c = &world->frozen[i];
         if (c->count == 0) continue; /* a tombstone (body_contacts.c) */
-        if (!thaw || !sx_contact_is_active(world, c)) {
-            world->frozen[n++] = *c;
+        if (!thaw || (!all && !woke[c->body_a] && !woke[c->body_b]) ||
+            !sx_contact_is_active(world, c)) {
+            /* kept in place until the first gap: a wake thaws a few
+             * contacts of a large store, which then moves little */
+            if (n != i) world->frozen[n] = *c;
+            ++n;
             continue;
         }
         if (sx_has_key(world->contacts, world->contact_count, c->key)) continue;
@@ -629,6 +848,9 @@ static sx_status sx_thaw_contacts(sx_world *world, bool mark) {
     }
     world->frozen_count = n;
     world->frozen_dead = 0;
+    for (i = 0; i < world->thaw_body_count; ++i)
+        world->thaw_mark[world->thaw_bodies[i]] = 0;
+    world->thaw_body_count = 0;
     k = world->thaw_count;
     if (k == 0) return SX_OK;
     /* (key, part_a, part_b) is unique: the order is total, the same on every run */
@@ -779,7 +1001,8 @@ sx_status sx_world_collide(sx_world *world) {
     for (i = 0; i < world->active_collider_count; ++i)
         sx_collider_bounds(world, world->active_colliders[i]);
     s = sx_broadphase_update(&world->bp, world->aabbs, world->bp_kind, world->collider_slots,
-                             world->active_colliders, world->active_collider_count);
+                             world->active_colliders, world->active_collider_count,
+                             SX_FAT_SLOPS * world->linear_slop);
     if (s != SX_OK) return s;
     s = sx_ccd_record(world);
     if (s != SX_OK) return s;

@@ -205,8 +205,8 @@ static sx_status sx_sweep_body(sx_world *world, int slot, const sx_motion *m, sx
     /* a body that is not a bullet meets only static and kinematic
      * colliders: the moving set matters only when a kinematic one moves */
     if (bullet || world->ccd_kinematic_moving) {
-        s = sx_broadphase_query(&world->bp, box, &world->ccd_found, &world->ccd_found_count,
-                                &world->ccd_found_capacity);
+        s = sx_broadphase_query(&world->bp, world->aabbs, box, &world->ccd_found,
+                                &world->ccd_found_count, &world->ccd_found_capacity);
     } else {
         s = sx_broadphase_query_fixed(&world->bp, box, &world->ccd_found, &world->ccd_found_count,
                                       &world->ccd_found_capacity);

@@ -12,6 +12,7 @@
 
 #include <string.h>
 
+#include "aabb_tree.h"
 #include "core.h"
 #include "sepax/collide.h"
 #include "sepax/compound.h"
@@ -202,15 +203,13 @@ enum {
     SX_BP_ASLEEP            /* dynamic and asleep */
 };
 
-/* The broadphase (broadphase.c) keeps two sets. The colliders the step
- * moves (AWAKE, MOVING_KINEMATIC) are swept against each other on x every
- * call, in an order kept across calls so the insertion sort costs about one
- * pass. The others (FIXED, ASLEEP) sit in an array sorted by lower x that
- * changes only when a collider joins or leaves that set or moves while in
- * it: each moving collider finds its candidates there by binary search,
- * and the few boxes much wider than the rest are kept on a short list of
- * their own so they do not make every search long. A sleeping or static
- * collider costs nothing per call. */
+/* The broadphase (broadphase.c) keeps two sets. The others (FIXED, ASLEEP)
+ * sit in an array sorted by lower x that changes only when a collider joins
+ * or leaves that set or moves while in it (the few boxes much wider than
+ * the rest on a short list of their own). The colliders the step moves
+ * (AWAKE, MOVING_KINEMATIC) have fat boxes (bounds grown by a margin) and
+ * sit in a dynamic AABB tree with their candidate pairs kept from call to
+ * call while few leave their fat box, or are swept on x when many do. */
 typedef struct sx_sorted_box {
     sx_aabb box;
     int slot;
@@ -218,16 +217,37 @@ typedef struct sx_sorted_box {
 } sx_sorted_box;
 
 typedef struct sx_broadphase {
-    int *order; /* moving colliders, by lower x as of the last call */
+    /* the moving colliders' fat boxes: in the tree while few of them move
+     * out of their fat box per call (tree_valid), otherwise swept on x in
+     * an order kept from call to call (order, sorted; mark: scratch per
+     * slot) */
+    sx_aabb_tree tree;
+    bool tree_valid;
+    int calm_calls; /* sweeping calls in a row with few colliders out of their fat box */
+    int *order;
     int order_count, order_capacity;
-    unsigned char *mark; /* scratch, one per collider slot */
-    int mark_capacity;
-    uint64_t *pairs;
-    int pair_count, pair_capacity;
-    uint64_t *scratch; /* radix-sort buffer, as large as pairs */
-    int scratch_capacity;
-    sx_sorted_box *sorted; /* moving bounds in sweep order */
+    sx_sorted_box *sorted;
     int sorted_capacity;
+    sx_real sorted_width; /* the widest box in sorted */
+    unsigned char *mark;
+    int mark_capacity;
+    int *proxy;         /* per collider slot: its tree leaf, -1 when none */
+    sx_aabb *fat;       /* per collider slot: the box its candidates were found for */
+    unsigned char *qmark; /* per collider slot: 1 while in requery */
+    int proxy_capacity, fat_capacity, qmark_capacity;
+    int *requery; /* slots that look for new candidates in this call */
+    int requery_count, requery_capacity;
+    int *hits; /* query scratch */
+    int hit_count, hit_capacity;
+    /* the candidate pairs, sorted by key, and the scratch of their merge */
+    uint64_t *cand, *cand_next;
+    int cand_count, cand_capacity, cand_next_capacity;
+    uint64_t *fresh; /* new candidates of this call */
+    int fresh_count, fresh_capacity;
+    uint64_t *pairs; /* the call's answer: candidates whose bounds overlap */
+    int pair_count, pair_capacity;
+    uint64_t *scratch; /* radix-sort buffer, as large as fresh */
+    int scratch_capacity;
     sx_sorted_box *fixed, *fixed_next; /* the other set, sorted by lower x */
     int fixed_count, fixed_capacity, fixed_next_capacity;
     sx_sorted_box *added; /* scratch: boxes joining the fixed set */
@@ -318,6 +338,14 @@ struct sx_world {
     sx_contact *frozen, *thaw;
     int frozen_count, frozen_capacity, thaw_count, thaw_capacity;
     bool thaw_pending;
+    /* the bodies woken since the last thaw (thaw_mark: 1 per listed body
+     * slot, room for every slot); thaw_all: a wake could not be listed, the
+     * thaw tests every frozen contact */
+    int *thaw_bodies;
+    int thaw_body_count, thaw_body_capacity;
+    unsigned char *thaw_mark;
+    int thaw_mark_capacity;
+    bool thaw_all;
     /* Contacts removed since the last collide (a body or collider
      * destroyed): they stay in place with count 0 (body_contacts.c) */
     int contact_dead, frozen_dead;
@@ -347,6 +375,16 @@ struct sx_world {
     int *visitors; /* sensor scratch */
     int visitor_count, visitor_capacity;
     bool sets_dirty;
+    /* Bodies that only woke or fell asleep since the last refresh, while
+     * sets_dirty is false (sx_world_note_awake): the refresh redoes them
+     * and their colliders alone (woken_mark: 1 per listed body slot;
+     * changed, collider_mark, set_scratch, set_keep: its scratch). */
+    int *woken, *changed, *set_scratch;
+    int woken_count, woken_capacity, changed_count, changed_capacity, set_scratch_capacity;
+    unsigned char *woken_mark, *collider_mark;
+    int woken_mark_capacity, collider_mark_capacity;
+    bool *set_keep;
+    int set_keep_capacity;
 
     sx_broadphase bp;
 
@@ -486,8 +524,13 @@ bool sx_push_int(int **array, int *count, int *capacity, int value);
 
 /* world.c */
 /* Rebuilds the active sets if sets_dirty, and every collider's broadphase
- * kind and stale bounds with them. */
+ * kind and stale bounds with them; otherwise redoes the bodies noted by
+ * sx_world_note_awake. */
 sx_status sx_world_refresh_sets(sx_world *world);
+/* Notes that a body woke or fell asleep and nothing else changed: the next
+ * refresh of the active sets redoes it alone (or everything, if memory for
+ * the note runs out). */
+void sx_world_note_awake(sx_world *world, int slot);
 
 /* world_ccd.c */
 /* Records where the moving bodies are, for the continuous pass at the end
@@ -513,17 +556,20 @@ void sx_broadphase_free(sx_broadphase *bp);
 sx_status sx_broadphase_touch(sx_broadphase *bp, int slot, int slot_count);
 /* Finds the pairs of colliders whose bounds overlap and whose kinds (SX_BP_*)
  * call for a pair; `moving` lists the AWAKE and MOVING_KINEMATIC colliders
- * in slot order. Fills bp->pairs sorted ascending by key (lower slot in the
- * high half). */
+ * in slot order; `fat_margin` (>= 0) is how far a moving collider's tree box
+ * reaches past its bounds. Fills bp->pairs sorted ascending by key (lower
+ * slot in the high half). */
 sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const unsigned char *kind,
-                               int slot_count, const int *moving, int moving_count);
+                               int slot_count, const int *moving, int moving_count,
+                               sx_real fat_margin);
 
 /* Appends to *out the slots of the colliders in the broadphase (not OUT)
- * whose bounds overlap box, in no particular order. */
-sx_status sx_broadphase_query(const sx_broadphase *bp, sx_aabb box, int **out, int *count,
-                              int *capacity);
+ * whose bounds (aabbs, as of the last update) overlap box, in no particular
+ * order. */
+sx_status sx_broadphase_query(sx_broadphase *bp, const sx_aabb *aabbs, sx_aabb box, int **out,
+                              int *count, int *capacity);
 /* The same for the fixed set only (static colliders, kinematic ones at rest
- * and sleeping ones): logarithmic, where the moving set is a linear pass. */
+ * and sleeping ones): logarithmic, where the moving set is not. */
 sx_status sx_broadphase_query_fixed(const sx_broadphase *bp, sx_aabb box, int **out, int *count,
                                     int *capacity);
 

@@ -7,7 +7,9 @@
  * compounds; bodies fall
  * asleep and wake, are teleported, created and destroyed, kinematic bodies
  * start and stop (one ploughs through the sleeping bodies on the ground),
- * colliders come and go. Fixed seeds: the same run every
+ * colliders come and go. After every refresh the active sets equal a
+ * rebuild from scratch, and after every collide no frozen contact is
+ * active. Fixed seeds: the same run every
  * time. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -109,6 +111,40 @@ static void check_sensors(const sx_world *w) {
     assert_int_equal(count, w->sensor_count);
 }
 
+/* The active sets after a refresh equal a rebuild from scratch (the
+ * bodies the step moves and the moving colliders, in slot order), however
+ * the refresh got there (after wakes and sleeps it redoes only those
+ * bodies); and no contact waiting in the frozen store is active. */
+static void check_sets(sx_world *w) {
+    int i, n = 0;
+    assert_int_equal(sx_world_refresh_sets(w), SX_OK);
+    for (i = 0; i < w->body_slots; ++i) {
+        const sx_body_sim *b = &w->sims[i];
+        if (!(w->infos[i].alive && b->moving && b->awake)) continue;
+        assert_true(n < w->active_body_count);
+        assert_int_equal(w->active_bodies[n], i);
+        ++n;
+    }
+    assert_int_equal(n, w->active_body_count);
+    n = 0;
+    for (i = 0; i < w->collider_slots; ++i) {
+        unsigned char k = expected_kind(w, i);
+        assert_int_equal(w->bp_kind[i], k);
+        if (k != SX_BP_AWAKE && k != SX_BP_MOVING_KINEMATIC) continue;
+        assert_true(n < w->active_collider_count);
+        assert_int_equal(w->active_colliders[n], i);
+        ++n;
+    }
+    assert_int_equal(n, w->active_collider_count);
+}
+
+static void check_frozen(const sx_world *w) {
+    int i;
+    for (i = 0; i < w->frozen_count; ++i) {
+        if (w->frozen[i].count > 0) assert_false(sx_contact_is_active(w, &w->frozen[i]));
+    }
+}
+
 static sx_shape random_shape(sx_test_rng *rng) {
     switch (sx_test_rng_next(rng) % 4u) {
     case 0: return sx_circle_shape(sx_v2_zero(), sx_test_rng_range(rng, 0.2, 0.6));
@@ -139,7 +175,7 @@ static void broadphase_pairs_equal_brute_force_through_sleep_teleport_create_des
     sx_test_rng rng = sx_test_rng_make(20261123u);
     sx_body_id ids[MAX_IDS];
     int count = 0, step, sub, i, total_pairs = 0, max_pairs = 0, asleep_seen = 0, max_sensed = 0;
-    int kinematic_asleep = 0;
+    int kinematic_asleep = 0, tree_calls = 0, sweep_calls = 0;
     sx_body_id plough;
     sx_shape blade = sx_box_shape(SX_R(1.0), SX_R(0.3));
     sx_world *w;
@@ -275,11 +311,19 @@ static void broadphase_pairs_equal_brute_force_through_sleep_teleport_create_des
             sx_real h = DT / (sx_real)def.sub_steps;
             int pairs, k;
             assert_int_equal(sx_world_apply_forces(w, h), SX_OK);
+            check_sets(w);
             assert_true(w->collider_slots <= 4 * MAX_IDS);
             for (k = 0; k < w->collider_slots; ++k)
                 kinds[k] = expected_kind(w, k);
             assert_int_equal(sx_world_collide(w), SX_OK);
             pairs = check_pairs(w, kinds, &kinematic_asleep);
+            check_frozen(w);
+            /* the moving colliders' candidates come from the tree or from
+             * the sweep, as many left their fat boxes or few */
+            if (w->bp.tree_valid)
+                ++tree_calls;
+            else
+                ++sweep_calls;
             check_sensors(w);
             if (w->sensor_count > max_sensed) max_sensed = w->sensor_count;
             total_pairs += pairs;
@@ -298,13 +342,17 @@ static void broadphase_pairs_equal_brute_force_through_sleep_teleport_create_des
         }
     }
     printf("  1500 steps: %d pairs checked (at most %d at once; %d of a moving kinematic body with "
-           "a sleeping one), sleeping bodies in %d steps, up to %d sensor overlaps\n",
-           total_pairs, max_pairs, kinematic_asleep, asleep_seen, max_sensed);
+           "a sleeping one), sleeping bodies in %d steps, up to %d sensor overlaps; %d collides "
+           "with the tree, %d with the sweep\n",
+           total_pairs, max_pairs, kinematic_asleep, asleep_seen, max_sensed, tree_calls,
+           sweep_calls);
     /* the scene must exercise what it claims to */
     assert_true(max_pairs > 50);
     assert_true(kinematic_asleep > 20);
     assert_true(asleep_seen > 100);
     assert_true(max_sensed > 3);
+    assert_true(tree_calls > 100);
+    assert_true(sweep_calls > 20);
     sx_world_destroy(w);
 }
 

@@ -86,6 +86,49 @@ static void sleeping_pyramid_wakes_when_a_ball_hits_it_and_sleeps_again(void **s
     sx_world_destroy(w);
 }
 
+/* A pile that falls asleep whole keeps every contact, in the same order,
+ * with the impulses of its last solve (what it warm-starts from when it
+ * wakes): the store takes the step's list over when most of it freezes. */
+static void a_pile_falling_asleep_keeps_every_contact_and_its_impulses(void **state) {
+    sx_world_def def = sx_default_world_def();
+    sx_shape ground = sx_box_shape(SX_R(20.0), SX_R(0.5)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    static sx_contact_data before[4 * PYRAMID], after;
+    sx_world *w;
+    int row, col, s, i, count = 0;
+    (void)state;
+    w = sx_world_create(&def);
+    assert_non_null(w);
+    add_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-0.5)), &ground, true);
+    for (row = 0; row < BASE; ++row) {
+        for (col = 0; col < BASE - row; ++col) {
+            sx_real x = SX_R(1.05) * ((sx_real)col - SX_R(0.5) * (sx_real)(BASE - row - 1));
+            add_body(w, SX_BODY_DYNAMIC, sx_v2(x, SX_R(0.5) + (sx_real)row), &box, true);
+        }
+    }
+    for (s = 0; s < 600 && sx_world_awake_body_count(w) > 0; ++s) {
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+        count = sx_world_contact_count(w);
+        assert_true(count <= 4 * PYRAMID);
+        for (i = 0; i < count; ++i)
+            assert_int_equal(sx_world_get_contact(w, i, &before[i]), SX_OK);
+    }
+    assert_int_equal(sx_world_awake_body_count(w), 0);
+    assert_true(count >= PYRAMID);
+    /* the next collide moves them into the store */
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_int_equal(sx_world_contact_count(w), count);
+    for (i = 0; i < count; ++i) {
+        assert_int_equal(sx_world_get_contact(w, i, &after), SX_OK);
+        assert_int_equal(after.collider_a.index, before[i].collider_a.index);
+        assert_int_equal(after.collider_b.index, before[i].collider_b.index);
+        assert_int_equal(after.count, before[i].count);
+        assert_true(after.normal_impulses[0] == before[i].normal_impulses[0]);
+        assert_true(after.tangent_impulses[0] == before[i].tangent_impulses[0]);
+        assert_true(after.normal_impulses[1] == before[i].normal_impulses[1]);
+    }
+    sx_world_destroy(w);
+}
+
 static void a_body_with_sleep_off_keeps_its_island_awake(void **state) {
     sx_world_def def = sx_default_world_def();
     sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(0.5)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
@@ -412,6 +455,7 @@ static void contact_events_are_built_only_when_asked(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(sleeping_pyramid_wakes_when_a_ball_hits_it_and_sleeps_again),
+        cmocka_unit_test(a_pile_falling_asleep_keeps_every_contact_and_its_impulses),
         cmocka_unit_test(a_body_with_sleep_off_keeps_its_island_awake),
         cmocka_unit_test(every_force_and_impulse_wakes_a_sleeping_body_and_its_island),
         cmocka_unit_test(a_ball_in_flight_longer_than_time_to_sleep_stays_awake),
