@@ -91,14 +91,17 @@ SONAME := libsepax.so.$(VERSION_MAJOR)
 LIB_SO := $(OUT)/libsepax.so
 LIB_SO_REAL := $(OUT)/libsepax.so.$(VERSION)
 
-TEST_SRCS := $(sort $(wildcard tests/test_*.c))
+# tests/test_*.c use the public API only; the white-box tests of
+# tests/internal/ may include src/ (make check-layers allows nothing else to)
+# and link the static library, which keeps the internal symbols.
+TEST_SRCS := $(sort $(wildcard tests/test_*.c)) $(sort $(wildcard tests/internal/test_*.c))
 TEST_SUPPORT := $(sort $(wildcard tests/support/*.c))
 TEST_SUPPORT_OBJS := $(TEST_SUPPORT:tests/support/%.c=$(OUT)/obj/tests/support/%.o)
-TEST_BINS := $(TEST_SRCS:tests/%.c=$(OUT)/tests/%)
+TEST_BINS := $(patsubst %.c,$(OUT)/tests/%,$(notdir $(TEST_SRCS)))
 CMOCKA_CFLAGS = $(shell pkg-config --cflags cmocka 2>/dev/null)
 CMOCKA_LIBS = $(shell pkg-config --libs cmocka 2>/dev/null || echo -lcmocka)
 
-.PHONY: all lib test check-headers readme-example doc-examples sample-pyramid deps-test deps-bench \
+.PHONY: all lib test check-exports check-headers readme-example doc-examples sample-pyramid deps-test deps-bench \
         install uninstall clean bench bench-smoke format format-check help
 .DEFAULT_GOAL := all
 .SECONDARY:
@@ -106,9 +109,12 @@ CMOCKA_LIBS = $(shell pkg-config --libs cmocka 2>/dev/null || echo -lcmocka)
 all: lib
 lib: $(LIB_A) $(LIB_SO_REAL) $(LIB_SO)
 
-$(OUT)/obj/src/%.o: src/%.c | $(OUT)/obj/src
+# The library's own objects hide every symbol that the public headers do not
+# mark SX_API (check-exports holds libsepax.so to that list). They depend on
+# the Makefile so that a change of flags rebuilds them.
+$(OUT)/obj/src/%.o: src/%.c Makefile | $(OUT)/obj/src
 	$(call msg,CC,$<)
-	$(Q)$(CC) $(CFLAGS_ALL) -c $< -o $@
+	$(Q)$(CC) $(CFLAGS_ALL) -fvisibility=hidden -c $< -o $@
 
 $(LIB_A): $(OBJS)
 	$(Q)rm -f $@
@@ -142,6 +148,10 @@ $(OUT)/obj/tests/%.o: tests/%.c | $(OUT)/obj/tests deps-test
 	$(call msg,CC,$<)
 	$(Q)$(CC) $(CFLAGS_ALL) $(CMOCKA_CFLAGS) -Itests/support -c $< -o $@
 
+$(OUT)/obj/tests/%.o: tests/internal/%.c | $(OUT)/obj/tests deps-test
+	$(call msg,CC,$<)
+	$(Q)$(CC) $(CFLAGS_ALL) $(CMOCKA_CFLAGS) -Itests/support -c $< -o $@
+
 $(OUT)/tests/%: $(OUT)/obj/tests/%.o $(TEST_SUPPORT_OBJS) $(LIB_A) | $(OUT)/tests
 	$(call msg,LD,$@)
 	$(Q)$(CC) $(SANFLAGS) -o $@ $< $(TEST_SUPPORT_OBJS) $(LIB_A) $(CMOCKA_LIBS) $(LDLIBS_ALL) $(TEST_LDLIBS)
@@ -149,6 +159,11 @@ $(OUT)/tests/%: $(OUT)/obj/tests/%.o $(TEST_SUPPORT_OBJS) $(LIB_A) | $(OUT)/test
 # tests/test_threads.c runs worlds on POSIX threads.
 $(OUT)/obj/tests/test_threads.o: CFLAGS += -pthread
 $(OUT)/tests/test_threads: TEST_LDLIBS := -pthread
+
+# libsepax.so exports exactly the functions declared in include/sepax/*.h,
+# each marked SX_API (the list is read from the headers, not kept by hand).
+check-exports: $(LIB_SO_REAL)
+	@sh scripts/check_exports.sh $(LIB_SO_REAL) include/sepax/*.h
 
 # Public headers must compile as C++ too.
 check-headers:
@@ -197,7 +212,7 @@ sample-pyramid: $(SAMPLE_PYRAMID)
 	@./$(SAMPLE_PYRAMID) 5 1 > $(SAMPLE_PYRAMID).out
 	@echo "sepax: samples/pyramid ran: $$(tail -n 1 $(SAMPLE_PYRAMID).out)"
 
-test: lib check-headers doc-examples sample-pyramid $(TEST_BINS)
+test: lib check-exports check-headers doc-examples sample-pyramid $(TEST_BINS)
 	@failed=0; total=0; \
 	for t in $(TEST_BINS); do \
 	  total=$$((total + 1)); \
@@ -545,7 +560,7 @@ uninstall:
 
 # ---- housekeeping --------------------------------------------------------------
 
-FORMAT_FILES = $(wildcard include/sepax/*.h src/*.c src/*.h tests/*.c tests/*.h tests/support/*.c \
+FORMAT_FILES = $(wildcard include/sepax/*.h src/*.c src/*.h tests/*.c tests/*.h tests/internal/*.c tests/support/*.c \
                  tests/support/*.h samples/*.c bench/*.c bench/*.h ecs/*.c ecs/*.h)
 # clang-format, or Debian's versioned name when only that is installed
 CLANG_FORMAT ?= $(or $(shell command -v clang-format 2>/dev/null),$(shell command -v clang-format-14 2>/dev/null),clang-format)
@@ -562,6 +577,7 @@ help:
 	@echo "sepax make targets (variables: SX_REAL=double, SAN=1, SIMD=0, V=1, PREFIX=..., FLECS_DIR=...)"
 	@echo "  all, lib          build/libsepax.a and the versioned build/libsepax.so (the default)"
 	@echo "  test              build the library and run every cmocka test, the documentation's examples and the sample"
+	@echo "  check-exports     libsepax.so must export exactly the SX_API declarations of include/sepax/*.h"
 	@echo "  check-headers     compile the public headers as C++"
 	@echo "  doc-examples      compile and run the C blocks of README.md and the C/C++ blocks of ecs/sepax_flecs.h"
 	@echo "  readme-example    the same as doc-examples (its former name)"
@@ -589,5 +605,5 @@ help:
 	@echo "  clean             remove build/"
 	@echo "  help              this list"
 
--include $(OBJS:.o=.d) $(TEST_SRCS:tests/%.c=$(OUT)/obj/tests/%.d) \
+-include $(OBJS:.o=.d) $(patsubst %.c,$(OUT)/obj/tests/%.d,$(notdir $(TEST_SRCS))) \
          $(TEST_SUPPORT_OBJS:.o=.d) $(BENCH_OBJS:.o=.d)

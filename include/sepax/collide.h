@@ -67,7 +67,7 @@ typedef struct sx_manifold {
 /** True if the shapes overlap; touching counts. The fast path: returns at the
  *  first separating axis and builds no manifold. Invalid or non-finite input
  *  answers false. */
-bool sx_overlap(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb);
+SX_API bool sx_overlap(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb);
 
 /** True if the shapes overlap (touching counts). When mtv is not NULL it
  *  receives the shortest translation of A that separates it from B (the zero
@@ -82,7 +82,7 @@ bool sx_overlap(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb);
  *  the edge normals of both polygons, the segment normal for segments and
  *  capsules, the centre-to-closest-feature axis for circles and rounded
  *  corners, and x/y only for two axis-aligned boxes. */
-bool sx_mtv(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_vec2 *mtv);
+SX_API bool sx_mtv(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_vec2 *mtv);
 
 /** The contact manifold of two overlapping or touching shapes: returns the
  *  number of points (0..2) and fills *out (out->count too). The normal is
@@ -101,13 +101,14 @@ bool sx_mtv(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_v
  *  each id toggled): exactly so for two different types; two shapes of the
  *  same type are solved in the caller's order (A's face wins near-ties), and
  *  the manifold has points exactly when sx_overlap is true. */
-int sx_collide(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_manifold *out);
+SX_API int sx_collide(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                      sx_manifold *out);
 
 /** As sx_collide, but also reports speculative points of shapes that are
  *  within `margin` metres of touching (depth >= -margin). The solver uses a
  *  margin of SX_SPECULATIVE_DISTANCE. margin < 0 or non-finite is taken as 0. */
-int sx_collide_ex(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_real margin,
-                  sx_manifold *out);
+SX_API int sx_collide_ex(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                         sx_real margin, sx_manifold *out);
 
 /* ---- pair functions (for callers who know their types) ------------------ */
 
@@ -116,64 +117,71 @@ int sx_collide_ex(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb
  * sx_overlap, sx_mtv and sx_collide_ex. Boxes are polygons; a point is a
  * circle of radius 0. */
 
-bool sx_overlap_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb);
-bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb, sx_vec2 *mtv);
-int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
-                       sx_real margin, sx_manifold *out);
-
-bool sx_overlap_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb);
-bool sx_mtv_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+SX_API bool sx_overlap_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb);
+SX_API bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                            sx_vec2 *mtv);
-int sx_collide_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+SX_API int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out);
 
-bool sx_overlap_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb);
-bool sx_mtv_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
-                     sx_vec2 *mtv);
-int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
-                        sx_real margin, sx_manifold *out);
+SX_API bool sx_overlap_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b,
+                                      sx_xform xb);
+SX_API bool sx_mtv_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                                  sx_vec2 *mtv);
+SX_API int sx_collide_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b,
+                                     sx_xform xb, sx_real margin, sx_manifold *out);
 
-bool sx_overlap_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb);
-bool sx_mtv_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
-                           sx_vec2 *mtv);
-int sx_collide_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
-                              sx_real margin, sx_manifold *out);
-
-bool sx_overlap_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb);
-bool sx_mtv_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb,
+SX_API bool sx_overlap_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb);
+SX_API bool sx_mtv_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                             sx_vec2 *mtv);
-int sx_collide_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb,
+SX_API int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                                sx_real margin, sx_manifold *out);
 
-bool sx_overlap_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb);
-bool sx_mtv_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
-                     sx_vec2 *mtv);
-int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
-                        sx_real margin, sx_manifold *out);
+SX_API bool sx_overlap_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b,
+                                      sx_xform xb);
+SX_API bool sx_mtv_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                                  sx_vec2 *mtv);
+SX_API int sx_collide_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b,
+                                     sx_xform xb, sx_real margin, sx_manifold *out);
 
-bool sx_overlap_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb);
-bool sx_mtv_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
-                           sx_vec2 *mtv);
-int sx_collide_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
-                              sx_real margin, sx_manifold *out);
+SX_API bool sx_overlap_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b,
+                                       sx_xform xb);
+SX_API bool sx_mtv_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b,
+                                   sx_xform xb, sx_vec2 *mtv);
+SX_API int sx_collide_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b,
+                                      sx_xform xb, sx_real margin, sx_manifold *out);
 
-bool sx_overlap_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb);
-bool sx_mtv_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb,
+SX_API bool sx_overlap_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb);
+SX_API bool sx_mtv_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                             sx_vec2 *mtv);
-int sx_collide_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb,
+SX_API int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                                sx_real margin, sx_manifold *out);
 
-bool sx_overlap_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb);
-bool sx_mtv_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
-                            sx_vec2 *mtv);
-int sx_collide_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
-                               sx_real margin, sx_manifold *out);
+SX_API bool sx_overlap_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b,
+                                      sx_xform xb);
+SX_API bool sx_mtv_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                                  sx_vec2 *mtv);
+SX_API int sx_collide_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b,
+                                     sx_xform xb, sx_real margin, sx_manifold *out);
 
-bool sx_overlap_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb);
-bool sx_mtv_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
-                     sx_vec2 *mtv);
-int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
-                        sx_real margin, sx_manifold *out);
+SX_API bool sx_overlap_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b,
+                                       sx_xform xb);
+SX_API bool sx_mtv_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b,
+                                   sx_xform xb, sx_vec2 *mtv);
+SX_API int sx_collide_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b,
+                                      sx_xform xb, sx_real margin, sx_manifold *out);
+
+SX_API bool sx_overlap_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b,
+                                       sx_xform xb);
+SX_API bool sx_mtv_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b,
+                                   sx_xform xb, sx_vec2 *mtv);
+SX_API int sx_collide_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b,
+                                      sx_xform xb, sx_real margin, sx_manifold *out);
+
+SX_API bool sx_overlap_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb);
+SX_API bool sx_mtv_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
+                            sx_vec2 *mtv);
+SX_API int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
+                               sx_real margin, sx_manifold *out);
 /* ---- point queries ------------------------------------------------------ */
 
 /* All point queries move p into the shape's local frame first. A NULL or
@@ -187,19 +195,19 @@ int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, s
  *  their CCW edges; a rounded polygon contains the points within its radius
  *  of the core polygon. Segments (and points: circles of radius 0) contain
  *  only the points on them, within the same band. Unusable input: false. */
-bool sx_contains_point(const sx_shape *s, sx_xform x, sx_vec2 p);
+SX_API bool sx_contains_point(const sx_shape *s, sx_xform x, sx_vec2 p);
 
 /** The point of segment a-b closest to p; *t (may be NULL) receives its
  *  parameter in [0, 1] (a + t (b - a)); at t 0 or 1 the end point is returned
  *  exactly. A zero-length segment gives a, t 0. A non-finite input gives a
  *  (the zero vector when a itself is not finite), t 0. */
-sx_vec2 sx_closest_point_on_segment(sx_vec2 a, sx_vec2 b, sx_vec2 p, sx_real *t);
+SX_API sx_vec2 sx_closest_point_on_segment(sx_vec2 a, sx_vec2 b, sx_vec2 p, sx_real *t);
 
 /** The point of the solid shape closest to p (world): p itself when p is
  *  inside or on the boundary (signed distance <= 0), else the closest
  *  boundary point. Segments and points have no interior: their closest point.
  *  Unusable input gives the zero vector. */
-sx_vec2 sx_closest_point(const sx_shape *s, sx_xform x, sx_vec2 p);
+SX_API sx_vec2 sx_closest_point(const sx_shape *s, sx_xform x, sx_vec2 p);
 
 /** Signed distance from p (world) to the shape's boundary: negative inside,
  *  never negative for segments and points (circles of radius 0). Rounded
@@ -214,8 +222,8 @@ sx_vec2 sx_closest_point(const sx_shape *s, sx_xform x, sx_vec2 p);
  *  separation.
  *  Unusable input (or a point so far out that the arithmetic overflows
  *  sx_real) returns SX_REAL_MAX with zero vectors. */
-sx_real sx_shape_distance_to_point(const sx_shape *s, sx_xform x, sx_vec2 p,
-                                   sx_vec2 *boundary_point, sx_vec2 *normal);
+SX_API sx_real sx_shape_distance_to_point(const sx_shape *s, sx_xform x, sx_vec2 p,
+                                          sx_vec2 *boundary_point, sx_vec2 *normal);
 
 /* ---- segment-segment intersection --------------------------------------- */
 
@@ -265,8 +273,8 @@ typedef struct sx_segment_intersection {
  *    sqrt(SX_REAL_MAX) / 8 (where the cross products would overflow), gives
  *    DEGENERATE.
  *  out may be NULL. Returns the relation (also in out->relation). */
-sx_segment_relation sx_intersect_segments(sx_vec2 p1, sx_vec2 p2, sx_vec2 q1, sx_vec2 q2,
-                                          sx_segment_intersection *out);
+SX_API sx_segment_relation sx_intersect_segments(sx_vec2 p1, sx_vec2 p2, sx_vec2 q1, sx_vec2 q2,
+                                                 sx_segment_intersection *out);
 
 /* ---- ray casts ---------------------------------------------------------- */
 
@@ -300,7 +308,7 @@ typedef struct sx_ray_hit {
  *  passing exactly through it. A zero translation, a NULL or unusable shape
  *  or ray, a non-finite input or max_fraction < 0 returns false, and so does
  *  a cast whose hit point would overflow sx_real. */
-bool sx_ray_cast(const sx_shape *s, sx_xform x, const sx_ray_input *ray, sx_ray_hit *out);
+SX_API bool sx_ray_cast(const sx_shape *s, sx_xform x, const sx_ray_input *ray, sx_ray_hit *out);
 
 #ifdef __cplusplus
 }
