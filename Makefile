@@ -101,7 +101,7 @@ TEST_BINS := $(patsubst %.c,$(OUT)/tests/%,$(notdir $(TEST_SRCS)))
 CMOCKA_CFLAGS = $(shell pkg-config --cflags cmocka 2>/dev/null)
 CMOCKA_LIBS = $(shell pkg-config --libs cmocka 2>/dev/null || echo -lcmocka)
 
-.PHONY: all lib test check-exports check-headers readme-example doc-examples sample-pyramid deps-test deps-bench \
+.PHONY: all lib test check-exports check-layers check-headers readme-example doc-examples sample-pyramid deps-test deps-bench \
         install uninstall clean bench bench-smoke format format-check help
 .DEFAULT_GOAL := all
 .SECONDARY:
@@ -165,6 +165,12 @@ $(OUT)/tests/test_threads: TEST_LDLIBS := -pthread
 check-exports: $(LIB_SO_REAL)
 	@sh scripts/check_exports.sh $(LIB_SO_REAL) include/sepax/*.h
 
+# The include lines prove the layering base <- shape <- collide <- world <-
+# ecs, and only tests/internal/ includes src/ (scripts/check_layers.sh holds
+# the table of layers).
+check-layers:
+	@sh scripts/check_layers.sh
+
 # Public headers must compile as C++ too.
 check-headers:
 	@echo "sepax: compiling the public headers as C++"
@@ -212,7 +218,7 @@ sample-pyramid: $(SAMPLE_PYRAMID)
 	@./$(SAMPLE_PYRAMID) 5 1 > $(SAMPLE_PYRAMID).out
 	@echo "sepax: samples/pyramid ran: $$(tail -n 1 $(SAMPLE_PYRAMID).out)"
 
-test: lib check-exports check-headers doc-examples sample-pyramid $(TEST_BINS)
+test: lib check-exports check-layers check-headers doc-examples sample-pyramid $(TEST_BINS)
 	@failed=0; total=0; \
 	for t in $(TEST_BINS); do \
 	  total=$$((total + 1)); \
@@ -578,6 +584,7 @@ help:
 	@echo "  all, lib          build/libsepax.a and the versioned build/libsepax.so (the default)"
 	@echo "  test              build the library and run every cmocka test, the documentation's examples and the sample"
 	@echo "  check-exports     libsepax.so must export exactly the SX_API declarations of include/sepax/*.h"
+	@echo "  check-layers      every include stays in its layer or below (base, shape, collide, world, ecs)"
 	@echo "  check-headers     compile the public headers as C++"
 	@echo "  doc-examples      compile and run the C blocks of README.md and the C/C++ blocks of ecs/sepax_flecs.h"
 	@echo "  readme-example    the same as doc-examples (its former name)"

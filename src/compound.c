@@ -22,6 +22,7 @@
  * corner directions that satisfy two pairs' MTVs at once, a coarse ring, and
  * a local pattern search around the best. Every push tried is a complete
  * clearing walk, so whatever is returned separates. */
+#include "sepax/compound.h"
 #include "wide.h"
 
 /* A pair counts as penetrating when its MTV is longer than this: the

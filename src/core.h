@@ -1,9 +1,12 @@
-/* sepax — private internals shared by the .c files in src/: nothing here is
- * part of the public contract. */
+/* sepax — private base of every layer of src/ (base, shape, collide, world):
+ * nothing here is part of the public contract. It includes the base layer
+ * only; each file includes the public headers of its own layer and those
+ * below (make check-layers). */
 #ifndef SEPAX_CORE_H
 #define SEPAX_CORE_H
 
-#include "sepax/sepax.h"
+#include "sepax/base.h"
+#include "sepax/math.h"
 
 /* Marks a parameter as deliberately unused. */
 #define SX_UNUSED(x) ((void)(x))

@@ -30,6 +30,7 @@
  * linear in the point count; nothing is allocated. Cost: cleaning, the
  * simplicity test, ear clipping and the merge orders are O(n^2) (about 0.3 s
  * for 4000 points), fine for authored outlines. */
+#include "sepax/compound.h"
 #include "wide.h"
 
 /* Ints per outline point in the scratch block: prev/next links (2), the

@@ -13,7 +13,9 @@
 
 #include <string.h>
 
+#include "collide_world.h"
 #include "core.h"
+#include "sepax/collide.h"
 
 /* SSE for the float build's inner loops (x86-64 always has SSE2); the
  * double build and -DSX_NO_SIMD keep the portable loops. Every SSE loop
@@ -310,11 +312,6 @@ static inline int sx_world_manifold(sx_manifold *m, int count, sx_xf xa) {
     return count;
 #endif
 }
-
-/* sx_collide_ex with the world's reference-face hysteresis
- * (SX_WORLD_REFERENCE_HYSTERESIS): what the world's contacts use. */
-int sx_collide_world(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_real margin,
-                     sx_manifold *out);
 
 /* collide.c's general route, for what the fused routines hand back: the
  * manifold of A (kind: SX_SHAPE_SEGMENT, CAPSULE or POLYGON) against a

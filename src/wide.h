@@ -10,6 +10,7 @@
 #define SEPAX_WIDE_H
 
 #include "core.h"
+#include "sepax/shape.h"
 
 #ifdef SX_DOUBLE
 typedef long double sx_wide;
