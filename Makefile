@@ -172,10 +172,14 @@ check-layers:
 	@sh scripts/check_layers.sh
 
 # Public headers must compile as C++ too.
+# With include/sepax itself on the include path, no sepax header may take the
+# place of a C library header (<math.h> here).
 check-headers:
 	@echo "sepax: compiling the public headers as C++"
 	@printf '#include <sepax/sepax.h>\nint main() { sx_vec2 v = sx_v2(1, 2); return (int)sx_length(v) - 2; }\n' \
 	  | $(CXX) -std=c++11 -Wall -Wextra -pedantic -Werror $(DEFS) -Iinclude -x c++ -fsyntax-only -
+	@printf '#include <math.h>\n#include "sepax.h"\nint main(void) { return (int)(sqrt(4.0) + sx_length(sx_v2(0, 0))) - 2; }\n' \
+	  | $(CC) -std=c99 -Wall -Wextra -pedantic -Werror $(DEFS) -Iinclude/sepax -x c -fsyntax-only -
 
 # Every C code block of README.md and the C and C++ blocks of the usage
 # comment atop ecs/sepax_flecs.h are compiled with the strict flags and run,
@@ -542,6 +546,7 @@ INSTALL_FILES = include/sepax/*.h lib/libsepax.a lib/libsepax.so lib/$(SONAME) \
 install: lib
 	install -d $(DESTDIR)$(PREFIX)/include/sepax $(DESTDIR)$(PREFIX)/lib/pkgconfig
 	install -m 644 include/sepax/*.h $(DESTDIR)$(PREFIX)/include/sepax/
+	rm -f $(DESTDIR)$(PREFIX)/include/sepax/math.h  # the former name of vecmath.h, which shadowed <math.h>
 	install -m 644 $(LIB_A) $(DESTDIR)$(PREFIX)/lib/
 	install -m 755 $(LIB_SO_REAL) $(DESTDIR)$(PREFIX)/lib/
 	ln -sf libsepax.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/$(SONAME)

@@ -6,7 +6,7 @@
 #define SEPAX_CORE_H
 
 #include "sepax/base.h"
-#include "sepax/math.h"
+#include "sepax/vecmath.h"
 
 /* Marks a parameter as deliberately unused. */
 #define SX_UNUSED(x) ((void)(x))

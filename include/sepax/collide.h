@@ -25,7 +25,7 @@
 #define SEPAX_COLLIDE_H
 
 #include "base.h"
-#include "math.h"
+#include "vecmath.h"
 #include "shape.h"
 
 #ifdef __cplusplus

@@ -13,7 +13,7 @@
 
 #include "base.h"
 #include "collide.h"
-#include "math.h"
+#include "vecmath.h"
 #include "shape.h"
 
 #ifdef __cplusplus

@@ -11,7 +11,7 @@
 #define SEPAX_SHAPE_H
 
 #include "base.h"
-#include "math.h"
+#include "vecmath.h"
 
 #ifdef __cplusplus
 extern "C" {

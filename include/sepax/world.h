@@ -91,7 +91,7 @@
 #define SEPAX_WORLD_H
 
 #include "base.h"
-#include "math.h"
+#include "vecmath.h"
 #include "shape.h"
 #include "collide.h"
 #include "compound.h"
