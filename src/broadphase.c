@@ -13,20 +13,14 @@
  * collider joins it, leaves it or is moved while in it: the entries of those
  * colliders are redone and merged in (linear in the set, once per change,
  * not per step), so a sleeping pile or a static level costs nothing per
- * step. Measured (2026-11-23, 2 shared cores) against the single sweep over
- * every collider it replaced: mostly_asleep (20,000 sleeping boxes and 200
- * falling ones) cost 38.8 times the 200 alone with one sweep, 1.3 to 2.0
- * times with the two sets; on the all-awake rain scaling scene the two are
- * level (16,000 bodies: 24.7 and 24.6 ms per step), and sorting newcomers
- * apart cut the first step of 64,000 bodies created in a grid from 4.6 s
- * (insertion sort, quadratic) to 62 ms. The rain scene's ms per step grows
- * with a log-log slope of 0.76 to 1.00 (two runs) from 1,000 to 64,000
- * bodies. Enlarged bounds for moving colliders (kept while the body stays
- * inside them, as in a dynamic tree) were measured too: 0.05 m and 0.1 m
- * extensions gave 27.9 and 28.3 ms per step on 16,000 settled bodies against
- * 28.2 recomputing every collide, and 9.7 to 10.1 against 9.9 while they
- * fall: no gain, and more narrowphase pairs; recomputing keeps the sweep
- * exact. Pairs with no awake dynamic collider (static-static,
+ * step: a scene that is mostly asleep costs about what its awake bodies
+ * cost, where one sweep over every collider paid for the sleepers each step.
+ * Newcomers are sorted apart and merged, because an insertion sort of many
+ * new colliders at once is quadratic. Enlarged bounds for moving colliders
+ * (kept while the body stays inside them, as in a dynamic tree) gave no gain
+ * and more narrowphase pairs, so the bounds are recomputed every collide and
+ * the sweep stays exact (bench/README.md has the scenes that show it).
+ * Pairs with no awake dynamic collider (static-static,
  * static-kinematic, kinematic-kinematic, anything with a sleeping body) are
  * not reported: nothing there can respond; the one exception is a moving
  * kinematic body meeting a sleeping one, which must wake it. Pairs come out sorted by key, so the

@@ -38,9 +38,8 @@ static inline bool xform_finite(sx_xform x) {
  * infinite (inf x 0 is NaN, inf x nonzero is infinite). */
 SX_NOINLINE static bool relative_xform(sx_xform xa, sx_xform xb, sx_xform *rel) {
 #if SX_NARROW_SSE
-    /* Out of line: inlined, GCC 12 copied xb through a 16-byte reload of
-     * its two stored halves, a failed store forward (the overlap of two
-     * boxes went from 38 to 47 ns; out of line it is 38). */
+    /* Out of line: inlined, GCC 12 copies xb through a 16-byte reload of
+     * its two stored halves, a failed store forward on the hot path. */
     __m128 r = sx_sse_relative_xform(sx_xf_of(&xa), sx_xf_of(&xb));
     _mm_storeu_ps(&rel->p.x, r);
     return sx_sse_finite(r);
@@ -218,8 +217,8 @@ static sx_vec2 circles_direction(const sx_circle *a, sx_xform xa, const sx_circl
  * direction d over its length unless the centres coincide within rounding
  * (circles_direction's test, which for a square this large reads
  * dist > 64 epsilon r). collide_circles writes the same steps out itself:
- * calling this helper from it made GCC 12 spill the by-value transforms and
- * reload them across a store-forwarding stall (11 ns per pair became 16-20). */
+ * calling this helper from it makes GCC 12 spill the by-value transforms and
+ * reload them across a store-forwarding stall. */
 static inline bool circles_touch(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                                  sx_vec2 d, sx_real limit, sx_vec2 *n, sx_real *dist) {
     sx_real dsq = sx_length_sq(d), r = a->radius + b->radius;
@@ -393,10 +392,9 @@ static int builder_kind(sx_core_builder *f) {
 
 /* The overlap and MTV of two cores: narrow_core.c's fused routines. The
  * transforms come by address, from the function that holds them by value:
- * passed on by value through the inlined pair functions, GCC 12 copied the
+ * passed on by value through the inlined pair functions, GCC 12 copies the
  * transform of B as one 16-byte load of its two stored 8-byte halves, a
- * failed store forward that cost the overlap of a polygon and a segment a
- * fifth of its time (40 ns, 33 ns now). circle_valid takes B's transform by
+ * failed store forward on every call. circle_valid takes B's transform by
  * address for the same reason. */
 static bool pair_overlap(sx_core_builder *fa, const void *a, const sx_xform *xa,
                          sx_core_builder *fb, const void *b, const sx_xform *xb) {
@@ -481,9 +479,8 @@ static int point_collide(sx_core_builder *fa, const void *a, sx_xform xa, const 
  * sx_core_segment_point_overlap in narrow.h), and the cases those leave to
  * the general route take point_overlap, point_mtv or point_collide. They
  * stay out of line (SX_NOINLINE): inlined into the dispatch entries, GCC 12
- * spilled the by-value transform as two 8-byte halves and read it back as
- * one 16-byte vector, a failed store forward that cost the overlap test a
- * third of its time (segment-circle 21 ns out of line, 31 ns inlined). */
+ * spills the by-value transform as two 8-byte halves and reads it back as
+ * one 16-byte vector, a failed store forward on every call. */
 SX_NOINLINE static bool segment_point_overlap(sx_vec2 a0, sx_vec2 a1, sx_real ra,
                                               sx_core_builder *fa, const void *a, sx_xform xa,
                                               const sx_circle *b, sx_xform xb) {

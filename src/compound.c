@@ -590,13 +590,12 @@ static bool sides_mtv(const side *a, const side *b, sx_vec2 *mtv) {
 
 /* Far beyond SX_HUGE (16 times) the clearing walk works with B's origin as
  * the working origin. The MTV does not depend on where the pair is, but the
- * walk takes its supports in world space: at 1.8e19 m from the origin (an
- * ulp of 2e12 m) they were noise, every exit fell back to the pair's MTV,
- * the walks crawled through their whole budget and one call took 2 s (fuzz:
- * compound-mtv-compound-walk-timeout). Within the promised range the world
+ * walk takes its supports in world space, where an ulp there can exceed the
+ * pair: the supports are noise, every exit falls back to the pair's MTV and
+ * the walk spends its whole budget. Within the promised range the world
  * frame is kept: there the walk rounds as the caller's world does, which is
- * what lets an answer one ulp long clear a pair 1.4e5 m out when added to
- * A's position. */
+ * what lets an answer one ulp long clear the pair when added to A's
+ * position. */
 static void sides_recentre(side *a, side *b) {
     sx_real far = SX_R(16.0) * SX_HUGE;
     sx_vec2 pa = sx_sub(a->x.p, b->x.p);

@@ -151,9 +151,9 @@ static inline __m128 sx_sse_xform(const sx_xform *x) {
 
 /* A transform handed between the narrowphase's functions: one register,
  * [p.x, p.y, q.c, q.s]. Passed in a register, not by address: where a
- * function took the address of its by-value transform, GCC 12 copied it
+ * function took the address of its by-value transform, GCC 12 copies it
  * through a 16-byte reload of its two stored 8-byte halves, a failed store
- * forward that cost a polygon against a circle a third of its time. Made
+ * forward on every call. Made
  * with sx_xf_of in the function that holds the transform by value (the two
  * halves arrive in two registers and become one without memory). */
 typedef __m128 sx_xf;
@@ -261,7 +261,7 @@ static inline int sx_world_manifold(sx_manifold *m, int count, sx_xf xa) {
         /* Two 8-byte loads, not one of 16: the routines before this store
          * the normal and the point separately, and a 16-byte load of two
          * stores still in flight cannot take their values (a failed store
-         * forward, a quarter of a segment-circle manifold). */
+         * forward). */
         __m128 np = _mm_loadh_pi(_mm_loadl_pi(z, (const __m64 *)(const void *)&m->normal),
                                  (const __m64 *)(const void *)&m->points[0].point);
         /* -0 is the identity of addition (+0 would turn a -0 normal

@@ -950,15 +950,15 @@ static int clip_face(const sx_core *ref, int *face, const sx_core *inc, sx_real 
             /* Two faces of ref bent by 1e-4 rad at a vertex separate inc by
              * the same amount up to rounding, and the SAT's pick of the two
              * may leave inc's deepest vertex beyond its slab, where clipping
-             * cuts it off (a 2 mm penetration came out as 1 mm). Of two
+             * cuts it off (the depth comes out short). Of two
              * such tied faces the one whose slab the deepest vertex is in,
              * or towards, is the reference. A real corner
              * (the neighbour separating clearly less) keeps face i. The
              * rounding allowance takes in the point the neighbour's
              * separation is measured from: a neighbour running 1e5 m to a
              * far corner is placed with ~1 cm of rounding, and a 2 mm
-             * difference between the two faces then says nothing (an
-             * 8.76 m penetration came out as 1.3 cm). */
+             * difference between the two faces then says nothing (picking
+             * on it, a deep penetration could come out a centimetre deep). */
             int nb = slab_neighbour(ref, i, inc->v[s]);
             if (nb >= 0) {
                 sx_real tie =
