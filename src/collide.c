@@ -75,16 +75,6 @@ static void clear_manifold(sx_manifold *out) {
     if (out) memset(out, 0, sizeof(*out));
 }
 
-/* The manifold of (B, A) from that of (A, B): same points and depths, the
- * normal reversed, and the flipped bit of every id toggled (the reference
- * face now belongs to the other argument). */
-static void mirror_manifold(sx_manifold *m) {
-    int i;
-    m->normal = sx_neg(m->normal);
-    for (i = 0; i < m->count; ++i)
-        m->points[i].id ^= (uint32_t)1 << 16;
-}
-
 /* Lexicographic order of the bit patterns of two runs of reals: arbitrary
  * but total and deterministic (NaN and -0 included), which is all the
  * canonical order needs. */
@@ -315,8 +305,8 @@ static inline int collide_circles(const sx_circle *a, sx_xform xa, const sx_circ
  * square in full precision, centres apart by more than rounding noise) is
  * written out on the registers, each lane computed as collide_circles
  * computes it; collide_circles answers the rest. */
-static int coll_circles(const sx_circle *a, sx_xf xa, const sx_circle *b, sx_xf xb, sx_real margin,
-                        sx_real hyst, sx_manifold *out) {
+int sx_collide_circles_xf(const sx_circle *a, sx_xf xa, const sx_circle *b, sx_xf xb,
+                          sx_real margin, sx_real hyst, sx_manifold *out) {
     SX_UNUSED(hyst); /* circles have no reference face */
 #if SX_NARROW_SSE
     if (a != NULL && b != NULL) {
@@ -563,7 +553,7 @@ static int collide_rescue(sx_core_builder *f, const void *a, sx_xform xa, const 
     int count = pair_collide(f, a, xa, f, b, xb, SX_TOUCH_RESCUE_MARGIN, hyst, m), i;
     if (count == 0) {
         count = pair_collide(f, b, xb, f, a, xa, SX_TOUCH_RESCUE_MARGIN, hyst, m);
-        if (count > 0) mirror_manifold(m);
+        if (count > 0) sx_mirror_manifold(m);
     }
     for (i = 0; i < count; ++i)
         m->points[i].depth = sx_maxr(m->points[i].depth, SX_R(0.0));
@@ -628,8 +618,8 @@ bool sx_mtv_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b,
 int sx_collide_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_coll_segment_circle(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
-                                  SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
+    return sx_collide_segment_circle_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                        SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 /* ---- segment - segment -------------------------------------------------- */
@@ -668,8 +658,8 @@ SX_NOINLINE int sx_collide_segments_gated(const sx_segment *a, sx_xf ta, const s
 int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_coll_segments(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
-                            out ? out : &scratch);
+    return sx_collide_segments_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                  SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 /* ---- capsule - circle / segment / capsule ------------------------------- */
@@ -686,8 +676,8 @@ bool sx_mtv_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b,
 int sx_collide_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_coll_capsule_circle(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
-                                  SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
+    return sx_collide_capsule_circle_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                        SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 bool sx_overlap_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b,
@@ -701,8 +691,8 @@ bool sx_mtv_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *
 int sx_collide_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                                sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_coll_capsule_segment(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
-                                   SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
+    return sx_collide_capsule_segment_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                         SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 static int order_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb) {
@@ -745,8 +735,8 @@ SX_NOINLINE int sx_collide_capsules_gated(const sx_capsule *a, sx_xf ta, const s
 int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_coll_capsules(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
-                            out ? out : &scratch);
+    return sx_collide_capsules_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                  SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 /* ---- polygon - circle / segment / capsule ------------------------------- */
@@ -796,8 +786,8 @@ bool sx_mtv_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b,
 int sx_collide_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_coll_polygon_circle(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
-                                  SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
+    return sx_collide_polygon_circle_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                        SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 bool sx_overlap_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b,
@@ -811,8 +801,8 @@ bool sx_mtv_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *
 int sx_collide_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                                sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_coll_polygon_segment(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
-                                   SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
+    return sx_collide_polygon_segment_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                         SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 bool sx_overlap_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b,
@@ -826,8 +816,8 @@ bool sx_mtv_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *
 int sx_collide_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                                sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_coll_polygon_capsule(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
-                                   SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
+    return sx_collide_polygon_capsule_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                         SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 /* ---- polygon - polygon -------------------------------------------------- */
@@ -977,11 +967,106 @@ SX_NOINLINE int sx_collide_polygons_gated(const sx_polygon *a, sx_xf ta, const s
 int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_coll_polygons(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
-                            out ? out : &scratch);
+    return sx_collide_polygons_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                  SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 /* ---- the dispatch table ------------------------------------------------- */
+
+/* The overlap and MTV entries of each pair: the typed pair function on the
+ * shapes' union members. */
+static bool overlap_circles_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
+    return sx_overlap_circles(&a->u.circle, xa, &b->u.circle, xb);
+}
+static bool mtv_circles_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                               sx_vec2 *mtv) {
+    return sx_mtv_circles(&a->u.circle, xa, &b->u.circle, xb, mtv);
+}
+int sx_collide_circles_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
+                              sx_real margin, sx_real hyst, sx_manifold *out) {
+    return sx_collide_circles_xf(&a->u.circle, xa, &b->u.circle, xb, margin, hyst, out);
+}
+
+static bool overlap_segment_circle_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                          sx_xform xb) {
+    return sx_overlap_segment_circle(&a->u.segment, xa, &b->u.circle, xb);
+}
+static bool mtv_segment_circle_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                      sx_xform xb, sx_vec2 *mtv) {
+    return sx_mtv_segment_circle(&a->u.segment, xa, &b->u.circle, xb, mtv);
+}
+
+static bool overlap_segments_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                    sx_xform xb) {
+    return sx_overlap_segments(&a->u.segment, xa, &b->u.segment, xb);
+}
+static bool mtv_segments_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                                sx_vec2 *mtv) {
+    return sx_mtv_segments(&a->u.segment, xa, &b->u.segment, xb, mtv);
+}
+
+static bool overlap_capsule_circle_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                          sx_xform xb) {
+    return sx_overlap_capsule_circle(&a->u.capsule, xa, &b->u.circle, xb);
+}
+static bool mtv_capsule_circle_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                      sx_xform xb, sx_vec2 *mtv) {
+    return sx_mtv_capsule_circle(&a->u.capsule, xa, &b->u.circle, xb, mtv);
+}
+
+static bool overlap_capsule_segment_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                           sx_xform xb) {
+    return sx_overlap_capsule_segment(&a->u.capsule, xa, &b->u.segment, xb);
+}
+static bool mtv_capsule_segment_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                       sx_xform xb, sx_vec2 *mtv) {
+    return sx_mtv_capsule_segment(&a->u.capsule, xa, &b->u.segment, xb, mtv);
+}
+
+static bool overlap_capsules_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                    sx_xform xb) {
+    return sx_overlap_capsules(&a->u.capsule, xa, &b->u.capsule, xb);
+}
+static bool mtv_capsules_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                                sx_vec2 *mtv) {
+    return sx_mtv_capsules(&a->u.capsule, xa, &b->u.capsule, xb, mtv);
+}
+
+static bool overlap_polygon_circle_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                          sx_xform xb) {
+    return sx_overlap_polygon_circle(&a->u.polygon, xa, &b->u.circle, xb);
+}
+static bool mtv_polygon_circle_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                      sx_xform xb, sx_vec2 *mtv) {
+    return sx_mtv_polygon_circle(&a->u.polygon, xa, &b->u.circle, xb, mtv);
+}
+
+static bool overlap_polygon_segment_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                           sx_xform xb) {
+    return sx_overlap_polygon_segment(&a->u.polygon, xa, &b->u.segment, xb);
+}
+static bool mtv_polygon_segment_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                       sx_xform xb, sx_vec2 *mtv) {
+    return sx_mtv_polygon_segment(&a->u.polygon, xa, &b->u.segment, xb, mtv);
+}
+
+static bool overlap_polygon_capsule_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                           sx_xform xb) {
+    return sx_overlap_polygon_capsule(&a->u.polygon, xa, &b->u.capsule, xb);
+}
+static bool mtv_polygon_capsule_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                       sx_xform xb, sx_vec2 *mtv) {
+    return sx_mtv_polygon_capsule(&a->u.polygon, xa, &b->u.capsule, xb, mtv);
+}
+
+static bool overlap_polygons_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                    sx_xform xb) {
+    return sx_overlap_polygons(&a->u.polygon, xa, &b->u.polygon, xb);
+}
+static bool mtv_polygons_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                                sx_vec2 *mtv) {
+    return sx_mtv_polygons(&a->u.polygon, xa, &b->u.polygon, xb, mtv);
+}
 
 typedef bool sx_overlap_entry(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb);
 typedef bool sx_mtv_entry(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
@@ -991,101 +1076,27 @@ typedef bool sx_mtv_entry(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_
 typedef int sx_collide_entry(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
                              sx_real margin, sx_real hyst, sx_manifold *out);
 
+/* The entries of one ordered pair of types. `swapped`: the pair's
+ * functions take the arguments in the other order, so the dispatch swaps
+ * them back, negates the MTV and mirrors the manifold. */
 typedef struct sx_pair_entry {
     sx_overlap_entry *overlap;
     sx_mtv_entry *mtv;
     sx_collide_entry *collide;
+    bool swapped;
 } sx_pair_entry;
 
-/* Entries for the canonical order call the pair function directly; entries
- * for the reverse order (suffix _rev) swap the arguments, negate the MTV and
- * mirror the manifold. Written out by a generator macro per unordered pair so
- * that the sixteen ordered entries cannot drift apart. */
-#define SX_PAIR_ENTRIES(NAME, MA, MB)                                                              \
-    static bool ov_##NAME(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {        \
-        return sx_overlap_##NAME(&a->u.MA, xa, &b->u.MB, xb);                                      \
-    }                                                                                              \
-    static bool mtv_##NAME(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,         \
-                           sx_vec2 *mtv) {                                                         \
-        return sx_mtv_##NAME(&a->u.MA, xa, &b->u.MB, xb, mtv);                                     \
-    }                                                                                              \
-    static bool ov_##NAME##_rev(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {  \
-        return sx_overlap_##NAME(&b->u.MA, xb, &a->u.MB, xa);                                      \
-    }                                                                                              \
-    static bool mtv_##NAME##_rev(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,   \
-                                 sx_vec2 *mtv) {                                                   \
-        sx_vec2 v;                                                                                 \
-        bool hit = sx_mtv_##NAME(&b->u.MA, xb, &a->u.MB, xa, &v);                                  \
-        if (mtv) *mtv = hit ? sx_neg(v) : sx_v2_zero();                                            \
-        return hit;                                                                                \
-    }
-
-SX_PAIR_ENTRIES(segment_circle, segment, circle)
-SX_PAIR_ENTRIES(capsule_circle, capsule, circle)
-SX_PAIR_ENTRIES(capsule_segment, capsule, segment)
-SX_PAIR_ENTRIES(polygon_circle, polygon, circle)
-SX_PAIR_ENTRIES(polygon_segment, polygon, segment)
-SX_PAIR_ENTRIES(polygon_capsule, polygon, capsule)
-
-#undef SX_PAIR_ENTRIES
-
-/* Same-type pairs: the pair functions order overlap and MTV themselves, and
- * manifolds follow the caller's order. */
-static bool ov_circles(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
-    return sx_overlap_circles(&a->u.circle, xa, &b->u.circle, xb);
-}
-static bool mtv_circles(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                        sx_vec2 *mtv) {
-    return sx_mtv_circles(&a->u.circle, xa, &b->u.circle, xb, mtv);
-}
-static int col_circles(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb, sx_real margin,
-                       sx_real hyst, sx_manifold *out) {
-    return coll_circles(&a->u.circle, xa, &b->u.circle, xb, margin, hyst, out);
-}
-static bool ov_segments(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
-    return sx_overlap_segments(&a->u.segment, xa, &b->u.segment, xb);
-}
-static bool mtv_segments(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                         sx_vec2 *mtv) {
-    return sx_mtv_segments(&a->u.segment, xa, &b->u.segment, xb, mtv);
-}
-static bool ov_capsules(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
-    return sx_overlap_capsules(&a->u.capsule, xa, &b->u.capsule, xb);
-}
-static bool mtv_capsules(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                         sx_vec2 *mtv) {
-    return sx_mtv_capsules(&a->u.capsule, xa, &b->u.capsule, xb, mtv);
-}
-static bool ov_polygons(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
-    return sx_overlap_polygons(&a->u.polygon, xa, &b->u.polygon, xb);
-}
-static bool mtv_polygons(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                         sx_vec2 *mtv) {
-    return sx_mtv_polygons(&a->u.polygon, xa, &b->u.polygon, xb, mtv);
-}
-
+/* The table, indexed [A's type][B's type], filled from narrow.h's lists of
+ * pairs: a pair of two types in both orders, a pair of one type once. */
+#define SX_TABLE_BOTH_ORDERS(NAME, TA, KA, MA, TB, KB, MB)                                         \
+    [KA][KB] = {overlap_##NAME##_shapes, mtv_##NAME##_shapes, sx_collide_##NAME##_shapes, false},  \
+    [KB][KA] = {overlap_##NAME##_shapes, mtv_##NAME##_shapes, sx_collide_##NAME##_shapes, true},
+#define SX_TABLE_ONE_ORDER(NAME, TA, KA, MA, TB, KB, MB)                                           \
+    [KA][KB] = {overlap_##NAME##_shapes, mtv_##NAME##_shapes, sx_collide_##NAME##_shapes, false},
 static const sx_pair_entry sx_pair_table[SX_SHAPE_TYPE_COUNT][SX_SHAPE_TYPE_COUNT] = {
-    /* A = circle */
-    {{ov_circles, mtv_circles, col_circles},
-     {ov_segment_circle_rev, mtv_segment_circle_rev, sx_entry_segment_circle_rev},
-     {ov_capsule_circle_rev, mtv_capsule_circle_rev, sx_entry_capsule_circle_rev},
-     {ov_polygon_circle_rev, mtv_polygon_circle_rev, sx_entry_polygon_circle_rev}},
-    /* A = segment */
-    {{ov_segment_circle, mtv_segment_circle, sx_entry_segment_circle},
-     {ov_segments, mtv_segments, sx_entry_segments},
-     {ov_capsule_segment_rev, mtv_capsule_segment_rev, sx_entry_capsule_segment_rev},
-     {ov_polygon_segment_rev, mtv_polygon_segment_rev, sx_entry_polygon_segment_rev}},
-    /* A = capsule */
-    {{ov_capsule_circle, mtv_capsule_circle, sx_entry_capsule_circle},
-     {ov_capsule_segment, mtv_capsule_segment, sx_entry_capsule_segment},
-     {ov_capsules, mtv_capsules, sx_entry_capsules},
-     {ov_polygon_capsule_rev, mtv_polygon_capsule_rev, sx_entry_polygon_capsule_rev}},
-    /* A = polygon */
-    {{ov_polygon_circle, mtv_polygon_circle, sx_entry_polygon_circle},
-     {ov_polygon_segment, mtv_polygon_segment, sx_entry_polygon_segment},
-     {ov_polygon_capsule, mtv_polygon_capsule, sx_entry_polygon_capsule},
-     {ov_polygons, mtv_polygons, sx_entry_polygons}},
-};
+    SX_PAIRS_OF_TWO_TYPES(SX_TABLE_BOTH_ORDERS) SX_PAIRS_OF_ONE_TYPE(SX_TABLE_ONE_ORDER)};
+#undef SX_TABLE_BOTH_ORDERS
+#undef SX_TABLE_ONE_ORDER
 
 static const sx_pair_entry *pair_entry(const sx_shape *a, const sx_shape *b) {
     if (a == NULL || b == NULL) return NULL;
@@ -1100,16 +1111,22 @@ static const sx_pair_entry *pair_entry(const sx_shape *a, const sx_shape *b) {
 
 bool sx_overlap(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
     const sx_pair_entry *e = pair_entry(a, b);
-    return e != NULL && e->overlap(a, xa, b, xb);
+    if (e == NULL) return false;
+    return e->swapped ? e->overlap(b, xb, a, xa) : e->overlap(a, xa, b, xb);
 }
 
 bool sx_mtv(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_vec2 *mtv) {
     const sx_pair_entry *e = pair_entry(a, b);
+    sx_vec2 v;
+    bool hit;
     if (e == NULL) {
         if (mtv) *mtv = sx_v2_zero();
         return false;
     }
-    return e->mtv(a, xa, b, xb, mtv);
+    if (!e->swapped) return e->mtv(a, xa, b, xb, mtv);
+    hit = e->mtv(b, xb, a, xa, &v);
+    if (mtv) *mtv = hit ? sx_neg(v) : sx_v2_zero();
+    return hit;
 }
 
 /* Both manifold entry points dispatch here directly (one call layer less
@@ -1122,7 +1139,11 @@ static inline int collide_dispatch(const sx_shape *a, sx_xform xa, const sx_shap
         clear_manifold(out);
         return 0;
     }
-    return e->collide(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, hyst, out ? out : &scratch);
+    if (out == NULL) out = &scratch;
+    if (!e->swapped) return e->collide(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, hyst, out);
+    e->collide(b, sx_xf_of(&xb), a, sx_xf_of(&xa), margin, hyst, out);
+    sx_mirror_manifold(out);
+    return out->count;
 }
 
 int sx_collide_ex(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_real margin,

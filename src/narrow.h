@@ -353,29 +353,51 @@ bool sx_cores_overlap(int ka, const void *a, sx_xf xa, int kb, const void *b, sx
  * move to world space. */
 bool sx_cores_mtv(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_xf xb, sx_vec2 *mtv);
 
-/* The manifold entries (narrow_core.c): sx_entry_NAME takes the two shapes
- * as the dispatch table does (NAME_rev: the arguments in the other order,
- * the manifold mirrored), sx_coll_NAME the pair's own structs, as the typed
- * pair functions do; hyst is the reference-face hysteresis, out not NULL. */
-#define SX_ENTRY_DECL(NAME, TA, TB)                                                                \
-    int sx_coll_##NAME(const TA *a, sx_xf xa, const TB *b, sx_xf xb, sx_real margin, sx_real hyst, \
-                       sx_manifold *out);                                                          \
-    int sx_entry_##NAME(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb, sx_real margin,  \
-                        sx_real hyst, sx_manifold *out);
-#define SX_ENTRY_DECL_REV(NAME, TA, TB)                                                            \
-    SX_ENTRY_DECL(NAME, TA, TB)                                                                    \
-    int sx_entry_##NAME##_rev(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,            \
-                              sx_real margin, sx_real hyst, sx_manifold *out);
-SX_ENTRY_DECL_REV(segment_circle, sx_segment, sx_circle)
-SX_ENTRY_DECL_REV(capsule_circle, sx_capsule, sx_circle)
-SX_ENTRY_DECL_REV(polygon_circle, sx_polygon, sx_circle)
-SX_ENTRY_DECL_REV(capsule_segment, sx_capsule, sx_segment)
-SX_ENTRY_DECL_REV(polygon_segment, sx_polygon, sx_segment)
-SX_ENTRY_DECL_REV(polygon_capsule, sx_polygon, sx_capsule)
-SX_ENTRY_DECL(segments, sx_segment, sx_segment)
-SX_ENTRY_DECL(capsules, sx_capsule, sx_capsule)
-SX_ENTRY_DECL(polygons, sx_polygon, sx_polygon)
-#undef SX_ENTRY_DECL_REV
-#undef SX_ENTRY_DECL
+/* ---- the pairs of shape types --------------------------------------------- */
+
+/* Every unordered pair of shape types, once: X(NAME, type of A, kind of A,
+ * union member of A, type of B, kind of B, member of B), A first as in the
+ * typed functions sx_overlap_NAME, sx_mtv_NAME and sx_collide_NAME of
+ * collide.h. These lists declare the manifold entries below and fill
+ * collide.c's dispatch table; the functions themselves are written out
+ * (narrow_core.c, and collide.c for two circles). */
+#define SX_PAIRS_OF_TWO_TYPES(X)                                                                   \
+    X(segment_circle, sx_segment, SX_SHAPE_SEGMENT, segment, sx_circle, SX_SHAPE_CIRCLE, circle)   \
+    X(capsule_circle, sx_capsule, SX_SHAPE_CAPSULE, capsule, sx_circle, SX_SHAPE_CIRCLE, circle)   \
+    X(polygon_circle, sx_polygon, SX_SHAPE_POLYGON, polygon, sx_circle, SX_SHAPE_CIRCLE, circle)   \
+    X(capsule_segment, sx_capsule, SX_SHAPE_CAPSULE, capsule, sx_segment, SX_SHAPE_SEGMENT,        \
+      segment)                                                                                     \
+    X(polygon_segment, sx_polygon, SX_SHAPE_POLYGON, polygon, sx_segment, SX_SHAPE_SEGMENT,        \
+      segment)                                                                                     \
+    X(polygon_capsule, sx_polygon, SX_SHAPE_POLYGON, polygon, sx_capsule, SX_SHAPE_CAPSULE, capsule)
+#define SX_PAIRS_OF_ONE_TYPE(X)                                                                    \
+    X(circles, sx_circle, SX_SHAPE_CIRCLE, circle, sx_circle, SX_SHAPE_CIRCLE, circle)             \
+    X(segments, sx_segment, SX_SHAPE_SEGMENT, segment, sx_segment, SX_SHAPE_SEGMENT, segment)      \
+    X(capsules, sx_capsule, SX_SHAPE_CAPSULE, capsule, sx_capsule, SX_SHAPE_CAPSULE, capsule)      \
+    X(polygons, sx_polygon, SX_SHAPE_POLYGON, polygon, sx_polygon, SX_SHAPE_POLYGON, polygon)
+
+/* The manifold entries of each pair: sx_collide_NAME_xf takes the pair's
+ * own structs with the transforms in registers (what the typed pair
+ * functions call), sx_collide_NAME_shapes the two sx_shape of the dispatch
+ * table; hyst is the reference-face hysteresis, out is not NULL. Both
+ * answer as sx_collide_NAME. */
+#define SX_DECLARE_MANIFOLD_ENTRIES(NAME, TA, KA, MA, TB, KB, MB)                                  \
+    int sx_collide_##NAME##_xf(const TA *a, sx_xf xa, const TB *b, sx_xf xb, sx_real margin,       \
+                               sx_real hyst, sx_manifold *out);                                    \
+    int sx_collide_##NAME##_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,       \
+                                   sx_real margin, sx_real hyst, sx_manifold *out);
+SX_PAIRS_OF_TWO_TYPES(SX_DECLARE_MANIFOLD_ENTRIES)
+SX_PAIRS_OF_ONE_TYPE(SX_DECLARE_MANIFOLD_ENTRIES)
+#undef SX_DECLARE_MANIFOLD_ENTRIES
+
+/* The manifold of (B, A) from that of (A, B): same points and depths, the
+ * normal reversed, and the flipped bit of every id toggled (the reference
+ * face now belongs to the other argument). */
+static inline void sx_mirror_manifold(sx_manifold *m) {
+    int i;
+    m->normal = sx_neg(m->normal);
+    for (i = 0; i < m->count; ++i)
+        m->points[i].id ^= SX_FEATURE_ID_FLIPPED;
+}
 
 #endif /* SEPAX_NARROW_H */

@@ -598,8 +598,8 @@ static SX_ALWAYS_INLINE sx_real sat_pair_scale(const sx_core *a, const sx_core *
  * (past its second) end, the corner offered; with walk (polygon p), 0 too
  * when q lies within that corner's region, past the end of the face beyond
  * the corner (offer_face_walk). */
-static SX_ALWAYS_INLINE int offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index,
-                                       bool p_is_a, bool walk, sx_closest *best) {
+static SX_ALWAYS_INLINE int offer_edge(const sx_core *p, int i, sx_vec2 q, int q_index, bool p_is_a,
+                                       bool walk, sx_closest *best) {
     int i2 = next_index(p, i);
     sx_vec2 v1 = p->v[i], w = sx_sub(q, v1), n = p->n[i], dir = sx_v2(-n.y, n.x);
     sx_real t = sx_dot(w, dir);
@@ -897,7 +897,6 @@ static SX_ALWAYS_INLINE bool core_mtv(const sx_core *a, const sx_core *b, sx_vec
     *mtv = sx_scale(n, cl.distance - r);
     return true;
 }
-
 
 /* ---- manifolds ---------------------------------------------------------- */
 
@@ -1400,9 +1399,8 @@ static inline int point_manifold_rest(const sx_core *a, sx_vec2 c, sx_real rb, s
         /* A face contact on the face the walk found (offer_face_walk). */
         p->id = SX_FEATURE_ID(cl.ia, 0, 0);
         out->normal = a->n[cl.ia];
-    } else if (sat->face_a >= 0 &&
-               (cl.kind != SX_CLOSEST_VERTICES ||
-                cl.distance <= sat->sep_a + SX_FACE_CONTACT_TOLERANCE)) {
+    } else if (sat->face_a >= 0 && (cl.kind != SX_CLOSEST_VERTICES ||
+                                    cl.distance <= sat->sep_a + SX_FACE_CONTACT_TOLERANCE)) {
         /* A face contact: the exact point, labelled and oriented by the face. */
         p->id = SX_FEATURE_ID(sat->face_a, 0, 0);
         out->normal = a->n[sat->face_a];
@@ -1753,9 +1751,9 @@ int sx_core_polygon_point_manifold(const sx_polygon *a, sx_vec2 c, sx_real rb, s
 
 /* ---- fused entries: a core against a circle ----------------------------- */
 
-static SX_ALWAYS_INLINE int polygon_circle_collide(const sx_polygon *a, sx_xf xa,
-                                                   const sx_circle *b, sx_xf xb, sx_real margin,
-                                                   sx_manifold *out) {
+static SX_ALWAYS_INLINE int collide_polygon_circle_fused(const sx_polygon *a, sx_xf xa,
+                                                         const sx_circle *b, sx_xf xb,
+                                                         sx_real margin, sx_manifold *out) {
     sx_vec2 c;
     int local;
     bool finite = false;
@@ -1772,9 +1770,9 @@ static SX_ALWAYS_INLINE int polygon_circle_collide(const sx_polygon *a, sx_xf xa
     return sx_world_manifold(out, local, xa);
 }
 
-static SX_ALWAYS_INLINE int segment_circle_collide(sx_vec2 a0, sx_vec2 a1, sx_real ra, sx_xf xa,
-                                                   const sx_circle *b, sx_xf xb, sx_real margin,
-                                                   sx_manifold *out) {
+static SX_ALWAYS_INLINE int collide_segment_circle_fused(sx_vec2 a0, sx_vec2 a1, sx_real ra,
+                                                         sx_xf xa, const sx_circle *b, sx_xf xb,
+                                                         sx_real margin, sx_manifold *out) {
     sx_vec2 c;
     int local;
     if (b == NULL) {
@@ -1789,57 +1787,47 @@ static SX_ALWAYS_INLINE int segment_circle_collide(sx_vec2 a0, sx_vec2 a1, sx_re
     return sx_world_manifold(out, local, xa);
 }
 
-/* ---- the manifold entries of the dispatch table ------------------------- */
+/* ---- the manifold entries of each pair ---------------------------------- */
 
-/* The manifold of each pair kind in one function (the fused routines above,
- * and collide.c's general route for what they hand back). Each exists as
- * the dispatch table's entry, taking the shapes (sx_entry_*), its reversed
- * order (the manifold mirrored), and for the typed pair functions
- * (sx_coll_*), so that sx_collide reaches the work through one call. */
+/* Each pair's manifold in one function (the fused routines above, and
+ * collide.c's general route for what they hand back), inlined into both of
+ * its entries: sx_collide_NAME_xf for the typed pair functions and
+ * sx_collide_NAME_shapes for the dispatch table (narrow.h), so that
+ * sx_collide reaches the work through one call. The reversed order is the
+ * dispatch table's business (it mirrors the manifold). The typed entries of
+ * the pairs of two core types call the out-of-line sx_cores_collide, as
+ * sx_collide_NAME always has: only the dispatch table's copy is inlined. */
 
-static SX_ALWAYS_INLINE int coll_segment_circle(const sx_segment *a, sx_xf xa, const sx_circle *b,
-                                                sx_xf xb, sx_real margin, sx_real hyst,
-                                                sx_manifold *out) {
-    int count =
-        a == NULL ? -1 : segment_circle_collide(a->a, a->b, SX_R(0.0), xa, b, xb, margin, out);
+static SX_ALWAYS_INLINE int collide_segment_circle(const sx_segment *a, sx_xf xa,
+                                                   const sx_circle *b, sx_xf xb, sx_real margin,
+                                                   sx_real hyst, sx_manifold *out) {
+    int count = a == NULL
+                    ? -1
+                    : collide_segment_circle_fused(a->a, a->b, SX_R(0.0), xa, b, xb, margin, out);
     SX_UNUSED(hyst); /* circles have no reference face */
     if (count < 0) count = sx_point_collide_general(SX_SHAPE_SEGMENT, a, xa, b, xb, margin, out);
     return count;
 }
 
-static SX_ALWAYS_INLINE int coll_capsule_circle(const sx_capsule *a, sx_xf xa, const sx_circle *b,
-                                                sx_xf xb, sx_real margin, sx_real hyst,
-                                                sx_manifold *out) {
+static SX_ALWAYS_INLINE int collide_capsule_circle(const sx_capsule *a, sx_xf xa,
+                                                   const sx_circle *b, sx_xf xb, sx_real margin,
+                                                   sx_real hyst, sx_manifold *out) {
     int count = a == NULL || !core_radius_ok(a->radius)
                     ? -1
-                    : segment_circle_collide(a->a, a->b, a->radius, xa, b, xb, margin, out);
+                    : collide_segment_circle_fused(a->a, a->b, a->radius, xa, b, xb, margin, out);
     SX_UNUSED(hyst);
     if (count < 0) count = sx_point_collide_general(SX_SHAPE_CAPSULE, a, xa, b, xb, margin, out);
     return count;
 }
 
-static SX_ALWAYS_INLINE int coll_polygon_circle(const sx_polygon *a, sx_xf xa, const sx_circle *b,
-                                                sx_xf xb, sx_real margin, sx_real hyst,
-                                                sx_manifold *out) {
-    int count = polygon_circle_collide(a, xa, b, xb, margin, out);
+static SX_ALWAYS_INLINE int collide_polygon_circle(const sx_polygon *a, sx_xf xa,
+                                                   const sx_circle *b, sx_xf xb, sx_real margin,
+                                                   sx_real hyst, sx_manifold *out) {
+    int count = collide_polygon_circle_fused(a, xa, b, xb, margin, out);
     SX_UNUSED(hyst);
     if (count < 0) count = sx_point_collide_general(SX_SHAPE_POLYGON, a, xa, b, xb, margin, out);
     return count;
 }
-
-#define SX_CORES_COLL(NAME, TA, KA, TB, KB)                                                        \
-    static SX_ALWAYS_INLINE int coll_##NAME(const TA *a, sx_xf xa, const TB *b, sx_xf xb,          \
-                                            sx_real margin, sx_real hyst, sx_manifold *out) {      \
-        return cores_collide(KA, a, xa, KB, b, xb, margin, hyst, out, NULL);                       \
-    }                                                                                              \
-    int sx_coll_##NAME(const TA *a, sx_xf xa, const TB *b, sx_xf xb, sx_real margin, sx_real hyst, \
-                       sx_manifold *out) {                                                         \
-        return sx_cores_collide(KA, a, xa, KB, b, xb, margin, hyst, out, NULL);                    \
-    }
-SX_CORES_COLL(capsule_segment, sx_capsule, SX_SHAPE_CAPSULE, sx_segment, SX_SHAPE_SEGMENT)
-SX_CORES_COLL(polygon_segment, sx_polygon, SX_SHAPE_POLYGON, sx_segment, SX_SHAPE_SEGMENT)
-SX_CORES_COLL(polygon_capsule, sx_polygon, SX_SHAPE_POLYGON, sx_capsule, SX_SHAPE_CAPSULE)
-#undef SX_CORES_COLL
 
 /* Same-type manifolds follow the caller's order, but at margin 0 whether
  * the pair touches is the canonical order's answer; a pair clear of
@@ -1849,79 +1837,113 @@ SX_CORES_COLL(polygon_capsule, sx_polygon, SX_SHAPE_POLYGON, sx_capsule, SX_SHAP
  * and in the other order too unless the pair is within rounding of
  * touching. The clear-cut test comes first: nearly every pair passes it,
  * so the branch predicts, where the order of two random transforms is a
- * coin toss that mispredicts half the time. */
-#define SX_SAME_COLL(NAME, T, K)                                                                   \
-    static SX_ALWAYS_INLINE int coll_##NAME(const T *a, sx_xf xa, const T *b, sx_xf xb,            \
-                                            sx_real margin, sx_real hyst, sx_manifold *out) {      \
-        bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));                           \
-        int count = 0;                                                                             \
-        if (touch_test) {                                                                          \
-            bool clear_cut = false;                                                                \
-            count = cores_collide(K, a, xa, K, b, xb, SX_R(0.0), hyst, out, &clear_cut);           \
-            if (clear_cut) return count;                                                           \
-        }                                                                                          \
-        return sx_collide_##NAME##_gated(a, xa, b, xb, margin, hyst, count, touch_test, out);      \
-    }                                                                                              \
-    int sx_coll_##NAME(const T *a, sx_xf xa, const T *b, sx_xf xb, sx_real margin, sx_real hyst,   \
-                       sx_manifold *out) {                                                         \
-        bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));                           \
-        int count = 0;                                                                             \
-        if (touch_test) {                                                                          \
-            bool clear_cut = false;                                                                \
-            count = sx_cores_collide(K, a, xa, K, b, xb, SX_R(0.0), hyst, out, &clear_cut);        \
-            if (clear_cut) return count;                                                           \
-        }                                                                                          \
-        return sx_collide_##NAME##_gated(a, xa, b, xb, margin, hyst, count, touch_test, out);      \
+ * coin toss that mispredicts half the time. kind is a constant wherever
+ * this is inlined, so the switch folds away. */
+static SX_ALWAYS_INLINE int collide_same_type(int kind, const void *a, sx_xf xa, const void *b,
+                                              sx_xf xb, sx_real margin, sx_real hyst,
+                                              sx_manifold *out) {
+    bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
+    int count = 0;
+    if (touch_test) {
+        bool clear_cut = false;
+        count = cores_collide(kind, a, xa, kind, b, xb, SX_R(0.0), hyst, out, &clear_cut);
+        if (clear_cut) return count;
     }
-SX_SAME_COLL(segments, sx_segment, SX_SHAPE_SEGMENT)
-SX_SAME_COLL(capsules, sx_capsule, SX_SHAPE_CAPSULE)
-SX_SAME_COLL(polygons, sx_polygon, SX_SHAPE_POLYGON)
-#undef SX_SAME_COLL
-
-/* The manifold of (B, A) from that of (A, B): same points and depths, the
- * normal reversed, and the flipped bit of every id toggled. */
-static void mirror(sx_manifold *m) {
-    int i;
-    m->normal = sx_neg(m->normal);
-    for (i = 0; i < m->count; ++i)
-        m->points[i].id ^= (uint32_t)1 << 16;
+    switch (kind) {
+    case SX_SHAPE_SEGMENT:
+        return sx_collide_segments_gated(a, xa, b, xb, margin, hyst, count, touch_test, out);
+    case SX_SHAPE_CAPSULE:
+        return sx_collide_capsules_gated(a, xa, b, xb, margin, hyst, count, touch_test, out);
+    default: return sx_collide_polygons_gated(a, xa, b, xb, margin, hyst, count, touch_test, out);
+    }
 }
 
-#define SX_COLL(NAME, TA, TB)                                                                      \
-    int sx_coll_##NAME(const TA *a, sx_xf xa, const TB *b, sx_xf xb, sx_real margin, sx_real hyst, \
-                       sx_manifold *out) {                                                         \
-        return coll_##NAME(a, xa, b, xb, margin, hyst, out);                                       \
-    }
-#define SX_ENTRY(NAME, TA, MA, TB, MB)                                                             \
-    int sx_entry_##NAME(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb, sx_real margin,  \
-                        sx_real hyst, sx_manifold *out) {                                          \
-        return coll_##NAME(&a->u.MA, xa, &b->u.MB, xb, margin, hyst, out);                         \
-    }
-#define SX_ENTRY_REV(NAME)                                                                         \
-    int sx_entry_##NAME##_rev(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,            \
-                              sx_real margin, sx_real hyst, sx_manifold *out) {                    \
-        sx_entry_##NAME(b, xb, a, xa, margin, hyst, out);                                          \
-        mirror(out);                                                                               \
-        return out->count;                                                                         \
-    }
-SX_COLL(segment_circle, sx_segment, sx_circle)
-SX_COLL(capsule_circle, sx_capsule, sx_circle)
-SX_COLL(polygon_circle, sx_polygon, sx_circle)
-SX_ENTRY(segment_circle, sx_segment, segment, sx_circle, circle)
-SX_ENTRY_REV(segment_circle)
-SX_ENTRY(capsule_circle, sx_capsule, capsule, sx_circle, circle)
-SX_ENTRY_REV(capsule_circle)
-SX_ENTRY(polygon_circle, sx_polygon, polygon, sx_circle, circle)
-SX_ENTRY_REV(polygon_circle)
-SX_ENTRY(capsule_segment, sx_capsule, capsule, sx_segment, segment)
-SX_ENTRY_REV(capsule_segment)
-SX_ENTRY(polygon_segment, sx_polygon, polygon, sx_segment, segment)
-SX_ENTRY_REV(polygon_segment)
-SX_ENTRY(polygon_capsule, sx_polygon, polygon, sx_capsule, capsule)
-SX_ENTRY_REV(polygon_capsule)
-SX_ENTRY(segments, sx_segment, segment, sx_segment, segment)
-SX_ENTRY(capsules, sx_capsule, capsule, sx_capsule, capsule)
-SX_ENTRY(polygons, sx_polygon, polygon, sx_polygon, polygon)
-#undef SX_COLL
-#undef SX_ENTRY
-#undef SX_ENTRY_REV
+int sx_collide_segment_circle_xf(const sx_segment *a, sx_xf xa, const sx_circle *b, sx_xf xb,
+                                 sx_real margin, sx_real hyst, sx_manifold *out) {
+    return collide_segment_circle(a, xa, b, xb, margin, hyst, out);
+}
+int sx_collide_segment_circle_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
+                                     sx_real margin, sx_real hyst, sx_manifold *out) {
+    return collide_segment_circle(&a->u.segment, xa, &b->u.circle, xb, margin, hyst, out);
+}
+
+int sx_collide_capsule_circle_xf(const sx_capsule *a, sx_xf xa, const sx_circle *b, sx_xf xb,
+                                 sx_real margin, sx_real hyst, sx_manifold *out) {
+    return collide_capsule_circle(a, xa, b, xb, margin, hyst, out);
+}
+int sx_collide_capsule_circle_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
+                                     sx_real margin, sx_real hyst, sx_manifold *out) {
+    return collide_capsule_circle(&a->u.capsule, xa, &b->u.circle, xb, margin, hyst, out);
+}
+
+int sx_collide_polygon_circle_xf(const sx_polygon *a, sx_xf xa, const sx_circle *b, sx_xf xb,
+                                 sx_real margin, sx_real hyst, sx_manifold *out) {
+    return collide_polygon_circle(a, xa, b, xb, margin, hyst, out);
+}
+int sx_collide_polygon_circle_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
+                                     sx_real margin, sx_real hyst, sx_manifold *out) {
+    return collide_polygon_circle(&a->u.polygon, xa, &b->u.circle, xb, margin, hyst, out);
+}
+
+int sx_collide_capsule_segment_xf(const sx_capsule *a, sx_xf xa, const sx_segment *b, sx_xf xb,
+                                  sx_real margin, sx_real hyst, sx_manifold *out) {
+    return sx_cores_collide(SX_SHAPE_CAPSULE, a, xa, SX_SHAPE_SEGMENT, b, xb, margin, hyst, out,
+                            NULL);
+}
+int sx_collide_capsule_segment_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
+                                      sx_real margin, sx_real hyst, sx_manifold *out) {
+    return cores_collide(SX_SHAPE_CAPSULE, &a->u.capsule, xa, SX_SHAPE_SEGMENT, &b->u.segment, xb,
+                         margin, hyst, out, NULL);
+}
+
+int sx_collide_polygon_segment_xf(const sx_polygon *a, sx_xf xa, const sx_segment *b, sx_xf xb,
+                                  sx_real margin, sx_real hyst, sx_manifold *out) {
+    return sx_cores_collide(SX_SHAPE_POLYGON, a, xa, SX_SHAPE_SEGMENT, b, xb, margin, hyst, out,
+                            NULL);
+}
+int sx_collide_polygon_segment_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
+                                      sx_real margin, sx_real hyst, sx_manifold *out) {
+    return cores_collide(SX_SHAPE_POLYGON, &a->u.polygon, xa, SX_SHAPE_SEGMENT, &b->u.segment, xb,
+                         margin, hyst, out, NULL);
+}
+
+int sx_collide_polygon_capsule_xf(const sx_polygon *a, sx_xf xa, const sx_capsule *b, sx_xf xb,
+                                  sx_real margin, sx_real hyst, sx_manifold *out) {
+    return sx_cores_collide(SX_SHAPE_POLYGON, a, xa, SX_SHAPE_CAPSULE, b, xb, margin, hyst, out,
+                            NULL);
+}
+int sx_collide_polygon_capsule_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
+                                      sx_real margin, sx_real hyst, sx_manifold *out) {
+    return cores_collide(SX_SHAPE_POLYGON, &a->u.polygon, xa, SX_SHAPE_CAPSULE, &b->u.capsule, xb,
+                         margin, hyst, out, NULL);
+}
+
+int sx_collide_segments_xf(const sx_segment *a, sx_xf xa, const sx_segment *b, sx_xf xb,
+                           sx_real margin, sx_real hyst, sx_manifold *out) {
+    return collide_same_type(SX_SHAPE_SEGMENT, a, xa, b, xb, margin, hyst, out);
+}
+int sx_collide_segments_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
+                               sx_real margin, sx_real hyst, sx_manifold *out) {
+    return collide_same_type(SX_SHAPE_SEGMENT, &a->u.segment, xa, &b->u.segment, xb, margin, hyst,
+                             out);
+}
+
+int sx_collide_capsules_xf(const sx_capsule *a, sx_xf xa, const sx_capsule *b, sx_xf xb,
+                           sx_real margin, sx_real hyst, sx_manifold *out) {
+    return collide_same_type(SX_SHAPE_CAPSULE, a, xa, b, xb, margin, hyst, out);
+}
+int sx_collide_capsules_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
+                               sx_real margin, sx_real hyst, sx_manifold *out) {
+    return collide_same_type(SX_SHAPE_CAPSULE, &a->u.capsule, xa, &b->u.capsule, xb, margin, hyst,
+                             out);
+}
+
+int sx_collide_polygons_xf(const sx_polygon *a, sx_xf xa, const sx_polygon *b, sx_xf xb,
+                           sx_real margin, sx_real hyst, sx_manifold *out) {
+    return collide_same_type(SX_SHAPE_POLYGON, a, xa, b, xb, margin, hyst, out);
+}
+int sx_collide_polygons_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
+                               sx_real margin, sx_real hyst, sx_manifold *out) {
+    return collide_same_type(SX_SHAPE_POLYGON, &a->u.polygon, xa, &b->u.polygon, xb, margin, hyst,
+                             out);
+}

@@ -34,14 +34,18 @@ extern "C" {
 
 /* ---- contact manifold --------------------------------------------------- */
 
+/** The bit of a feature id set when B supplied the reference face: swapping
+ *  the arguments of a pair toggles it (sx_collide). */
+#define SX_FEATURE_ID_FLIPPED ((uint32_t)1 << 16)
+
 /** Feature id of a manifold point: identifies which features of A and B
  *  produced it, so the solver can match a point across steps (warm starting).
  *  Layout: bits 0-7 the reference feature index, bits 8-15 the incident
- *  feature index, bit 16 set when B supplied the reference face. Stable for
- *  as long as the same features touch. */
+ *  feature index, bit 16 (SX_FEATURE_ID_FLIPPED) set when B supplied the
+ *  reference face. Stable for as long as the same features touch. */
 #define SX_FEATURE_ID(ref_index, inc_index, flipped)                                               \
     ((uint32_t)((uint32_t)((ref_index)&0xFF) | ((uint32_t)((inc_index)&0xFF) << 8) |               \
-                ((uint32_t)((flipped) ? 1 : 0) << 16)))
+                ((flipped) ? SX_FEATURE_ID_FLIPPED : (uint32_t)0)))
 
 /** One contact point. */
 typedef struct sx_manifold_point {
