@@ -624,15 +624,28 @@ int sx_collide_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle 
 
 /* ---- segment - segment -------------------------------------------------- */
 
+/* The order of two segments' or capsules' ends and radii, n = 4 (the ends
+ * alone, for segments) or 5 (the radius too). */
+static int order_ends(sx_vec2 a0, sx_vec2 a1, sx_real ra, sx_vec2 b0, sx_vec2 b1, sx_real rb,
+                      int n) {
+    sx_real x[5], y[5];
+    x[0] = a0.x;
+    x[1] = a0.y;
+    x[2] = a1.x;
+    x[3] = a1.y;
+    x[4] = ra;
+    y[0] = b0.x;
+    y[1] = b0.y;
+    y[2] = b1.x;
+    y[3] = b1.y;
+    y[4] = rb;
+    return order_reals(x, y, n);
+}
+
 static int order_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb) {
-    sx_vec2 va[2], vb[2];
     int c = order_xforms(xa, xb);
     if (c != 0 || a == NULL || b == NULL) return c;
-    va[0] = a->a;
-    va[1] = a->b;
-    vb[0] = b->a;
-    vb[1] = b->b;
-    return order_vecs(va, vb, 2);
+    return order_ends(a->a, a->b, SX_R(0.0), b->a, b->b, SX_R(0.0), 4);
 }
 
 bool sx_overlap_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb) {
@@ -696,20 +709,9 @@ int sx_collide_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segmen
 }
 
 static int order_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb) {
-    sx_real ra[5], rb[5];
     int c = order_xforms(xa, xb);
     if (c != 0 || a == NULL || b == NULL) return c;
-    ra[0] = a->a.x;
-    ra[1] = a->a.y;
-    ra[2] = a->b.x;
-    ra[3] = a->b.y;
-    ra[4] = a->radius;
-    rb[0] = b->a.x;
-    rb[1] = b->a.y;
-    rb[2] = b->b.x;
-    rb[3] = b->b.y;
-    rb[4] = b->radius;
-    return order_reals(ra, rb, 5);
+    return order_ends(a->a, a->b, a->radius, b->a, b->b, b->radius, 5);
 }
 
 bool sx_overlap_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb) {

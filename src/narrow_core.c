@@ -427,6 +427,25 @@ static SX_ALWAYS_INLINE bool best_face(const sx_core *p, const sx_core *q, sx_re
     return true;
 }
 
+/* The SAT's test of the caps of the 2-point core p against q (p is B when
+ * p_is_b: the axis then turns to point from A to B). False, with the
+ * separation in out->sep, when they separate by more than limit; otherwise
+ * the caps' axis replaces out's when it separates more. */
+static SX_ALWAYS_INLINE bool sat_caps(const sx_core *p, const sx_core *q, sx_real limit,
+                                      bool p_is_b, sx_sat *out) {
+    sx_vec2 axis;
+    sx_real s = cap_separation(p, q, &axis);
+    if (!(s <= limit)) {
+        out->sep = s;
+        return false;
+    }
+    if (s > out->sep) {
+        out->sep = s;
+        out->axis = p_is_b ? sx_neg(axis) : axis;
+    }
+    return true;
+}
+
 /* Runs SAT over the faces of both cores (and the caps when both have zero
  * area). Returns false as soon as an axis separates by more than `limit`
  * (the cores then lie farther apart than limit), and also when a separation
@@ -474,30 +493,8 @@ static SX_ALWAYS_INLINE bool sat_run(const sx_core *a, const sx_core *b, sx_real
         out->sep = SX_NO_SEPARATION;
     }
     if (out->has_axes && a->count <= 2 && b->count <= 2) {
-        sx_vec2 axis;
-        sx_real s;
-        if (a->count == 2) {
-            s = cap_separation(a, b, &axis);
-            if (!(s <= limit)) {
-                out->sep = s;
-                return false;
-            }
-            if (s > out->sep) {
-                out->sep = s;
-                out->axis = axis;
-            }
-        }
-        if (b->count == 2) {
-            s = cap_separation(b, a, &axis);
-            if (!(s <= limit)) {
-                out->sep = s;
-                return false;
-            }
-            if (s > out->sep) {
-                out->sep = s;
-                out->axis = sx_neg(axis);
-            }
-        }
+        if (a->count == 2 && !sat_caps(a, b, limit, false, out)) return false;
+        if (b->count == 2 && !sat_caps(b, a, limit, true, out)) return false;
     }
     return true;
 }
