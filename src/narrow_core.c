@@ -1792,7 +1792,7 @@ static SX_ALWAYS_INLINE int collide_segment_circle_fused(sx_vec2 a0, sx_vec2 a1,
  * sx_collide_NAME_shapes for the dispatch table (narrow.h), so that
  * sx_collide reaches the work through one call. The reversed order is the
  * dispatch table's business (it mirrors the manifold). The typed entries of
- * the pairs of two core types call the out-of-line sx_cores_collide, as
+ * the pairs of core types call the out-of-line sx_cores_collide, as
  * sx_collide_NAME always has: only the dispatch table's copy is inlined. */
 
 static SX_ALWAYS_INLINE int collide_segment_circle(const sx_segment *a, sx_xf xa,
@@ -1834,16 +1834,20 @@ static SX_ALWAYS_INLINE int collide_polygon_circle(const sx_polygon *a, sx_xf xa
  * and in the other order too unless the pair is within rounding of
  * touching. The clear-cut test comes first: nearly every pair passes it,
  * so the branch predicts, where the order of two random transforms is a
- * coin toss that mispredicts half the time. kind is a constant wherever
- * this is inlined, so the switch folds away. */
-static SX_ALWAYS_INLINE int collide_same_type(int kind, const void *a, sx_xf xa, const void *b,
-                                              sx_xf xb, sx_real margin, sx_real hyst,
+ * coin toss that mispredicts half the time. kind and inline_cores are
+ * constants wherever this is inlined, so the branches on them fold away:
+ * the dispatch table's entries inline the cores (inline_cores), the typed
+ * ones call the out-of-line sx_cores_collide. */
+static SX_ALWAYS_INLINE int collide_same_type(int kind, bool inline_cores, const void *a, sx_xf xa,
+                                              const void *b, sx_xf xb, sx_real margin, sx_real hyst,
                                               sx_manifold *out) {
     bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
     int count = 0;
     if (touch_test) {
         bool clear_cut = false;
-        count = cores_collide(kind, a, xa, kind, b, xb, SX_R(0.0), hyst, out, &clear_cut);
+        count = inline_cores
+                    ? cores_collide(kind, a, xa, kind, b, xb, SX_R(0.0), hyst, out, &clear_cut)
+                    : sx_cores_collide(kind, a, xa, kind, b, xb, SX_R(0.0), hyst, out, &clear_cut);
         if (clear_cut) return count;
     }
     switch (kind) {
@@ -1917,30 +1921,30 @@ int sx_collide_polygon_capsule_shapes(const sx_shape *a, sx_xf xa, const sx_shap
 
 int sx_collide_segments_xf(const sx_segment *a, sx_xf xa, const sx_segment *b, sx_xf xb,
                            sx_real margin, sx_real hyst, sx_manifold *out) {
-    return collide_same_type(SX_SHAPE_SEGMENT, a, xa, b, xb, margin, hyst, out);
+    return collide_same_type(SX_SHAPE_SEGMENT, false, a, xa, b, xb, margin, hyst, out);
 }
 int sx_collide_segments_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
                                sx_real margin, sx_real hyst, sx_manifold *out) {
-    return collide_same_type(SX_SHAPE_SEGMENT, &a->u.segment, xa, &b->u.segment, xb, margin, hyst,
-                             out);
+    return collide_same_type(SX_SHAPE_SEGMENT, true, &a->u.segment, xa, &b->u.segment, xb, margin,
+                             hyst, out);
 }
 
 int sx_collide_capsules_xf(const sx_capsule *a, sx_xf xa, const sx_capsule *b, sx_xf xb,
                            sx_real margin, sx_real hyst, sx_manifold *out) {
-    return collide_same_type(SX_SHAPE_CAPSULE, a, xa, b, xb, margin, hyst, out);
+    return collide_same_type(SX_SHAPE_CAPSULE, false, a, xa, b, xb, margin, hyst, out);
 }
 int sx_collide_capsules_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
                                sx_real margin, sx_real hyst, sx_manifold *out) {
-    return collide_same_type(SX_SHAPE_CAPSULE, &a->u.capsule, xa, &b->u.capsule, xb, margin, hyst,
-                             out);
+    return collide_same_type(SX_SHAPE_CAPSULE, true, &a->u.capsule, xa, &b->u.capsule, xb, margin,
+                             hyst, out);
 }
 
 int sx_collide_polygons_xf(const sx_polygon *a, sx_xf xa, const sx_polygon *b, sx_xf xb,
                            sx_real margin, sx_real hyst, sx_manifold *out) {
-    return collide_same_type(SX_SHAPE_POLYGON, a, xa, b, xb, margin, hyst, out);
+    return collide_same_type(SX_SHAPE_POLYGON, false, a, xa, b, xb, margin, hyst, out);
 }
 int sx_collide_polygons_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
                                sx_real margin, sx_real hyst, sx_manifold *out) {
-    return collide_same_type(SX_SHAPE_POLYGON, &a->u.polygon, xa, &b->u.polygon, xb, margin, hyst,
-                             out);
+    return collide_same_type(SX_SHAPE_POLYGON, true, &a->u.polygon, xa, &b->u.polygon, xb, margin,
+                             hyst, out);
 }
