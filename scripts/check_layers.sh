@@ -14,7 +14,8 @@ set -eu
 layers='
 0 include/sepax/base.h include/sepax/vecmath.h src/core.h src/base.c
 1 include/sepax/shape.h src/wide.h src/shape.c src/hull.c
-2 include/sepax/collide.h include/sepax/compound.h src/narrow.h src/collide_world.h src/query.h
+2 include/sepax/collide.h include/sepax/compound.h src/narrow.h src/narrow_sat.h src/narrow_closest.h
+2 src/collide_world.h src/query.h src/narrow_point.c
 2 src/collide.c src/narrow_core.c src/query.c src/raycast.c src/compound.c src/decompose.c
 2 src/distance.c
 3 include/sepax/world.h include/sepax/sepax.h src/world_internal.h src/world.c src/world_query.c

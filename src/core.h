@@ -22,6 +22,15 @@
 #define SX_NOINLINE
 #endif
 
+/* A static function of a private header that not every includer calls
+ * (narrow_sat.h, narrow_closest.h): no unused-function warning, no change
+ * to how it is compiled. */
+#if defined(__GNUC__) || defined(__clang__)
+#define SX_MAYBE_UNUSED __attribute__((unused))
+#else
+#define SX_MAYBE_UNUSED
+#endif
+
 /* Forces a small helper into its one hot caller, where GCC's own judgement
  * leaves it out of line (see its use). */
 #if defined(__GNUC__) || defined(__clang__)

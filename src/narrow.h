@@ -38,6 +38,21 @@
 #define SX_REFERENCE_HYSTERESIS (SX_R(0.02) * SX_LINEAR_SLOP)
 #define SX_WORLD_REFERENCE_HYSTERESIS (SX_R(0.1) * SX_LINEAR_SLOP)
 
+/* Disjoint rounded cores whose distance exceeds their best face separation
+ * by no more than this are treated as a face contact (clipped, up to two
+ * points) rather than a vertex contact. Aligned edges (a box resting exactly
+ * on another, end points over end points) have distance == face separation
+ * only up to rounding; 1 % of the slop catches them. The face normal then
+ * differs from the exact direction by at most sqrt(2 x tolerance / distance)
+ * radians, while the deepest point itself is the exact closest-feature
+ * contact (see clip_face). */
+#define SX_FACE_CONTACT_TOLERANCE (SX_R(0.01) * SX_LINEAR_SLOP)
+
+/* A difference of two points computed from coordinates of magnitude `scale`
+ * carries an error of a few ulps of scale; below 64 epsilon x scale its
+ * direction is noise, and also a point counts as touching within it. */
+#define SX_DIRECTION_EPSILON (SX_R(64.0) * SX_REAL_EPSILON)
+
 /* Coordinate differences down to this magnitude have squares that keep
  * full precision (d.x^2 stays above the smallest normal real over epsilon);
  * below it squared distances underflow and need scaling first. */
@@ -52,6 +67,9 @@
  * mispredicts half the time). It differs from sx_absr only in the sign of
  * a zero: use it where only comparisons and maxima see the result. */
 static inline sx_real sx_magnitude(sx_real x) { return x > -x ? x : -x; }
+
+/* A core's rounding radius as the builders accept it: finite and >= 0. */
+static inline bool sx_core_radius_ok(sx_real r) { return sx_is_finite(r) && r >= SX_R(0.0); }
 
 /** A convex core plus radius, in some working frame. Pass it by pointer
  *  only: v and n may point into its own storage. */
