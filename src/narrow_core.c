@@ -240,201 +240,203 @@ static int slab_neighbour(const sx_core *ref, int i, sx_vec2 p) {
     return -1;
 }
 
-/* Clips the incident feature of `inc` against face *face of `ref` (or a face tied with it, see
- * below, written back to *face) and writes the contact points (working frame). flip: ref is B.
- * Points deeper than -margin (less a rounding allowance) are kept; if none is, the deepest one is,
- * so an overlapping pair always reports a contact. */
-static int clip_face(const sx_core *ref, int *face, const sx_core *inc, sx_real margin, bool flip,
-                     const sx_manifold_point *exact, sx_manifold_point out[2]) {
-    int i = *face;
+/* Face i of the polygon core ref, or the neighbour tied with it. Two faces
+ * of ref bent by 1e-4 rad at a vertex separate inc by the same amount up to
+ * rounding, and the SAT's pick of the two may leave inc's deepest vertex
+ * (s) beyond its slab, where clipping cuts it off and the depth comes out
+ * short. Of two such tied faces the one whose slab the deepest vertex is
+ * in, or towards, is the reference; a real corner (the neighbour
+ * separating clearly less) keeps face i. The rounding allowance takes in
+ * the point the neighbour's separation is measured from: a neighbour
+ * running far from the origin is placed with the rounding of its far end,
+ * and a difference below that between the two faces says nothing. */
+static SX_ALWAYS_INLINE int tied_reference_face(const sx_core *ref, int i, const sx_core *inc,
+                                                int s) {
+    int nb = slab_neighbour(ref, i, inc->v[s]);
+    if (nb >= 0) {
+        sx_vec2 v1 = ref->v[i], v2 = ref->v[next_index(ref, i)];
+        sx_real tie = SX_DIRECTION_EPSILON *
+                      sx_maxr(sx_maxr(max_abs_coord(v1, v2), max_abs_coord(ref->v[nb], ref->v[nb])),
+                              max_abs_coord(inc->v[s], inc->v[s]));
+        if (face_separation(ref, nb, inc) >= face_separation(ref, i, inc) - tie) return nb;
+    }
+    return i;
+}
+
+/* The incident face of the 2-point or polygon core inc against the
+ * reference normal nref: the one most anti-parallel to it. A polygon's is
+ * one of the two faces at its deepest vertex s along -nref (its normal is
+ * the nearest in angle to -nref), so only those two compete: comparing
+ * every face's normal alone lets two faces of a sliver (normals 1e-4 apart)
+ * tie in rounding and pick a face far from the deepest vertex. Ties go to
+ * the lower index. */
+static SX_ALWAYS_INLINE int incident_face(const sx_core *inc, sx_vec2 nref, int s) {
+    int prev;
+    sx_real dp, ds;
+    if (inc->count == 2) return sx_dot(inc->n[1], nref) < sx_dot(inc->n[0], nref) ? 1 : 0;
+    prev = s > 0 ? s - 1 : inc->count - 1;
+    dp = sx_dot(inc->n[prev], nref);
+    ds = sx_dot(inc->n[s], nref);
+    return dp < ds || (dp == ds && prev < s) ? prev : s;
+}
+
+/* Clips the incident segment w[0]-w[1] to one side of the reference slab,
+ * d0 and d1 being its ends' distances inside that side: 0 when both ends
+ * are outside, else 2 with the end outside moved to where the segment
+ * crosses, at d0 / (d0 - d1) along it. When the ends differ across the side
+ * by no more than `noise`, the rounding of their coordinates, the segment
+ * runs along the reference normal, that fraction is rounding noise (it
+ * could cut a long capsule almost anywhere), and the end outside lies
+ * within rounding of the side: it stays as it is. */
+static SX_ALWAYS_INLINE int clip_to_side(sx_vec2 w[2], sx_real d0, sx_real d1, sx_real noise) {
+    if (d0 < SX_R(0.0) && d1 < SX_R(0.0)) return 0;
+    if (d0 < SX_R(0.0) && d1 - d0 > noise) {
+        w[0] = sx_lerp(w[0], w[1], d0 / (d0 - d1));
+    } else if (d1 < SX_R(0.0) && d0 - d1 > noise) {
+        w[1] = sx_lerp(w[1], w[0], d1 / (d1 - d0));
+    }
+    return 2;
+}
+
+/* The incident points of the 2-point or polygon core inc (deepest vertex
+ * s) against face i of ref: the incident face's ends clipped to the
+ * reference face's slab, in w with their vertex indices in k. Returns their
+ * count, 1 or 2. */
+static SX_ALWAYS_INLINE int incident_points(const sx_core *ref, int i, const sx_core *inc, int s,
+                                            sx_vec2 w[2], int k[2]) {
+    sx_vec2 nref = ref->n[i], t = sx_perp(nref);
+    sx_vec2 v1 = ref->v[i], v2 = ref->v[next_index(ref, i)];
+    sx_real lower, upper, noise;
+    int nw;
+    k[0] = incident_face(inc, nref, s);
+    k[1] = next_index(inc, k[0]);
+    w[0] = inc->v[k[0]];
+    w[1] = inc->v[k[1]];
+    lower = sx_dot(t, v1);
+    upper = sx_dot(t, v2);
+    noise = SX_DIRECTION_EPSILON * sx_maxr(max_abs_coord(v1, v2), max_abs_coord(w[0], w[1]));
+    /* A reference face no wider than that rounding has no slab to clip to:
+     * which side of it an incident end lies on is noise, and the ends stay
+     * as they are; the depth test of clip_points keeps those that reach the
+     * face. */
+    if (!(upper - lower > noise)) {
+        lower = -SX_REAL_MAX;
+        upper = SX_REAL_MAX;
+    }
+    nw = clip_to_side(w, sx_dot(t, w[0]) - lower, sx_dot(t, w[1]) - lower, noise);
+    if (nw == 2) nw = clip_to_side(w, upper - sx_dot(t, w[0]), upper - sx_dot(t, w[1]), noise);
+    if (nw == 0) {
+        /* The incident face misses the slab entirely (a corner against a
+         * short face): keep its end point nearest the reference face. */
+        sx_real s0 = sx_dot(nref, sx_sub(inc->v[k[0]], v1));
+        sx_real s1 = sx_dot(nref, sx_sub(inc->v[k[1]], v1));
+        nw = 1;
+        if (s1 < s0) {
+            k[0] = k[1];
+        }
+        w[0] = inc->v[k[0]];
+    }
+    return nw;
+}
+
+/* The contact points of the nw incident points w (vertex indices k) against
+ * face i of ref, written to out (working frame); returns their count.
+ * Points deeper than -margin (less a rounding allowance) are kept; if none
+ * is, the deepest one is, so an overlapping pair always reports a contact.
+ * The one or two points are scalars, not arrays: indexed by the deepest
+ * point, GCC kept them in memory and the loop waited on reloading what it
+ * had just stored. */
+static SX_ALWAYS_INLINE int clip_points(const sx_core *ref, int i, const sx_core *inc,
+                                        const sx_vec2 w[2], const int k[2], int nw, sx_real margin,
+                                        bool flip, const sx_manifold_point *exact,
+                                        sx_manifold_point out[2]) {
     sx_vec2 nref = ref->n[i];
     sx_vec2 v1 = ref->v[i], v2 = ref->v[next_index(ref, i)];
-    sx_vec2 t = sx_perp(nref);
-    sx_vec2 w[2] = {{SX_R(0.0), SX_R(0.0)}, {SX_R(0.0), SX_R(0.0)}};
-    int k[2] = {0, 0}, nw, count = 0;
-    sx_real scale, slack;
-    if (inc->count == 1) {
-        w[0] = inc->v[0];
-        k[0] = 0;
-        nw = 1;
-    } else {
-        /* The incident face is the one most anti-parallel to the reference
-         * normal; its end points are clipped to the reference face's slab. */
-        sx_real lower, upper, d0, d1, noise;
-        int f = 0, s = support_below(inc, nref);
-        if (ref->count >= 3) {
-            /* Two faces of ref bent by 1e-4 rad at a vertex separate inc by
-             * the same amount up to rounding, and the SAT's pick of the two
-             * may leave inc's deepest vertex beyond its slab, where clipping
-             * cuts it off (the depth comes out short). Of two
-             * such tied faces the one whose slab the deepest vertex is in,
-             * or towards, is the reference. A real corner
-             * (the neighbour separating clearly less) keeps face i. The
-             * rounding allowance takes in the point the neighbour's
-             * separation is measured from: a neighbour running 1e5 m to a
-             * far corner is placed with ~1 cm of rounding, and a 2 mm
-             * difference between the two faces then says nothing (picking
-             * on it, a deep penetration could come out a centimetre deep). */
-            int nb = slab_neighbour(ref, i, inc->v[s]);
-            if (nb >= 0) {
-                sx_real tie =
-                    SX_DIRECTION_EPSILON *
-                    sx_maxr(sx_maxr(max_abs_coord(v1, v2), max_abs_coord(ref->v[nb], ref->v[nb])),
-                            max_abs_coord(inc->v[s], inc->v[s]));
-                if (face_separation(ref, nb, inc) >= face_separation(ref, i, inc) - tie) {
-                    i = nb;
-                    *face = nb;
-                    nref = ref->n[i];
-                    v1 = ref->v[i];
-                    v2 = ref->v[next_index(ref, i)];
-                    t = sx_perp(nref);
-                    s = support_below(inc, nref);
-                }
-            }
-        }
-        if (inc->count == 2) {
-            f = sx_dot(inc->n[1], nref) < sx_dot(inc->n[0], nref) ? 1 : 0;
-        } else {
-            /* A polygon's most anti-parallel face is one of the two faces
-             * at its deepest vertex along -nref (its normal is the nearest
-             * in angle to -nref), so only those two compete. Comparing
-             * every face's normal alone lets two faces of a sliver (normals
-             * 1e-4 apart) tie in rounding, and the wrong one, a 15 m face
-             * away from the deepest vertex 70 km off, reported 7 mm of an
-             * 8.4 m penetration. Ties go to the lower index, as before. */
-            int prev;
-            sx_real dp, ds;
-            prev = s > 0 ? s - 1 : inc->count - 1;
-            dp = sx_dot(inc->n[prev], nref);
-            ds = sx_dot(inc->n[s], nref);
-            f = dp < ds || (dp == ds && prev < s) ? prev : s;
-        }
-        k[0] = f;
-        k[1] = next_index(inc, f);
-        w[0] = inc->v[k[0]];
-        w[1] = inc->v[k[1]];
-        nw = 2;
-        lower = sx_dot(t, v1);
-        upper = sx_dot(t, v2);
-        /* An incident face that crosses a side of the slab is cut where it
-         * crosses, at d0 / (d0 - d1) along it; when its two ends differ
-         * along the face by no more than the rounding of their
-         * coordinates, it runs along the reference normal, that fraction
-         * is rounding noise (a capsule 1e5 m long beside a capsule
-         * 3e-7 m long: cut at 97 % of the long one's length, its depth
-         * came out 0 instead of 9e4 m), and the end outside lies within
-         * rounding of the side: it stays as it is. */
-        noise = SX_DIRECTION_EPSILON * sx_maxr(max_abs_coord(v1, v2), max_abs_coord(w[0], w[1]));
-        /* A reference face no wider than that rounding has no slab to
-         * clip to: which side of it an incident end lies on is noise (a
-         * capsule 3e-7 m long against one 2.8e4 m long that crossed its
-         * slab at 5e-5 rad was cut 1.3 m along it: 0.93 m reported of a
-         * 2.25 m depth), and the ends stay as they are; the depth test
-         * below keeps those that reach the face. */
-        if (!(upper - lower > noise)) {
-            lower = -SX_REAL_MAX;
-            upper = SX_REAL_MAX;
-        }
-        d0 = sx_dot(t, w[0]) - lower;
-        d1 = sx_dot(t, w[1]) - lower;
-        if (d0 < SX_R(0.0) && d1 < SX_R(0.0)) {
-            nw = 0;
-        } else if (d0 < SX_R(0.0) && d1 - d0 > noise) {
-            w[0] = sx_lerp(w[0], w[1], d0 / (d0 - d1));
-        } else if (d1 < SX_R(0.0) && d0 - d1 > noise) {
-            w[1] = sx_lerp(w[1], w[0], d1 / (d1 - d0));
-        }
+    sx_real rr = ref->radius + inc->radius, half = ref->radius - inc->radius;
+    sx_real sc0, sc1 = SX_R(0.0), d0, d1 = SX_R(0.0), lim, scale, slack;
+    sx_vec2 p0, p1 = w[0];
+    int deepest = 0, count = 0;
+    bool keep0, keep1;
+    scale = sx_maxr(max_abs_coord(v1, v2), rr);
+    sc0 = sx_dot(nref, sx_sub(w[0], v1));
+    d0 = rr - sc0;
+    scale = sx_maxr(scale, max_abs_coord(w[0], w[0]));
+    if (nw == 2) {
+        sc1 = sx_dot(nref, sx_sub(w[1], v1));
+        d1 = rr - sc1;
+        scale = sx_maxr(scale, max_abs_coord(w[1], w[1]));
+        deepest = d1 > d0 ? 1 : 0;
+    }
+    slack = SX_DIRECTION_EPSILON * scale;
+    p0 = sx_mul_add(w[0], SX_R(0.5) * (half - sc0), nref);
+    if (nw == 2) p1 = sx_mul_add(w[1], SX_R(0.5) * (half - sc1), nref);
+    if (exact != NULL && (nw == 1 || exact->depth > (deepest ? d1 : d0) + slack)) {
+        /* Cores apart: the exact contact is the closest-feature point. A
+         * single incident point is that contact seen along the face normal,
+         * so take the exact one. With two, clipping can slide the deepest
+         * incident vertex (a corner or capsule end just past the end of the
+         * reference face) along a steep incident face and lose depth: the
+         * point that came from that vertex becomes the exact contact. */
+        int from = 0;
         if (nw == 2) {
-            d0 = upper - sx_dot(t, w[0]);
-            d1 = upper - sx_dot(t, w[1]);
-            if (d0 < SX_R(0.0) && d1 < SX_R(0.0)) {
-                nw = 0;
-            } else if (d0 < SX_R(0.0) && d1 - d0 > noise) {
-                w[0] = sx_lerp(w[0], w[1], d0 / (d0 - d1));
-            } else if (d1 < SX_R(0.0) && d0 - d1 > noise) {
-                w[1] = sx_lerp(w[1], w[0], d1 / (d1 - d0));
-            }
-        }
-        if (nw == 0) {
-            /* The incident face misses the slab entirely (a corner against a
-             * short face): keep its end point nearest the reference face. */
             sx_real s0 = sx_dot(nref, sx_sub(inc->v[k[0]], v1));
             sx_real s1 = sx_dot(nref, sx_sub(inc->v[k[1]], v1));
-            nw = 1;
-            if (s1 < s0) {
-                k[0] = k[1];
-            }
-            w[0] = inc->v[k[0]];
+            from = s1 < s0 ? 1 : 0;
         }
+        if (from) {
+            p1 = exact->point;
+            d1 = exact->depth;
+        } else {
+            p0 = exact->point;
+            d0 = exact->depth;
+        }
+        deepest = from;
     }
-    /* The one or two points as scalars, not arrays: indexed by the
-     * deepest point, GCC kept them in memory and the loop waited on
-     * reloading what it had just stored. */
-    {
-        sx_real rr = ref->radius + inc->radius, half = ref->radius - inc->radius;
-        sx_real sc0, sc1 = SX_R(0.0), d0, d1 = SX_R(0.0), lim;
-        sx_vec2 p0, p1 = w[0];
-        int deepest = 0;
-        bool keep0, keep1;
-        scale = sx_maxr(max_abs_coord(v1, v2), rr);
-        sc0 = sx_dot(nref, sx_sub(w[0], v1));
-        d0 = rr - sc0;
-        scale = sx_maxr(scale, max_abs_coord(w[0], w[0]));
-        if (nw == 2) {
-            sc1 = sx_dot(nref, sx_sub(w[1], v1));
-            d1 = rr - sc1;
-            scale = sx_maxr(scale, max_abs_coord(w[1], w[1]));
-            deepest = d1 > d0 ? 1 : 0;
-        }
-        slack = SX_DIRECTION_EPSILON * scale;
-        p0 = sx_mul_add(w[0], SX_R(0.5) * (half - sc0), nref);
-        if (nw == 2) p1 = sx_mul_add(w[1], SX_R(0.5) * (half - sc1), nref);
-        if (exact != NULL && (nw == 1 || exact->depth > (deepest ? d1 : d0) + slack)) {
-            /* Cores apart: the exact contact is the closest-feature point.
-             * A single incident point is that contact seen along the face
-             * normal, so take the exact one. With two, clipping can slide
-             * the deepest incident vertex (a corner or capsule end just past
-             * the end of the reference face) along a steep incident face
-             * and lose depth: the point that came from that vertex becomes
-             * the exact contact. */
-            int from = 0;
-            if (nw == 2) {
-                sx_real s0 = sx_dot(nref, sx_sub(inc->v[k[0]], v1));
-                sx_real s1 = sx_dot(nref, sx_sub(inc->v[k[1]], v1));
-                from = s1 < s0 ? 1 : 0;
-            }
-            if (from) {
-                p1 = exact->point;
-                d1 = exact->depth;
-            } else {
-                p0 = exact->point;
-                d0 = exact->depth;
-            }
-            deepest = from;
-        }
-        /* Points deeper than -margin (less the rounding allowance); if none
-         * is, the deepest one. */
-        lim = -margin - slack;
-        keep0 = d0 >= lim;
-        keep1 = nw == 2 && d1 >= lim;
-        if (!keep0 && !keep1) {
-            keep0 = deepest == 0;
-            keep1 = deepest == 1;
-        }
-        if (keep0) {
-            out[count].point = p0;
-            out[count].depth = sx_maxr(d0, -margin);
-            out[count].id = SX_FEATURE_ID(i, k[0], flip);
-            ++count;
-        }
-        if (keep1) {
-            out[count].point = p1;
-            out[count].depth = sx_maxr(d1, -margin);
-            out[count].id = SX_FEATURE_ID(i, k[1], flip);
-            ++count;
-        }
+    lim = -margin - slack;
+    keep0 = d0 >= lim;
+    keep1 = nw == 2 && d1 >= lim;
+    if (!keep0 && !keep1) {
+        keep0 = deepest == 0;
+        keep1 = deepest == 1;
+    }
+    if (keep0) {
+        out[count].point = p0;
+        out[count].depth = sx_maxr(d0, -margin);
+        out[count].id = SX_FEATURE_ID(i, k[0], flip);
+        ++count;
+    }
+    if (keep1) {
+        out[count].point = p1;
+        out[count].depth = sx_maxr(d1, -margin);
+        out[count].id = SX_FEATURE_ID(i, k[1], flip);
+        ++count;
     }
     return count;
+}
+
+/* Clips the incident feature of `inc` against face *face of `ref` (or a
+ * face tied with it, see tied_reference_face, written back to *face) and
+ * writes the contact points (working frame, see clip_points). flip: ref is
+ * B. */
+static int clip_face(const sx_core *ref, int *face, const sx_core *inc, sx_real margin, bool flip,
+                     const sx_manifold_point *exact, sx_manifold_point out[2]) {
+    int i = *face, k[2] = {0, 0}, nw = 1;
+    sx_vec2 w[2] = {{SX_R(0.0), SX_R(0.0)}, {SX_R(0.0), SX_R(0.0)}};
+    if (inc->count == 1) {
+        w[0] = inc->v[0];
+    } else {
+        int s = support_below(inc, ref->n[i]);
+        if (ref->count >= 3) {
+            int tied = tied_reference_face(ref, i, inc, s);
+            if (tied != i) {
+                i = tied;
+                *face = tied;
+                s = support_below(inc, ref->n[i]);
+            }
+        }
+        nw = incident_points(ref, i, inc, s, w, k);
+    }
+    return clip_points(ref, i, inc, w, k, nw, margin, flip, exact, out);
 }
 
 /* The two argument orders of a same-type pair compute the same separations
