@@ -28,6 +28,19 @@ typedef struct sx_closest {
     int ia, ib;       /* vertex indices (VERTICES), or the face index */
 } sx_closest;
 
+/* The sweep's start: no candidate yet (infinite distance), the first
+ * vertices pa and pb standing in as the vertex pair. */
+static inline void closest_start(sx_closest *out, sx_vec2 pa, sx_vec2 pb) {
+    out->dist_sq = SX_REAL_MAX;
+    out->distance = SX_REAL_MAX;
+    out->kind = SX_CLOSEST_VERTICES;
+    out->ia = 0;
+    out->ib = 0;
+    out->pa = pa;
+    out->pb = pb;
+    out->normal = sx_v2_zero();
+}
+
 #if SX_NARROW_SSE
 /* The lane-wise largest magnitudes of a core's points, two points a
  * register (unreduced: the caller folds the lanes once). */
@@ -328,14 +341,7 @@ static SX_MAYBE_UNUSED void closest_features(const sx_core *a, const sx_core *b,
                                              sx_closest *out) {
     int ea = a->count >= 3 ? a->count : a->count - 1;
     int eb = b->count >= 3 ? b->count : b->count - 1;
-    out->dist_sq = SX_REAL_MAX;
-    out->distance = SX_REAL_MAX;
-    out->kind = SX_CLOSEST_VERTICES;
-    out->ia = 0;
-    out->ib = 0;
-    out->pa = a->v[0];
-    out->pb = b->v[0];
-    out->normal = sx_v2_zero();
+    closest_start(out, a->v[0], b->v[0]);
     SX_UNUSED(sat);
 #if SX_NARROW_SSE
     if (sat != NULL && sat->rows) {

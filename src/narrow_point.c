@@ -61,14 +61,7 @@ static bool point_sat(const sx_core *a, sx_vec2 c, sx_real limit, sx_sat *out) {
 /* closest_features for b = the point c (index 0), A's face of largest
  * separation being sat->face_a. */
 static void point_closest(const sx_core *a, sx_vec2 c, const sx_sat *sat, sx_closest *out) {
-    out->dist_sq = SX_REAL_MAX;
-    out->distance = SX_REAL_MAX;
-    out->kind = SX_CLOSEST_VERTICES;
-    out->ia = 0;
-    out->ib = 0;
-    out->pa = a->v[0];
-    out->pb = c;
-    out->normal = sx_v2_zero();
+    closest_start(out, a->v[0], c);
     if (a->count == 1) {
         out->dist_sq = sx_distance_sq(a->v[0], c);
     } else if (a->count == 2) {
