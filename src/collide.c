@@ -1117,18 +1117,33 @@ bool sx_overlap(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) 
     return e->swapped ? e->overlap(b, xb, a, xa) : e->overlap(a, xa, b, xb);
 }
 
+/* The reversed orders of sx_mtv and sx_collide: the entry called with the
+ * arguments swapped back, the MTV negated, the manifold mirrored. Out of
+ * line, so that the canonical orders stay a bare tail call (no stack frame
+ * for the reversed order's MTV or its saved out). */
+SX_NOINLINE static bool mtv_swapped(const sx_pair_entry *e, const sx_shape *a, sx_xform xa,
+                                    const sx_shape *b, sx_xform xb, sx_vec2 *mtv) {
+    sx_vec2 v;
+    bool hit = e->mtv(b, xb, a, xa, &v);
+    if (mtv) *mtv = hit ? sx_neg(v) : sx_v2_zero();
+    return hit;
+}
+SX_NOINLINE static int collide_swapped(const sx_pair_entry *e, const sx_shape *a, sx_xf xa,
+                                       const sx_shape *b, sx_xf xb, sx_real margin, sx_real hyst,
+                                       sx_manifold *out) {
+    e->collide(b, xb, a, xa, margin, hyst, out);
+    sx_mirror_manifold(out);
+    return out->count;
+}
+
 bool sx_mtv(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_vec2 *mtv) {
     const sx_pair_entry *e = pair_entry(a, b);
-    sx_vec2 v;
-    bool hit;
     if (e == NULL) {
         if (mtv) *mtv = sx_v2_zero();
         return false;
     }
-    if (!e->swapped) return e->mtv(a, xa, b, xb, mtv);
-    hit = e->mtv(b, xb, a, xa, &v);
-    if (mtv) *mtv = hit ? sx_neg(v) : sx_v2_zero();
-    return hit;
+    if (e->swapped) return mtv_swapped(e, a, xa, b, xb, mtv);
+    return e->mtv(a, xa, b, xb, mtv);
 }
 
 /* Both manifold entry points dispatch here directly (one call layer less
@@ -1142,10 +1157,9 @@ static inline int collide_dispatch(const sx_shape *a, sx_xform xa, const sx_shap
         return 0;
     }
     if (out == NULL) out = &scratch;
-    if (!e->swapped) return e->collide(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, hyst, out);
-    e->collide(b, sx_xf_of(&xb), a, sx_xf_of(&xa), margin, hyst, out);
-    sx_mirror_manifold(out);
-    return out->count;
+    if (e->swapped)
+        return collide_swapped(e, a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, hyst, out);
+    return e->collide(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, hyst, out);
 }
 
 int sx_collide_ex(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_real margin,
