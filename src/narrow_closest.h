@@ -112,7 +112,8 @@ static SX_ALWAYS_INLINE sx_real sat_pair_scale(const sx_core *a, const sx_core *
  * origin has its vertices rounded while its normals stay exact, and an edge
  * shorter than that rounding (a 5 mm edge at 1e5 m in float) points
  * anywhere; the face case would then take q's distance to the face's line
- * for a q far beyond the face's ends (a 16 m gap reported as 77 km).
+ * for a q far beyond the face's ends, and a gap of metres could come out
+ * as kilometres.
  * Returns 0 when q lies over the face, -1 (1) when it lies before its first
  * (past its second) end, the corner offered; with walk (polygon p), 0 too
  * when q lies within that corner's region, past the end of the face beyond
