@@ -91,14 +91,17 @@ SONAME := libsepax.so.$(VERSION_MAJOR)
 LIB_SO := $(OUT)/libsepax.so
 LIB_SO_REAL := $(OUT)/libsepax.so.$(VERSION)
 
-TEST_SRCS := $(sort $(wildcard tests/test_*.c))
+# tests/test_*.c use the public API only; the white-box tests of
+# tests/internal/ may include src/ (make check-layers allows nothing else to)
+# and link the static library, which keeps the internal symbols.
+TEST_SRCS := $(sort $(wildcard tests/test_*.c)) $(sort $(wildcard tests/internal/test_*.c))
 TEST_SUPPORT := $(sort $(wildcard tests/support/*.c))
 TEST_SUPPORT_OBJS := $(TEST_SUPPORT:tests/support/%.c=$(OUT)/obj/tests/support/%.o)
-TEST_BINS := $(TEST_SRCS:tests/%.c=$(OUT)/tests/%)
+TEST_BINS := $(patsubst %.c,$(OUT)/tests/%,$(notdir $(TEST_SRCS)))
 CMOCKA_CFLAGS = $(shell pkg-config --cflags cmocka 2>/dev/null)
 CMOCKA_LIBS = $(shell pkg-config --libs cmocka 2>/dev/null || echo -lcmocka)
 
-.PHONY: all lib test check-headers readme-example doc-examples sample-pyramid deps-test deps-bench \
+.PHONY: all lib test check-exports check-layers check-headers readme-example doc-examples sample-pyramid deps-test deps-bench \
         install uninstall clean bench bench-smoke format format-check help
 .DEFAULT_GOAL := all
 .SECONDARY:
@@ -106,9 +109,12 @@ CMOCKA_LIBS = $(shell pkg-config --libs cmocka 2>/dev/null || echo -lcmocka)
 all: lib
 lib: $(LIB_A) $(LIB_SO_REAL) $(LIB_SO)
 
-$(OUT)/obj/src/%.o: src/%.c | $(OUT)/obj/src
+# The library's own objects hide every symbol that the public headers do not
+# mark SX_API (check-exports holds libsepax.so to that list). They depend on
+# the Makefile so that a change of flags rebuilds them.
+$(OUT)/obj/src/%.o: src/%.c Makefile | $(OUT)/obj/src
 	$(call msg,CC,$<)
-	$(Q)$(CC) $(CFLAGS_ALL) -c $< -o $@
+	$(Q)$(CC) $(CFLAGS_ALL) -fvisibility=hidden -c $< -o $@
 
 $(LIB_A): $(OBJS)
 	$(Q)rm -f $@
@@ -142,6 +148,10 @@ $(OUT)/obj/tests/%.o: tests/%.c | $(OUT)/obj/tests deps-test
 	$(call msg,CC,$<)
 	$(Q)$(CC) $(CFLAGS_ALL) $(CMOCKA_CFLAGS) -Itests/support -c $< -o $@
 
+$(OUT)/obj/tests/%.o: tests/internal/%.c | $(OUT)/obj/tests deps-test
+	$(call msg,CC,$<)
+	$(Q)$(CC) $(CFLAGS_ALL) $(CMOCKA_CFLAGS) -Itests/support -c $< -o $@
+
 $(OUT)/tests/%: $(OUT)/obj/tests/%.o $(TEST_SUPPORT_OBJS) $(LIB_A) | $(OUT)/tests
 	$(call msg,LD,$@)
 	$(Q)$(CC) $(SANFLAGS) -o $@ $< $(TEST_SUPPORT_OBJS) $(LIB_A) $(CMOCKA_LIBS) $(LDLIBS_ALL) $(TEST_LDLIBS)
@@ -150,11 +160,26 @@ $(OUT)/tests/%: $(OUT)/obj/tests/%.o $(TEST_SUPPORT_OBJS) $(LIB_A) | $(OUT)/test
 $(OUT)/obj/tests/test_threads.o: CFLAGS += -pthread
 $(OUT)/tests/test_threads: TEST_LDLIBS := -pthread
 
+# libsepax.so exports exactly the functions declared in include/sepax/*.h,
+# each marked SX_API (the list is read from the headers, not kept by hand).
+check-exports: $(LIB_SO_REAL)
+	@sh scripts/check_exports.sh $(LIB_SO_REAL) include/sepax/*.h
+
+# The include lines prove the layering base <- shape <- collide <- world <-
+# ecs, and only tests/internal/ includes src/ (scripts/check_layers.sh holds
+# the table of layers).
+check-layers:
+	@sh scripts/check_layers.sh
+
 # Public headers must compile as C++ too.
+# With include/sepax itself on the include path, no sepax header may take the
+# place of a C library header (<math.h> here).
 check-headers:
 	@echo "sepax: compiling the public headers as C++"
 	@printf '#include <sepax/sepax.h>\nint main() { sx_vec2 v = sx_v2(1, 2); return (int)sx_length(v) - 2; }\n' \
 	  | $(CXX) -std=c++11 -Wall -Wextra -pedantic -Werror $(DEFS) -Iinclude -x c++ -fsyntax-only -
+	@printf '#include <math.h>\n#include "sepax.h"\nint main(void) { return (int)(sqrt(4.0) + sx_length(sx_v2(0, 0))) - 2; }\n' \
+	  | $(CC) -std=c99 -Wall -Wextra -pedantic -Werror $(DEFS) -Iinclude/sepax -x c -fsyntax-only -
 
 # Every C code block of README.md and the C and C++ blocks of the usage
 # comment atop ecs/sepax_flecs.h are compiled with the strict flags and run,
@@ -197,7 +222,7 @@ sample-pyramid: $(SAMPLE_PYRAMID)
 	@./$(SAMPLE_PYRAMID) 5 1 > $(SAMPLE_PYRAMID).out
 	@echo "sepax: samples/pyramid ran: $$(tail -n 1 $(SAMPLE_PYRAMID).out)"
 
-test: lib check-headers doc-examples sample-pyramid $(TEST_BINS)
+test: lib check-exports check-layers check-headers doc-examples sample-pyramid $(TEST_BINS)
 	@failed=0; total=0; \
 	for t in $(TEST_BINS); do \
 	  total=$$((total + 1)); \
@@ -521,6 +546,7 @@ INSTALL_FILES = include/sepax/*.h lib/libsepax.a lib/libsepax.so lib/$(SONAME) \
 install: lib
 	install -d $(DESTDIR)$(PREFIX)/include/sepax $(DESTDIR)$(PREFIX)/lib/pkgconfig
 	install -m 644 include/sepax/*.h $(DESTDIR)$(PREFIX)/include/sepax/
+	rm -f $(DESTDIR)$(PREFIX)/include/sepax/math.h  # the former name of vecmath.h, which shadowed <math.h>
 	install -m 644 $(LIB_A) $(DESTDIR)$(PREFIX)/lib/
 	install -m 755 $(LIB_SO_REAL) $(DESTDIR)$(PREFIX)/lib/
 	ln -sf libsepax.so.$(VERSION) $(DESTDIR)$(PREFIX)/lib/$(SONAME)
@@ -545,7 +571,7 @@ uninstall:
 
 # ---- housekeeping --------------------------------------------------------------
 
-FORMAT_FILES = $(wildcard include/sepax/*.h src/*.c src/*.h tests/*.c tests/*.h tests/support/*.c \
+FORMAT_FILES = $(wildcard include/sepax/*.h src/*.c src/*.h tests/*.c tests/*.h tests/internal/*.c tests/support/*.c \
                  tests/support/*.h samples/*.c bench/*.c bench/*.h ecs/*.c ecs/*.h)
 # clang-format, or Debian's versioned name when only that is installed
 CLANG_FORMAT ?= $(or $(shell command -v clang-format 2>/dev/null),$(shell command -v clang-format-14 2>/dev/null),clang-format)
@@ -562,6 +588,8 @@ help:
 	@echo "sepax make targets (variables: SX_REAL=double, SAN=1, SIMD=0, V=1, PREFIX=..., FLECS_DIR=...)"
 	@echo "  all, lib          build/libsepax.a and the versioned build/libsepax.so (the default)"
 	@echo "  test              build the library and run every cmocka test, the documentation's examples and the sample"
+	@echo "  check-exports     libsepax.so must export exactly the SX_API declarations of include/sepax/*.h"
+	@echo "  check-layers      every include stays in its layer or below (base, shape, collide, world, ecs)"
 	@echo "  check-headers     compile the public headers as C++"
 	@echo "  doc-examples      compile and run the C blocks of README.md and the C/C++ blocks of ecs/sepax_flecs.h"
 	@echo "  readme-example    the same as doc-examples (its former name)"
@@ -589,5 +617,5 @@ help:
 	@echo "  clean             remove build/"
 	@echo "  help              this list"
 
--include $(OBJS:.o=.d) $(TEST_SRCS:tests/%.c=$(OUT)/obj/tests/%.d) \
+-include $(OBJS:.o=.d) $(patsubst %.c,$(OUT)/obj/tests/%.d,$(notdir $(TEST_SRCS))) \
          $(TEST_SUPPORT_OBJS:.o=.d) $(BENCH_OBJS:.o=.d)

@@ -144,9 +144,11 @@ def copy_tree():
 
 
 def test_programs():
-    names = sorted(f[:-2] for f in os.listdir(os.path.join(TREE, "tests"))
-                   if f.startswith("test_") and f.endswith(".c"))
-    return names
+    names = []
+    for d in ("tests", os.path.join("tests", "internal")):
+        names += [f[:-2] for f in os.listdir(os.path.join(TREE, d))
+                  if f.startswith("test_") and f.endswith(".c")]
+    return sorted(names)
 
 
 def build(jobs, log):

@@ -38,9 +38,8 @@ static inline bool xform_finite(sx_xform x) {
  * infinite (inf x 0 is NaN, inf x nonzero is infinite). */
 SX_NOINLINE static bool relative_xform(sx_xform xa, sx_xform xb, sx_xform *rel) {
 #if SX_NARROW_SSE
-    /* Out of line: inlined, GCC 12 copied xb through a 16-byte reload of
-     * its two stored halves, a failed store forward (the overlap of two
-     * boxes went from 38 to 47 ns; out of line it is 38). */
+    /* Out of line: inlined, GCC 12 copies xb through a 16-byte reload of
+     * its two stored halves, a failed store forward on the hot path. */
     __m128 r = sx_sse_relative_xform(sx_xf_of(&xa), sx_xf_of(&xb));
     _mm_storeu_ps(&rel->p.x, r);
     return sx_sse_finite(r);
@@ -74,16 +73,6 @@ static sx_real clean_margin(sx_real margin) {
 
 static void clear_manifold(sx_manifold *out) {
     if (out) memset(out, 0, sizeof(*out));
-}
-
-/* The manifold of (B, A) from that of (A, B): same points and depths, the
- * normal reversed, and the flipped bit of every id toggled (the reference
- * face now belongs to the other argument). */
-static void mirror_manifold(sx_manifold *m) {
-    int i;
-    m->normal = sx_neg(m->normal);
-    for (i = 0; i < m->count; ++i)
-        m->points[i].id ^= (uint32_t)1 << 16;
 }
 
 /* Lexicographic order of the bit patterns of two runs of reals: arbitrary
@@ -218,8 +207,8 @@ static sx_vec2 circles_direction(const sx_circle *a, sx_xform xa, const sx_circl
  * direction d over its length unless the centres coincide within rounding
  * (circles_direction's test, which for a square this large reads
  * dist > 64 epsilon r). collide_circles writes the same steps out itself:
- * calling this helper from it made GCC 12 spill the by-value transforms and
- * reload them across a store-forwarding stall (11 ns per pair became 16-20). */
+ * calling this helper from it makes GCC 12 spill the by-value transforms and
+ * reload them across a store-forwarding stall. */
 static inline bool circles_touch(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                                  sx_vec2 d, sx_real limit, sx_vec2 *n, sx_real *dist) {
     sx_real dsq = sx_length_sq(d), r = a->radius + b->radius;
@@ -316,8 +305,8 @@ static inline int collide_circles(const sx_circle *a, sx_xform xa, const sx_circ
  * square in full precision, centres apart by more than rounding noise) is
  * written out on the registers, each lane computed as collide_circles
  * computes it; collide_circles answers the rest. */
-static int coll_circles(const sx_circle *a, sx_xf xa, const sx_circle *b, sx_xf xb, sx_real margin,
-                        sx_real hyst, sx_manifold *out) {
+int sx_collide_circles_xf(const sx_circle *a, sx_xf xa, const sx_circle *b, sx_xf xb,
+                          sx_real margin, sx_real hyst, sx_manifold *out) {
     SX_UNUSED(hyst); /* circles have no reference face */
 #if SX_NARROW_SSE
     if (a != NULL && b != NULL) {
@@ -393,10 +382,9 @@ static int builder_kind(sx_core_builder *f) {
 
 /* The overlap and MTV of two cores: narrow_core.c's fused routines. The
  * transforms come by address, from the function that holds them by value:
- * passed on by value through the inlined pair functions, GCC 12 copied the
+ * passed on by value through the inlined pair functions, GCC 12 copies the
  * transform of B as one 16-byte load of its two stored 8-byte halves, a
- * failed store forward that cost the overlap of a polygon and a segment a
- * fifth of its time (40 ns, 33 ns now). circle_valid takes B's transform by
+ * failed store forward on every call. circle_valid takes B's transform by
  * address for the same reason. */
 static bool pair_overlap(sx_core_builder *fa, const void *a, const sx_xform *xa,
                          sx_core_builder *fb, const void *b, const sx_xform *xb) {
@@ -481,9 +469,8 @@ static int point_collide(sx_core_builder *fa, const void *a, sx_xform xa, const 
  * sx_core_segment_point_overlap in narrow.h), and the cases those leave to
  * the general route take point_overlap, point_mtv or point_collide. They
  * stay out of line (SX_NOINLINE): inlined into the dispatch entries, GCC 12
- * spilled the by-value transform as two 8-byte halves and read it back as
- * one 16-byte vector, a failed store forward that cost the overlap test a
- * third of its time (segment-circle 21 ns out of line, 31 ns inlined). */
+ * spills the by-value transform as two 8-byte halves and reads it back as
+ * one 16-byte vector, a failed store forward on every call. */
 SX_NOINLINE static bool segment_point_overlap(sx_vec2 a0, sx_vec2 a1, sx_real ra,
                                               sx_core_builder *fa, const void *a, sx_xform xa,
                                               const sx_circle *b, sx_xform xb) {
@@ -566,7 +553,7 @@ static int collide_rescue(sx_core_builder *f, const void *a, sx_xform xa, const 
     int count = pair_collide(f, a, xa, f, b, xb, SX_TOUCH_RESCUE_MARGIN, hyst, m), i;
     if (count == 0) {
         count = pair_collide(f, b, xb, f, a, xa, SX_TOUCH_RESCUE_MARGIN, hyst, m);
-        if (count > 0) mirror_manifold(m);
+        if (count > 0) sx_mirror_manifold(m);
     }
     for (i = 0; i < count; ++i)
         m->points[i].depth = sx_maxr(m->points[i].depth, SX_R(0.0));
@@ -631,21 +618,34 @@ bool sx_mtv_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b,
 int sx_collide_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_coll_segment_circle(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
-                                  SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
+    return sx_collide_segment_circle_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                        SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 /* ---- segment - segment -------------------------------------------------- */
 
+/* The order of two segments' or capsules' ends and radii, n = 4 (the ends
+ * alone, for segments) or 5 (the radius too). */
+static int order_ends(sx_vec2 a0, sx_vec2 a1, sx_real ra, sx_vec2 b0, sx_vec2 b1, sx_real rb,
+                      int n) {
+    sx_real x[5], y[5];
+    x[0] = a0.x;
+    x[1] = a0.y;
+    x[2] = a1.x;
+    x[3] = a1.y;
+    x[4] = ra;
+    y[0] = b0.x;
+    y[1] = b0.y;
+    y[2] = b1.x;
+    y[3] = b1.y;
+    y[4] = rb;
+    return order_reals(x, y, n);
+}
+
 static int order_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb) {
-    sx_vec2 va[2], vb[2];
     int c = order_xforms(xa, xb);
     if (c != 0 || a == NULL || b == NULL) return c;
-    va[0] = a->a;
-    va[1] = a->b;
-    vb[0] = b->a;
-    vb[1] = b->b;
-    return order_vecs(va, vb, 2);
+    return order_ends(a->a, a->b, SX_R(0.0), b->a, b->b, SX_R(0.0), 4);
 }
 
 bool sx_overlap_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb) {
@@ -671,8 +671,8 @@ SX_NOINLINE int sx_collide_segments_gated(const sx_segment *a, sx_xf ta, const s
 int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_coll_segments(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
-                            out ? out : &scratch);
+    return sx_collide_segments_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                  SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 /* ---- capsule - circle / segment / capsule ------------------------------- */
@@ -689,8 +689,8 @@ bool sx_mtv_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b,
 int sx_collide_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_coll_capsule_circle(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
-                                  SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
+    return sx_collide_capsule_circle_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                        SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 bool sx_overlap_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b,
@@ -704,25 +704,14 @@ bool sx_mtv_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *
 int sx_collide_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                                sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_coll_capsule_segment(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
-                                   SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
+    return sx_collide_capsule_segment_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                         SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 static int order_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb) {
-    sx_real ra[5], rb[5];
     int c = order_xforms(xa, xb);
     if (c != 0 || a == NULL || b == NULL) return c;
-    ra[0] = a->a.x;
-    ra[1] = a->a.y;
-    ra[2] = a->b.x;
-    ra[3] = a->b.y;
-    ra[4] = a->radius;
-    rb[0] = b->a.x;
-    rb[1] = b->a.y;
-    rb[2] = b->b.x;
-    rb[3] = b->b.y;
-    rb[4] = b->radius;
-    return order_reals(ra, rb, 5);
+    return order_ends(a->a, a->b, a->radius, b->a, b->b, b->radius, 5);
 }
 
 bool sx_overlap_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb) {
@@ -748,8 +737,8 @@ SX_NOINLINE int sx_collide_capsules_gated(const sx_capsule *a, sx_xf ta, const s
 int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_coll_capsules(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
-                            out ? out : &scratch);
+    return sx_collide_capsules_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                  SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 /* ---- polygon - circle / segment / capsule ------------------------------- */
@@ -799,8 +788,8 @@ bool sx_mtv_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b,
 int sx_collide_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_coll_polygon_circle(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
-                                  SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
+    return sx_collide_polygon_circle_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                        SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 bool sx_overlap_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b,
@@ -814,8 +803,8 @@ bool sx_mtv_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *
 int sx_collide_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                                sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_coll_polygon_segment(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
-                                   SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
+    return sx_collide_polygon_segment_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                         SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 bool sx_overlap_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b,
@@ -829,8 +818,8 @@ bool sx_mtv_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *
 int sx_collide_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                                sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_coll_polygon_capsule(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
-                                   SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
+    return sx_collide_polygon_capsule_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                         SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 /* ---- polygon - polygon -------------------------------------------------- */
@@ -980,11 +969,106 @@ SX_NOINLINE int sx_collide_polygons_gated(const sx_polygon *a, sx_xf ta, const s
 int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_coll_polygons(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, SX_REFERENCE_HYSTERESIS,
-                            out ? out : &scratch);
+    return sx_collide_polygons_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+                                  SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
 /* ---- the dispatch table ------------------------------------------------- */
+
+/* The overlap and MTV entries of each pair: the typed pair function on the
+ * shapes' union members. */
+static bool overlap_circles_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
+    return sx_overlap_circles(&a->u.circle, xa, &b->u.circle, xb);
+}
+static bool mtv_circles_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                               sx_vec2 *mtv) {
+    return sx_mtv_circles(&a->u.circle, xa, &b->u.circle, xb, mtv);
+}
+int sx_collide_circles_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
+                              sx_real margin, sx_real hyst, sx_manifold *out) {
+    return sx_collide_circles_xf(&a->u.circle, xa, &b->u.circle, xb, margin, hyst, out);
+}
+
+static bool overlap_segment_circle_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                          sx_xform xb) {
+    return sx_overlap_segment_circle(&a->u.segment, xa, &b->u.circle, xb);
+}
+static bool mtv_segment_circle_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                      sx_xform xb, sx_vec2 *mtv) {
+    return sx_mtv_segment_circle(&a->u.segment, xa, &b->u.circle, xb, mtv);
+}
+
+static bool overlap_segments_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                    sx_xform xb) {
+    return sx_overlap_segments(&a->u.segment, xa, &b->u.segment, xb);
+}
+static bool mtv_segments_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                                sx_vec2 *mtv) {
+    return sx_mtv_segments(&a->u.segment, xa, &b->u.segment, xb, mtv);
+}
+
+static bool overlap_capsule_circle_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                          sx_xform xb) {
+    return sx_overlap_capsule_circle(&a->u.capsule, xa, &b->u.circle, xb);
+}
+static bool mtv_capsule_circle_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                      sx_xform xb, sx_vec2 *mtv) {
+    return sx_mtv_capsule_circle(&a->u.capsule, xa, &b->u.circle, xb, mtv);
+}
+
+static bool overlap_capsule_segment_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                           sx_xform xb) {
+    return sx_overlap_capsule_segment(&a->u.capsule, xa, &b->u.segment, xb);
+}
+static bool mtv_capsule_segment_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                       sx_xform xb, sx_vec2 *mtv) {
+    return sx_mtv_capsule_segment(&a->u.capsule, xa, &b->u.segment, xb, mtv);
+}
+
+static bool overlap_capsules_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                    sx_xform xb) {
+    return sx_overlap_capsules(&a->u.capsule, xa, &b->u.capsule, xb);
+}
+static bool mtv_capsules_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                                sx_vec2 *mtv) {
+    return sx_mtv_capsules(&a->u.capsule, xa, &b->u.capsule, xb, mtv);
+}
+
+static bool overlap_polygon_circle_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                          sx_xform xb) {
+    return sx_overlap_polygon_circle(&a->u.polygon, xa, &b->u.circle, xb);
+}
+static bool mtv_polygon_circle_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                      sx_xform xb, sx_vec2 *mtv) {
+    return sx_mtv_polygon_circle(&a->u.polygon, xa, &b->u.circle, xb, mtv);
+}
+
+static bool overlap_polygon_segment_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                           sx_xform xb) {
+    return sx_overlap_polygon_segment(&a->u.polygon, xa, &b->u.segment, xb);
+}
+static bool mtv_polygon_segment_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                       sx_xform xb, sx_vec2 *mtv) {
+    return sx_mtv_polygon_segment(&a->u.polygon, xa, &b->u.segment, xb, mtv);
+}
+
+static bool overlap_polygon_capsule_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                           sx_xform xb) {
+    return sx_overlap_polygon_capsule(&a->u.polygon, xa, &b->u.capsule, xb);
+}
+static bool mtv_polygon_capsule_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                       sx_xform xb, sx_vec2 *mtv) {
+    return sx_mtv_polygon_capsule(&a->u.polygon, xa, &b->u.capsule, xb, mtv);
+}
+
+static bool overlap_polygons_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b,
+                                    sx_xform xb) {
+    return sx_overlap_polygons(&a->u.polygon, xa, &b->u.polygon, xb);
+}
+static bool mtv_polygons_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                                sx_vec2 *mtv) {
+    return sx_mtv_polygons(&a->u.polygon, xa, &b->u.polygon, xb, mtv);
+}
 
 typedef bool sx_overlap_entry(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb);
 typedef bool sx_mtv_entry(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
@@ -994,101 +1078,27 @@ typedef bool sx_mtv_entry(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_
 typedef int sx_collide_entry(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
                              sx_real margin, sx_real hyst, sx_manifold *out);
 
+/* The entries of one ordered pair of types. `swapped`: the pair's
+ * functions take the arguments in the other order, so the dispatch swaps
+ * them back, negates the MTV and mirrors the manifold. */
 typedef struct sx_pair_entry {
     sx_overlap_entry *overlap;
     sx_mtv_entry *mtv;
     sx_collide_entry *collide;
+    bool swapped;
 } sx_pair_entry;
 
-/* Entries for the canonical order call the pair function directly; entries
- * for the reverse order (suffix _rev) swap the arguments, negate the MTV and
- * mirror the manifold. Written out by a generator macro per unordered pair so
- * that the sixteen ordered entries cannot drift apart. */
-#define SX_PAIR_ENTRIES(NAME, MA, MB)                                                              \
-    static bool ov_##NAME(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {        \
-        return sx_overlap_##NAME(&a->u.MA, xa, &b->u.MB, xb);                                      \
-    }                                                                                              \
-    static bool mtv_##NAME(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,         \
-                           sx_vec2 *mtv) {                                                         \
-        return sx_mtv_##NAME(&a->u.MA, xa, &b->u.MB, xb, mtv);                                     \
-    }                                                                                              \
-    static bool ov_##NAME##_rev(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {  \
-        return sx_overlap_##NAME(&b->u.MA, xb, &a->u.MB, xa);                                      \
-    }                                                                                              \
-    static bool mtv_##NAME##_rev(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,   \
-                                 sx_vec2 *mtv) {                                                   \
-        sx_vec2 v;                                                                                 \
-        bool hit = sx_mtv_##NAME(&b->u.MA, xb, &a->u.MB, xa, &v);                                  \
-        if (mtv) *mtv = hit ? sx_neg(v) : sx_v2_zero();                                            \
-        return hit;                                                                                \
-    }
-
-SX_PAIR_ENTRIES(segment_circle, segment, circle)
-SX_PAIR_ENTRIES(capsule_circle, capsule, circle)
-SX_PAIR_ENTRIES(capsule_segment, capsule, segment)
-SX_PAIR_ENTRIES(polygon_circle, polygon, circle)
-SX_PAIR_ENTRIES(polygon_segment, polygon, segment)
-SX_PAIR_ENTRIES(polygon_capsule, polygon, capsule)
-
-#undef SX_PAIR_ENTRIES
-
-/* Same-type pairs: the pair functions order overlap and MTV themselves, and
- * manifolds follow the caller's order. */
-static bool ov_circles(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
-    return sx_overlap_circles(&a->u.circle, xa, &b->u.circle, xb);
-}
-static bool mtv_circles(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                        sx_vec2 *mtv) {
-    return sx_mtv_circles(&a->u.circle, xa, &b->u.circle, xb, mtv);
-}
-static int col_circles(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb, sx_real margin,
-                       sx_real hyst, sx_manifold *out) {
-    return coll_circles(&a->u.circle, xa, &b->u.circle, xb, margin, hyst, out);
-}
-static bool ov_segments(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
-    return sx_overlap_segments(&a->u.segment, xa, &b->u.segment, xb);
-}
-static bool mtv_segments(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                         sx_vec2 *mtv) {
-    return sx_mtv_segments(&a->u.segment, xa, &b->u.segment, xb, mtv);
-}
-static bool ov_capsules(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
-    return sx_overlap_capsules(&a->u.capsule, xa, &b->u.capsule, xb);
-}
-static bool mtv_capsules(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                         sx_vec2 *mtv) {
-    return sx_mtv_capsules(&a->u.capsule, xa, &b->u.capsule, xb, mtv);
-}
-static bool ov_polygons(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
-    return sx_overlap_polygons(&a->u.polygon, xa, &b->u.polygon, xb);
-}
-static bool mtv_polygons(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                         sx_vec2 *mtv) {
-    return sx_mtv_polygons(&a->u.polygon, xa, &b->u.polygon, xb, mtv);
-}
-
+/* The table, indexed [A's type][B's type], filled from narrow.h's lists of
+ * pairs: a pair of two types in both orders, a pair of one type once. */
+#define SX_TABLE_BOTH_ORDERS(NAME, TA, KA, MA, TB, KB, MB)                                         \
+    [KA][KB] = {overlap_##NAME##_shapes, mtv_##NAME##_shapes, sx_collide_##NAME##_shapes, false},  \
+    [KB][KA] = {overlap_##NAME##_shapes, mtv_##NAME##_shapes, sx_collide_##NAME##_shapes, true},
+#define SX_TABLE_ONE_ORDER(NAME, TA, KA, MA, TB, KB, MB)                                           \
+    [KA][KB] = {overlap_##NAME##_shapes, mtv_##NAME##_shapes, sx_collide_##NAME##_shapes, false},
 static const sx_pair_entry sx_pair_table[SX_SHAPE_TYPE_COUNT][SX_SHAPE_TYPE_COUNT] = {
-    /* A = circle */
-    {{ov_circles, mtv_circles, col_circles},
-     {ov_segment_circle_rev, mtv_segment_circle_rev, sx_entry_segment_circle_rev},
-     {ov_capsule_circle_rev, mtv_capsule_circle_rev, sx_entry_capsule_circle_rev},
-     {ov_polygon_circle_rev, mtv_polygon_circle_rev, sx_entry_polygon_circle_rev}},
-    /* A = segment */
-    {{ov_segment_circle, mtv_segment_circle, sx_entry_segment_circle},
-     {ov_segments, mtv_segments, sx_entry_segments},
-     {ov_capsule_segment_rev, mtv_capsule_segment_rev, sx_entry_capsule_segment_rev},
-     {ov_polygon_segment_rev, mtv_polygon_segment_rev, sx_entry_polygon_segment_rev}},
-    /* A = capsule */
-    {{ov_capsule_circle, mtv_capsule_circle, sx_entry_capsule_circle},
-     {ov_capsule_segment, mtv_capsule_segment, sx_entry_capsule_segment},
-     {ov_capsules, mtv_capsules, sx_entry_capsules},
-     {ov_polygon_capsule_rev, mtv_polygon_capsule_rev, sx_entry_polygon_capsule_rev}},
-    /* A = polygon */
-    {{ov_polygon_circle, mtv_polygon_circle, sx_entry_polygon_circle},
-     {ov_polygon_segment, mtv_polygon_segment, sx_entry_polygon_segment},
-     {ov_polygon_capsule, mtv_polygon_capsule, sx_entry_polygon_capsule},
-     {ov_polygons, mtv_polygons, sx_entry_polygons}},
-};
+    SX_PAIRS_OF_TWO_TYPES(SX_TABLE_BOTH_ORDERS) SX_PAIRS_OF_ONE_TYPE(SX_TABLE_ONE_ORDER)};
+#undef SX_TABLE_BOTH_ORDERS
+#undef SX_TABLE_ONE_ORDER
 
 static const sx_pair_entry *pair_entry(const sx_shape *a, const sx_shape *b) {
     if (a == NULL || b == NULL) return NULL;
@@ -1103,7 +1113,27 @@ static const sx_pair_entry *pair_entry(const sx_shape *a, const sx_shape *b) {
 
 bool sx_overlap(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
     const sx_pair_entry *e = pair_entry(a, b);
-    return e != NULL && e->overlap(a, xa, b, xb);
+    if (e == NULL) return false;
+    return e->swapped ? e->overlap(b, xb, a, xa) : e->overlap(a, xa, b, xb);
+}
+
+/* The reversed orders of sx_mtv and sx_collide: the entry called with the
+ * arguments swapped back, the MTV negated, the manifold mirrored. Out of
+ * line, so that the canonical orders stay a bare tail call (no stack frame
+ * for the reversed order's MTV or its saved out). */
+SX_NOINLINE static bool mtv_swapped(const sx_pair_entry *e, const sx_shape *a, sx_xform xa,
+                                    const sx_shape *b, sx_xform xb, sx_vec2 *mtv) {
+    sx_vec2 v;
+    bool hit = e->mtv(b, xb, a, xa, &v);
+    if (mtv) *mtv = hit ? sx_neg(v) : sx_v2_zero();
+    return hit;
+}
+SX_NOINLINE static int collide_swapped(const sx_pair_entry *e, const sx_shape *a, sx_xf xa,
+                                       const sx_shape *b, sx_xf xb, sx_real margin, sx_real hyst,
+                                       sx_manifold *out) {
+    e->collide(b, xb, a, xa, margin, hyst, out);
+    sx_mirror_manifold(out);
+    return out->count;
 }
 
 bool sx_mtv(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_vec2 *mtv) {
@@ -1112,6 +1142,7 @@ bool sx_mtv(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_v
         if (mtv) *mtv = sx_v2_zero();
         return false;
     }
+    if (e->swapped) return mtv_swapped(e, a, xa, b, xb, mtv);
     return e->mtv(a, xa, b, xb, mtv);
 }
 
@@ -1125,7 +1156,10 @@ static inline int collide_dispatch(const sx_shape *a, sx_xform xa, const sx_shap
         clear_manifold(out);
         return 0;
     }
-    return e->collide(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, hyst, out ? out : &scratch);
+    if (out == NULL) out = &scratch;
+    if (e->swapped)
+        return collide_swapped(e, a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, hyst, out);
+    return e->collide(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, hyst, out);
 }
 
 int sx_collide_ex(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_real margin,

@@ -22,6 +22,7 @@
  * corner directions that satisfy two pairs' MTVs at once, a coarse ring, and
  * a local pattern search around the best. Every push tried is a complete
  * clearing walk, so whatever is returned separates. */
+#include "sepax/compound.h"
 #include "wide.h"
 
 /* A pair counts as penetrating when its MTV is longer than this: the
@@ -221,21 +222,61 @@ static bool boxes_may_touch(sx_aabb a, sx_aabb b) {
     return sx_aabb_overlaps(sx_aabb_fatten(a, g), b);
 }
 
+static sx_xform shifted(sx_xform x, sx_vec2 t) {
+    x.p = sx_add(x.p, t);
+    return x;
+}
+
+/* The pairs of parts (A's part i, B's part j, in that order) whose boxes
+ * may touch: every query over two sides walks them. A's parts are shifted
+ * by `shift` when `is_shifted`, and their boxes grown by `grow` (>= 0).
+ * Use: part_pairs_begin, then while (part_pairs_next(&p)) read p.i, p.sa,
+ * p.xa, p.j, p.sb, p.xb. */
+typedef struct part_pairs {
+    const side *a, *b;
+    sx_vec2 shift;
+    bool is_shifted;
+    sx_real grow;
+    int i, j;
+    const sx_shape *sa, *sb;
+    sx_xform xa, xb;
+    sx_aabb box_a;
+} part_pairs;
+
+static void part_pairs_begin(part_pairs *p, const side *a, const side *b, bool is_shifted,
+                             sx_vec2 shift, sx_real grow) {
+    p->a = a;
+    p->b = b;
+    p->is_shifted = is_shifted;
+    p->shift = shift;
+    p->grow = grow;
+    p->i = -1;
+    p->j = b->count;
+}
+
+static bool part_pairs_next(part_pairs *p) {
+    for (;;) {
+        if (++p->j >= p->b->count) {
+            if (++p->i >= p->a->count) return false;
+            p->sa = side_part(p->a, p->i, &p->xa);
+            if (p->is_shifted) p->xa = shifted(p->xa, p->shift);
+            p->box_a = sx_shape_aabb(p->sa, p->xa);
+            if (p->grow > SX_R(0.0)) p->box_a = sx_aabb_fatten(p->box_a, p->grow);
+            p->j = 0;
+            if (p->b->count == 0) continue;
+        }
+        p->sb = side_part(p->b, p->j, &p->xb);
+        if (boxes_may_touch(p->box_a, sx_shape_aabb(p->sb, p->xb))) return true;
+    }
+}
+
 /* ---- overlap ------------------------------------------------------------ */
 
 static bool sides_overlap(const side *a, const side *b) {
-    int i, j;
-    for (i = 0; i < a->count; ++i) {
-        sx_xform xa;
-        const sx_shape *sa = side_part(a, i, &xa);
-        sx_aabb ba = sx_shape_aabb(sa, xa);
-        for (j = 0; j < b->count; ++j) {
-            sx_xform xb;
-            const sx_shape *sb = side_part(b, j, &xb);
-            if (!boxes_may_touch(ba, sx_shape_aabb(sb, xb))) continue;
-            if (sx_overlap(sa, xa, sb, xb)) return true;
-        }
-    }
+    part_pairs p;
+    part_pairs_begin(&p, a, b, false, sx_v2_zero(), SX_R(0.0));
+    while (part_pairs_next(&p))
+        if (sx_overlap(p.sa, p.xa, p.sb, p.xb)) return true;
     return false;
 }
 
@@ -257,11 +298,6 @@ bool sx_compound_overlap_compound(const sx_compound *a, sx_xform xa, const sx_co
 }
 
 /* ---- minimum translation ------------------------------------------------ */
-
-static sx_xform shifted(sx_xform x, sx_vec2 t) {
-    x.p = sx_add(x.p, t);
-    return x;
-}
 
 /* The pair overlaps by more than the clearing tolerance. */
 static bool penetrates(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb) {
@@ -369,21 +405,13 @@ static sx_real pair_exit(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_x
  * budget ran out. */
 static bool find_penetration_at(const side *a, const side *b, sx_vec2 d, sx_real t, int *pi,
                                 int *pj) {
-    int i, j;
-    for (i = 0; i < a->count; ++i) {
-        sx_xform xa;
-        const sx_shape *sa = side_part(a, i, &xa);
-        sx_xform xt = shifted(xa, sx_scale(d, t));
-        sx_aabb ba = sx_shape_aabb(sa, xt);
-        for (j = 0; j < b->count; ++j) {
-            sx_xform xb;
-            const sx_shape *sb = side_part(b, j, &xb);
-            if (!boxes_may_touch(ba, sx_shape_aabb(sb, xb))) continue;
-            if (penetrates(sa, xt, sb, xb)) {
-                *pi = i;
-                *pj = j;
-                return true;
-            }
+    part_pairs p;
+    part_pairs_begin(&p, a, b, true, sx_scale(d, t), SX_R(0.0));
+    while (part_pairs_next(&p)) {
+        if (penetrates(p.sa, p.xa, p.sb, p.xb)) {
+            *pi = p.i;
+            *pj = p.j;
+            return true;
         }
     }
     return false;
@@ -532,28 +560,22 @@ static bool sides_mtv(const side *a, const side *b, sx_vec2 *mtv) {
     sx_vec2 best_dir = sx_v2_zero(), deep_dir = sx_v2(SX_R(1.0), SX_R(0.0));
     bool any = false;
     int i, j, nc = 0, penetrating = 0;
+    part_pairs p;
     if (mtv != NULL) *mtv = sx_v2_zero();
-    for (i = 0; i < a->count; ++i) {
-        sx_xform xa;
-        const sx_shape *sa = side_part(a, i, &xa);
-        sx_aabb ba = sx_shape_aabb(sa, xa);
-        for (j = 0; j < b->count; ++j) {
-            sx_xform xb;
-            sx_vec2 m;
-            const sx_shape *sb = side_part(b, j, &xb);
-            if (!boxes_may_touch(ba, sx_shape_aabb(sb, xb))) continue;
-            if (!sx_mtv(sa, xa, sb, xb, &m)) continue;
-            any = true;
-            if (mtv == NULL) return true;
-            if (sx_length_sq(m) <= COMPOUND_CLEAR_TOLERANCE * COMPOUND_CLEAR_TOLERANCE) continue;
-            ++penetrating;
-            if (sx_length(m) > deepest) {
-                deepest = sx_length(m);
-                deep_dir = sx_normalize(m);
-            }
-            if (nc < COMPOUND_MAX_CONSTRAINTS) constraints[nc++] = m;
-            try_pair_directions(a, b, sa, xa, sb, xb, m, &best, &best_dir);
+    part_pairs_begin(&p, a, b, false, sx_v2_zero(), SX_R(0.0));
+    while (part_pairs_next(&p)) {
+        sx_vec2 m;
+        if (!sx_mtv(p.sa, p.xa, p.sb, p.xb, &m)) continue;
+        any = true;
+        if (mtv == NULL) return true;
+        if (sx_length_sq(m) <= COMPOUND_CLEAR_TOLERANCE * COMPOUND_CLEAR_TOLERANCE) continue;
+        ++penetrating;
+        if (sx_length(m) > deepest) {
+            deepest = sx_length(m);
+            deep_dir = sx_normalize(m);
         }
+        if (nc < COMPOUND_MAX_CONSTRAINTS) constraints[nc++] = m;
+        try_pair_directions(a, b, p.sa, p.xa, p.sb, p.xb, m, &best, &best_dir);
     }
     if (penetrating == 0) return any;
     for (i = 0; i < nc; ++i) {
@@ -589,13 +611,12 @@ static bool sides_mtv(const side *a, const side *b, sx_vec2 *mtv) {
 
 /* Far beyond SX_HUGE (16 times) the clearing walk works with B's origin as
  * the working origin. The MTV does not depend on where the pair is, but the
- * walk takes its supports in world space: at 1.8e19 m from the origin (an
- * ulp of 2e12 m) they were noise, every exit fell back to the pair's MTV,
- * the walks crawled through their whole budget and one call took 2 s (fuzz:
- * compound-mtv-compound-walk-timeout). Within the promised range the world
+ * walk takes its supports in world space, where an ulp there can exceed the
+ * pair: the supports are noise, every exit falls back to the pair's MTV and
+ * the walk spends its whole budget. Within the promised range the world
  * frame is kept: there the walk rounds as the caller's world does, which is
- * what lets an answer one ulp long clear a pair 1.4e5 m out when added to
- * A's position. */
+ * what lets an answer one ulp long clear the pair when added to A's
+ * position. */
 static void sides_recentre(side *a, side *b) {
     sx_real far = SX_R(16.0) * SX_HUGE;
     sx_vec2 pa = sx_sub(a->x.p, b->x.p);
@@ -634,21 +655,15 @@ bool sx_compound_mtv_compound(const sx_compound *a, sx_xform xa, const sx_compou
 
 static int sides_collide(const side *a, const side *b, sx_real margin, sx_compound_manifold *out,
                          int capacity) {
-    int i, j, n = 0;
+    int n = 0;
     sx_real grow = sx_is_finite(margin) && margin > SX_R(0.0) ? margin : SX_R(0.0);
-    for (i = 0; i < a->count && n < capacity; ++i) {
-        sx_xform xa;
-        const sx_shape *sa = side_part(a, i, &xa);
-        sx_aabb ba = sx_aabb_fatten(sx_shape_aabb(sa, xa), grow);
-        for (j = 0; j < b->count && n < capacity; ++j) {
-            sx_xform xb;
-            const sx_shape *sb = side_part(b, j, &xb);
-            if (!boxes_may_touch(ba, sx_shape_aabb(sb, xb))) continue;
-            if (sx_collide_ex(sa, xa, sb, xb, margin, &out[n].manifold) > 0) {
-                out[n].part_a = i;
-                out[n].part_b = j;
-                ++n;
-            }
+    part_pairs p;
+    part_pairs_begin(&p, a, b, false, sx_v2_zero(), grow);
+    while (n < capacity && part_pairs_next(&p)) {
+        if (sx_collide_ex(p.sa, p.xa, p.sb, p.xb, margin, &out[n].manifold) > 0) {
+            out[n].part_a = p.i;
+            out[n].part_b = p.j;
+            ++n;
         }
     }
     return n;

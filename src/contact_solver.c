@@ -1244,8 +1244,8 @@ bool sx_contacts_impacts(sx_world *world, sx_real h) {
      * the shifts integrate applies to them; the bodies of the contacts too,
      * which are not always active ones: a body put to sleep between the
      * step's collide and a solve called on its own keeps its contacts, and
-     * its entry from an earlier pass indexed past the adjacency array
-     * (fuzz: world-sleeping-body-stale-impact-list). Each body's list is
+     * its entry from an earlier pass would index past the adjacency array.
+     * Each body's list is
      * placed at the first contact that names it. */
     for (i = 0; i < world->active_body_count; ++i)
         memset(&world->impact_bodies[world->active_bodies[i]], 0, sizeof(sx_impact_body));

@@ -30,6 +30,7 @@
  * linear in the point count; nothing is allocated. Cost: cleaning, the
  * simplicity test, ear clipping and the merge orders are O(n^2) (about 0.3 s
  * for 4000 points), fine for authored outlines. */
+#include "sepax/compound.h"
 #include "wide.h"
 
 /* Ints per outline point in the scratch block: prev/next links (2), the
@@ -106,15 +107,12 @@ static bool run_near_line(const sx_vec2 *raw, int n, const int *spiked, int from
  *
  * A near-collinear point goes only if every raw point the new edge stands
  * for (itself and those dropped before between its two neighbours) lies
- * within the tolerance of the new edge's line. Measured against the current
- * neighbours alone, each drop was within the tolerance of an outline that
- * earlier drops had already moved, and the moves added up: while the chord
- * grows from a fixed neighbour, the point next to that neighbour stays close
- * to the chord's line however far the chord sags from the curve, so a unit
- * circle drawn with 4000 points was cleaned to a quadrilateral (43% of its
- * area gone) at the default tolerance, and a 47-point outline 31 m across
- * with a tolerance of 2.125 m to a quadrilateral of 313 m^2 instead of
- * 781 m^2, 11 m inside some of its points. A run of raw points within the
+ * within the tolerance of the new edge's line. Judged against the current
+ * neighbours alone, each drop would be within the tolerance of an outline
+ * that earlier drops had already moved, and the moves add up: while the
+ * chord grows from a fixed neighbour, the point next to that neighbour stays
+ * close to the chord's line however far the chord sags from the curve, so a
+ * finely drawn circle would collapse to a quadrilateral. A run of raw points within the
  * tolerance of a line encloses, with its chord, at most the tolerance times
  * the distance that loop travels along the line (the run's length plus the
  * chord's), so these drops move the area by at most twice the tolerance

@@ -6,6 +6,7 @@
 #define SEPAX_DISTANCE_H
 
 #include "core.h"
+#include "sepax/collide.h"
 
 /** A convex core: 1..SX_MAX_POLYGON_VERTICES points plus a radius, in some
  *  frame (the shape's own, or its body's). */

@@ -13,7 +13,9 @@
 
 #include <string.h>
 
+#include "collide_world.h"
 #include "core.h"
+#include "sepax/collide.h"
 
 /* SSE for the float build's inner loops (x86-64 always has SSE2); the
  * double build and -DSX_NO_SIMD keep the portable loops. Every SSE loop
@@ -36,6 +38,21 @@
 #define SX_REFERENCE_HYSTERESIS (SX_R(0.02) * SX_LINEAR_SLOP)
 #define SX_WORLD_REFERENCE_HYSTERESIS (SX_R(0.1) * SX_LINEAR_SLOP)
 
+/* Disjoint rounded cores whose distance exceeds their best face separation
+ * by no more than this are treated as a face contact (clipped, up to two
+ * points) rather than a vertex contact. Aligned edges (a box resting exactly
+ * on another, end points over end points) have distance == face separation
+ * only up to rounding; 1 % of the slop catches them. The face normal then
+ * differs from the exact direction by at most sqrt(2 x tolerance / distance)
+ * radians, while the deepest point itself is the exact closest-feature
+ * contact (see clip_face). */
+#define SX_FACE_CONTACT_TOLERANCE (SX_R(0.01) * SX_LINEAR_SLOP)
+
+/* A difference of two points computed from coordinates of magnitude `scale`
+ * carries an error of a few ulps of scale; below 64 epsilon x scale its
+ * direction is noise, and also a point counts as touching within it. */
+#define SX_DIRECTION_EPSILON (SX_R(64.0) * SX_REAL_EPSILON)
+
 /* Coordinate differences down to this magnitude have squares that keep
  * full precision (d.x^2 stays above the smallest normal real over epsilon);
  * below it squared distances underflow and need scaling first. */
@@ -50,6 +67,9 @@
  * mispredicts half the time). It differs from sx_absr only in the sign of
  * a zero: use it where only comparisons and maxima see the result. */
 static inline sx_real sx_magnitude(sx_real x) { return x > -x ? x : -x; }
+
+/* A core's rounding radius as the builders accept it: finite and >= 0. */
+static inline bool sx_core_radius_ok(sx_real r) { return sx_is_finite(r) && r >= SX_R(0.0); }
 
 /** A convex core plus radius, in some working frame. Pass it by pointer
  *  only: v and n may point into its own storage. */
@@ -149,9 +169,9 @@ static inline __m128 sx_sse_xform(const sx_xform *x) {
 
 /* A transform handed between the narrowphase's functions: one register,
  * [p.x, p.y, q.c, q.s]. Passed in a register, not by address: where a
- * function took the address of its by-value transform, GCC 12 copied it
+ * function took the address of its by-value transform, GCC 12 copies it
  * through a 16-byte reload of its two stored 8-byte halves, a failed store
- * forward that cost a polygon against a circle a third of its time. Made
+ * forward on every call. Made
  * with sx_xf_of in the function that holds the transform by value (the two
  * halves arrive in two registers and become one without memory). */
 typedef __m128 sx_xf;
@@ -259,7 +279,7 @@ static inline int sx_world_manifold(sx_manifold *m, int count, sx_xf xa) {
         /* Two 8-byte loads, not one of 16: the routines before this store
          * the normal and the point separately, and a 16-byte load of two
          * stores still in flight cannot take their values (a failed store
-         * forward, a quarter of a segment-circle manifold). */
+         * forward). */
         __m128 np = _mm_loadh_pi(_mm_loadl_pi(z, (const __m64 *)(const void *)&m->normal),
                                  (const __m64 *)(const void *)&m->points[0].point);
         /* -0 is the identity of addition (+0 would turn a -0 normal
@@ -311,11 +331,6 @@ static inline int sx_world_manifold(sx_manifold *m, int count, sx_xf xa) {
 #endif
 }
 
-/* sx_collide_ex with the world's reference-face hysteresis
- * (SX_WORLD_REFERENCE_HYSTERESIS): what the world's contacts use. */
-int sx_collide_world(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_real margin,
-                     sx_manifold *out);
-
 /* collide.c's general route, for what the fused routines hand back: the
  * manifold of A (kind: SX_SHAPE_SEGMENT, CAPSULE or POLYGON) against a
  * circle through a core; and for the same-type pairs, what is not a
@@ -356,29 +371,51 @@ bool sx_cores_overlap(int ka, const void *a, sx_xf xa, int kb, const void *b, sx
  * move to world space. */
 bool sx_cores_mtv(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_xf xb, sx_vec2 *mtv);
 
-/* The manifold entries (narrow_core.c): sx_entry_NAME takes the two shapes
- * as the dispatch table does (NAME_rev: the arguments in the other order,
- * the manifold mirrored), sx_coll_NAME the pair's own structs, as the typed
- * pair functions do; hyst is the reference-face hysteresis, out not NULL. */
-#define SX_ENTRY_DECL(NAME, TA, TB)                                                                \
-    int sx_coll_##NAME(const TA *a, sx_xf xa, const TB *b, sx_xf xb, sx_real margin, sx_real hyst, \
-                       sx_manifold *out);                                                          \
-    int sx_entry_##NAME(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb, sx_real margin,  \
-                        sx_real hyst, sx_manifold *out);
-#define SX_ENTRY_DECL_REV(NAME, TA, TB)                                                            \
-    SX_ENTRY_DECL(NAME, TA, TB)                                                                    \
-    int sx_entry_##NAME##_rev(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,            \
-                              sx_real margin, sx_real hyst, sx_manifold *out);
-SX_ENTRY_DECL_REV(segment_circle, sx_segment, sx_circle)
-SX_ENTRY_DECL_REV(capsule_circle, sx_capsule, sx_circle)
-SX_ENTRY_DECL_REV(polygon_circle, sx_polygon, sx_circle)
-SX_ENTRY_DECL_REV(capsule_segment, sx_capsule, sx_segment)
-SX_ENTRY_DECL_REV(polygon_segment, sx_polygon, sx_segment)
-SX_ENTRY_DECL_REV(polygon_capsule, sx_polygon, sx_capsule)
-SX_ENTRY_DECL(segments, sx_segment, sx_segment)
-SX_ENTRY_DECL(capsules, sx_capsule, sx_capsule)
-SX_ENTRY_DECL(polygons, sx_polygon, sx_polygon)
-#undef SX_ENTRY_DECL_REV
-#undef SX_ENTRY_DECL
+/* ---- the pairs of shape types --------------------------------------------- */
+
+/* Every unordered pair of shape types, once: X(NAME, type of A, kind of A,
+ * union member of A, type of B, kind of B, member of B), A first as in the
+ * typed functions sx_overlap_NAME, sx_mtv_NAME and sx_collide_NAME of
+ * collide.h. These lists declare the manifold entries below and fill
+ * collide.c's dispatch table; the functions themselves are written out
+ * (narrow_core.c, and collide.c for two circles). */
+#define SX_PAIRS_OF_TWO_TYPES(X)                                                                   \
+    X(segment_circle, sx_segment, SX_SHAPE_SEGMENT, segment, sx_circle, SX_SHAPE_CIRCLE, circle)   \
+    X(capsule_circle, sx_capsule, SX_SHAPE_CAPSULE, capsule, sx_circle, SX_SHAPE_CIRCLE, circle)   \
+    X(polygon_circle, sx_polygon, SX_SHAPE_POLYGON, polygon, sx_circle, SX_SHAPE_CIRCLE, circle)   \
+    X(capsule_segment, sx_capsule, SX_SHAPE_CAPSULE, capsule, sx_segment, SX_SHAPE_SEGMENT,        \
+      segment)                                                                                     \
+    X(polygon_segment, sx_polygon, SX_SHAPE_POLYGON, polygon, sx_segment, SX_SHAPE_SEGMENT,        \
+      segment)                                                                                     \
+    X(polygon_capsule, sx_polygon, SX_SHAPE_POLYGON, polygon, sx_capsule, SX_SHAPE_CAPSULE, capsule)
+#define SX_PAIRS_OF_ONE_TYPE(X)                                                                    \
+    X(circles, sx_circle, SX_SHAPE_CIRCLE, circle, sx_circle, SX_SHAPE_CIRCLE, circle)             \
+    X(segments, sx_segment, SX_SHAPE_SEGMENT, segment, sx_segment, SX_SHAPE_SEGMENT, segment)      \
+    X(capsules, sx_capsule, SX_SHAPE_CAPSULE, capsule, sx_capsule, SX_SHAPE_CAPSULE, capsule)      \
+    X(polygons, sx_polygon, SX_SHAPE_POLYGON, polygon, sx_polygon, SX_SHAPE_POLYGON, polygon)
+
+/* The manifold entries of each pair: sx_collide_NAME_xf takes the pair's
+ * own structs with the transforms in registers (what the typed pair
+ * functions call), sx_collide_NAME_shapes the two sx_shape of the dispatch
+ * table; hyst is the reference-face hysteresis, out is not NULL. Both
+ * answer as sx_collide_NAME. */
+#define SX_DECLARE_MANIFOLD_ENTRIES(NAME, TA, KA, MA, TB, KB, MB)                                  \
+    int sx_collide_##NAME##_xf(const TA *a, sx_xf xa, const TB *b, sx_xf xb, sx_real margin,       \
+                               sx_real hyst, sx_manifold *out);                                    \
+    int sx_collide_##NAME##_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,       \
+                                   sx_real margin, sx_real hyst, sx_manifold *out);
+SX_PAIRS_OF_TWO_TYPES(SX_DECLARE_MANIFOLD_ENTRIES)
+SX_PAIRS_OF_ONE_TYPE(SX_DECLARE_MANIFOLD_ENTRIES)
+#undef SX_DECLARE_MANIFOLD_ENTRIES
+
+/* The manifold of (B, A) from that of (A, B): same points and depths, the
+ * normal reversed, and the flipped bit of every id toggled (the reference
+ * face now belongs to the other argument). */
+static inline void sx_mirror_manifold(sx_manifold *m) {
+    int i;
+    m->normal = sx_neg(m->normal);
+    for (i = 0; i < m->count; ++i)
+        m->points[i].id ^= SX_FEATURE_ID_FLIPPED;
+}
 
 #endif /* SEPAX_NARROW_H */

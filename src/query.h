@@ -6,6 +6,7 @@
 #define SEPAX_QUERY_H
 
 #include "core.h"
+#include "sepax/collide.h"
 
 /* Relative tolerance of the parametric line tests (segment-segment and
  * ray-segment). Rounding in a 2D cross product of two vectors is a few ulps of

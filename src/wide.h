@@ -5,11 +5,13 @@
  * wrap skip or revisit points; mass sums subtract large moments. Both are
  * computed one precision step above sx_real: double in the float build (where
  * the cross product of two float differences is then almost always exact),
- * long double in the double build. Only shape.c and hull.c include this. */
+ * long double in the double build. The shape layer (shape.c, hull.c) and
+ * the polygon work of the collide layer (compound.c, decompose.c) use it. */
 #ifndef SEPAX_WIDE_H
 #define SEPAX_WIDE_H
 
 #include "core.h"
+#include "sepax/shape.h"
 
 #ifdef SX_DOUBLE
 typedef long double sx_wide;

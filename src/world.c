@@ -17,7 +17,7 @@
  * step. */
 #include <stdlib.h>
 
-#include "narrow.h"
+#include "collide_world.h"
 #include "world_internal.h"
 
 sx_world_def sx_default_world_def(void) {

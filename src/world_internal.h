@@ -1,5 +1,6 @@
-/* sepax — private layout of the world, shared by world.c, body.c,
- * broadphase.c and contact_solver.c. Nothing here is public.
+/* sepax — private layout of the world, shared by the .c files of the world
+ * layer (world*.c, body*.c, broadphase.c, contact_solver.c, island.c,
+ * sensor.c). Nothing here is public.
  *
  * Bodies live in two dense arrays indexed by slot: sx_body_sim holds the
  * small state every stage of the step reads and writes (transform, centre of

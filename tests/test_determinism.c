@@ -101,18 +101,11 @@ static void det_add_real(det_hash *d, sx_real v) {
 
 static sx_body_id det_body(sx_world *w, sx_body_type type, sx_vec2 p, sx_real angle,
                            const sx_shape *shape, bool sensor) {
-    sx_body_def bd = sx_default_body_def();
     sx_collider_def cd = sx_default_collider_def();
-    sx_body_id id;
-    bd.type = type;
-    bd.position = p;
-    bd.angle = angle;
-    assert_int_equal(sx_create_body(w, &bd, &id), SX_OK);
     cd.shape = *shape;
     cd.sensor = sensor;
     cd.restitution = type == SX_BODY_DYNAMIC && (p.x > SX_R(3.0)) ? SX_R(0.4) : SX_R(0.0);
-    assert_int_equal(sx_body_add_collider(w, id, &cd, NULL), SX_OK);
-    return id;
+    return sx_test_body_turned(w, type, p, angle, &cd);
 }
 
 /* Runs the scene and its script; `nudge` changes one impulse by one ulp. */

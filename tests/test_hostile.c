@@ -41,17 +41,10 @@ static sx_world *hostile_world(sx_real length_units) {
 
 static sx_body_id hostile_body(sx_world *w, sx_body_type type, sx_vec2 p, sx_real angle,
                                const sx_shape *shape, sx_real density) {
-    sx_body_def bd = sx_default_body_def();
     sx_collider_def cd = sx_default_collider_def();
-    sx_body_id id;
-    bd.type = type;
-    bd.position = p;
-    bd.angle = angle;
-    assert_int_equal(sx_create_body(w, &bd, &id), SX_OK);
     cd.shape = *shape;
     cd.density = density;
-    assert_int_equal(sx_body_add_collider(w, id, &cd, NULL), SX_OK);
-    return id;
+    return sx_test_body_turned(w, type, p, angle, &cd);
 }
 
 static void hostile_steps(sx_world *w, int n) {

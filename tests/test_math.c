@@ -1,4 +1,4 @@
-/* sepax tests — the math layer (include/sepax/math.h): scalars, sx_vec2,
+/* sepax tests — the math layer (include/sepax/vecmath.h): scalars, sx_vec2,
  * sx_rot, sx_xform, sx_mat3 and sx_aabb.
  *
  * Every function is checked twice: against values worked out by hand (exact

@@ -27,19 +27,12 @@ static sx_world *make_world(sx_vec2 gravity) { return make_world_ex(gravity, fal
 static sx_body_id add_body(sx_world *w, sx_body_type type, sx_vec2 p, sx_real angle,
                            const sx_shape *shape, sx_real density, sx_real friction,
                            sx_real restitution) {
-    sx_body_def bd = sx_default_body_def();
     sx_collider_def cd = sx_default_collider_def();
-    sx_body_id id;
-    bd.type = type;
-    bd.position = p;
-    bd.angle = angle;
-    assert_int_equal(sx_create_body(w, &bd, &id), SX_OK);
     cd.shape = *shape;
     cd.density = density;
     cd.friction = friction;
     cd.restitution = restitution;
-    assert_int_equal(sx_body_add_collider(w, id, &cd, NULL), SX_OK);
-    return id;
+    return sx_test_body_turned(w, type, p, angle, &cd);
 }
 
 /* The docs/scenes.md ground: a static box 2*hw wide, 2 m tall, top surface at y=0. */

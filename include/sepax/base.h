@@ -26,6 +26,18 @@
 extern "C" {
 #endif
 
+/* ---- exported symbols --------------------------------------------------- */
+
+/** Marks the library's public functions. The library is compiled with
+ *  -fvisibility=hidden, so libsepax.so exports these and nothing else (make
+ *  test checks that its exports are exactly the SX_API declarations of these
+ *  headers); for a program it is an ordinary declaration. */
+#if defined(__GNUC__) || defined(__clang__)
+#define SX_API __attribute__((visibility("default")))
+#else
+#define SX_API
+#endif
+
 /* ---- version ------------------------------------------------------------ */
 
 #define SX_VERSION_MAJOR 0
@@ -36,7 +48,7 @@ extern "C" {
 
 /** The version the library was built as (compare with SX_VERSION to detect a
  *  header/library mismatch). */
-int sx_version(void);
+SX_API int sx_version(void);
 
 /* ---- the real type ------------------------------------------------------ */
 
@@ -57,7 +69,7 @@ typedef float sx_real;
 #endif
 
 /** True when the library binary was built with SX_DOUBLE. */
-bool sx_real_is_double(void);
+SX_API bool sx_real_is_double(void);
 
 #define SX_PI SX_R(3.14159265358979323846)
 
@@ -81,7 +93,7 @@ typedef enum sx_status {
 
 /** A short constant English description of a status ("ok", "invalid
  *  argument", ...). Unknown values give "unknown status". Never NULL. */
-const char *sx_status_str(sx_status status);
+SX_API const char *sx_status_str(sx_status status);
 
 /* ---- assertions --------------------------------------------------------- */
 
@@ -95,10 +107,10 @@ typedef void sx_assert_fn(const char *expression, const char *file, int line, vo
  *  set it once at start-up, before any world exists or any other thread
  *  calls sepax; the handler itself may then be called from any thread that
  *  uses a world. */
-void sx_set_assert_handler(sx_assert_fn *handler, void *context);
+SX_API void sx_set_assert_handler(sx_assert_fn *handler, void *context);
 
 /** Reports a failed assertion through the installed handler. */
-void sx_assert_failed(const char *expression, const char *file, int line);
+SX_API void sx_assert_failed(const char *expression, const char *file, int line);
 
 /** SX_ASSERT(c) checks an internal contract in hot paths. It is on unless
  *  SX_DISABLE_ASSERT is defined when the library is compiled. Bad user input
@@ -126,19 +138,19 @@ typedef void sx_free_fn(void *memory, size_t size, void *context);
  *  allocated it, and the call itself is not thread-safe. When worlds live on
  *  several threads, the hooks are called from all of them at once and must
  *  be thread-safe. */
-void sx_set_allocator(sx_alloc_fn *alloc, sx_free_fn *free_fn, void *context);
+SX_API void sx_set_allocator(sx_alloc_fn *alloc, sx_free_fn *free_fn, void *context);
 
 /** Allocates through the hook and counts the bytes. size 0 returns NULL.
  *  Thread-safe when the hook is. */
-void *sx_alloc(size_t size);
+SX_API void *sx_alloc(size_t size);
 /** Frees a block from sx_alloc (NULL is ignored). `size` must be the size
  *  passed to sx_alloc. Thread-safe when the hook is. */
-void sx_free(void *memory, size_t size);
+SX_API void sx_free(void *memory, size_t size);
 /** Bytes currently allocated through sx_alloc and not yet freed, by every
  *  world of every thread (for leak checks). The counter is atomic: it loses
  *  no update when threads allocate at once, and while other threads
  *  allocate it is a snapshot of a moving value. */
-size_t sx_live_bytes(void);
+SX_API size_t sx_live_bytes(void);
 
 /* ---- tolerances (all from one length scale) ----------------------------- */
 

@@ -25,7 +25,7 @@
 #define SEPAX_COLLIDE_H
 
 #include "base.h"
-#include "math.h"
+#include "vecmath.h"
 #include "shape.h"
 
 #ifdef __cplusplus
@@ -34,14 +34,18 @@ extern "C" {
 
 /* ---- contact manifold --------------------------------------------------- */
 
+/** The bit of a feature id set when B supplied the reference face: swapping
+ *  the arguments of a pair toggles it (sx_collide). */
+#define SX_FEATURE_ID_FLIPPED ((uint32_t)1 << 16)
+
 /** Feature id of a manifold point: identifies which features of A and B
  *  produced it, so the solver can match a point across steps (warm starting).
  *  Layout: bits 0-7 the reference feature index, bits 8-15 the incident
- *  feature index, bit 16 set when B supplied the reference face. Stable for
- *  as long as the same features touch. */
+ *  feature index, bit 16 (SX_FEATURE_ID_FLIPPED) set when B supplied the
+ *  reference face. Stable for as long as the same features touch. */
 #define SX_FEATURE_ID(ref_index, inc_index, flipped)                                               \
     ((uint32_t)((uint32_t)((ref_index)&0xFF) | ((uint32_t)((inc_index)&0xFF) << 8) |               \
-                ((uint32_t)((flipped) ? 1 : 0) << 16)))
+                ((flipped) ? SX_FEATURE_ID_FLIPPED : (uint32_t)0)))
 
 /** One contact point. */
 typedef struct sx_manifold_point {
@@ -67,7 +71,7 @@ typedef struct sx_manifold {
 /** True if the shapes overlap; touching counts. The fast path: returns at the
  *  first separating axis and builds no manifold. Invalid or non-finite input
  *  answers false. */
-bool sx_overlap(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb);
+SX_API bool sx_overlap(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb);
 
 /** True if the shapes overlap (touching counts). When mtv is not NULL it
  *  receives the shortest translation of A that separates it from B (the zero
@@ -82,7 +86,7 @@ bool sx_overlap(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb);
  *  the edge normals of both polygons, the segment normal for segments and
  *  capsules, the centre-to-closest-feature axis for circles and rounded
  *  corners, and x/y only for two axis-aligned boxes. */
-bool sx_mtv(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_vec2 *mtv);
+SX_API bool sx_mtv(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_vec2 *mtv);
 
 /** The contact manifold of two overlapping or touching shapes: returns the
  *  number of points (0..2) and fills *out (out->count too). The normal is
@@ -101,13 +105,14 @@ bool sx_mtv(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_v
  *  each id toggled): exactly so for two different types; two shapes of the
  *  same type are solved in the caller's order (A's face wins near-ties), and
  *  the manifold has points exactly when sx_overlap is true. */
-int sx_collide(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_manifold *out);
+SX_API int sx_collide(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                      sx_manifold *out);
 
 /** As sx_collide, but also reports speculative points of shapes that are
  *  within `margin` metres of touching (depth >= -margin). The solver uses a
  *  margin of SX_SPECULATIVE_DISTANCE. margin < 0 or non-finite is taken as 0. */
-int sx_collide_ex(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_real margin,
-                  sx_manifold *out);
+SX_API int sx_collide_ex(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                         sx_real margin, sx_manifold *out);
 
 /* ---- pair functions (for callers who know their types) ------------------ */
 
@@ -116,64 +121,71 @@ int sx_collide_ex(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb
  * sx_overlap, sx_mtv and sx_collide_ex. Boxes are polygons; a point is a
  * circle of radius 0. */
 
-bool sx_overlap_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb);
-bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb, sx_vec2 *mtv);
-int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
-                       sx_real margin, sx_manifold *out);
-
-bool sx_overlap_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb);
-bool sx_mtv_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+SX_API bool sx_overlap_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb);
+SX_API bool sx_mtv_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                            sx_vec2 *mtv);
-int sx_collide_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+SX_API int sx_collide_circles(const sx_circle *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out);
 
-bool sx_overlap_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb);
-bool sx_mtv_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
-                     sx_vec2 *mtv);
-int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
-                        sx_real margin, sx_manifold *out);
+SX_API bool sx_overlap_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b,
+                                      sx_xform xb);
+SX_API bool sx_mtv_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                                  sx_vec2 *mtv);
+SX_API int sx_collide_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b,
+                                     sx_xform xb, sx_real margin, sx_manifold *out);
 
-bool sx_overlap_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb);
-bool sx_mtv_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
-                           sx_vec2 *mtv);
-int sx_collide_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
-                              sx_real margin, sx_manifold *out);
-
-bool sx_overlap_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb);
-bool sx_mtv_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb,
+SX_API bool sx_overlap_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb);
+SX_API bool sx_mtv_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                             sx_vec2 *mtv);
-int sx_collide_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb,
+SX_API int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                                sx_real margin, sx_manifold *out);
 
-bool sx_overlap_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb);
-bool sx_mtv_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
-                     sx_vec2 *mtv);
-int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
-                        sx_real margin, sx_manifold *out);
+SX_API bool sx_overlap_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b,
+                                      sx_xform xb);
+SX_API bool sx_mtv_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                                  sx_vec2 *mtv);
+SX_API int sx_collide_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b,
+                                     sx_xform xb, sx_real margin, sx_manifold *out);
 
-bool sx_overlap_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb);
-bool sx_mtv_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
-                           sx_vec2 *mtv);
-int sx_collide_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
-                              sx_real margin, sx_manifold *out);
+SX_API bool sx_overlap_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b,
+                                       sx_xform xb);
+SX_API bool sx_mtv_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b,
+                                   sx_xform xb, sx_vec2 *mtv);
+SX_API int sx_collide_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b,
+                                      sx_xform xb, sx_real margin, sx_manifold *out);
 
-bool sx_overlap_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb);
-bool sx_mtv_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb,
+SX_API bool sx_overlap_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb);
+SX_API bool sx_mtv_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                             sx_vec2 *mtv);
-int sx_collide_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb,
+SX_API int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                                sx_real margin, sx_manifold *out);
 
-bool sx_overlap_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb);
-bool sx_mtv_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
-                            sx_vec2 *mtv);
-int sx_collide_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
-                               sx_real margin, sx_manifold *out);
+SX_API bool sx_overlap_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b,
+                                      sx_xform xb);
+SX_API bool sx_mtv_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
+                                  sx_vec2 *mtv);
+SX_API int sx_collide_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b,
+                                     sx_xform xb, sx_real margin, sx_manifold *out);
 
-bool sx_overlap_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb);
-bool sx_mtv_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
-                     sx_vec2 *mtv);
-int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
-                        sx_real margin, sx_manifold *out);
+SX_API bool sx_overlap_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b,
+                                       sx_xform xb);
+SX_API bool sx_mtv_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b,
+                                   sx_xform xb, sx_vec2 *mtv);
+SX_API int sx_collide_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b,
+                                      sx_xform xb, sx_real margin, sx_manifold *out);
+
+SX_API bool sx_overlap_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b,
+                                       sx_xform xb);
+SX_API bool sx_mtv_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b,
+                                   sx_xform xb, sx_vec2 *mtv);
+SX_API int sx_collide_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b,
+                                      sx_xform xb, sx_real margin, sx_manifold *out);
+
+SX_API bool sx_overlap_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb);
+SX_API bool sx_mtv_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
+                            sx_vec2 *mtv);
+SX_API int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
+                               sx_real margin, sx_manifold *out);
 /* ---- point queries ------------------------------------------------------ */
 
 /* All point queries move p into the shape's local frame first. A NULL or
@@ -187,19 +199,19 @@ int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, s
  *  their CCW edges; a rounded polygon contains the points within its radius
  *  of the core polygon. Segments (and points: circles of radius 0) contain
  *  only the points on them, within the same band. Unusable input: false. */
-bool sx_contains_point(const sx_shape *s, sx_xform x, sx_vec2 p);
+SX_API bool sx_contains_point(const sx_shape *s, sx_xform x, sx_vec2 p);
 
 /** The point of segment a-b closest to p; *t (may be NULL) receives its
  *  parameter in [0, 1] (a + t (b - a)); at t 0 or 1 the end point is returned
  *  exactly. A zero-length segment gives a, t 0. A non-finite input gives a
  *  (the zero vector when a itself is not finite), t 0. */
-sx_vec2 sx_closest_point_on_segment(sx_vec2 a, sx_vec2 b, sx_vec2 p, sx_real *t);
+SX_API sx_vec2 sx_closest_point_on_segment(sx_vec2 a, sx_vec2 b, sx_vec2 p, sx_real *t);
 
 /** The point of the solid shape closest to p (world): p itself when p is
  *  inside or on the boundary (signed distance <= 0), else the closest
  *  boundary point. Segments and points have no interior: their closest point.
  *  Unusable input gives the zero vector. */
-sx_vec2 sx_closest_point(const sx_shape *s, sx_xform x, sx_vec2 p);
+SX_API sx_vec2 sx_closest_point(const sx_shape *s, sx_xform x, sx_vec2 p);
 
 /** Signed distance from p (world) to the shape's boundary: negative inside,
  *  never negative for segments and points (circles of radius 0). Rounded
@@ -214,8 +226,8 @@ sx_vec2 sx_closest_point(const sx_shape *s, sx_xform x, sx_vec2 p);
  *  separation.
  *  Unusable input (or a point so far out that the arithmetic overflows
  *  sx_real) returns SX_REAL_MAX with zero vectors. */
-sx_real sx_shape_distance_to_point(const sx_shape *s, sx_xform x, sx_vec2 p,
-                                   sx_vec2 *boundary_point, sx_vec2 *normal);
+SX_API sx_real sx_shape_distance_to_point(const sx_shape *s, sx_xform x, sx_vec2 p,
+                                          sx_vec2 *boundary_point, sx_vec2 *normal);
 
 /* ---- segment-segment intersection --------------------------------------- */
 
@@ -265,8 +277,8 @@ typedef struct sx_segment_intersection {
  *    sqrt(SX_REAL_MAX) / 8 (where the cross products would overflow), gives
  *    DEGENERATE.
  *  out may be NULL. Returns the relation (also in out->relation). */
-sx_segment_relation sx_intersect_segments(sx_vec2 p1, sx_vec2 p2, sx_vec2 q1, sx_vec2 q2,
-                                          sx_segment_intersection *out);
+SX_API sx_segment_relation sx_intersect_segments(sx_vec2 p1, sx_vec2 p2, sx_vec2 q1, sx_vec2 q2,
+                                                 sx_segment_intersection *out);
 
 /* ---- ray casts ---------------------------------------------------------- */
 
@@ -300,7 +312,7 @@ typedef struct sx_ray_hit {
  *  passing exactly through it. A zero translation, a NULL or unusable shape
  *  or ray, a non-finite input or max_fraction < 0 returns false, and so does
  *  a cast whose hit point would overflow sx_real. */
-bool sx_ray_cast(const sx_shape *s, sx_xform x, const sx_ray_input *ray, sx_ray_hit *out);
+SX_API bool sx_ray_cast(const sx_shape *s, sx_xform x, const sx_ray_input *ray, sx_ray_hit *out);
 
 /* ---- distance, shape cast and time of impact ----------------------------- */
 
@@ -356,8 +368,8 @@ typedef struct sx_distance_output {
  *  GJK finds the closest features of the cores, and the radii are taken off
  *  along the normal. Symmetric: swapping A and B swaps the points and
  *  negates the normal. SX_OK, or an error as described above. */
-sx_status sx_shape_distance(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                            sx_distance_output *out);
+SX_API sx_status sx_shape_distance(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                                   sx_distance_output *out);
 
 /** Where a cast shape first touches another. */
 typedef struct sx_shape_cast_output {
@@ -390,8 +402,9 @@ typedef struct sx_shape_cast_output {
  *  precision. Errors: SX_ERR_INVALID_ARG (NULL, unusable shape,
  *  max_fraction < 0), SX_ERR_NONFINITE (non-finite transform, translation
  *  or max_fraction). */
-sx_status sx_shape_cast(const sx_shape *a, sx_xform xa, sx_vec2 translation, sx_real max_fraction,
-                        const sx_shape *b, sx_xform xb, sx_shape_cast_output *out);
+SX_API sx_status sx_shape_cast(const sx_shape *a, sx_xform xa, sx_vec2 translation,
+                               sx_real max_fraction, const sx_shape *b, sx_xform xb,
+                               sx_shape_cast_output *out);
 
 /** The motion of a shape over a step: its frame turns about the point
  *  `local_center` (shape frame, usually a body's centre of mass), which
@@ -439,8 +452,8 @@ typedef struct sx_toi_output {
  *  impact (up to rounding); see sx_toi_state for the cases. Errors:
  *  SX_ERR_INVALID_ARG (NULL, unusable shape, target < 0),
  *  SX_ERR_NONFINITE (a non-finite motion or target). */
-sx_status sx_time_of_impact(const sx_shape *a, const sx_motion *ma, const sx_shape *b,
-                            const sx_motion *mb, sx_real target, sx_toi_output *out);
+SX_API sx_status sx_time_of_impact(const sx_shape *a, const sx_motion *ma, const sx_shape *b,
+                                   const sx_motion *mb, sx_real target, sx_toi_output *out);
 
 #ifdef __cplusplus
 }

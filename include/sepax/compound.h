@@ -13,7 +13,7 @@
 
 #include "base.h"
 #include "collide.h"
-#include "math.h"
+#include "vecmath.h"
 #include "shape.h"
 
 #ifdef __cplusplus
@@ -32,7 +32,7 @@ extern "C" {
  *  ints and one sx_vec2 per point, plus alignment slack). Returns 0 for
  *  count < 3, count above SX_DECOMPOSE_MAX_POINTS, or a count so large the
  *  size would overflow size_t. */
-size_t sx_decompose_scratch_bytes(int count);
+SX_API size_t sx_decompose_scratch_bytes(int count);
 
 /** Splits a simple polygon outline into convex polygons of at most
  *  SX_MAX_POLYGON_VERTICES vertices each.
@@ -80,17 +80,17 @@ size_t sx_decompose_scratch_bytes(int count);
  *  (as sx_shape_validate refuses: an outline some 1e9 m across in the float
  *  build); SX_ERR_CAPACITY when more than part_capacity parts are needed
  *  (then *part_count receives the number needed). */
-sx_status sx_decompose_polygon(const sx_vec2 *points, int count, void *scratch,
-                               size_t scratch_bytes, sx_shape *parts, int part_capacity,
-                               int *part_count, int *triangle_count);
+SX_API sx_status sx_decompose_polygon(const sx_vec2 *points, int count, void *scratch,
+                                      size_t scratch_bytes, sx_shape *parts, int part_capacity,
+                                      int *part_count, int *triangle_count);
 
 /** As sx_decompose_polygon with an explicit weld tolerance for the cleaning
  *  (for outlines far smaller or larger than the default length scale; 0
  *  welds only exact duplicates and drops only exactly collinear points). A
  *  negative or non-finite tolerance is SX_ERR_INVALID_ARG. */
-sx_status sx_decompose_polygon_ex(const sx_vec2 *points, int count, sx_real weld_tolerance,
-                                  void *scratch, size_t scratch_bytes, sx_shape *parts,
-                                  int part_capacity, int *part_count, int *triangle_count);
+SX_API sx_status sx_decompose_polygon_ex(const sx_vec2 *points, int count, sx_real weld_tolerance,
+                                         void *scratch, size_t scratch_bytes, sx_shape *parts,
+                                         int part_capacity, int *part_count, int *triangle_count);
 
 /** True if p lies inside the closed outline points[0..count-1] (any winding,
  *  concave allowed) by the nonzero winding rule, evaluated on the raw
@@ -98,7 +98,7 @@ sx_status sx_decompose_polygon_ex(const sx_vec2 *points, int count, sx_real weld
  *  Points exactly on an edge count as inside. For a self-intersecting
  *  outline this is the nonzero-winding region. NULL, count < 3 or any
  *  non-finite input gives false. */
-bool sx_point_in_outline(const sx_vec2 *points, int count, sx_vec2 p);
+SX_API bool sx_point_in_outline(const sx_vec2 *points, int count, sx_vec2 p);
 
 /* ---- compound colliders ------------------------------------------------- */
 
@@ -118,7 +118,7 @@ typedef struct sx_compound {
 } sx_compound;
 
 /** A part with the given shape and offset. */
-sx_compound_part sx_compound_part_make(sx_shape shape, sx_xform offset);
+SX_API sx_compound_part sx_compound_part_make(sx_shape shape, sx_xform offset);
 
 /** Where the compound functions (and a world holding the compound as a
  *  collider) place part `p` of a compound placed by x: x times the part's
@@ -126,7 +126,7 @@ sx_compound_part sx_compound_part_make(sx_shape shape, sx_xform offset);
  *  by more than rounding (sx_compound_validate accepts rotations up to 1e-3
  *  off; placed as given they would scale the part and make normals up to
  *  1e-3 too long). Rotations from sx_rot_make are used as they are. */
-sx_xform sx_compound_part_placement(sx_xform x, const sx_compound_part *p);
+SX_API sx_xform sx_compound_part_placement(sx_xform x, const sx_compound_part *p);
 
 /** SX_OK, or: SX_ERR_INVALID_ARG (NULL compound, count < 1, parts NULL, a
  *  part's rotation not unit length within 1e-3: within it, the part is
@@ -136,12 +136,12 @@ sx_xform sx_compound_part_placement(sx_xform x, const sx_compound_part *p);
  *  sx_shape_validate status. The functions below assume a valid compound
  *  (they never crash or produce NaN on a NULL or empty one: they answer
  *  false / 0 / an empty box). */
-sx_status sx_compound_validate(const sx_compound *c);
+SX_API sx_status sx_compound_validate(const sx_compound *c);
 
 /** World AABB of the compound placed by x: the union of its parts' AABBs.
  *  An empty or NULL compound gives the empty box at x.p (the origin when
  *  x.p is not finite). */
-sx_aabb sx_compound_aabb(const sx_compound *c, sx_xform x);
+SX_API sx_aabb sx_compound_aabb(const sx_compound *c, sx_xform x);
 
 /** Mass properties for a uniform density: mass = density x total area,
  *  centre = area-weighted centroid of the parts (in the compound frame), and
@@ -150,15 +150,15 @@ sx_aabb sx_compound_aabb(const sx_compound *c, sx_xform x);
  *  count twice. Density 0 gives zero mass and inertia with the centre at the
  *  area centroid; negative or non-finite density, or an invalid compound,
  *  gives all zeros. */
-sx_mass_data sx_compound_mass(const sx_compound *c, sx_real density);
+SX_API sx_mass_data sx_compound_mass(const sx_compound *c, sx_real density);
 
 /** True if any part of compound a (placed by xa) overlaps shape b (placed by
  *  xb); touching counts. */
-bool sx_compound_overlap(const sx_compound *a, sx_xform xa, const sx_shape *b, sx_xform xb);
+SX_API bool sx_compound_overlap(const sx_compound *a, sx_xform xa, const sx_shape *b, sx_xform xb);
 
 /** True if any part of a overlaps any part of b; touching counts. */
-bool sx_compound_overlap_compound(const sx_compound *a, sx_xform xa, const sx_compound *b,
-                                  sx_xform xb);
+SX_API bool sx_compound_overlap_compound(const sx_compound *a, sx_xform xa, const sx_compound *b,
+                                         sx_xform xb);
 
 /** True if the compound overlaps the shape (touching counts). When mtv is
  *  not NULL it receives a translation of the WHOLE compound that separates
@@ -195,12 +195,12 @@ bool sx_compound_overlap_compound(const sx_compound *a, sx_xform xa, const sx_co
  *  pushes along the deepest pair's MTV until the bounding boxes are apart,
  *  which also separates, up to the rounding of the boxes at their
  *  magnitude. */
-bool sx_compound_mtv(const sx_compound *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                     sx_vec2 *mtv);
+SX_API bool sx_compound_mtv(const sx_compound *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                            sx_vec2 *mtv);
 
 /** As sx_compound_mtv, between two compounds: *mtv moves all of a. */
-bool sx_compound_mtv_compound(const sx_compound *a, sx_xform xa, const sx_compound *b, sx_xform xb,
-                              sx_vec2 *mtv);
+SX_API bool sx_compound_mtv_compound(const sx_compound *a, sx_xform xa, const sx_compound *b,
+                                     sx_xform xb, sx_vec2 *mtv);
 
 /** A manifold between one part of a compound and a shape (part_b 0) or one
  *  part of another compound. */
@@ -213,23 +213,23 @@ typedef struct sx_compound_manifold {
 /** One manifold per part pair that is touching or within `margin`
  *  (sx_collide_ex), in part order. Writes at most `capacity` entries and
  *  returns the number written (0 for NULL arguments or capacity < 1). */
-int sx_compound_collide(const sx_compound *a, sx_xform xa, const sx_shape *b, sx_xform xb,
-                        sx_real margin, sx_compound_manifold *out, int capacity);
+SX_API int sx_compound_collide(const sx_compound *a, sx_xform xa, const sx_shape *b, sx_xform xb,
+                               sx_real margin, sx_compound_manifold *out, int capacity);
 
 /** As sx_compound_collide, between two compounds. */
-int sx_compound_collide_compound(const sx_compound *a, sx_xform xa, const sx_compound *b,
-                                 sx_xform xb, sx_real margin, sx_compound_manifold *out,
-                                 int capacity);
+SX_API int sx_compound_collide_compound(const sx_compound *a, sx_xform xa, const sx_compound *b,
+                                        sx_xform xb, sx_real margin, sx_compound_manifold *out,
+                                        int capacity);
 
 /** Casts a ray against every part (sx_ray_cast) and reports the closest hit
  *  (lowest fraction; on a tie the lower part index). *part (may be NULL)
  *  receives its index, -1 on a miss. Semantics of the hit as sx_ray_cast. */
-bool sx_compound_ray_cast(const sx_compound *c, sx_xform x, const sx_ray_input *ray,
-                          sx_ray_hit *out, int *part);
+SX_API bool sx_compound_ray_cast(const sx_compound *c, sx_xform x, const sx_ray_input *ray,
+                                 sx_ray_hit *out, int *part);
 
 /** True if p (world) is inside or on any part (sx_contains_point). *part (may
  *  be NULL) receives the first such part's index, -1 when none. */
-bool sx_compound_contains_point(const sx_compound *c, sx_xform x, sx_vec2 p, int *part);
+SX_API bool sx_compound_contains_point(const sx_compound *c, sx_xform x, sx_vec2 p, int *part);
 
 #ifdef __cplusplus
 }

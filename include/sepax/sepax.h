@@ -4,7 +4,7 @@
 #define SEPAX_H
 
 #include "base.h"
-#include "math.h"
+#include "vecmath.h"
 #include "shape.h"
 #include "collide.h"
 #include "compound.h"

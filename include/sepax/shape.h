@@ -11,7 +11,7 @@
 #define SEPAX_SHAPE_H
 
 #include "base.h"
-#include "math.h"
+#include "vecmath.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -76,24 +76,24 @@ typedef struct sx_shape {
 /** A circle. Not checked: see sx_shape_validate (negative, NaN or infinite
  *  radius is invalid, and one too large for finite mass properties; zero is
  *  a point). */
-sx_shape sx_circle_shape(sx_vec2 center, sx_real radius);
+SX_API sx_shape sx_circle_shape(sx_vec2 center, sx_real radius);
 /** A point: a circle of radius 0. */
-sx_shape sx_point_shape(sx_vec2 p);
+SX_API sx_shape sx_point_shape(sx_vec2 p);
 /** A segment. Not checked: a zero-length segment is reported degenerate by
  *  sx_shape_validate (the narrowphase still answers for it, as a point). */
-sx_shape sx_segment_shape(sx_vec2 a, sx_vec2 b);
+SX_API sx_shape sx_segment_shape(sx_vec2 a, sx_vec2 b);
 /** A capsule. Not checked: see sx_shape_validate. a == b is a circle. */
-sx_shape sx_capsule_shape(sx_vec2 a, sx_vec2 b, sx_real radius);
+SX_API sx_shape sx_capsule_shape(sx_vec2 a, sx_vec2 b, sx_real radius);
 /** An axis-aligned box centred on the local origin, half-extents hw x hh.
  *  Not checked: bad extents make a shape that sx_shape_validate reports
  *  (zero: SX_ERR_DEGENERATE; NaN/Inf: SX_ERR_NONFINITE; negative: the
  *  vertices turn clockwise or away from their normals, SX_ERR_INVALID_ARG). */
-sx_shape sx_box_shape(sx_real half_width, sx_real half_height);
+SX_API sx_shape sx_box_shape(sx_real half_width, sx_real half_height);
 /** A box with half-extents hw x hh, centred at `center` and turned by `angle`
  *  radians in the local frame (an oriented, offset box). Not checked, as
  *  sx_box_shape. */
-sx_shape sx_offset_box_shape(sx_real half_width, sx_real half_height, sx_vec2 center,
-                             sx_real angle);
+SX_API sx_shape sx_offset_box_shape(sx_real half_width, sx_real half_height, sx_vec2 center,
+                                    sx_real angle);
 
 /** Convex hull of up to SX_MAX_POLYGON_VERTICES points, CCW. */
 typedef struct sx_hull {
@@ -119,11 +119,12 @@ typedef struct sx_hull {
  *  or the exact hull before collinear pruning has more than
  *  64 x SX_MAX_POLYGON_VERTICES: nothing is dropped silently). On error
  *  out->count is 0. */
-sx_status sx_compute_hull(const sx_vec2 *points, int count, sx_real weld_tolerance, sx_hull *out);
+SX_API sx_status sx_compute_hull(const sx_vec2 *points, int count, sx_real weld_tolerance,
+                                 sx_hull *out);
 
 /** True if the hull is convex, CCW, with no collinear or coincident points
  *  (each within the given tolerance). */
-bool sx_validate_hull(const sx_hull *hull, sx_real tolerance);
+SX_API bool sx_validate_hull(const sx_hull *hull, sx_real tolerance);
 
 /** Builds a convex polygon from any point cloud: sx_compute_hull with
  *  SX_WELD_TOLERANCE, then unit outward normals and the area centroid.
@@ -132,12 +133,12 @@ bool sx_validate_hull(const sx_hull *hull, sx_real tolerance);
  *  non-finite one, and those of sx_polygon_from_hull (SX_ERR_NONFINITE for
  *  a polygon or radius too large for finite mass properties). On error
  *  *out is left unchanged. */
-sx_status sx_polygon_shape(const sx_vec2 *points, int count, sx_real radius, sx_shape *out);
+SX_API sx_status sx_polygon_shape(const sx_vec2 *points, int count, sx_real radius, sx_shape *out);
 
 /** As sx_polygon_shape with an explicit weld tolerance (for shapes far smaller
  *  or larger than the default length scale). */
-sx_status sx_polygon_shape_ex(const sx_vec2 *points, int count, sx_real radius,
-                              sx_real weld_tolerance, sx_shape *out);
+SX_API sx_status sx_polygon_shape_ex(const sx_vec2 *points, int count, sx_real radius,
+                                     sx_real weld_tolerance, sx_shape *out);
 
 /** Builds a polygon from a hull (normally sx_compute_hull's output): unit
  *  outward normals (normalised in wider precision) and the area centroid of
@@ -151,7 +152,7 @@ sx_status sx_polygon_shape_ex(const sx_vec2 *points, int count, sx_real radius,
  *  SX_ERR_NONFINITE (mass properties beyond sx_real, as sx_shape_validate).
  *  What it returns always passes sx_shape_validate. On error *out is left
  *  unchanged. */
-sx_status sx_polygon_from_hull(const sx_hull *hull, sx_real radius, sx_shape *out);
+SX_API sx_status sx_polygon_from_hull(const sx_hull *hull, sx_real radius, sx_shape *out);
 
 /** Checks a shape value. SX_OK, or: SX_ERR_INVALID_ARG (NULL, unknown type,
  *  negative radius, polygon count outside 3..SX_MAX_POLYGON_VERTICES, polygon
@@ -175,7 +176,7 @@ sx_status sx_polygon_from_hull(const sx_hull *hull, sx_real radius, sx_shape *ou
  *  properties' range. A
  *  circle of radius 0 (a point) is valid; so is a capsule with a == b (a
  *  circle) or radius 0 (a segment). */
-sx_status sx_shape_validate(const sx_shape *shape);
+SX_API sx_status sx_shape_validate(const sx_shape *shape);
 
 /* ---- mass properties and bounds ----------------------------------------- */
 
@@ -188,11 +189,11 @@ typedef struct sx_mass_data {
 
 /** Area in square metres (segments: 0; rounded polygons include the rounding:
  *  A + perimeter r + pi r^2). An invalid shape (sx_shape_validate) gives 0. */
-sx_real sx_shape_area(const sx_shape *shape);
+SX_API sx_real sx_shape_area(const sx_shape *shape);
 /** Area centroid in the local frame, including any rounding (segments: the
  *  midpoint, even of a zero-length one). Otherwise invalid shapes give the
  *  zero vector. */
-sx_vec2 sx_shape_centroid(const sx_shape *shape);
+SX_API sx_vec2 sx_shape_centroid(const sx_shape *shape);
 /** Mass, centre of mass and inertia about it for `density` (kg/m^2), summed
  *  in wider precision about a point near the centre (accurate far from the
  *  origin). Capsules are exact (a rectangle plus two half discs); polygons
@@ -202,17 +203,17 @@ sx_vec2 sx_shape_centroid(const sx_shape *shape);
  *  inertia, centre at the midpoint. Density 0 gives zero mass and inertia
  *  with the centre at the centroid. Negative or non-finite density, or an
  *  invalid shape, gives all zeros. */
-sx_mass_data sx_shape_mass(const sx_shape *shape, sx_real density);
+SX_API sx_mass_data sx_shape_mass(const sx_shape *shape, sx_real density);
 /** The tight world-space AABB of the shape placed by x (including rounding).
  *  Not validated (hot path), but never NaN: a shape or transform with NaN, a
  *  negative radius, or a polygon count outside 1..SX_MAX_POLYGON_VERTICES
  *  gives the empty box at x.p (at the origin if x.p is not finite). */
-sx_aabb sx_shape_aabb(const sx_shape *shape, sx_xform x);
+SX_API sx_aabb sx_shape_aabb(const sx_shape *shape, sx_xform x);
 /** The extent of the shape along `axis` in its local frame: the support
  *  value max over the shape of dot(point, axis) (for a non-unit axis too:
  *  the radius counts |axis| times). NULL, an unknown type, a polygon count
  *  outside 1..SX_MAX_POLYGON_VERTICES or NaN in the shape or axis gives 0. */
-sx_real sx_shape_support(const sx_shape *shape, sx_vec2 axis);
+SX_API sx_real sx_shape_support(const sx_shape *shape, sx_vec2 axis);
 
 #ifdef __cplusplus
 }

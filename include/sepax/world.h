@@ -94,7 +94,7 @@
 #define SEPAX_WORLD_H
 
 #include "base.h"
-#include "math.h"
+#include "vecmath.h"
 #include "shape.h"
 #include "collide.h"
 #include "compound.h"
@@ -143,15 +143,15 @@ typedef struct sx_collider_id {
 
 /** Packs a body handle into 64 bits (generation in the high half); the null
  *  handle packs to 0. */
-uint64_t sx_body_id_to_u64(sx_body_id id);
+SX_API uint64_t sx_body_id_to_u64(sx_body_id id);
 /** Unpacks sx_body_id_to_u64's value. 0 gives the null handle. */
-sx_body_id sx_body_id_from_u64(uint64_t bits);
+SX_API sx_body_id sx_body_id_from_u64(uint64_t bits);
 /** True for the null body handle. */
-bool sx_body_id_is_null(sx_body_id id);
+SX_API bool sx_body_id_is_null(sx_body_id id);
 /** Packs a collider handle into 64 bits, as sx_body_id_to_u64. */
-uint64_t sx_collider_id_to_u64(sx_collider_id id);
+SX_API uint64_t sx_collider_id_to_u64(sx_collider_id id);
 /** Unpacks sx_collider_id_to_u64's value. */
-sx_collider_id sx_collider_id_from_u64(uint64_t bits);
+SX_API sx_collider_id sx_collider_id_from_u64(uint64_t bits);
 
 /* ---- world -------------------------------------------------------------- */
 
@@ -227,37 +227,37 @@ typedef struct sx_world_def {
 } sx_world_def;
 
 /** The default world settings documented field by field in sx_world_def. */
-sx_world_def sx_default_world_def(void);
+SX_API sx_world_def sx_default_world_def(void);
 
 /** Creates a world. Returns NULL when def is NULL, a field is out of its
  *  documented range or not finite (sx_world_def_validate names the field),
  *  or memory runs out. */
-sx_world *sx_world_create(const sx_world_def *def);
+SX_API sx_world *sx_world_create(const sx_world_def *def);
 
 /** Destroys the world and everything in it (NULL is ignored). Every handle of
  *  it becomes meaningless. Called from a query or draw callback of this
  *  world, it stops the walk (no further callback) and the world goes when
  *  the outermost query or draw returns (the world pointer stays usable
  *  until then). */
-void sx_world_destroy(sx_world *world);
+SX_API void sx_world_destroy(sx_world *world);
 
 /** True while a query or draw callback of this world runs (see "Callbacks"
  *  above): creation, destruction and the step answer SX_ERR_LOCKED. False
  *  for NULL. */
-bool sx_world_is_locked(const sx_world *world);
+SX_API bool sx_world_is_locked(const sx_world *world);
 
 /** Sets the gravity and wakes every sleeping body (one pass over the body
  *  slots; each island wakes at the cost of its own bodies).
  *  SX_ERR_INVALID_ARG (NULL world), SX_ERR_NONFINITE. */
-sx_status sx_world_set_gravity(sx_world *world, sx_vec2 gravity);
+SX_API sx_status sx_world_set_gravity(sx_world *world, sx_vec2 gravity);
 /** The gravity (zero for a NULL world). */
-sx_vec2 sx_world_get_gravity(const sx_world *world);
+SX_API sx_vec2 sx_world_get_gravity(const sx_world *world);
 /** Number of live bodies. */
-int sx_world_body_count(const sx_world *world);
+SX_API int sx_world_body_count(const sx_world *world);
 /** Number of live dynamic bodies that are awake. */
-int sx_world_awake_body_count(const sx_world *world);
+SX_API int sx_world_awake_body_count(const sx_world *world);
 /** The world's linear slop: 0.005 x length_units_per_meter. */
-sx_real sx_world_linear_slop(const sx_world *world);
+SX_API sx_real sx_world_linear_slop(const sx_world *world);
 
 /* ---- the step and its stages -------------------------------------------- */
 
@@ -272,7 +272,7 @@ sx_real sx_world_linear_slop(const sx_world *world);
  *  the impact pass's scratch could not grow; SX_ERR_CAPACITY: a list would
  *  pass SX_WORLD_MAX_ITEMS (more than 2^30 - 1 broadphase pairs or
  *  contacts); either way the step stops after the stages already run. */
-sx_status sx_world_step(sx_world *world, sx_real dt);
+SX_API sx_status sx_world_step(sx_world *world, sx_real dt);
 
 /** Stage 1: for every enabled, awake dynamic body, v += h (gravity x gravity_scale +
  *  F / m) + J / m and w += h (T / I) + L / I, then damping
@@ -282,7 +282,7 @@ sx_status sx_world_step(sx_world *world, sx_real dt);
  *  impulse accumulators, applied once and cleared here. Static and kinematic
  *  bodies are untouched. Errors: SX_ERR_INVALID_ARG (NULL, h <= 0),
  *  SX_ERR_NONFINITE, SX_ERR_LOCKED. */
-sx_status sx_world_apply_forces(sx_world *world, sx_real h);
+SX_API sx_status sx_world_apply_forces(sx_world *world, sx_real h);
 
 /** Stage 2 (once per step, after sx_world_begin_step): finds the touching
  *  (or within the speculative margin, grown by how far each collider can
@@ -298,7 +298,7 @@ sx_status sx_world_apply_forces(sx_world *world, sx_real h);
  *  contact events; then the sensors are updated (sensor events). Errors:
  *  SX_ERR_INVALID_ARG (NULL), SX_ERR_NO_MEMORY, SX_ERR_CAPACITY (a list
  *  would pass SX_WORLD_MAX_ITEMS), SX_ERR_LOCKED. */
-sx_status sx_world_collide(sx_world *world);
+SX_API sx_status sx_world_collide(sx_world *world);
 
 /** Stage 6 (once per step, after the sub-steps; sx_world_step runs it):
  *  continuous collision. An awake dynamic body is swept from where it was
@@ -331,7 +331,7 @@ sx_status sx_world_collide(sx_world *world);
  *  SX_ERR_INVALID_ARG (NULL), SX_ERR_LOCKED, SX_ERR_NO_MEMORY (the query
  *  scratch could not grow). Without a collide since the last call: SX_OK,
  *  nothing moves. */
-sx_status sx_world_continuous(sx_world *world);
+SX_API sx_status sx_world_continuous(sx_world *world);
 
 /** Stage 3: the contacts of the last collide, on velocities. Each point's
  *  separation at the current positions (the anchors of collide time turned
@@ -369,7 +369,7 @@ sx_status sx_world_continuous(sx_world *world);
  *  impact pass's the pass is skipped, without the energy guard's the
  *  passes start cold; the passes still run; without the passes' own,
  *  none run), SX_ERR_LOCKED. */
-sx_status sx_world_solve(sx_world *world, sx_real h);
+SX_API sx_status sx_world_solve(sx_world *world, sx_real h);
 
 /** Stage 4: symplectic Euler positions: centre of mass += h v, rotation
  *  advanced by h w (renormalised), for awake dynamic and kinematic bodies,
@@ -378,7 +378,7 @@ sx_status sx_world_solve(sx_world *world, sx_real h);
  *  whose velocity changed by dv at time t of the sub-step moves by -dv t,
  *  since it kept its old velocity until t).
  *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE, SX_ERR_LOCKED. */
-sx_status sx_world_integrate(sx_world *world, sx_real h);
+SX_API sx_status sx_world_integrate(sx_world *world, sx_real h);
 
 /** Stage 5: with rigid contacts (contact_hertz 0), removes overlap left
  *  after integration by moving positions only (velocities are not touched,
@@ -396,11 +396,11 @@ sx_status sx_world_integrate(sx_world *world, sx_real h);
  *  Errors: SX_ERR_INVALID_ARG (NULL, h <= 0), SX_ERR_NONFINITE,
  *  SX_ERR_NO_MEMORY (the relax passes' scratch could not grow: no pass),
  *  SX_ERR_LOCKED. */
-sx_status sx_world_separate(sx_world *world, sx_real h);
+SX_API sx_status sx_world_separate(sx_world *world, sx_real h);
 
 /** Clears every body's force and torque accumulators (the last stage of a
  *  step). Errors: SX_ERR_INVALID_ARG (NULL), SX_ERR_LOCKED. */
-sx_status sx_world_clear_forces(sx_world *world);
+SX_API sx_status sx_world_clear_forces(sx_world *world);
 
 /** After a step of length dt: bodies slower than the sleep speeds gain dt of
  *  rest time (others drop to 0); dynamic bodies joined by contacts form
@@ -415,7 +415,7 @@ sx_status sx_world_clear_forces(sx_world *world);
  *  Errors: SX_ERR_INVALID_ARG (NULL, dt <= 0), SX_ERR_NONFINITE,
  *  SX_ERR_NO_MEMORY (the scratch arrays could not grow; nothing sleeps),
  *  SX_ERR_LOCKED. */
-sx_status sx_world_update_sleep(sx_world *world, sx_real dt);
+SX_API sx_status sx_world_update_sleep(sx_world *world, sx_real dt);
 
 /* ---- contacts ------------------------------------------------------------ */
 
@@ -446,10 +446,10 @@ typedef struct sx_contact_data {
 
 /** Number of contacts from the last sx_world_collide, the carried contacts
  *  of sleeping bodies included (0 for NULL). */
-int sx_world_contact_count(const sx_world *world);
+SX_API int sx_world_contact_count(const sx_world *world);
 /** Copies contact `index` (0 .. count-1) into *out. SX_ERR_INVALID_ARG for
  *  NULL or an index out of range. */
-sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data *out);
+SX_API sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data *out);
 
 /* ---- contact events ------------------------------------------------------ */
 
@@ -480,7 +480,7 @@ typedef struct sx_contact_events {
 } sx_contact_events;
 
 /** The events recorded since the last clear (all empty for NULL). */
-sx_contact_events sx_world_get_contact_events(const sx_world *world);
+SX_API sx_contact_events sx_world_get_contact_events(const sx_world *world);
 
 /** A collider that started or stopped overlapping a sensor (touching
  *  counts). A sensor sees the non-sensor colliders of other enabled bodies
@@ -503,11 +503,11 @@ typedef struct sx_sensor_events {
 } sx_sensor_events;
 
 /** The sensor events recorded since the last clear (empty for NULL). */
-sx_sensor_events sx_world_get_sensor_events(const sx_world *world);
+SX_API sx_sensor_events sx_world_get_sensor_events(const sx_world *world);
 
 /** Forgets the recorded contact and sensor events. SX_ERR_INVALID_ARG for
  *  NULL. */
-sx_status sx_world_clear_events(sx_world *world);
+SX_API sx_status sx_world_clear_events(sx_world *world);
 
 /** The first stage of a step of dt seconds: clears the contact and sensor
  *  events and tells the next sx_world_collide how far ahead it looks (each
@@ -515,7 +515,7 @@ sx_status sx_world_clear_events(sx_world *world);
  *  move in dt at their current velocities, so a fast body's contacts exist
  *  before it reaches them). sx_world_step calls it first. Errors:
  *  SX_ERR_INVALID_ARG (NULL world, dt <= 0), SX_ERR_NONFINITE. */
-sx_status sx_world_begin_step(sx_world *world, sx_real dt);
+SX_API sx_status sx_world_begin_step(sx_world *world, sx_real dt);
 
 /* ---- bodies ------------------------------------------------------------- */
 
@@ -550,7 +550,7 @@ typedef struct sx_body_def {
 } sx_body_def;
 
 /** The default body settings (a static body at the origin). */
-sx_body_def sx_default_body_def(void);
+SX_API sx_body_def sx_default_body_def(void);
 
 /** Creates a body. *out receives its handle (the null handle on error).
  *  Errors: SX_ERR_INVALID_ARG (NULL world/def/out, unknown type, negative
@@ -559,7 +559,7 @@ sx_body_def sx_default_body_def(void);
  *  SX_ERR_LOCKED (from a callback). A dynamic body without colliders of
  *  positive mass gets mass 1 kg and no rotational inertia (contacts cannot
  *  turn it; its own angular velocity, if set, is kept). */
-sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *out);
+SX_API sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *out);
 
 /** Destroys a body, its colliders and its contacts, and wakes its island and
  *  the bodies it touched. Cost: what it touches (its island, its contacts);
@@ -569,72 +569,73 @@ sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *ou
  *  generation 2^32 - 1 (so no old handle ever names a new body; colliders'
  *  slots likewise). SX_ERR_INVALID_ARG (NULL world), SX_ERR_LOCKED (from a
  *  callback), SX_ERR_STALE_HANDLE. */
-sx_status sx_destroy_body(sx_world *world, sx_body_id body);
+SX_API sx_status sx_destroy_body(sx_world *world, sx_body_id body);
 
 /** True if the handle names a live body of this world. */
-bool sx_body_is_valid(const sx_world *world, sx_body_id body);
+SX_API bool sx_body_is_valid(const sx_world *world, sx_body_id body);
 
 /* Getters answer a stale handle or NULL world with zero values (identity
  * transform, SX_BODY_STATIC, NULL user data). */
 
 /** Body type. */
-sx_body_type sx_body_get_type(const sx_world *world, sx_body_id body);
+SX_API sx_body_type sx_body_get_type(const sx_world *world, sx_body_id body);
 /** World position of the body origin. */
-sx_vec2 sx_body_get_position(const sx_world *world, sx_body_id body);
+SX_API sx_vec2 sx_body_get_position(const sx_world *world, sx_body_id body);
 /** Angle in (-pi, pi]. */
-sx_real sx_body_get_angle(const sx_world *world, sx_body_id body);
+SX_API sx_real sx_body_get_angle(const sx_world *world, sx_body_id body);
 /** The body frame (origin and rotation). */
-sx_xform sx_body_get_transform(const sx_world *world, sx_body_id body);
+SX_API sx_xform sx_body_get_transform(const sx_world *world, sx_body_id body);
 /** World centre of mass. */
-sx_vec2 sx_body_get_world_center(const sx_world *world, sx_body_id body);
+SX_API sx_vec2 sx_body_get_world_center(const sx_world *world, sx_body_id body);
 /** Centre of mass in the body frame. */
-sx_vec2 sx_body_get_local_center(const sx_world *world, sx_body_id body);
+SX_API sx_vec2 sx_body_get_local_center(const sx_world *world, sx_body_id body);
 /** Velocity of the centre of mass (m/s). */
-sx_vec2 sx_body_get_linear_velocity(const sx_world *world, sx_body_id body);
+SX_API sx_vec2 sx_body_get_linear_velocity(const sx_world *world, sx_body_id body);
 /** Angular velocity (rad/s, counter-clockwise positive). */
-sx_real sx_body_get_angular_velocity(const sx_world *world, sx_body_id body);
+SX_API sx_real sx_body_get_angular_velocity(const sx_world *world, sx_body_id body);
 /** Mass in kg (0 for static and kinematic bodies). */
-sx_real sx_body_get_mass(const sx_world *world, sx_body_id body);
+SX_API sx_real sx_body_get_mass(const sx_world *world, sx_body_id body);
 /** Rotational inertia about the centre of mass, kg m^2 (0 when fixed or not
  *  dynamic). */
-sx_real sx_body_get_inertia(const sx_world *world, sx_body_id body);
+SX_API sx_real sx_body_get_inertia(const sx_world *world, sx_body_id body);
 /** The user data of the body def. */
-void *sx_body_get_user_data(const sx_world *world, sx_body_id body);
+SX_API void *sx_body_get_user_data(const sx_world *world, sx_body_id body);
 /** False while the body sleeps (static bodies: always false). */
-bool sx_body_is_awake(const sx_world *world, sx_body_id body);
+SX_API bool sx_body_is_awake(const sx_world *world, sx_body_id body);
 
 /** Wakes a sleeping dynamic body and its island (awake = true), or puts this
  *  body to sleep now, velocities zeroed (awake = false; it wakes as
  *  documented at sx_world_update_sleep, so a body still touching an awake
  *  one wakes again at the next collide). SX_ERR_INVALID_ARG (NULL),
  *  SX_ERR_STALE_HANDLE. Static and kinematic bodies ignore it (SX_OK). */
-sx_status sx_body_set_awake(sx_world *world, sx_body_id body, bool awake);
+SX_API sx_status sx_body_set_awake(sx_world *world, sx_body_id body, bool awake);
 
 /** Makes a body a bullet or not (sx_body_def.bullet). SX_ERR_INVALID_ARG
  *  (NULL world), SX_ERR_STALE_HANDLE. */
-sx_status sx_body_set_bullet(sx_world *world, sx_body_id body, bool bullet);
+SX_API sx_status sx_body_set_bullet(sx_world *world, sx_body_id body, bool bullet);
 /** True if the body is a bullet (false for a stale handle). */
-bool sx_body_is_bullet(const sx_world *world, sx_body_id body);
+SX_API bool sx_body_is_bullet(const sx_world *world, sx_body_id body);
 
 /** Allows or forbids sleeping for this body (sx_body_def.enable_sleep);
  *  forbidding wakes it. SX_ERR_INVALID_ARG (NULL), SX_ERR_STALE_HANDLE. */
-sx_status sx_body_set_sleep_enabled(sx_world *world, sx_body_id body, bool enable);
+SX_API sx_status sx_body_set_sleep_enabled(sx_world *world, sx_body_id body, bool enable);
 /** The body's enable_sleep; false for a stale handle. */
-bool sx_body_is_sleep_enabled(const sx_world *world, sx_body_id body);
+SX_API bool sx_body_is_sleep_enabled(const sx_world *world, sx_body_id body);
 
 /** Teleports the body: its origin to `position`, its angle to `angle`.
  *  Velocities are kept; the body and the bodies it touches wake. SX_ERR_INVALID_ARG (NULL),
  * SX_ERR_STALE_HANDLE, SX_ERR_NONFINITE. */
-sx_status sx_body_set_transform(sx_world *world, sx_body_id body, sx_vec2 position, sx_real angle);
+SX_API sx_status sx_body_set_transform(sx_world *world, sx_body_id body, sx_vec2 position,
+                                       sx_real angle);
 /** Sets the centre-of-mass velocity (ignored by static bodies, which stay at
  *  rest). Errors as sx_body_set_transform. */
-sx_status sx_body_set_linear_velocity(sx_world *world, sx_body_id body, sx_vec2 v);
+SX_API sx_status sx_body_set_linear_velocity(sx_world *world, sx_body_id body, sx_vec2 v);
 /** Sets the angular velocity (ignored by static bodies and fixed rotation).
  *  Errors as sx_body_set_transform. */
-sx_status sx_body_set_angular_velocity(sx_world *world, sx_body_id body, sx_real w);
+SX_API sx_status sx_body_set_angular_velocity(sx_world *world, sx_body_id body, sx_real w);
 /** Changes the body type; mass and inertia are recomputed (a body that
  *  becomes static stops). SX_ERR_INVALID_ARG for an unknown type. */
-sx_status sx_body_set_type(sx_world *world, sx_body_id body, sx_body_type type);
+SX_API sx_status sx_body_set_type(sx_world *world, sx_body_id body, sx_body_type type);
 
 /* Forces and impulses ACCUMULATE until the step applies them (forces over
  * the whole step, impulses once), and wake the body. Static and
@@ -644,21 +645,21 @@ sx_status sx_body_set_type(sx_world *world, sx_body_id body, sx_body_type type);
  * accumulators are then left as they were). */
 
 /** Adds a force (N) at the centre of mass. */
-sx_status sx_body_apply_force(sx_world *world, sx_body_id body, sx_vec2 force);
+SX_API sx_status sx_body_apply_force(sx_world *world, sx_body_id body, sx_vec2 force);
 /** Adds a force (N) at a world point: also adds the torque
  *  (point - centre of mass) x force. */
-sx_status sx_body_apply_force_at_point(sx_world *world, sx_body_id body, sx_vec2 force,
-                                       sx_vec2 point);
+SX_API sx_status sx_body_apply_force_at_point(sx_world *world, sx_body_id body, sx_vec2 force,
+                                              sx_vec2 point);
 /** Adds a torque (N m). */
-sx_status sx_body_apply_torque(sx_world *world, sx_body_id body, sx_real torque);
+SX_API sx_status sx_body_apply_torque(sx_world *world, sx_body_id body, sx_real torque);
 /** Adds a linear impulse (N s) at the centre of mass. */
-sx_status sx_body_apply_impulse(sx_world *world, sx_body_id body, sx_vec2 impulse);
+SX_API sx_status sx_body_apply_impulse(sx_world *world, sx_body_id body, sx_vec2 impulse);
 /** Adds a linear impulse (N s) at a world point: also adds the angular
  *  impulse (point - centre of mass) x impulse. */
-sx_status sx_body_apply_impulse_at_point(sx_world *world, sx_body_id body, sx_vec2 impulse,
-                                         sx_vec2 point);
+SX_API sx_status sx_body_apply_impulse_at_point(sx_world *world, sx_body_id body, sx_vec2 impulse,
+                                                sx_vec2 point);
 /** Adds an angular impulse (N m s). */
-sx_status sx_body_apply_angular_impulse(sx_world *world, sx_body_id body, sx_real impulse);
+SX_API sx_status sx_body_apply_angular_impulse(sx_world *world, sx_body_id body, sx_real impulse);
 
 /* ---- colliders ---------------------------------------------------------- */
 
@@ -690,7 +691,7 @@ typedef struct sx_collider_def {
 } sx_collider_def;
 
 /** The default collider settings (see each field). */
-sx_collider_def sx_default_collider_def(void);
+SX_API sx_collider_def sx_default_collider_def(void);
 
 /** Attaches a collider to a body and updates the body's mass, centre of mass
  *  and inertia from the colliders' densities (the body origin stays where it
@@ -707,8 +708,8 @@ sx_collider_def sx_default_collider_def(void);
  *  restitution); SX_ERR_STALE_HANDLE; SX_ERR_NO_MEMORY; SX_ERR_CAPACITY
  *  (SX_WORLD_MAX_ITEMS collider slots in use or retired); SX_ERR_LOCKED
  *  (from a callback). */
-sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collider_def *def,
-                               sx_collider_id *out);
+SX_API sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collider_def *def,
+                                      sx_collider_id *out);
 
 /** Attaches a compound collider: the convex parts of `compound` (each with
  *  its offset in the body frame) act as ONE collider with one handle, one
@@ -725,8 +726,8 @@ sx_status sx_body_add_collider(sx_world *world, sx_body_id body, const sx_collid
  *  sx_body_add_collider, plus SX_ERR_INVALID_ARG for a NULL compound and
  *  the status of sx_compound_validate (count < 1 or a NULL parts array:
  *  SX_ERR_INVALID_ARG; a bad part: its shape's status). */
-sx_status sx_body_add_compound(sx_world *world, sx_body_id body, const sx_compound *compound,
-                               const sx_collider_def *def, sx_collider_id *out);
+SX_API sx_status sx_body_add_compound(sx_world *world, sx_body_id body, const sx_compound *compound,
+                                      const sx_collider_def *def, sx_collider_id *out);
 
 /** Decomposes a simple, possibly concave outline (points in the body frame,
  *  any winding) with sx_decompose_polygon and attaches the parts as one
@@ -740,29 +741,29 @@ sx_status sx_body_add_compound(sx_world *world, sx_body_id body, const sx_compou
  *  all-collinear or zero-area outlines); SX_ERR_CAPACITY for count above
  *  SX_DECOMPOSE_MAX_POINTS (or SX_WORLD_MAX_ITEMS collider slots in use);
  *  SX_ERR_NO_MEMORY. */
-sx_status sx_body_add_outline(sx_world *world, sx_body_id body, const sx_vec2 *points, int count,
-                              const sx_collider_def *def, sx_collider_id *out);
+SX_API sx_status sx_body_add_outline(sx_world *world, sx_body_id body, const sx_vec2 *points,
+                                     int count, const sx_collider_def *def, sx_collider_id *out);
 
 /** Number of parts of a collider: a compound's part count, 1 for a plain
  *  collider, 0 for a stale handle or NULL world. */
-int sx_collider_get_part_count(const sx_world *world, sx_collider_id collider);
+SX_API int sx_collider_get_part_count(const sx_world *world, sx_collider_id collider);
 
 /** Copies part `index` of a collider (a plain collider has one part: its
  *  shape with the identity offset) into *out. SX_ERR_INVALID_ARG (NULL,
  *  index out of range), SX_ERR_STALE_HANDLE. */
-sx_status sx_collider_get_part(const sx_world *world, sx_collider_id collider, int index,
-                               sx_compound_part *out);
+SX_API sx_status sx_collider_get_part(const sx_world *world, sx_collider_id collider, int index,
+                                      sx_compound_part *out);
 
 /** Removes a collider (and its contacts) and updates its body's mass.
  *  SX_ERR_INVALID_ARG (NULL), SX_ERR_LOCKED (from a callback),
  *  SX_ERR_STALE_HANDLE. */
-sx_status sx_destroy_collider(sx_world *world, sx_collider_id collider);
+SX_API sx_status sx_destroy_collider(sx_world *world, sx_collider_id collider);
 
 /** True if the handle names a live collider of this world. */
-bool sx_collider_is_valid(const sx_world *world, sx_collider_id collider);
+SX_API bool sx_collider_is_valid(const sx_world *world, sx_collider_id collider);
 
 /** The body a collider is attached to (null handle if stale). */
-sx_body_id sx_collider_get_body(const sx_world *world, sx_collider_id collider);
+SX_API sx_body_id sx_collider_get_body(const sx_world *world, sx_collider_id collider);
 
 /* ---- queries ------------------------------------------------------------ */
 
@@ -782,17 +783,18 @@ typedef bool sx_query_fn(sx_collider_id collider, sx_body_id body, void *context
  *  the bounds of one of its parts). fn may be NULL
  *  (just count). Returns the number of colliders reported (0 for a NULL
  *  world or an invalid or non-finite box). */
-int sx_world_query_aabb(const sx_world *world, sx_aabb box, sx_query_fn *fn, void *context);
+SX_API int sx_world_query_aabb(const sx_world *world, sx_aabb box, sx_query_fn *fn, void *context);
 
 /** Reports every collider whose shape contains `point` (boundary included,
  *  as sx_contains_point). Returns the count (0 for bad input). */
-int sx_world_query_point(const sx_world *world, sx_vec2 point, sx_query_fn *fn, void *context);
+SX_API int sx_world_query_point(const sx_world *world, sx_vec2 point, sx_query_fn *fn,
+                                void *context);
 
 /** Reports every collider that overlaps `shape` placed by `xf` (as
  *  sx_overlap: touching counts). Returns the count (0 for bad input, an
  *  invalid shape included). */
-int sx_world_query_shape(const sx_world *world, const sx_shape *shape, sx_xform xf, sx_query_fn *fn,
-                         void *context);
+SX_API int sx_world_query_shape(const sx_world *world, const sx_shape *shape, sx_xform xf,
+                                sx_query_fn *fn, void *context);
 
 /** The closest hit of a world ray cast. */
 typedef struct sx_world_ray_hit {
@@ -808,7 +810,8 @@ typedef struct sx_world_ray_hit {
  *  with the closest hit in *out (on equal fractions, the lower collider
  *  slot). false, with *out zeroed, for no hit or bad input (NULL pointers,
  *  non-finite ray, zero translation). */
-bool sx_world_cast_ray(const sx_world *world, const sx_ray_input *ray, sx_world_ray_hit *out);
+SX_API bool sx_world_cast_ray(const sx_world *world, const sx_ray_input *ray,
+                              sx_world_ray_hit *out);
 
 /** A hit of a world shape cast. */
 typedef struct sx_world_shape_hit {
@@ -834,16 +837,17 @@ typedef bool sx_shape_cast_fn(const sx_world_shape_hit *hit, void *context);
  *  Sensors are not hit, nor are the colliders of disabled bodies. false,
  *  with *out zeroed, for no hit or bad input (NULL pointers, an invalid
  *  shape, a non-finite transform or translation). */
-bool sx_world_cast_shape(const sx_world *world, const sx_shape *shape, sx_xform xf,
-                         sx_vec2 translation, const sx_filter *filter, sx_world_shape_hit *out);
+SX_API bool sx_world_cast_shape(const sx_world *world, const sx_shape *shape, sx_xform xf,
+                                sx_vec2 translation, const sx_filter *filter,
+                                sx_world_shape_hit *out);
 
 /** As sx_world_cast_shape, but reports every collider the sweep hits (each
  *  once, with its first hit) in collider-slot order, not sorted by
  *  fraction. fn may be NULL (just count). Returns the number reported (0 for
  *  bad input). */
-int sx_world_cast_shape_all(const sx_world *world, const sx_shape *shape, sx_xform xf,
-                            sx_vec2 translation, const sx_filter *filter, sx_shape_cast_fn *fn,
-                            void *context);
+SX_API int sx_world_cast_shape_all(const sx_world *world, const sx_shape *shape, sx_xform xf,
+                                   sx_vec2 translation, const sx_filter *filter,
+                                   sx_shape_cast_fn *fn, void *context);
 
 /* ---- debug draw ------------------------------------------------------------ */
 
@@ -869,7 +873,7 @@ typedef struct sx_debug_draw {
  *  they run, as during a query callback (see "Callbacks" at the top); the
  *  shape pointer passed to draw_shape is valid during that call only.
  *  SX_ERR_INVALID_ARG for NULL world or draw. */
-sx_status sx_world_draw(const sx_world *world, const sx_debug_draw *draw);
+SX_API sx_status sx_world_draw(const sx_world *world, const sx_debug_draw *draw);
 
 /* ---- run-time properties, iteration and naming ----------------------------- */
 
@@ -887,57 +891,57 @@ sx_status sx_world_draw(const sx_world *world, const sx_debug_draw *draw);
  *  above SX_MAX_ITERATIONS or body_capacity above SX_WORLD_MAX_ITEMS. When
  *  `field` is not NULL it receives the name of the first refused field
  *  ("gravity", "sub_steps", ...; "def" for a NULL def), or NULL for SX_OK. */
-sx_status sx_world_def_validate(const sx_world_def *def, const char **field);
+SX_API sx_status sx_world_def_validate(const sx_world_def *def, const char **field);
 
 /** Copies the world's current settings (sx_world_create's def with the
  *  changes of the setters below and sx_world_set_gravity) into *out.
  *  SX_ERR_INVALID_ARG for NULL. */
-sx_status sx_world_get_def(const sx_world *world, sx_world_def *out);
+SX_API sx_status sx_world_get_def(const sx_world *world, sx_world_def *out);
 
 /** Sets the sub-steps of sx_world_step (>= 1; see sx_world_def). Errors,
  *  with the world untouched: SX_ERR_INVALID_ARG (NULL, sub_steps < 1). */
-sx_status sx_world_set_sub_steps(sx_world *world, int sub_steps);
+SX_API sx_status sx_world_set_sub_steps(sx_world *world, int sub_steps);
 
 /** Sets the solver's iterations per sub-step: velocity (>= 1) and position
  *  (>= 0; 0 turns sx_world_separate off), as in sx_world_def. Errors, with
  *  the world untouched: SX_ERR_INVALID_ARG (NULL, a count out of range). */
-sx_status sx_world_set_iterations(sx_world *world, int velocity_iterations,
-                                  int position_iterations);
+SX_API sx_status sx_world_set_iterations(sx_world *world, int velocity_iterations,
+                                         int position_iterations);
 
 /** Copies the handles of the world's live bodies, in slot order
  *  (deterministic), into out[0 .. capacity-1] and returns how many live
  *  bodies there are: call with capacity 0 (out may then be NULL) to learn
  *  the count, then with an array that large. 0 for a NULL world; a negative
  *  capacity counts as 0. */
-int sx_world_get_bodies(const sx_world *world, sx_body_id *out, int capacity);
+SX_API int sx_world_get_bodies(const sx_world *world, sx_body_id *out, int capacity);
 
 /** Copies the handles of a body's colliders, in the order they were added,
  *  as sx_world_get_bodies, and returns how many it has (0 for a stale
  *  handle or NULL world). */
-int sx_body_get_colliders(const sx_world *world, sx_body_id body, sx_collider_id *out,
-                          int capacity);
+SX_API int sx_body_get_colliders(const sx_world *world, sx_body_id body, sx_collider_id *out,
+                                 int capacity);
 
 /** Tight world bounds of the body's colliders at its current transform (the
  *  union over its colliders; for a compound, over its parts). A body without
  *  colliders gives the empty box at its origin (lower == upper); a stale
  *  handle or NULL world the zero box. */
-sx_aabb sx_body_get_aabb(const sx_world *world, sx_body_id body);
+SX_API sx_aabb sx_body_get_aabb(const sx_world *world, sx_body_id body);
 
 /** Tight world bounds of one collider at its body's current transform (the
  *  zero box for a stale handle or NULL world). */
-sx_aabb sx_collider_get_aabb(const sx_world *world, sx_collider_id collider);
+SX_API sx_aabb sx_collider_get_aabb(const sx_world *world, sx_collider_id collider);
 
 /** Creates a body: sx_create_body under the sx_<object>_create name. */
-sx_status sx_body_create(sx_world *world, const sx_body_def *def, sx_body_id *out);
+SX_API sx_status sx_body_create(sx_world *world, const sx_body_def *def, sx_body_id *out);
 /** Destroys a body: sx_destroy_body under the sx_<object>_destroy name. */
-sx_status sx_body_destroy(sx_world *world, sx_body_id body);
+SX_API sx_status sx_body_destroy(sx_world *world, sx_body_id body);
 /** Attaches a collider to a body: sx_body_add_collider under the
  *  sx_<object>_create name. */
-sx_status sx_collider_create(sx_world *world, sx_body_id body, const sx_collider_def *def,
-                             sx_collider_id *out);
+SX_API sx_status sx_collider_create(sx_world *world, sx_body_id body, const sx_collider_def *def,
+                                    sx_collider_id *out);
 /** Removes a collider: sx_destroy_collider under the sx_<object>_destroy
  *  name. */
-sx_status sx_collider_destroy(sx_world *world, sx_collider_id collider);
+SX_API sx_status sx_collider_destroy(sx_world *world, sx_collider_id collider);
 
 /* Body setters below answer SX_ERR_INVALID_ARG for a NULL world and
  * SX_ERR_STALE_HANDLE for a stale handle, and leave the body untouched on
@@ -949,36 +953,36 @@ sx_status sx_collider_destroy(sx_world *world, sx_collider_id collider);
  *  overlaps end without end events (as when it is destroyed), the bodies
  *  they touched wake, and its velocities are zeroed. Enabling it puts it
  *  back where it was (or where sx_body_set_transform moved it), awake. */
-sx_status sx_body_set_enabled(sx_world *world, sx_body_id body, bool enabled);
+SX_API sx_status sx_body_set_enabled(sx_world *world, sx_body_id body, bool enabled);
 /** The body's enabled flag. */
-bool sx_body_is_enabled(const sx_world *world, sx_body_id body);
+SX_API bool sx_body_is_enabled(const sx_world *world, sx_body_id body);
 
 /** Sets the gravity scale (any finite value: 0 floats, negative rises);
  *  wakes the body. SX_ERR_NONFINITE for NaN/Inf. */
-sx_status sx_body_set_gravity_scale(sx_world *world, sx_body_id body, sx_real scale);
+SX_API sx_status sx_body_set_gravity_scale(sx_world *world, sx_body_id body, sx_real scale);
 /** The gravity scale. */
-sx_real sx_body_get_gravity_scale(const sx_world *world, sx_body_id body);
+SX_API sx_real sx_body_get_gravity_scale(const sx_world *world, sx_body_id body);
 
 /** Sets the linear damping (1/s, >= 0; see sx_body_def). SX_ERR_NONFINITE
  *  for NaN/Inf, SX_ERR_INVALID_ARG for a negative value. */
-sx_status sx_body_set_linear_damping(sx_world *world, sx_body_id body, sx_real damping);
+SX_API sx_status sx_body_set_linear_damping(sx_world *world, sx_body_id body, sx_real damping);
 /** The linear damping (1/s). */
-sx_real sx_body_get_linear_damping(const sx_world *world, sx_body_id body);
+SX_API sx_real sx_body_get_linear_damping(const sx_world *world, sx_body_id body);
 /** Sets the angular damping (1/s, >= 0). Errors as
  *  sx_body_set_linear_damping. */
-sx_status sx_body_set_angular_damping(sx_world *world, sx_body_id body, sx_real damping);
+SX_API sx_status sx_body_set_angular_damping(sx_world *world, sx_body_id body, sx_real damping);
 /** The angular damping (1/s). */
-sx_real sx_body_get_angular_damping(const sx_world *world, sx_body_id body);
+SX_API sx_real sx_body_get_angular_damping(const sx_world *world, sx_body_id body);
 
 /** Locks (true) or frees the body's rotation; the inertia is recomputed
  *  (sx_body_get_inertia is 0 while locked) and locking stops its spin. Wakes
  *  the body. */
-sx_status sx_body_set_fixed_rotation(sx_world *world, sx_body_id body, bool fixed);
+SX_API sx_status sx_body_set_fixed_rotation(sx_world *world, sx_body_id body, bool fixed);
 /** The body's fixed_rotation flag. */
-bool sx_body_is_fixed_rotation(const sx_world *world, sx_body_id body);
+SX_API bool sx_body_is_fixed_rotation(const sx_world *world, sx_body_id body);
 
 /** Replaces the body's user data (sx_body_get_user_data). */
-sx_status sx_body_set_user_data(sx_world *world, sx_body_id body, void *user_data);
+SX_API sx_status sx_body_set_user_data(sx_world *world, sx_body_id body, void *user_data);
 
 /* Collider setters answer SX_ERR_INVALID_ARG for a NULL world and
  * SX_ERR_STALE_HANDLE for a stale handle, leave the collider untouched on
@@ -987,31 +991,33 @@ sx_status sx_body_set_user_data(sx_world *world, sx_body_id body, void *user_dat
 
 /** Sets the friction (>= 0; mixed as sx_collider_def). SX_ERR_NONFINITE for
  *  NaN/Inf, SX_ERR_INVALID_ARG for a negative value. */
-sx_status sx_collider_set_friction(sx_world *world, sx_collider_id collider, sx_real friction);
+SX_API sx_status sx_collider_set_friction(sx_world *world, sx_collider_id collider,
+                                          sx_real friction);
 /** The friction coefficient. */
-sx_real sx_collider_get_friction(const sx_world *world, sx_collider_id collider);
+SX_API sx_real sx_collider_get_friction(const sx_world *world, sx_collider_id collider);
 /** Sets the restitution (>= 0). Errors as sx_collider_set_friction. */
-sx_status sx_collider_set_restitution(sx_world *world, sx_collider_id collider,
-                                      sx_real restitution);
+SX_API sx_status sx_collider_set_restitution(sx_world *world, sx_collider_id collider,
+                                             sx_real restitution);
 /** The restitution. */
-sx_real sx_collider_get_restitution(const sx_world *world, sx_collider_id collider);
+SX_API sx_real sx_collider_get_restitution(const sx_world *world, sx_collider_id collider);
 /** Sets the density (kg/m^2, >= 0) and recomputes the body's mass, centre of
  *  mass and inertia as sx_body_add_collider does (the body origin stays
  *  put). Errors as sx_collider_set_friction. */
-sx_status sx_collider_set_density(sx_world *world, sx_collider_id collider, sx_real density);
+SX_API sx_status sx_collider_set_density(sx_world *world, sx_collider_id collider, sx_real density);
 /** The density (kg/m^2). */
-sx_real sx_collider_get_density(const sx_world *world, sx_collider_id collider);
+SX_API sx_real sx_collider_get_density(const sx_world *world, sx_collider_id collider);
 /** Sets the collision filter; pairs it now excludes lose their contact (with
  *  an end event) at the next collide. */
-sx_status sx_collider_set_filter(sx_world *world, sx_collider_id collider, sx_filter filter);
+SX_API sx_status sx_collider_set_filter(sx_world *world, sx_collider_id collider, sx_filter filter);
 /** The collision filter (all zero for a stale handle). */
-sx_filter sx_collider_get_filter(const sx_world *world, sx_collider_id collider);
+SX_API sx_filter sx_collider_get_filter(const sx_world *world, sx_collider_id collider);
 /** True for a sensor collider. */
-bool sx_collider_is_sensor(const sx_world *world, sx_collider_id collider);
+SX_API bool sx_collider_is_sensor(const sx_world *world, sx_collider_id collider);
 /** Replaces the collider's user data. */
-sx_status sx_collider_set_user_data(sx_world *world, sx_collider_id collider, void *user_data);
+SX_API sx_status sx_collider_set_user_data(sx_world *world, sx_collider_id collider,
+                                           void *user_data);
 /** The collider's user data (sx_collider_def.user_data; NULL if stale). */
-void *sx_collider_get_user_data(const sx_world *world, sx_collider_id collider);
+SX_API void *sx_collider_get_user_data(const sx_world *world, sx_collider_id collider);
 
 #ifdef __cplusplus
 }

@@ -104,3 +104,15 @@ sx_body_id sx_test_body(sx_world *w, sx_body_type type, sx_vec2 p, sx_shape shap
     assert_int_equal(sx_body_add_collider(w, id, &cd, collider), SX_OK);
     return id;
 }
+
+sx_body_id sx_test_body_turned(sx_world *w, sx_body_type type, sx_vec2 p, sx_real angle,
+                               const sx_collider_def *cd) {
+    sx_body_def bd = sx_default_body_def();
+    sx_body_id id;
+    bd.type = type;
+    bd.position = p;
+    bd.angle = angle;
+    assert_int_equal(sx_create_body(w, &bd, &id), SX_OK);
+    assert_int_equal(sx_body_add_collider(w, id, cd, NULL), SX_OK);
+    return id;
+}

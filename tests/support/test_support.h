@@ -75,4 +75,10 @@ sx_shape sx_test_random_ngon(sx_test_rng *rng, int n, double rmin, double rmax);
 sx_body_id sx_test_body(sx_world *w, sx_body_type type, sx_vec2 p, sx_shape shape,
                         sx_collider_id *collider);
 
+/* A body of `type` at p turned by `angle` with the one collider *cd (the
+ * caller's shape and material, from sx_default_collider_def). Fails the
+ * test if either call fails. */
+sx_body_id sx_test_body_turned(sx_world *w, sx_body_type type, sx_vec2 p, sx_real angle,
+                               const sx_collider_def *cd);
+
 #endif /* SEPAX_TEST_SUPPORT_H */

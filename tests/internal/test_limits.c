@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../src/world_internal.h"
+#include "../../src/world_internal.h"
 #include "test_support.h"
 
 /* An allocator that refuses every block and records the requests, so a

@@ -8,7 +8,7 @@
 #include <float.h>
 #include <string.h>
 
-#include "../src/narrow.h"
+#include "../../src/narrow.h"
 #include "test_support.h"
 
 #ifdef SX_DOUBLE

@@ -11,8 +11,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../src/aabb_tree.h"
-#include "../src/world_internal.h"
+#include "../../src/aabb_tree.h"
+#include "../../src/world_internal.h"
 #include "test_support.h"
 
 #define ITEMS 300

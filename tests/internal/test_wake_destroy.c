@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../src/world_internal.h"
+#include "../../src/world_internal.h"
 #include "test_support.h"
 
 #define DT (SX_R(1.0) / SX_R(60.0))

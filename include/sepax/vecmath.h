@@ -10,9 +10,13 @@
  * for users who build scale and shear into their placements; the two convert
  * into each other. The perpendicular of (x, y) is (-y, x) everywhere: a
  * counter-clockwise quarter turn, so the outward normal of a CCW polygon edge
- * d is -perp(d). */
-#ifndef SEPAX_MATH_H
-#define SEPAX_MATH_H
+ * d is -perp(d).
+ *
+ * The name is vecmath.h, not math.h: a header called math.h shadows the C
+ * library's <math.h> for a program that puts include/sepax itself on its
+ * include path. */
+#ifndef SEPAX_VECMATH_H
+#define SEPAX_VECMATH_H
 
 #include <math.h>
 
@@ -511,4 +515,4 @@ static inline bool sx_aabb_overlaps_circle(sx_aabb a, sx_vec2 center, sx_real ra
 }
 #endif
 
-#endif /* SEPAX_MATH_H */
+#endif /* SEPAX_VECMATH_H */

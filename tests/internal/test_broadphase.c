@@ -15,7 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../src/world_internal.h"
+#include "../../src/world_internal.h"
 #include "test_support.h"
 
 #define DT (SX_R(1.0) / SX_R(60.0))
@@ -157,15 +157,7 @@ static sx_shape random_shape(sx_test_rng *rng) {
 }
 
 static sx_body_id add(sx_world *w, sx_body_type type, sx_vec2 p, const sx_shape *s) {
-    sx_body_def bd = sx_default_body_def();
-    sx_collider_def cd = sx_default_collider_def();
-    sx_body_id id;
-    bd.type = type;
-    bd.position = p;
-    assert_int_equal(sx_create_body(w, &bd, &id), SX_OK);
-    cd.shape = *s;
-    assert_int_equal(sx_body_add_collider(w, id, &cd, NULL), SX_OK);
-    return id;
+    return sx_test_body(w, type, p, *s, NULL);
 }
 
 #define MAX_IDS 400
