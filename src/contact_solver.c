@@ -425,6 +425,15 @@ static void sx_slide_levers(const sx_world *world, sx_contact *c) {
     int k;
     /* a resting contact keeps its levers (fewer stores) */
     if (!(sx_absr(step) > SX_LEVER_TOLERANCE * world->linear_slop)) return;
+    /* nor do bodies that pass each other faster than a quarter of their
+     * reach a sub-step: they touch, if ever, where their motion takes them,
+     * which the levers of collide time guess as well as any, and levers
+     * slid that far spun crossing bullets fast enough to pass thin walls */
+    {
+        sx_real reach = sx_maxr(sx_length_sq(c->points[0].anchor_a),
+                                sx_length_sq(c->points[0].anchor_b));
+        if (SX_R(16.0) * step * step > reach) return;
+    }
     c->slid = slid;
     for (k = 0; k < c->count; ++k) {
         sx_contact_point *p = &c->points[k];
