@@ -2,8 +2,7 @@
  * positional correction, on the contacts of the step's one collide.
  *
  * The contacts are prepared once per collide (effective masses, the block
- * matrices, anchors; between two dynamic bodies the anchors then slide with
- * the bodies, sx_slide_levers). Each sub-step then reads every
+ * matrices, anchors fixed for the step). Each sub-step then reads every
  * point's separation from the bodies' current positions (the anchors turned
  * with the bodies, along the normal of collide time: first order in the
  * motion of a step), which is what the speculative and positional terms
@@ -335,9 +334,7 @@ void sx_contacts_energy_guard(sx_world *world, sx_real h) {
 }
 
 /* The normal effective masses of contact c's points, and its block, from
- * its current levers: the impulses a pass computes with them must be the
- * ones the levers apply (an impact pass with a stale mass gives back more
- * than e x the approach). */
+ * its levers. */
 static void sx_normal_masses(const sx_world *world, sx_contact *c) {
     const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
     sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;
@@ -396,58 +393,11 @@ static sx_real sx_current_gap(const sx_body_sim *a, const sx_body_sim *b, sx_vec
     return p->base + sx_dot(d, n);
 }
 
-/* How far (in linear slops) the levers move before sx_slide_levers moves
- * them: the moment the impulses of a resting contact may leave behind is
- * this times their sum. */
-#define SX_LEVER_TOLERANCE SX_R(1e-2)
-
-/* The levers of a contact between two dynamic bodies at their current
- * centres. The levers of collide time reach two points a multiple of the
- * normal apart; as the centres move through the sub-steps those points
- * slide apart along the tangent (by the change of the centres' offset
- * across the normal), and equal and opposite impulses at them change the
- * angular momentum. So the slide is taken up by the levers (A's share
- * slip_a, B's the rest): the points stay a multiple of the normal apart,
- * and the impulses have no net moment. The tangent effective masses stay
- * right (a slide along the tangent changes no lever's moment about it);
- * the normal ones are left for the velocity passes, whose answer does not
- * depend on them (a pass stops changing the impulses where the velocities
- * meet the constraints, whatever mass it divides by: a stale one only
- * slows it), and made right by the impact pass, whose one impulse must be
- * exact (with a stale mass it gives back more than e x the approach).
- * Contacts with a static or kinematic body keep their levers: no angular
- * momentum is kept there. */
-static void sx_slide_levers(const sx_world *world, sx_contact *c) {
-    const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
-    sx_vec2 t = sx_cross_vs(c->normal, SX_R(1.0));
-    sx_real slid = sx_dot(sx_sub(sx_sub(b->center, a->center), c->centres), t);
-    sx_real step = slid - c->slid;
-    int k;
-    /* a resting contact keeps its levers (fewer stores) */
-    if (!(sx_absr(step) > SX_LEVER_TOLERANCE * world->linear_slop)) return;
-    /* nor do bodies that pass each other faster than a quarter of their
-     * reach a sub-step: they touch, if ever, where their motion takes them,
-     * which the levers of collide time guess as well as any, and levers
-     * slid that far spun crossing bullets fast enough to pass thin walls */
-    {
-        sx_real reach = sx_maxr(sx_length_sq(c->points[0].anchor_a),
-                                sx_length_sq(c->points[0].anchor_b));
-        if (SX_R(16.0) * step * step > reach) return;
-    }
-    c->slid = slid;
-    for (k = 0; k < c->count; ++k) {
-        sx_contact_point *p = &c->points[k];
-        p->anchor_a = sx_mul_add(p->anchor_a, c->slip_a * step, t);
-        p->anchor_b = sx_mul_sub(p->anchor_b, (SX_R(1.0) - c->slip_a) * step, t);
-    }
-}
-
 static void sx_update_gaps(const sx_world *world, sx_contact *c) {
     const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
     int k;
     for (k = 0; k < c->count; ++k)
         c->points[k].gap = sx_current_gap(a, b, c->normal, &c->points[k]);
-    if (c->slides) sx_slide_levers(world, c);
 }
 
 /* The relative normal velocity a point's constraint wants to be >= 0: a
@@ -1071,8 +1021,6 @@ static bool sx_impact_time(const sx_world *world, const sx_contact *c, sx_real h
  * points together when the manifold's block is well conditioned; then
  * friction; then the bodies' time-of-impact shifts. */
 static void sx_resolve_impact(sx_world *world, sx_contact *c, sx_real h, sx_real t) {
-    /* the normal masses of the levers that slid (sx_slide_levers) */
-    if (c->slides) sx_normal_masses(world, c);
     sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
     sx_impact_body *sa = &world->impact_bodies[c->body_a], *sb = &world->impact_bodies[c->body_b];
     sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;

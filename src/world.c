@@ -911,24 +911,6 @@ static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, c
     c->friction = sx_sqrt(ca->friction * cb->friction);
     c->restitution = sx_maxr(ca->restitution, cb->restitution);
     c->count = m->count;
-    c->slid = SX_R(0.0);
-    c->centres = sx_sub(bb->center, ba->center);
-    /* the point under a circle stays under its centre: the other side's
-     * lever takes the slide. Two circles farther apart than their radii
-     * keep their levers: across so long an approach the normal of collide
-     * time is far from the one at impact, and levers slid along it would
-     * spin them (two head-on bullets were sent spinning past each other) */
-    {
-        bool round_a = ca->part_count == 0 && ca->shape.type == SX_SHAPE_CIRCLE;
-        bool round_b = cb->part_count == 0 && cb->shape.type == SX_SHAPE_CIRCLE;
-        c->slides = ba->dynamic && bb->dynamic;
-        for (k = 0; k < m->count; ++k)
-            if (round_a && round_b &&
-                -m->points[k].depth > ca->shape.u.circle.radius + cb->shape.u.circle.radius) {
-                c->slides = false;
-            }
-        c->slip_a = round_a == round_b ? SX_R(0.5) : round_a ? SX_R(0.0) : SX_R(1.0);
-    }
     for (k = 0; k < m->count; ++k) {
         const sx_manifold_point *mp = &m->points[k];
         sx_contact_point *p = &c->points[k];

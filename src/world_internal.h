@@ -133,14 +133,6 @@ typedef struct sx_contact {
     int part_a, part_b;
     int body_a, body_b;
     sx_vec2 normal; /* world, from A to B, at collide time (kept for the step) */
-    /* both bodies dynamic: the levers follow the bodies through the
-     * sub-steps, A's taking the share slip_a of the slide across the normal
-     * and B's the rest; the slide so far (along the tangent) and the
-     * centres' offset at collide it is measured from (sx_slide_levers in
-     * contact_solver.c) */
-    bool slides;
-    sx_real slip_a, slid;
-    sx_vec2 centres;
     sx_real friction, restitution;
     int count;
     sx_contact_point points[2];

@@ -26,9 +26,7 @@
  * are found once per step; inside the sub-steps each contact point's
  * separation follows the bodies' motion (its anchors turn with the bodies,
  * the normal stays), so the sub-steps stay accurate without running the
- * narrowphase again, and between two dynamic bodies the points the
- * impulses act at follow the bodies too, so the contacts keep the angular
- * momentum. This is
+ * narrowphase again. This is
  * symplectic Euler (velocities first, then positions with the new
  * velocities). Callers such as the flecs systems may run the stages
  * themselves, in this order, with their own code in between.
@@ -335,10 +333,7 @@ SX_API sx_status sx_world_continuous(sx_world *world);
 
 /** Stage 3: the contacts of the last collide, on velocities. Each point's
  *  separation at the current positions (the anchors of collide time turned
- *  with the bodies; between two dynamic bodies the levers the impulses act
- *  at slide with the bodies' relative motion across the normal, so equal
- *  and opposite impulses act at points a multiple of the normal apart and
- *  keep the angular momentum), then the impact pass (restitution), on the velocities
+ *  with the bodies), then the impact pass (restitution), on the velocities
  *  the bodies arrive with: the contacts approaching at the restitution
  *  threshold or faster that close their gap within this sub-step are
  *  resolved one at a time in order of their time of impact, each
