@@ -12,7 +12,7 @@
 set -eu
 
 layers='
-0 include/sepax/base.h include/sepax/vecmath.h src/core.h src/base.c
+0 include/sepax/base.h include/sepax/vecmath.h src/core.h src/simd.h src/base.c
 1 include/sepax/shape.h src/wide.h src/shape.c src/hull.c
 2 include/sepax/collide.h include/sepax/compound.h src/narrow.h src/narrow_sat.h src/narrow_closest.h
 2 src/collide_world.h src/query.h src/narrow_point.c
