@@ -279,6 +279,9 @@ static void *sepax_create(const scene_def *def, const scene_config *cfg) {
     wd.position_iterations = cfg->pos_iters;
     wd.enable_sleep = def->sleep != 0;
     wd.body_capacity = def->count;
+    /* SX_BENCH_CONTINUOUS=0: its cost, measured against the default */
+    wd.enable_continuous =
+        getenv("SX_BENCH_CONTINUOUS") == NULL || atoi(getenv("SX_BENCH_CONTINUOUS")) != 0;
     sepax_world *sw = calloc(1, sizeof *sw);
     if (!sw) return NULL;
     sw->world = sx_world_create(&wd);

@@ -735,6 +735,9 @@ static void sx_ecs_drive(ecs_iter_t *it) {
         /* refused counts (< 1, < 0) leave the world's as they were */
         sx_world_set_iterations(st->world, s->velocity_iterations, s->position_iterations);
     }
+    if (now.enable_continuous != s->enable_continuous) {
+        sx_world_enable_continuous(st->world, s->enable_continuous);
+    }
     st->accumulator += (double)it->delta_time;
     steps = (int32_t)(st->accumulator / (double)fixed + SX_ECS_TICK_TOLERANCE);
     if (steps > max_steps) {
@@ -936,7 +939,8 @@ static void sx_ecs_reflect(ecs_world_t *world) {
                                    {.name = "max_steps_per_frame", .type = ecs_id(ecs_i32_t)},
                                    {.name = "enable_sleep", .type = ecs_id(ecs_bool_t)},
                                    {.name = "velocity_iterations", .type = ecs_id(ecs_i32_t)},
-                                   {.name = "position_iterations", .type = ecs_id(ecs_i32_t)}}});
+                                   {.name = "position_iterations", .type = ecs_id(ecs_i32_t)},
+                                   {.name = "enable_continuous", .type = ecs_id(ecs_bool_t)}}});
     ecs_struct(world, {.entity = ecs_id(SxPhysicsTime),
                        .members = {{.name = "alpha", .type = real},
                                    {.name = "frame_steps", .type = ecs_id(ecs_i32_t)},
@@ -1040,6 +1044,7 @@ void SepaxPhysicsImport(ecs_world_t *world) {
     settings.enable_sleep = def.enable_sleep;
     settings.velocity_iterations = def.velocity_iterations;
     settings.position_iterations = def.position_iterations;
+    settings.enable_continuous = def.enable_continuous;
     ecs_singleton_set_ptr(world, SxPhysicsSettings, &settings);
     ecs_singleton_set(world, SxPhysicsTime, {SX_R(0.0), 0, 0});
     ecs_singleton_set(world, SxPhysicsWorld, {st->world});

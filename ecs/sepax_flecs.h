@@ -198,6 +198,10 @@ typedef struct SxPhysicsSettings {
      *  default 4) and position (>= 0, default 2). */
     int32_t velocity_iterations;
     int32_t position_iterations;
+    /** Continuous collision, as sx_world_def.enable_continuous (fast
+     *  bodies swept to their time of impact; bullets against dynamic
+     *  bodies too). Default true. */
+    bool enable_continuous;
 } SxPhysicsSettings;
 
 /** Singleton, written by the module every frame: where the fixed-step clock

@@ -34,6 +34,12 @@ sx_status sx_world_set_iterations(sx_world *world, int velocity_iterations,
     return SX_OK;
 }
 
+sx_status sx_world_enable_continuous(sx_world *world, bool enable) {
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+    world->def.enable_continuous = enable;
+    return SX_OK;
+}
+
 /* ---- iteration and bounds -------------------------------------------------- */
 
 int sx_world_get_bodies(const sx_world *world, sx_body_id *out, int capacity) {

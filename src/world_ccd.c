@@ -7,11 +7,14 @@
  * What that misses is motion collide did not foresee: a body knocked on
  * faster than it was going, or one turning so far that a contact's
  * linearised separation no longer holds (a spinning blade). So collide
- * records each awake dynamic body's pose and velocity (sx_ccd_record), and
- * after the sub-steps sx_world_continuous looks at each of them: only one
- * that went farther than its recorded velocity allows, strayed from the
- * path it foresaw or turned, by more than half its thinnest extent at its
- * farthest point, or a fast bullet, is
+ * records each awake dynamic body's pose and foreseen end (sx_ccd_record,
+ * filled in by the bounds pass of world.c), the step's last separate lists
+ * the bodies that strayed, turned or are bullets (world.c,
+ * sx_ccd_may_need_sweep: a few comparisons in a pass it makes anyway), and
+ * sx_world_continuous looks at those: only one that went farther than its
+ * recorded velocity allows, strayed from the path it foresaw or turned, by
+ * more than half its thinnest extent at its farthest point, or a fast
+ * bullet, is
  * swept from the recorded pose to the final one against the colliders its
  * swept box meets in the broadphase (conservative advancement, distance.c)
  * and put back at the earliest time of impact, keeping its velocity. Box2D
@@ -22,10 +25,10 @@
 #include "world_internal.h"
 
 sx_status sx_ccd_record(sx_world *world) {
-    int k;
     uint32_t stamp = world->ccd_stamp + 1u;
     world->ccd_dt = SX_R(0.0);
-    if (!(world->step_dt > SX_R(0.0))) return SX_OK;
+    world->ccd_marked = false;
+    if (!world->def.enable_continuous || !(world->step_dt > SX_R(0.0))) return SX_OK;
     if (!sx_grow_zeroed((void **)&world->ccd_poses, &world->ccd_pose_capacity, world->body_slots,
                         sizeof(sx_ccd_pose))) {
         return SX_ERR_NO_MEMORY;
@@ -34,22 +37,8 @@ sx_status sx_ccd_record(sx_world *world) {
     if (stamp == 0u) stamp = 1u;
     world->ccd_stamp = stamp;
     world->ccd_kinematic_moving = 0;
-    for (k = 0; k < world->active_body_count; ++k) {
-        int slot = world->active_bodies[k];
-        const sx_body_sim *b = &world->sims[slot];
-        sx_ccd_pose *p = &world->ccd_poses[slot];
-        /* only the awake dynamic bodies are swept (their stamp says so) */
-        if (!b->dynamic || !b->awake) {
-            if (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0)) {
-                world->ccd_kinematic_moving = 1;
-            }
-            continue;
-        }
-        p->center = b->center;
-        p->q = b->xf.q;
-        p->v = b->v;
-        p->stamp = stamp;
-    }
+    world->ccd_elapsed = SX_R(0.0);
+    world->ccd_sweep_count = 0;
     world->ccd_dt = world->step_dt;
     return SX_OK;
 }
@@ -259,56 +248,59 @@ static sx_status sx_sweep_body(sx_world *world, int slot, const sx_motion *m, sx
     return SX_OK;
 }
 
-/* Whether body slot needs the sweep, and its motion and reach if so. */
+/* Whether body slot, listed by sx_ccd_mark or the last separate (it
+ * strayed, turned or is a bullet), needs the sweep: it went farther than
+ * its collide-time velocity allows, or its farthest point strayed from the
+ * path collide foresaw (or turned, or for a bullet moved) by more than
+ * half its thinnest extent. */
 static bool sx_needs_sweep(sx_world *world, int slot) {
     const sx_body_sim *b = &world->sims[slot];
     const sx_ccd_pose *p = &world->ccd_poses[slot];
-    sx_vec2 d = sx_sub(b->center, p->center);
-    /* where it ended against where collide foresaw (gravity bends the path
-     * by far less than the margin) */
-    sx_vec2 off = sx_mul_add(d, -world->ccd_dt, p->v);
-    sx_real half = SX_R(0.5) * world->margin, max_ext, min_ext, sweep, moved;
+    sx_real max_ext, min_ext, moved = sx_length(sx_sub(b->center, p->center)), path, thin;
     sx_rot dq = sx_rot_inv_mul(p->q, b->xf.q);
-    /* turns under a quarter of the angular slop move no point far enough
-     * to matter, and are not worth the extents */
-    bool turned = dq.c < SX_R(0.0) || sx_absr(dq.s) > SX_R(0.25) * SX_ANGULAR_SLOP;
-    /* the cold body data only when there are bullets at all */
     bool bullet = world->bullet_count > 0 && world->infos[slot].bullet;
-    /* leaving its collide-time bounds (going farther than dt |v| + half)
-     * strays more than half from that end point too: one test for both */
-    if (!(sx_length_sq(off) > half * half) && !turned && !bullet) return false;
+    if (moved > sx_length(sx_sub(p->end, p->center)) + SX_R(0.5) * world->margin) return true;
     sx_body_extents(world, slot, &max_ext, &min_ext);
-    moved = sx_length(d);
-    /* how far its farthest point strayed: the turn (a small one by its
-     * sine), the bend of its path, and for a bullet the whole path */
-    sweep = (turned ? sx_absr(sx_turn(b, p, world->ccd_dt)) : sx_absr(dq.s)) * max_ext +
-            (bullet ? moved : sx_length(off));
-    return moved > world->ccd_dt * sx_length(p->v) + half || sweep > SX_R(0.5) * min_ext;
+    path = bullet ? moved : sx_length(sx_sub(b->center, p->end));
+    thin = SX_R(0.5) * min_ext;
+    /* a small turn by its sine; past a quarter of the angular slop by its
+     * angle (a turn of several half turns told by the velocity), which
+     * under a quarter turn is at most pi/2 times its sine: the arc tangent
+     * only when that bound does not settle it */
+    if (dq.c >= SX_R(0.0) && sx_absr(b->w * world->ccd_dt) < SX_R(0.5) * SX_PI) {
+        sx_real s = sx_absr(dq.s), bound = s > SX_R(0.25) * SX_ANGULAR_SLOP ? SX_R(0.5) * SX_PI * s : s;
+        if (!(bound * max_ext + path > thin)) return false;
+        if (bound == s) return true;
+    }
+    return sx_absr(sx_turn(b, p, world->ccd_dt)) * max_ext + path > thin;
 }
 
 sx_status sx_world_continuous(sx_world *world) {
-    int pass, k;
+    int pass, k, n;
     sx_status s;
     if (world == NULL) return SX_ERR_INVALID_ARG;
     if (sx_world_locked(world)) return SX_ERR_LOCKED;
     if (!(world->ccd_dt > SX_R(0.0))) return SX_OK;
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
-    /* one pass over the moving bodies finds those to sweep; then the others
-     * are swept, and the bullets last, against the others' final poses */
-    for (k = 0; k < world->active_body_count; ++k) {
-        int slot = world->active_bodies[k];
-        /* the stamp marks the bodies that were awake and dynamic at collide
-         * (a body changed since is swept as it was then, harmlessly) */
-        if (slot >= world->ccd_pose_capacity || world->ccd_poses[slot].stamp != world->ccd_stamp ||
-            !sx_needs_sweep(world, slot) || !world->sims[slot].dynamic) {
-            continue;
-        }
-        if (!sx_push_int(&world->ccd_sweep, &world->ccd_sweep_count, &world->ccd_sweep_capacity,
-                         slot)) {
-            return SX_ERR_NO_MEMORY;
+    /* the step's last separate listed the bodies that strayed, turned or
+     * are bullets as it applied the speed limit (unless the stages ran
+     * otherwise: then one pass here); of those, the ones that need it are
+     * swept, and the bullets last, against the others' final poses */
+    if (!world->ccd_marked) {
+        s = sx_ccd_mark(world);
+        if (s != SX_OK) return s;
+    }
+    n = 0;
+    for (k = 0; k < world->ccd_sweep_count; ++k) {
+        int slot = world->ccd_sweep[k];
+        /* a body may have changed since it was listed */
+        if (world->ccd_poses[slot].stamp == world->ccd_stamp && world->sims[slot].dynamic &&
+            sx_needs_sweep(world, slot)) {
+            world->ccd_sweep[n++] = slot;
         }
     }
+    world->ccd_sweep_count = n;
     for (pass = 0; pass < (world->bullet_count > 0 ? 2 : 1); ++pass) {
         for (k = 0; k < world->ccd_sweep_count; ++k) {
             int slot = world->ccd_sweep[k];
@@ -324,6 +316,7 @@ sx_status sx_world_continuous(sx_world *world) {
     world->ccd_sweep_count = 0;
     /* once per collide */
     world->ccd_dt = SX_R(0.0);
+    world->ccd_marked = false;
     return SX_OK;
 }
 

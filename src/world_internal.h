@@ -296,7 +296,9 @@ typedef struct sx_impact_contact {
 typedef struct sx_ccd_pose {
     sx_vec2 center;
     sx_rot q;
-    sx_vec2 v; /* at collide: the look-ahead its bounds and margins were grown by */
+    /* where its collide-time velocity takes it by the step's end: the
+     * look-ahead its bounds and margins were grown by */
+    sx_vec2 end;
     uint32_t stamp;
     /* the body's reach from its centre of mass and thinnest half extent,
      * kept until its colliders or mass change (ext_valid) */
@@ -388,8 +390,10 @@ struct sx_world {
     uint32_t ccd_stamp;
     sx_real ccd_dt; /* the step the recorded poses start (0: none) */
     int ccd_kinematic_moving; /* a kinematic body moves this step (sx_ccd_record) */
-    int *ccd_sweep; /* the bodies to sweep this step */
+    int *ccd_sweep; /* the bodies that may need the sweep this step */
     int ccd_sweep_count, ccd_sweep_capacity;
+    sx_real ccd_elapsed; /* sub-step time separated since the record */
+    bool ccd_marked;     /* ccd_sweep holds the bodies as they end the step */
     int bullet_count; /* live bodies with the bullet flag (body.c, world_ccd.c) */
     int *ccd_found;
     int ccd_found_count, ccd_found_capacity;
@@ -526,14 +530,20 @@ sx_status sx_world_refresh_sets(sx_world *world);
 void sx_world_note_awake(sx_world *world, int slot);
 
 /* world_ccd.c */
-/* Records where the moving bodies are, for the continuous pass at the end
- * of the step (sx_world_collide calls it). */
+/* Starts the record of where the moving bodies are, for the continuous
+ * pass at the end of the step (sx_world_collide calls it, and its bounds
+ * pass fills the poses in). */
 sx_status sx_ccd_record(sx_world *world);
 /* Frees its arrays (sx_world_destroy). */
 void sx_ccd_free(sx_world *world);
 /* Forgets body slot's cached extents and pose (its colliders or mass
  * changed, or it was just created). */
 void sx_ccd_forget(sx_world *world, int slot);
+
+/* world.c: lists in ccd_sweep the bodies that may need the sweep (the
+ * continuous pass's fallback when the step's last sx_world_separate did not
+ * list them). */
+sx_status sx_ccd_mark(sx_world *world);
 
 /* True if two collision filters let their colliders collide (sx_filter). */
 static inline bool sx_filters_collide(const sx_filter *a, const sx_filter *b) {

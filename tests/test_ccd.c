@@ -448,6 +448,41 @@ static void knocked_body_stops_at_a_thin_wall(void **state) {
     }
 }
 
+/* enable_continuous (default true) turns the whole stage off and on: a
+ * ball at rest 1 m before a thin static wall, knocked on at 300 m/s by a
+ * fast ball in the same step, passes the wall with it off (its contacts of
+ * that step did not look ahead) and stops at the wall with it on. */
+static void continuous_collision_turns_off_and_on(void **state) {
+    int on;
+    sx_world_def got;
+    (void)state;
+    assert_true(sx_default_world_def().enable_continuous);
+    assert_int_equal(sx_world_enable_continuous(NULL, true), SX_ERR_INVALID_ARG);
+    for (on = 0; on < 2; ++on) {
+        sx_world *w = make_world(sx_v2_zero());
+        sx_shape ball = sx_circle_shape(sx_v2_zero(), SX_R(0.05));
+        sx_body_id b;
+        int k;
+        assert_int_equal(sx_world_enable_continuous(w, on != 0), SX_OK);
+        assert_int_equal(sx_world_get_def(w, &got), SX_OK);
+        assert_int_equal(got.enable_continuous, on != 0);
+        (void)add(w, SX_BODY_STATIC, sx_v2_zero(), 0.0, sx_box_shape(SX_R(0.025), SX_R(1.0)),
+                  sx_v2_zero(), 0.0, false);
+        b = add(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-1.0), SX_R(0.0)), 0.0, ball, sx_v2_zero(), 0.0,
+                false);
+        (void)add(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-1.2), SX_R(0.0)), 0.0, ball,
+                  sx_v2(SX_R(300.0), SX_R(0.0)), 0.0, false);
+        for (k = 0; k < 10; ++k)
+            assert_int_equal(sx_world_step(w, SX_R(1.0) / SX_R(60.0)), SX_OK);
+        if (on) {
+            assert_true((double)sx_body_get_position(w, b).x < -0.075 + 2.0 * (double)SX_LINEAR_SLOP);
+        } else {
+            assert_true((double)sx_body_get_position(w, b).x > 0.025);
+        }
+        sx_world_destroy(w);
+    }
+}
+
 /* A 1 m rod 4 cm thick spinning at 100-200 rad/s while it flies at 30 m/s
  * at a static wall 5 cm thick: its ends sweep far more than its thickness
  * each step, yet it never ends across the wall. */
@@ -512,6 +547,7 @@ int main(void) {
         cmocka_unit_test(crossing_spinning_bullets_never_pass_a_thin_wall),
         cmocka_unit_test(knocked_body_stops_at_a_thin_wall),
         cmocka_unit_test(spinning_rod_never_crosses_a_thin_wall),
+        cmocka_unit_test(continuous_collision_turns_off_and_on),
         cmocka_unit_test(bullet_flag_round_trips_and_answers_stale_handles),
     };
     return cmocka_run_group_tests_name("ccd", tests, sx_test_group_setup, sx_test_group_teardown);

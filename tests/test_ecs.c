@@ -958,6 +958,24 @@ static void settings_iterations_reach_the_world(void **state) {
     ecs_fini(world);
 }
 
+/* SxPhysicsSettings.enable_continuous starts as the world's default (on)
+ * and a change reaches the world at the next frame. */
+static void settings_continuous_reaches_the_world(void **state) {
+    ecs_world_t *world = make_world();
+    sx_world_def got;
+    (void)state;
+    assert_true(ecs_singleton_get(world, SxPhysicsSettings)->enable_continuous);
+    ecs_singleton_ensure(world, SxPhysicsSettings)->enable_continuous = false;
+    progress(world, 1, 1.0 / 60.0);
+    assert_int_equal(sx_world_get_def(sx_ecs_world(world), &got), SX_OK);
+    assert_false(got.enable_continuous);
+    ecs_singleton_ensure(world, SxPhysicsSettings)->enable_continuous = true;
+    progress(world, 1, 1.0 / 60.0);
+    assert_int_equal(sx_world_get_def(sx_ecs_world(world), &got), SX_OK);
+    assert_true(got.enable_continuous);
+    ecs_fini(world);
+}
+
 /* A bullet entity (SxBody.bullet) knocked into a thin dynamic box by a fast
  * ball stops at the box, as in the plain world; ray and shape casts through
  * the module return the entity they hit. */
@@ -1037,6 +1055,7 @@ int main(void) {
         cmocka_unit_test(a_ray_cast_names_the_entity_hit),
         cmocka_unit_test(the_interpolation_fraction_is_the_accumulator_over_the_step),
         cmocka_unit_test(settings_iterations_reach_the_world),
+        cmocka_unit_test(settings_continuous_reaches_the_world),
         cmocka_unit_test(entities_deleted_in_a_query_callback_leave_the_world_at_the_next_step),
         cmocka_unit_test(bullet_flag_and_casts_through_the_module),
     };

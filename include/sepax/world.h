@@ -47,12 +47,14 @@
  * speculative margin (speculative_slops x the linear slop: 2 cm by default)
  * plus how far each body can move in the step at the velocity it starts
  * with; the solver then lets no contact close by more than its gap. So a
- * body moving straight at a collider stops at it however fast it goes. No
- * time-of-impact sweep yet: a contact's normal and points are those of the
- * step's start, so a fast body that turns, or one deflected by a third body
- * within the step towards a collider it had no contact with, can end the
- * step overlapping that collider, and sx_world_separate then pushes it out
- * the shortest way (past the middle of a thin collider, the far side).
+ * body moving straight at a collider stops at it however fast it goes. A
+ * contact's normal and points are those of the step's start, so a fast
+ * body that turns, or one deflected by a third body within the step towards
+ * a collider it had no contact with, could end the step overlapping that
+ * collider (past the middle of a thin one, to be pushed out on the far
+ * side): the continuous stage (sx_world_continuous, on by default:
+ * sx_world_def.enable_continuous) sweeps such bodies back to their time of
+ * impact.
  *
  * Sleeping: islands of touching bodies that stay slow fall asleep and cost
  * no solver work until something touches or pushes them. Around the step: contact begin/end events,
@@ -222,6 +224,13 @@ typedef struct sx_world_def {
      *  sx_world_get_contact_events stays empty. Default true. Sensor events
      *  cost nothing in a world without sensors. */
     bool enable_contact_events;
+    /** Continuous collision (sx_world_continuous, as Box2D v3's
+     *  enableContinuous): fast dynamic bodies are swept against static and
+     *  kinematic colliders, bullets against dynamic ones too. false: no sweep at all (bullets included) and no record of poses at
+     *  collide; fast bodies then have only their speculative contacts,
+     *  grown by their whole step's travel (see "Fast bodies" above).
+     *  Default true. */
+    bool enable_continuous;
 } sx_world_def;
 
 /** The default world settings documented field by field in sx_world_def. */
@@ -299,7 +308,8 @@ SX_API sx_status sx_world_apply_forces(sx_world *world, sx_real h);
 SX_API sx_status sx_world_collide(sx_world *world);
 
 /** Stage 6 (once per step, after the sub-steps; sx_world_step runs it):
- *  continuous collision. An awake dynamic body is swept from where it was
+ *  continuous collision; nothing when sx_world_def.enable_continuous is
+ *  false. An awake dynamic body is swept from where it was
  *  at the step's sx_world_collide to where the sub-steps left it (its centre
  *  of mass on a straight path, its angle turning evenly) when the
  *  speculative contacts of that collide may have missed part of its motion:
@@ -325,7 +335,12 @@ SX_API sx_status sx_world_collide(sx_world *world);
  *  keeps to its straight path), and a body put back may overlap another
  *  dynamic body until the next step separates them. A body whose colliders
  *  or mass change between sx_world_collide and this stage is not swept.
- *  Slow bodies cost a comparison each. Errors:
+ *  Cost: the step's last sx_world_separate, in the pass over the bodies it
+ *  makes anyway, lists those that strayed from their foreseen path by half
+ *  the margin, turned by a quarter of the angular slop, or are bullets;
+ *  this stage looks at those alone (a driver whose last stage before this
+ *  one is not sx_world_separate costs one pass over the moving bodies
+ *  here). Errors:
  *  SX_ERR_INVALID_ARG (NULL), SX_ERR_LOCKED, SX_ERR_NO_MEMORY (the query
  *  scratch could not grow). Without a collide since the last call: SX_OK,
  *  nothing moves. */
@@ -896,6 +911,10 @@ SX_API sx_status sx_world_get_def(const sx_world *world, sx_world_def *out);
 /** Sets the sub-steps of sx_world_step (>= 1; see sx_world_def). Errors,
  *  with the world untouched: SX_ERR_INVALID_ARG (NULL, sub_steps < 1). */
 SX_API sx_status sx_world_set_sub_steps(sx_world *world, int sub_steps);
+
+/** Turns continuous collision on or off (sx_world_def.enable_continuous),
+ *  from the next sx_world_collide on. SX_ERR_INVALID_ARG for NULL. */
+SX_API sx_status sx_world_enable_continuous(sx_world *world, bool enable);
 
 /** Sets the solver's iterations per sub-step: velocity (>= 1) and position
  *  (>= 0; 0 turns sx_world_separate off), as in sx_world_def. Errors, with
