@@ -247,7 +247,7 @@ static void sx_collider_bounds(sx_world *world, int slot) {
     const sx_body_sim *b = &world->sims[c->body];
     sx_xform xf = b->xf;
     sx_aabb u;
-    sx_real half = SX_R(0.5) * world->margin, reach = SX_R(0.0);
+    sx_real half = SX_R(0.5) * world->margin, reach = SX_R(0.0), far;
     if (c->part_count > 0) {
         int k;
         for (k = 0; k < c->part_count; ++k) {
@@ -258,15 +258,24 @@ static void sx_collider_bounds(sx_world *world, int slot) {
     } else {
         u = sx_shape_aabb(&c->shape, xf);
     }
+    /* the farthest point of the bounds from the centre of mass bounds the
+     * lever of the turn */
+    far = sx_length(
+        sx_vmax(sx_vabs(sx_sub(u.lower, b->center)), sx_vabs(sx_sub(u.upper, b->center))));
     if (world->step_dt > SX_R(0.0) && (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0))) {
-        /* the farthest point of the bounds from the centre of mass bounds the
-         * lever of the turn */
-        sx_vec2 far = sx_vmax(sx_vabs(sx_sub(u.lower, b->center)),
-                                sx_vabs(sx_sub(u.upper, b->center)));
-        reach = world->step_dt * (sx_length(b->v) + sx_absr(b->w) * sx_length(far));
+        reach = world->step_dt * (sx_length(b->v) + sx_absr(b->w) * far);
         if (!sx_is_finite(reach)) reach = SX_R(0.0);
     }
     c->reach = reach;
+    c->bound_radius = far;
+    /* a bullet's bounds are not grown by its travel when the continuous
+     * stage sweeps it (against bullets too, both moving): a volley would
+     * otherwise pair each bullet with all the others; its margin keeps the
+     * reach for the pairs its bounds do meet */
+    if (world->bullet_count > 0 && world->def.enable_continuous && b->dynamic &&
+        world->infos[c->body].bullet) {
+        reach = SX_R(0.0);
+    }
     /* where an awake dynamic body starts the step, for the continuous stage
      * (world_ccd.c; sx_ccd_record started the record) */
     if (world->ccd_dt > SX_R(0.0)) {
@@ -610,7 +619,9 @@ static sx_status sx_limit_speeds_marking(sx_world *world, sx_real h, bool mark) 
     return SX_OK;
 }
 
-static void sx_limit_speeds(sx_world *world, sx_real h) { (void)sx_limit_speeds_marking(world, h, false); }
+static void sx_limit_speeds(sx_world *world, sx_real h) {
+    (void)sx_limit_speeds_marking(world, h, false);
+}
 
 /* ---- stage 1: forces ---------------------------------------------------- */
 
@@ -1054,6 +1065,27 @@ static sx_status sx_collide_parts(sx_world *world, uint64_t key, int old_begin, 
     return SX_OK;
 }
 
+/* Whether a pair with a bullet may meet in the step: each collider stays
+ * in a disc of its bound_radius about its body's centre of mass, which
+ * moves straight at its collide-time velocity; the pair gets a contact only
+ * if those discs come within the margin of each other over the step. The
+ * whole travel's margin otherwise pairs every bullet of a volley with the
+ * others flying beside it; the bullet's sweep (world_ccd.c) covers what
+ * the straight motion does not. Other pairs, and a bullet against a static,
+ * kinematic or sleeping collider, keep the whole margin. */
+static bool sx_bullet_pair_may_meet(const sx_world *world, const sx_collider *ca,
+                                    const sx_collider *cb) {
+    const sx_body_sim *a = &world->sims[ca->body], *b = &world->sims[cb->body];
+    if (world->bullet_count == 0 || !world->def.enable_continuous || !a->dynamic || !b->dynamic ||
+        !a->awake || !b->awake ||
+        !(world->infos[ca->body].bullet || world->infos[cb->body].bullet)) {
+        return true;
+    }
+    return sx_paths_meet(a->center, sx_scale(a->v, world->step_dt), b->center,
+                         sx_scale(b->v, world->step_dt),
+                         ca->bound_radius + cb->bound_radius + world->margin);
+}
+
 sx_status sx_world_collide(sx_world *world) {
     sx_contact *swap;
     int i, old_index = 0, cap;
@@ -1107,7 +1139,10 @@ sx_status sx_world_collide(sx_world *world) {
         old_begin = old_index;
         while (old_index < world->old_contact_count && world->old_contacts[old_index].key == key)
             ++old_index;
-        if (ca->body == cb->body || !sx_filters_collide(&ca->filter, &cb->filter)) continue;
+        if (ca->body == cb->body || !sx_filters_collide(&ca->filter, &cb->filter) ||
+            !sx_bullet_pair_may_meet(world, ca, cb)) {
+            continue;
+        }
         if (ca->part_count > 0 || cb->part_count > 0) {
             s = sx_collide_parts(world, key, old_begin, old_index);
             if (s != SX_OK) return s;

@@ -21,8 +21,21 @@
  * v3 sweeps every fast body against static geometry, after the solver, in
  * the same way; sweeping only what the speculative contacts cannot cover
  * keeps slow and ordinary fast bodies free. */
+#include <stdlib.h>
+
 #include "distance.h"
 #include "world_internal.h"
+
+/* A bullet the continuous stage moves (sx_bullets_meet): its motion over
+ * the step, the box of its path (grown by its reach and half the margin),
+ * its first time of impact with another bullet, and whether it is swept. */
+typedef struct sx_ccd_bullet {
+    int slot;
+    bool swept;
+    sx_real lower, upper, max_ext, toi;
+    sx_aabb box;
+    sx_motion m;
+} sx_ccd_bullet;
 
 sx_status sx_ccd_record(sx_world *world) {
     uint32_t stamp = world->ccd_stamp + 1u;
@@ -55,6 +68,7 @@ void sx_ccd_free(sx_world *world) {
     sx_free(world->ccd_poses, (size_t)world->ccd_pose_capacity * sizeof(sx_ccd_pose));
     sx_free(world->ccd_found, (size_t)world->ccd_found_capacity * sizeof(int));
     sx_free(world->ccd_sweep, (size_t)world->ccd_sweep_capacity * sizeof(int));
+    sx_free(world->ccd_bullets, (size_t)world->ccd_bullet_capacity * sizeof(sx_ccd_bullet));
 }
 
 /* The proxy of part k of a collider, in its body's frame. */
@@ -145,13 +159,14 @@ static sx_motion sx_body_still(const sx_world *world, int slot) {
 }
 
 /* The earliest time of impact of body slot's colliders, moving by m, with
- * the colliders of body other (all parts of both), below *t_min. */
+ * collider cj (all parts of both), moving by *other or (NULL) standing at
+ * its final pose, below *t_min. */
 static void sx_sweep_pair(const sx_world *world, int slot, const sx_motion *m, int cj,
-                          sx_real *t_min) {
+                          const sx_motion *other, sx_real *t_min) {
     const sx_collider *oc = &world->colliders[cj];
     /* the others at their final poses: the body is put back along its own
      * path while they stay where the step left them (as Box2D v3 does) */
-    sx_motion mo = sx_body_still(world, oc->body);
+    sx_motion mo = other != NULL ? *other : sx_body_still(world, oc->body);
     int ci, ka, kb;
     for (ci = world->infos[slot].first_collider; ci >= 0; ci = world->colliders[ci].next) {
         const sx_collider *c = &world->colliders[ci];
@@ -181,13 +196,20 @@ static void sx_sweep_pair(const sx_world *world, int slot, const sx_motion *m, i
     }
 }
 
-/* Sweeps body slot along m; puts it at its first time of impact. */
+/* Whether body slot is a bullet the continuous stage moves along its own
+ * path (sx_bullets_meet): awake and dynamic since collide. */
+static bool sx_moving_bullet(const sx_world *world, int slot) {
+    return world->infos[slot].bullet && world->sims[slot].dynamic &&
+           slot < world->ccd_pose_capacity && world->ccd_poses[slot].stamp == world->ccd_stamp;
+}
+
+/* Sweeps body slot along m; puts it at its first time of impact (t, or
+ * earlier). */
 static sx_status sx_sweep_body(sx_world *world, int slot, const sx_motion *m, sx_real max_ext,
-                               bool bullet) {
+                               bool bullet, sx_real t) {
     sx_body_sim *b = &world->sims[slot];
     sx_aabb box = sx_aabb_fatten(sx_aabb_make(sx_vmin(m->c0, m->c1), sx_vmax(m->c0, m->c1)),
                                  max_ext + world->margin);
-    sx_real t = SX_R(1.0);
     int i;
     sx_status s;
     world->ccd_found_count = 0;
@@ -207,6 +229,8 @@ static sx_status sx_sweep_body(sx_world *world, int slot, const sx_motion *m, sx
         const sx_body_sim *o = &world->sims[oc->body];
         if (oc->body == slot || !oc->alive || oc->sensor) continue;
         if (o->dynamic && !bullet) continue;
+        /* bullets against bullets: sx_bullets_meet, both moving */
+        if (bullet && sx_moving_bullet(world, oc->body)) continue;
         /* the broadphase holds a moving collider's bounds grown by its
          * reach; the sweep meets it where it ended */
         if (o->moving) {
@@ -219,7 +243,7 @@ static sx_status sx_sweep_body(sx_world *world, int slot, const sx_motion *m, sx
                 continue;
             }
         }
-        sx_sweep_pair(world, slot, m, cj, &t);
+        sx_sweep_pair(world, slot, m, cj, NULL, &t);
     }
     if (t < SX_R(1.0)) {
         sx_vec2 back = sx_lerp(m->c0, m->c1, t);
@@ -268,15 +292,103 @@ static bool sx_needs_sweep(sx_world *world, int slot) {
      * under a quarter turn is at most pi/2 times its sine: the arc tangent
      * only when that bound does not settle it */
     if (dq.c >= SX_R(0.0) && sx_absr(b->w * world->ccd_dt) < SX_R(0.5) * SX_PI) {
-        sx_real s = sx_absr(dq.s), bound = s > SX_R(0.25) * SX_ANGULAR_SLOP ? SX_R(0.5) * SX_PI * s : s;
+        sx_real s = sx_absr(dq.s),
+                bound = s > SX_R(0.25) * SX_ANGULAR_SLOP ? SX_R(0.5) * SX_PI * s : s;
         if (!(bound * max_ext + path > thin)) return false;
         if (bound == s) return true;
     }
     return sx_absr(sx_turn(b, p, world->ccd_dt)) * max_ext + path > thin;
 }
 
+bool sx_paths_meet(sx_vec2 a0, sx_vec2 da, sx_vec2 b0, sx_vec2 db, sx_real r) {
+    sx_vec2 p = sx_sub(b0, a0), u = sx_sub(db, da);
+    sx_real uu = sx_dot(u, u), t = SX_R(0.0);
+    if (uu > SX_R(0.0)) t = sx_clampr(-sx_dot(p, u) / uu, SX_R(0.0), SX_R(1.0));
+    /* NaN answers true: the exact test decides */
+    return !(sx_length_sq(sx_mul_add(p, t, u)) > r * r);
+}
+
+static int sx_bullet_cmp(const void *pa, const void *pb) {
+    const sx_ccd_bullet *a = (const sx_ccd_bullet *)pa, *b = (const sx_ccd_bullet *)pb;
+    if (a->lower != b->lower) return a->lower < b->lower ? -1 : 1;
+    return (a->slot > b->slot) - (a->slot < b->slot);
+}
+
+/* Bullets against bullets, both moving along their paths of the step: a
+ * bullet's bounds in the broadphase are not grown by its travel (a volley
+ * would pair each bullet with all the others), so two bullets that meet
+ * within the step have no contact, and sweeping one against where the
+ * other ended would let them pass through each other. The moving bullets'
+ * path boxes are swept and pruned along the axis they crowd least; each
+ * pair whose bounding discs come within the margin along the two straight
+ * paths gets its time of impact, and both keep their earliest. Fills
+ * world->ccd_bullets, sorted; returns how many, or -1 out of memory. */
+static int sx_bullets_meet(sx_world *world) {
+    sx_ccd_bullet *list;
+    sx_real width[2] = {SX_R(0.0), SX_R(0.0)}, lo[2] = {SX_REAL_MAX, SX_REAL_MAX},
+            hi[2] = {-SX_REAL_MAX, -SX_REAL_MAX};
+    int k, i, j, n = 0, axis;
+    for (k = 0; k < world->active_body_count; ++k) {
+        int slot = world->active_bodies[k];
+        sx_ccd_bullet *e;
+        sx_real min_ext;
+        sx_vec2 mid;
+        if (!sx_moving_bullet(world, slot)) continue;
+        if (!sx_grow_zeroed((void **)&world->ccd_bullets, &world->ccd_bullet_capacity, n + 1,
+                            sizeof(sx_ccd_bullet))) {
+            return -1;
+        }
+        e = &world->ccd_bullets[n++];
+        e->slot = slot;
+        e->swept = world->ccd_poses[slot].swept;
+        sx_body_extents(world, slot, &e->max_ext, &min_ext);
+        e->m = sx_body_motion(world, slot);
+        e->toi = SX_R(1.0);
+        e->box = sx_aabb_fatten(sx_aabb_make(sx_vmin(e->m.c0, e->m.c1), sx_vmax(e->m.c0, e->m.c1)),
+                                e->max_ext + SX_R(0.5) * world->margin);
+        mid = sx_scale(sx_add(e->box.lower, e->box.upper), SX_R(0.5));
+        width[0] += e->box.upper.x - e->box.lower.x;
+        width[1] += e->box.upper.y - e->box.lower.y;
+        lo[0] = sx_minr(lo[0], mid.x);
+        lo[1] = sx_minr(lo[1], mid.y);
+        hi[0] = sx_maxr(hi[0], mid.x);
+        hi[1] = sx_maxr(hi[1], mid.y);
+    }
+    if (n < 2) return n;
+    list = world->ccd_bullets;
+    /* the axis on which the boxes overlap least: their total width against
+     * the spread of their middles */
+    axis = width[1] * (hi[0] - lo[0]) < width[0] * (hi[1] - lo[1]) ? 1 : 0;
+    for (i = 0; i < n; ++i) {
+        list[i].lower = axis == 0 ? list[i].box.lower.x : list[i].box.lower.y;
+        list[i].upper = axis == 0 ? list[i].box.upper.x : list[i].box.upper.y;
+    }
+    qsort(list, (size_t)n, sizeof(sx_ccd_bullet), sx_bullet_cmp);
+    for (i = 0; i < n; ++i) {
+        sx_ccd_bullet *a = &list[i];
+        for (j = i + 1; j < n && list[j].lower <= a->upper; ++j) {
+            sx_ccd_bullet *b = &list[j];
+            sx_real t = SX_R(1.0);
+            int cj;
+            if ((!a->swept && !b->swept) || !sx_aabb_overlaps(a->box, b->box)) continue;
+            if (!sx_paths_meet(a->m.c0, sx_sub(a->m.c1, a->m.c0), b->m.c0, sx_sub(b->m.c1, b->m.c0),
+                               a->max_ext + b->max_ext + world->margin)) {
+                continue;
+            }
+            for (cj = world->infos[b->slot].first_collider; cj >= 0;
+                 cj = world->colliders[cj].next) {
+                if (world->colliders[cj].alive && !world->colliders[cj].sensor)
+                    sx_sweep_pair(world, a->slot, &a->m, cj, &b->m, &t);
+            }
+            a->toi = sx_minr(a->toi, t);
+            b->toi = sx_minr(b->toi, t);
+        }
+    }
+    return n;
+}
+
 sx_status sx_world_continuous(sx_world *world) {
-    int pass, k, n;
+    int k, n;
     sx_status s;
     if (world == NULL) return SX_ERR_INVALID_ARG;
     if (sx_world_locked(world)) return SX_ERR_LOCKED;
@@ -297,22 +409,34 @@ sx_status sx_world_continuous(sx_world *world) {
         /* a body may have changed since it was listed */
         if (world->ccd_poses[slot].stamp == world->ccd_stamp && world->sims[slot].dynamic &&
             sx_needs_sweep(world, slot)) {
+            world->ccd_poses[slot].swept = true;
             world->ccd_sweep[n++] = slot;
         }
     }
     world->ccd_sweep_count = n;
-    for (pass = 0; pass < (world->bullet_count > 0 ? 2 : 1); ++pass) {
-        for (k = 0; k < world->ccd_sweep_count; ++k) {
-            int slot = world->ccd_sweep[k];
-            sx_motion m;
-            sx_real max_ext, min_ext;
-            if (world->bullet_count > 0 && world->infos[slot].bullet != (pass == 1)) continue;
-            sx_body_extents(world, slot, &max_ext, &min_ext);
-            m = sx_body_motion(world, slot);
-            s = sx_sweep_body(world, slot, &m, max_ext, pass == 1);
-            if (s != SX_OK) return s;
+    s = SX_OK;
+    for (k = 0; k < world->ccd_sweep_count && s == SX_OK; ++k) {
+        int slot = world->ccd_sweep[k];
+        sx_motion m;
+        sx_real max_ext, min_ext;
+        if (world->bullet_count > 0 && world->infos[slot].bullet) continue;
+        sx_body_extents(world, slot, &max_ext, &min_ext);
+        m = sx_body_motion(world, slot);
+        s = sx_sweep_body(world, slot, &m, max_ext, false, SX_R(1.0));
+    }
+    /* the bullets last: against each other, both moving, then against the
+     * others where the step (and the sweeps above) left them */
+    if (s == SX_OK && world->bullet_count > 0) {
+        n = sx_bullets_meet(world);
+        if (n < 0) s = SX_ERR_NO_MEMORY;
+        for (k = 0; k < n && s == SX_OK; ++k) {
+            const sx_ccd_bullet *e = &world->ccd_bullets[k];
+            if (e->swept) s = sx_sweep_body(world, e->slot, &e->m, e->max_ext, true, e->toi);
         }
     }
+    for (k = 0; k < world->ccd_sweep_count; ++k)
+        world->ccd_poses[world->ccd_sweep[k]].swept = false;
+    if (s != SX_OK) return s;
     world->ccd_sweep_count = 0;
     /* once per collide */
     world->ccd_dt = SX_R(0.0);

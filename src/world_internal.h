@@ -86,6 +86,9 @@ typedef struct sx_collider {
      * margin grow by this, so a fast body meets in the step's collide what
      * it will reach before the next one */
     sx_real reach;
+    /* a radius about its body's centre of mass that holds it at any angle
+     * (set with reach, for the colliders the step moves) */
+    sx_real bound_radius;
     int next;      /* next collider of the same body, -1 at the end */
     int next_free; /* free-list link while dead */
     void *user_data;
@@ -304,6 +307,7 @@ typedef struct sx_ccd_pose {
      * kept until its colliders or mass change (ext_valid) */
     sx_real max_ext, min_ext;
     bool ext_valid;
+    bool swept; /* while the continuous stage runs: it is to be swept */
 } sx_ccd_pose;
 
 struct sx_world {
@@ -390,13 +394,15 @@ struct sx_world {
     uint32_t ccd_stamp;
     sx_real ccd_dt; /* the step the recorded poses start (0: none) */
     int ccd_kinematic_moving; /* a kinematic body moves this step (sx_ccd_record) */
-    int *ccd_sweep; /* the bodies that may need the sweep this step */
+    int *ccd_sweep;           /* the bodies that may need the sweep this step */
     int ccd_sweep_count, ccd_sweep_capacity;
     sx_real ccd_elapsed; /* sub-step time separated since the record */
     bool ccd_marked;     /* ccd_sweep holds the bodies as they end the step */
     int bullet_count; /* live bodies with the bullet flag (body.c, world_ccd.c) */
     int *ccd_found;
     int ccd_found_count, ccd_found_capacity;
+    struct sx_ccd_bullet *ccd_bullets; /* the moving bullets (world_ccd.c) */
+    int ccd_bullet_capacity;
 
     sx_contact_event *begin_events, *end_events;
     int begin_count, begin_capacity, end_count, end_capacity;
@@ -539,6 +545,10 @@ void sx_ccd_free(sx_world *world);
 /* Forgets body slot's cached extents and pose (its colliders or mass
  * changed, or it was just created). */
 void sx_ccd_forget(sx_world *world, int slot);
+
+/* Whether two points moving straight from a0 by da and from b0 by db over
+ * a step come within r of each other (the closest approach; NaN: true). */
+bool sx_paths_meet(sx_vec2 a0, sx_vec2 da, sx_vec2 b0, sx_vec2 db, sx_real r);
 
 /* world.c: lists in ccd_sweep the bodies that may need the sweep (the
  * continuous pass's fallback when the step's last sx_world_separate did not

@@ -54,7 +54,10 @@
  * collider (past the middle of a thin one, to be pushed out on the far
  * side): the continuous stage (sx_world_continuous, on by default:
  * sx_world_def.enable_continuous) sweeps such bodies back to their time of
- * impact.
+ * impact. A bullet relies on that sweep as Box2D v3's do: its bounds are
+ * not grown by its travel, and its contacts with other awake dynamic
+ * bodies are made only where the two motions bring them within the margin,
+ * so a volley of bullets does not pair each with its neighbours.
  *
  * Sleeping: islands of touching bodies that stay slow fall asleep and cost
  * no solver work until something touches or pushes them. Around the step: contact begin/end events,
@@ -226,10 +229,13 @@ typedef struct sx_world_def {
     bool enable_contact_events;
     /** Continuous collision (sx_world_continuous, as Box2D v3's
      *  enableContinuous): fast dynamic bodies are swept against static and
-     *  kinematic colliders, bullets against dynamic ones too. false: no sweep at all (bullets included) and no record of poses at
-     *  collide; fast bodies then have only their speculative contacts,
-     *  grown by their whole step's travel (see "Fast bodies" above).
-     *  Default true. */
+     *  kinematic colliders, bullets against dynamic ones too; a bullet's
+     *  bounds are then not grown by its travel, and its contacts with other
+     *  awake dynamic bodies are made only where their motions over the step
+     *  bring them within the margin. false: no sweep at all (bullets
+     *  included) and no record of poses at collide; every fast body, bullets
+     *  included, then has only its speculative contacts, grown by its whole
+     *  step's travel (see "Fast bodies" above). Default true. */
     bool enable_continuous;
 } sx_world_def;
 
@@ -330,10 +336,14 @@ SX_API sx_status sx_world_collide(sx_world *world);
  *  within the target of a collider is left to its contact until it gets a
  *  quarter slop deeper than it started (a fast turn pressed into a contact
  *  can sink that much a step); shapes whose cores already touch are left to
- *  the contact. Two fast dynamic bodies that are not bullets are not swept
- *  against each other (their speculative contacts hold them while each
- *  keeps to its straight path), and a body put back may overlap another
- *  dynamic body until the next step separates them. A body whose colliders
+ *  the contact. Bullets meet each other with both moving: the bullets'
+ *  paths are swept and pruned, each pair whose bounding discs come within
+ *  the margin along their straight paths gets its time of impact, and both
+ *  are put back to their earliest (then each is swept against the others
+ *  at their final poses). Two fast dynamic bodies that are not bullets are
+ *  not swept against each other (their speculative contacts hold them
+ *  while each keeps to its straight path), and a body put back may overlap
+ *  another dynamic body until the next step separates them. A body whose colliders
  *  or mass change between sx_world_collide and this stage is not swept.
  *  Cost: the step's last sx_world_separate, in the pass over the bodies it
  *  makes anyway, lists those that strayed from their foreseen path by half
