@@ -252,6 +252,7 @@ static void wld_create_body(fz_reader *r, wld_state *s) {
     sx_status st;
     bool finite, sane;
     bd.type = (sx_body_type)(t % 4u); /* 3 is not a type */
+    bd.bullet = (t & 4u) != 0;
     bd.position = wld_vec(r, 20.0);
     if (flags & 1u) bd.angle = wld_real(r, 4.0);
     if (flags & 2u) bd.linear_velocity = wld_vec(r, 20.0);
@@ -263,11 +264,12 @@ static void wld_create_body(fz_reader *r, wld_state *s) {
     bd.enabled = (flags & 128u) == 0 || fz_u8(r) % 2u;
     st = sx_create_body(s->w, &bd, &id);
     WLD_LOG("create body type %d p (%g, %g) angle %g v (%g, %g) w %g damp %g %g gs %g fixed %d "
-            "enabled %d -> %d (%u:%u)\n",
+            "enabled %d bullet %d -> %d (%u:%u)\n",
             (int)bd.type, (double)bd.position.x, (double)bd.position.y, (double)bd.angle,
             (double)bd.linear_velocity.x, (double)bd.linear_velocity.y, (double)bd.angular_velocity,
             (double)bd.linear_damping, (double)bd.angular_damping, (double)bd.gravity_scale,
-            (int)bd.fixed_rotation, (int)bd.enabled, (int)st, id.index, id.generation);
+            (int)bd.fixed_rotation, (int)bd.enabled, (int)bd.bullet, (int)st, id.index,
+            id.generation);
     FZ_CHECK(fz_status_known(st));
     finite = sx_vec2_is_finite(bd.position) && sx_is_finite(bd.angle) &&
              sx_vec2_is_finite(bd.linear_velocity) && sx_is_finite(bd.angular_velocity) &&
@@ -496,6 +498,14 @@ static void wld_step(fz_reader *r, wld_state *s) {
         st = sx_world_collide(s->w);
         FZ_CHECK(st == SX_OK);
         return;
+    case 6:
+        if (k & 32u) {
+            st = sx_world_continuous(s->w);
+            FZ_CHECK(st == SX_OK);
+            return;
+        }
+        st = sx_world_step(s->w, dt);
+        break;
     default: st = sx_world_step(s->w, dt); break;
     }
     FZ_CHECK(fz_status_known(st));
@@ -626,6 +636,7 @@ static sx_world *wld_create(fz_reader *r, bool *sane) {
         if (flags & 4u) d.time_to_sleep = wld_real(r, 1.0);
         if (flags & 8u) d.sleep_linear_speed = wld_real(r, 0.5);
         if (flags & 16u) d.body_capacity = (int)fz_u8(r) - 8;
+        d.enable_continuous = (flags & 32u) == 0;
     }
     valid = sx_vec2_is_finite(d.gravity) && d.sub_steps >= 1 && d.velocity_iterations >= 1 &&
             d.position_iterations >= 0 && sx_is_finite(d.correction_factor) &&
@@ -638,11 +649,12 @@ static sx_world *wld_create(fz_reader *r, bool *sane) {
             d.sleep_linear_speed >= SX_R(0.0) && sx_is_finite(d.time_to_sleep) &&
             d.time_to_sleep > SX_R(0.0);
     w = sx_world_create(&d);
-    WLD_LOG("world gravity (%g, %g) sub %d vel %d pos %d cf %g mcs %g rt %g ss %g lu %g sleep %d\n",
+    WLD_LOG("world gravity (%g, %g) sub %d vel %d pos %d cf %g mcs %g rt %g ss %g lu %g sleep %d "
+            "continuous %d\n",
             (double)d.gravity.x, (double)d.gravity.y, d.sub_steps, d.velocity_iterations,
             d.position_iterations, (double)d.correction_factor, (double)d.max_correction_speed,
             (double)d.restitution_threshold, (double)d.speculative_slops,
-            (double)d.length_units_per_meter, (int)d.enable_sleep);
+            (double)d.length_units_per_meter, (int)d.enable_sleep, (int)d.enable_continuous);
     FZ_CHECK((w != NULL) == valid);
     *sane = wld_vin(d.gravity, 100.0) && d.max_correction_speed <= SX_R(100.0) &&
             d.speculative_slops <= SX_R(100.0) && d.length_units_per_meter >= SX_R(0.1) &&

@@ -276,25 +276,29 @@ static void sx_collider_bounds(sx_world *world, int slot) {
         world->infos[c->body].bullet) {
         reach = SX_R(0.0);
     }
-    /* where an awake dynamic body starts the step, for the continuous stage
-     * (world_ccd.c; sx_ccd_record started the record) */
-    if (world->ccd_dt > SX_R(0.0)) {
-        if (b->dynamic && b->awake) {
-            sx_ccd_pose *p = &world->ccd_poses[c->body];
-            p->center = b->center;
-            p->q = b->xf.q;
-            p->end = sx_mul_add(b->center, world->step_dt, b->v);
-            p->stamp = world->ccd_stamp;
-        } else if (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0)) {
-            world->ccd_kinematic_moving = 1;
-        }
-    }
     if (c->part_count > 0) {
         int k;
         for (k = 0; k < c->part_count; ++k)
             c->part_boxes[k] = sx_aabb_fatten(c->part_boxes[k], half + reach);
     }
     world->aabbs[slot] = sx_aabb_fatten(u, half + reach);
+}
+
+/* Where the body of moving collider i starts the step, for the continuous
+ * stage (world_ccd.c; sx_ccd_record started the record and sized it for
+ * every body slot): collide's bounds pass, which reads the same body. */
+static void sx_ccd_note(sx_world *world, int i) {
+    int body = world->colliders[i].body;
+    const sx_body_sim *b = &world->sims[body];
+    if (b->dynamic && b->awake) {
+        sx_ccd_pose *p = &world->ccd_poses[body];
+        p->center = b->center;
+        p->q = b->xf.q;
+        p->end = sx_mul_add(b->center, world->step_dt, b->v);
+        p->stamp = world->ccd_stamp;
+    } else if (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0)) {
+        world->ccd_kinematic_moving = 1;
+    }
 }
 
 /* Brings collider i's broadphase kind up to date with its body; *kind
@@ -564,8 +568,11 @@ static sx_ccd_test sx_ccd_test_make(const sx_world *world) {
 
 static inline bool sx_ccd_may_need_sweep(const sx_world *world, const sx_ccd_test *t, int slot,
                                          const sx_body_sim *b) {
-    const sx_ccd_pose *p = &world->ccd_poses[slot];
+    const sx_ccd_pose *p;
     sx_real dx, dy, s, c;
+    /* a body created since collide may have no pose */
+    if (slot >= world->ccd_pose_capacity) return false;
+    p = &world->ccd_poses[slot];
     if (p->stamp != t->stamp || !b->dynamic) return false;
     dx = b->center.x - p->end.x;
     dy = b->center.y - p->end.y;
@@ -582,8 +589,7 @@ sx_status sx_ccd_mark(sx_world *world) {
     world->ccd_sweep_count = 0;
     for (k = 0; k < world->active_body_count; ++k) {
         int slot = world->active_bodies[k];
-        if (slot < world->ccd_pose_capacity &&
-            sx_ccd_may_need_sweep(world, &t, slot, &world->sims[slot]) &&
+        if (sx_ccd_may_need_sweep(world, &t, slot, &world->sims[slot]) &&
             !sx_push_int(&world->ccd_sweep, &world->ccd_sweep_count, &world->ccd_sweep_capacity,
                          slot)) {
             return SX_ERR_NO_MEMORY;
@@ -1102,8 +1108,10 @@ sx_status sx_world_collide(sx_world *world) {
     if (s != SX_OK) return s;
     /* the bounds of the colliders the step moves (and their bodies' poses
      * for the continuous stage) */
-    for (i = 0; i < world->active_collider_count; ++i)
+    for (i = 0; i < world->active_collider_count; ++i) {
         sx_collider_bounds(world, world->active_colliders[i]);
+        if (world->ccd_dt > SX_R(0.0)) sx_ccd_note(world, world->active_colliders[i]);
+    }
     s = sx_broadphase_update(&world->bp, world->aabbs, world->bp_kind, world->collider_slots,
                              world->active_colliders, world->active_collider_count,
                              SX_FAT_SLOPS * world->linear_slop);

@@ -513,6 +513,30 @@ static void continuous_collision_turns_off_and_on(void **state) {
     }
 }
 
+/* A collide of an empty world, then a body created and the rest of the
+ * step's stages run by hand: the body had no pose at collide, so it is not
+ * swept, and nothing writes a pose it has no room for (the bounds the
+ * next stage finds for it once wrote one through a null pointer). */
+static void a_body_created_between_collide_and_the_sub_steps_is_not_recorded(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_real h = SX_R(1.0) / SX_R(60.0);
+    sx_body_id b;
+    (void)state;
+    assert_int_equal(sx_world_begin_step(w, h), SX_OK);
+    assert_int_equal(sx_world_collide(w), SX_OK);
+    b = add(w, SX_BODY_DYNAMIC, sx_v2(SX_R(4.5), SX_R(4.5)), 0.0,
+            sx_box_shape(SX_R(0.5), SX_R(0.5)), sx_v2(SX_R(300.0), SX_R(0.0)), 0.0, false);
+    assert_int_equal(sx_world_apply_forces(w, h), SX_OK);
+    assert_int_equal(sx_world_solve(w, h), SX_OK);
+    assert_int_equal(sx_world_integrate(w, h), SX_OK);
+    assert_int_equal(sx_world_separate(w, h), SX_OK);
+    assert_int_equal(sx_world_continuous(w), SX_OK);
+    /* it moved a whole step unswept: 300 m/s x 1/60 s */
+    assert_near(sx_body_get_position(w, b).x, 4.5 + 5.0, 1e-3);
+    assert_int_equal(sx_world_step(w, h), SX_OK);
+    sx_world_destroy(w);
+}
+
 /* A 1 m rod 4 cm thick spinning at 100-200 rad/s while it flies at 30 m/s
  * at a static wall 5 cm thick: its ends sweep far more than its thickness
  * each step, yet it never ends across the wall. */
@@ -578,6 +602,7 @@ int main(void) {
         cmocka_unit_test(knocked_body_stops_at_a_thin_wall),
         cmocka_unit_test(spinning_rod_never_crosses_a_thin_wall),
         cmocka_unit_test(continuous_collision_turns_off_and_on),
+        cmocka_unit_test(a_body_created_between_collide_and_the_sub_steps_is_not_recorded),
         cmocka_unit_test(bullet_flag_round_trips_and_answers_stale_handles),
     };
     return cmocka_run_group_tests_name("ccd", tests, sx_test_group_setup, sx_test_group_teardown);
