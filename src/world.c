@@ -282,22 +282,20 @@ static void sx_collider_bounds(sx_world *world, int slot) {
             c->part_boxes[k] = sx_aabb_fatten(c->part_boxes[k], half + reach);
     }
     world->aabbs[slot] = sx_aabb_fatten(u, half + reach);
-}
-
-/* Where the body of moving collider i starts the step, for the continuous
- * stage (world_ccd.c; sx_ccd_record started the record and sized it for
- * every body slot): collide's bounds pass, which reads the same body. */
-static void sx_ccd_note(sx_world *world, int i) {
-    int body = world->colliders[i].body;
-    const sx_body_sim *b = &world->sims[body];
-    if (b->dynamic && b->awake) {
-        sx_ccd_pose *p = &world->ccd_poses[body];
-        p->center = b->center;
-        p->q = b->xf.q;
-        p->end = sx_mul_add(b->center, world->step_dt, b->v);
-        p->stamp = world->ccd_stamp;
-    } else if (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0)) {
-        world->ccd_kinematic_moving = 1;
+    /* in collide's bounds pass (which reads this body already): where an
+     * awake dynamic body starts the step, for the continuous stage
+     * (world_ccd.c; sx_ccd_record started the record and sized it for
+     * every body slot); never from the bounds a later stage finds */
+    if (world->ccd_recording) {
+        if (b->dynamic && b->awake) {
+            sx_ccd_pose *p = &world->ccd_poses[c->body];
+            p->center = b->center;
+            p->q = b->xf.q;
+            p->end = sx_mul_add(b->center, world->step_dt, b->v);
+            p->stamp = world->ccd_stamp;
+        } else if (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0)) {
+            world->ccd_kinematic_moving = 1;
+        }
     }
 }
 
@@ -1108,10 +1106,10 @@ sx_status sx_world_collide(sx_world *world) {
     if (s != SX_OK) return s;
     /* the bounds of the colliders the step moves (and their bodies' poses
      * for the continuous stage) */
-    for (i = 0; i < world->active_collider_count; ++i) {
+    world->ccd_recording = world->ccd_dt > SX_R(0.0);
+    for (i = 0; i < world->active_collider_count; ++i)
         sx_collider_bounds(world, world->active_colliders[i]);
-        if (world->ccd_dt > SX_R(0.0)) sx_ccd_note(world, world->active_colliders[i]);
-    }
+    world->ccd_recording = false;
     s = sx_broadphase_update(&world->bp, world->aabbs, world->bp_kind, world->collider_slots,
                              world->active_colliders, world->active_collider_count,
                              SX_FAT_SLOPS * world->linear_slop);

@@ -398,6 +398,7 @@ struct sx_world {
     int ccd_sweep_count, ccd_sweep_capacity;
     sx_real ccd_elapsed; /* sub-step time separated since the record */
     bool ccd_marked;     /* ccd_sweep holds the bodies as they end the step */
+    bool ccd_recording;  /* collide's bounds pass records the poses */
     int bullet_count; /* live bodies with the bullet flag (body.c, world_ccd.c) */
     int *ccd_found;
     int ccd_found_count, ccd_found_capacity;

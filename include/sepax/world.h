@@ -563,7 +563,12 @@ typedef struct sx_body_def {
     bool enable_sleep;
     /** A fast body that must not pass through other dynamic bodies either
      *  (a projectile): continuous collision sweeps it against dynamic bodies
-     *  as well as static and kinematic ones (see sx_world_continuous).
+     *  as well as static and kinematic ones, and against other bullets with
+     *  both moving (see sx_world_continuous). It then relies on that sweep:
+     *  its bounds are not grown by its travel, and it pairs with another
+     *  awake dynamic body only where their motions over the step bring
+     *  them within the margin, so many bullets flying together cost little
+     *  (with sx_world_def.enable_continuous off it keeps the grown bounds).
      *  Default false. */
     bool bullet;
     void *user_data; /**< returned by sx_body_get_user_data; default NULL */
