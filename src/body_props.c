@@ -8,7 +8,11 @@
  * (material, filter, mass) wakes the body, so a sleeping island never keeps
  * a value the game replaced; contacts rebuild their mixed friction and
  * restitution at every collide, so nothing else is cached. */
+#include "world_body.h"
+#include "world_contact.h"
 #include "world_internal.h"
+#include "world_island.h"
+#include "world_sensor.h"
 
 /* ---- world settings ------------------------------------------------------- */
 

@@ -1,6 +1,6 @@
 /* sepax — the broadphase: which collider pairs are worth a narrowphase call.
  *
- * Two sets (world_internal.h has the layout). The fixed and sleeping
+ * Two sets (world_broadphase.h has the layout). The fixed and sleeping
  * colliders sit in an array sorted by lower x, searched from the first box
  * that could reach a query (binary search, bounded by the widest narrow
  * box), plus the short list of wide boxes (over 8 times the median width:
@@ -34,7 +34,10 @@
  * meeting a sleeping one, which must wake it. */
 #include <stdlib.h>
 
-#include "world_internal.h"
+#include <string.h>
+
+#include "world_array.h"
+#include "world_broadphase.h"
 
 void sx_broadphase_init(sx_broadphase *bp) {
     memset(bp, 0, sizeof(*bp));

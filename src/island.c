@@ -10,7 +10,11 @@
  * sliding. A sleeping body remembers its island's root, which is how waking
  * one body wakes the island: a falling box that lands on a sleeping pile
  * wakes the whole pile, not just the box it hit. */
+#include "world_array.h"
+#include "world_body.h"
+#include "world_contact.h"
 #include "world_internal.h"
+#include "world_island.h"
 
 static int sx_find(int *parent, int i) {
     while (parent[i] != i) {

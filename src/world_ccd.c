@@ -19,6 +19,10 @@
  * the same way; sweeping only what the speculative contacts cannot cover
  * keeps slow and ordinary fast bodies free. */
 #include "distance.h"
+#include "world_array.h"
+#include "world_body.h"
+#include "world_broadphase.h"
+#include "world_ccd.h"
 #include "world_internal.h"
 
 sx_status sx_ccd_record(sx_world *world) {
