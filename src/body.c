@@ -55,6 +55,17 @@ int sx_body_slot(const sx_world *world, sx_body_id id) {
     return (int)id.index;
 }
 
+int sx_body_slot_checked(const sx_world *world, sx_body_id id, sx_status *status) {
+    int slot;
+    if (world == NULL) {
+        *status = SX_ERR_INVALID_ARG;
+        return -1;
+    }
+    slot = sx_body_slot(world, id);
+    *status = slot < 0 ? SX_ERR_STALE_HANDLE : SX_OK;
+    return slot;
+}
+
 int sx_collider_slot(const sx_world *world, sx_collider_id id) {
     const sx_collider *c;
     if (world == NULL || id.generation == 0 || id.index >= (uint32_t)world->collider_slots) {
@@ -682,9 +693,9 @@ bool sx_body_is_awake(const sx_world *world, sx_body_id body) {
 sx_status sx_body_set_awake(sx_world *world, sx_body_id body, bool awake) {
     int slot;
     sx_body_sim *sim;
-    if (world == NULL) return SX_ERR_INVALID_ARG;
-    slot = sx_body_slot(world, body);
-    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    sx_status s;
+    slot = sx_body_slot_checked(world, body, &s);
+    if (slot < 0) return s;
     sim = &world->sims[slot];
     if (!sim->dynamic) return SX_OK;
     if (awake) {
@@ -701,9 +712,9 @@ sx_status sx_body_set_awake(sx_world *world, sx_body_id body, bool awake) {
 
 sx_status sx_body_set_sleep_enabled(sx_world *world, sx_body_id body, bool enable) {
     int slot;
-    if (world == NULL) return SX_ERR_INVALID_ARG;
-    slot = sx_body_slot(world, body);
-    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    sx_status s;
+    slot = sx_body_slot_checked(world, body, &s);
+    if (slot < 0) return s;
     world->infos[slot].enable_sleep = enable;
     if (!enable) sx_wake_body(world, slot);
     return SX_OK;
@@ -719,9 +730,9 @@ bool sx_body_is_sleep_enabled(const sx_world *world, sx_body_id body) {
 sx_status sx_body_set_transform(sx_world *world, sx_body_id body, sx_vec2 position, sx_real angle) {
     int slot, c;
     sx_body_sim *sim;
-    if (world == NULL) return SX_ERR_INVALID_ARG;
-    slot = sx_body_slot(world, body);
-    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    sx_status s;
+    slot = sx_body_slot_checked(world, body, &s);
+    if (slot < 0) return s;
     if (!sx_vec2_is_finite(position) || !sx_is_finite(angle)) return SX_ERR_NONFINITE;
     sim = &world->sims[slot];
     sx_wake_touching(world, slot);
@@ -735,9 +746,9 @@ sx_status sx_body_set_transform(sx_world *world, sx_body_id body, sx_vec2 positi
 
 sx_status sx_body_set_linear_velocity(sx_world *world, sx_body_id body, sx_vec2 v) {
     int slot;
-    if (world == NULL) return SX_ERR_INVALID_ARG;
-    slot = sx_body_slot(world, body);
-    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    sx_status s;
+    slot = sx_body_slot_checked(world, body, &s);
+    if (slot < 0) return s;
     if (!sx_vec2_is_finite(v)) return SX_ERR_NONFINITE;
     if (world->infos[slot].type != SX_BODY_STATIC) {
         sx_wake_body(world, slot);
@@ -750,9 +761,9 @@ sx_status sx_body_set_linear_velocity(sx_world *world, sx_body_id body, sx_vec2 
 sx_status sx_body_set_angular_velocity(sx_world *world, sx_body_id body, sx_real w) {
     int slot;
     const sx_body_info *info;
-    if (world == NULL) return SX_ERR_INVALID_ARG;
-    slot = sx_body_slot(world, body);
-    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    sx_status s;
+    slot = sx_body_slot_checked(world, body, &s);
+    if (slot < 0) return s;
     if (!sx_is_finite(w)) return SX_ERR_NONFINITE;
     info = &world->infos[slot];
     if (info->type == SX_BODY_KINEMATIC ||
@@ -766,9 +777,9 @@ sx_status sx_body_set_angular_velocity(sx_world *world, sx_body_id body, sx_real
 
 sx_status sx_body_set_type(sx_world *world, sx_body_id body, sx_body_type type) {
     int slot;
-    if (world == NULL) return SX_ERR_INVALID_ARG;
-    slot = sx_body_slot(world, body);
-    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    sx_status s;
+    slot = sx_body_slot_checked(world, body, &s);
+    if (slot < 0) return s;
     if (type != SX_BODY_STATIC && type != SX_BODY_KINEMATIC && type != SX_BODY_DYNAMIC) {
         return SX_ERR_INVALID_ARG;
     }
@@ -783,17 +794,8 @@ sx_status sx_body_set_type(sx_world *world, sx_body_id body, sx_body_type type) 
 /* The simulated state of a body that accepts forces, or NULL (static,
  * kinematic or disabled: they ignore forces). *status gets the answer. */
 static sx_body_sim *sx_force_target(sx_world *world, sx_body_id body, sx_status *status) {
-    int slot;
-    if (world == NULL) {
-        *status = SX_ERR_INVALID_ARG;
-        return NULL;
-    }
-    slot = sx_body_slot(world, body);
-    if (slot < 0) {
-        *status = SX_ERR_STALE_HANDLE;
-        return NULL;
-    }
-    *status = SX_OK;
+    int slot = sx_body_slot_checked(world, body, status);
+    if (slot < 0) return NULL;
     if (world->infos[slot].type != SX_BODY_DYNAMIC) return NULL;
     sx_wake_body(world, slot);
     return &world->sims[slot];
@@ -821,54 +823,46 @@ static sx_status sx_accumulate(sx_body_sim *sim, sx_vec2 linear, sx_real angular
     return SX_OK;
 }
 
-sx_status sx_body_apply_force(sx_world *world, sx_body_id body, sx_vec2 force) {
+/* A force (impulse false) or an impulse: `linear` through the centre of
+ * mass and `angular` about it, or with a point (world) `linear` at that
+ * point, its moment about the centre of mass taking the place of
+ * `angular`. */
+static sx_status sx_apply(sx_world *world, sx_body_id body, sx_vec2 linear, sx_real angular,
+                          const sx_vec2 *point, bool impulse) {
     sx_status s;
     sx_body_sim *sim = sx_force_target(world, body, &s);
     if (s != SX_OK) return s;
-    if (!sx_vec2_is_finite(force)) return SX_ERR_NONFINITE;
-    return sx_accumulate(sim, force, SX_R(0.0), false);
+    if (!sx_vec2_is_finite(linear) || !sx_is_finite(angular) ||
+        (point != NULL && !sx_vec2_is_finite(*point))) {
+        return SX_ERR_NONFINITE;
+    }
+    if (sim == NULL) return SX_OK;
+    if (point != NULL) angular = sx_cross(sx_sub(*point, sim->center), linear);
+    return sx_accumulate(sim, linear, angular, impulse);
+}
+
+sx_status sx_body_apply_force(sx_world *world, sx_body_id body, sx_vec2 force) {
+    return sx_apply(world, body, force, SX_R(0.0), NULL, false);
 }
 
 sx_status sx_body_apply_force_at_point(sx_world *world, sx_body_id body, sx_vec2 force,
                                        sx_vec2 point) {
-    sx_status s;
-    sx_body_sim *sim = sx_force_target(world, body, &s);
-    if (s != SX_OK) return s;
-    if (!sx_vec2_is_finite(force) || !sx_vec2_is_finite(point)) return SX_ERR_NONFINITE;
-    if (sim == NULL) return SX_OK;
-    return sx_accumulate(sim, force, sx_cross(sx_sub(point, sim->center), force), false);
+    return sx_apply(world, body, force, SX_R(0.0), &point, false);
 }
 
 sx_status sx_body_apply_torque(sx_world *world, sx_body_id body, sx_real torque) {
-    sx_status s;
-    sx_body_sim *sim = sx_force_target(world, body, &s);
-    if (s != SX_OK) return s;
-    if (!sx_is_finite(torque)) return SX_ERR_NONFINITE;
-    return sx_accumulate(sim, sx_v2_zero(), torque, false);
+    return sx_apply(world, body, sx_v2_zero(), torque, NULL, false);
 }
 
 sx_status sx_body_apply_impulse(sx_world *world, sx_body_id body, sx_vec2 impulse) {
-    sx_status s;
-    sx_body_sim *sim = sx_force_target(world, body, &s);
-    if (s != SX_OK) return s;
-    if (!sx_vec2_is_finite(impulse)) return SX_ERR_NONFINITE;
-    return sx_accumulate(sim, impulse, SX_R(0.0), true);
+    return sx_apply(world, body, impulse, SX_R(0.0), NULL, true);
 }
 
 sx_status sx_body_apply_impulse_at_point(sx_world *world, sx_body_id body, sx_vec2 impulse,
                                          sx_vec2 point) {
-    sx_status s;
-    sx_body_sim *sim = sx_force_target(world, body, &s);
-    if (s != SX_OK) return s;
-    if (!sx_vec2_is_finite(impulse) || !sx_vec2_is_finite(point)) return SX_ERR_NONFINITE;
-    if (sim == NULL) return SX_OK;
-    return sx_accumulate(sim, impulse, sx_cross(sx_sub(point, sim->center), impulse), true);
+    return sx_apply(world, body, impulse, SX_R(0.0), &point, true);
 }
 
 sx_status sx_body_apply_angular_impulse(sx_world *world, sx_body_id body, sx_real impulse) {
-    sx_status s;
-    sx_body_sim *sim = sx_force_target(world, body, &s);
-    if (s != SX_OK) return s;
-    if (!sx_is_finite(impulse)) return SX_ERR_NONFINITE;
-    return sx_accumulate(sim, sx_v2_zero(), impulse, true);
+    return sx_apply(world, body, sx_v2_zero(), impulse, NULL, true);
 }

@@ -238,23 +238,37 @@ static sx_status sx_update_fixed(sx_broadphase *bp, const sx_aabb *aabbs, const 
     return SX_OK;
 }
 
+/* Swaps two key buffers with their capacities: the double-buffered lists
+ * trade places instead of copying. */
+static void sx_swap_keys(uint64_t **a, int *a_capacity, uint64_t **b, int *b_capacity) {
+    uint64_t *t = *a;
+    int c = *a_capacity;
+    *a = *b;
+    *a_capacity = *b_capacity;
+    *b = t;
+    *b_capacity = c;
+}
+
+/* The index of the first of boxes[0..count) (sorted by lower x) whose lower
+ * x is not below from: binary search. */
+static int sx_first_from(const sx_sorted_box *boxes, int count, sx_real from) {
+    int i = 0, hi = count;
+    while (i < hi) {
+        int mid = i + (hi - i) / 2;
+        if (boxes[mid].box.lower.x < from)
+            i = mid + 1;
+        else
+            hi = mid;
+    }
+    return i;
+}
+
 /* Walks the fixed set's boxes that overlap `box`: the narrow ones from the
  * first whose lower x could reach it (binary search, bounded by the widest
  * narrow box), then the wide list. Start with *at = -1; NULL at the end. */
 static const sx_sorted_box *sx_fixed_next(const sx_broadphase *bp, sx_aabb box, int *at) {
     int i = *at + 1;
-    if (*at < 0) {
-        const sx_real from = box.lower.x - bp->wide_limit;
-        int hi = bp->fixed_count;
-        i = 0;
-        while (i < hi) {
-            int mid = i + (hi - i) / 2;
-            if (bp->fixed[mid].box.lower.x < from)
-                i = mid + 1;
-            else
-                hi = mid;
-        }
-    }
+    if (*at < 0) i = sx_first_from(bp->fixed, bp->fixed_count, box.lower.x - bp->wide_limit);
     for (; i < bp->fixed_count; ++i) {
         const sx_sorted_box *b = &bp->fixed[i];
         if (b->box.lower.x > box.upper.x) {
@@ -326,15 +340,7 @@ static sx_aabb sx_fat_box(sx_aabb b, sx_real margin) {
  * bounds overlap box: from the first whose lower x could reach it (binary
  * search, bounded by the widest box) to the first past it. */
 static sx_status sx_sorted_hits(sx_broadphase *bp, sx_aabb box) {
-    const sx_real from = box.lower.x - bp->sorted_width;
-    int i = 0, hi = bp->order_count;
-    while (i < hi) {
-        int mid = i + (hi - i) / 2;
-        if (bp->sorted[mid].box.lower.x < from)
-            i = mid + 1;
-        else
-            hi = mid;
-    }
+    int i = sx_first_from(bp->sorted, bp->order_count, box.lower.x - bp->sorted_width);
     for (; i < bp->order_count; ++i) {
         const sx_sorted_box *b = &bp->sorted[i];
         if (b->box.lower.x > box.upper.x) break;
@@ -537,17 +543,10 @@ static sx_status sx_sweep_moving(sx_broadphase *bp, const sx_aabb *aabbs,
     }
     s = sx_sort_fresh(bp, slot_count);
     if (s != SX_OK) return s;
-    {
-        /* the sorted pairs are the answer */
-        uint64_t *t = bp->pairs;
-        int c = bp->pair_capacity;
-        bp->pairs = bp->fresh;
-        bp->pair_capacity = bp->fresh_capacity;
-        bp->pair_count = bp->fresh_count;
-        bp->fresh = t;
-        bp->fresh_capacity = c;
-        bp->fresh_count = 0;
-    }
+    /* the sorted pairs are the answer */
+    sx_swap_keys(&bp->pairs, &bp->pair_capacity, &bp->fresh, &bp->fresh_capacity);
+    bp->pair_count = bp->fresh_count;
+    bp->fresh_count = 0;
     return SX_OK;
 }
 
@@ -600,14 +599,7 @@ static sx_status sx_merge_candidates(sx_broadphase *bp, const sx_aabb *aabbs,
         bp->cand_next[out++] = key;
         if (sx_aabb_overlaps(aabbs[a], aabbs[b])) bp->pairs[bp->pair_count++] = key;
     }
-    {
-        uint64_t *t = bp->cand;
-        int c = bp->cand_capacity;
-        bp->cand = bp->cand_next;
-        bp->cand_capacity = bp->cand_next_capacity;
-        bp->cand_next = t;
-        bp->cand_next_capacity = c;
-    }
+    sx_swap_keys(&bp->cand, &bp->cand_capacity, &bp->cand_next, &bp->cand_next_capacity);
     bp->cand_count = out;
     return SX_OK;
 }

@@ -138,5 +138,9 @@ void sx_body_sync_origin(sx_body_sim *sim);
  * handle). */
 int sx_body_slot(const sx_world *world, sx_body_id id);
 int sx_collider_slot(const sx_world *world, sx_collider_id id);
+/* sx_body_slot for a call that answers a status: -1 with *status
+ * SX_ERR_INVALID_ARG for a NULL world or SX_ERR_STALE_HANDLE for a null or
+ * stale handle, otherwise the slot with *status SX_OK. */
+int sx_body_slot_checked(const sx_world *world, sx_body_id id, sx_status *status);
 
 #endif /* SEPAX_WORLD_BODY_H */
