@@ -162,6 +162,20 @@ static int sx_real_cmp(const void *pa, const void *pb) {
     return a < b ? -1 : (a > b ? 1 : 0);
 }
 
+/* Appends a box to bp->added; false when the array could not grow. */
+static bool sx_push_added(sx_broadphase *bp, sx_aabb box, int slot, unsigned char kind) {
+    sx_sorted_box *e;
+    void *p = bp->added;
+    bool ok = sx_grow_array(&p, &bp->added_capacity, bp->added_count + 1, sizeof(sx_sorted_box));
+    bp->added = (sx_sorted_box *)p;
+    if (!ok) return false;
+    e = &bp->added[bp->added_count++];
+    e->box = box;
+    e->slot = slot;
+    e->kind = kind;
+    return true;
+}
+
 /* Redoes the fixed set's entries of the touched colliders: the kept entries
  * stay in order, the new ones are sorted among themselves and merged in
  * (linear in the set plus k log k for k changes), then the wide boxes are
@@ -178,13 +192,7 @@ static sx_status sx_update_fixed(sx_broadphase *bp, const sx_aabb *aabbs, const 
     for (i = 0; i < bp->touched_count; ++i) {
         int slot = bp->touched[i];
         if (slot >= slot_count || !sx_is_fixed_kind(kind[slot])) continue;
-        p = bp->added;
-        ok = sx_grow_array(&p, &bp->added_capacity, bp->added_count + 1, sizeof(sx_sorted_box));
-        bp->added = (sx_sorted_box *)p;
-        if (!ok) return SX_ERR_NO_MEMORY;
-        bp->added[bp->added_count].box = aabbs[slot];
-        bp->added[bp->added_count].slot = slot;
-        bp->added[bp->added_count++].kind = kind[slot];
+        if (!sx_push_added(bp, aabbs[slot], slot, kind[slot])) return SX_ERR_NO_MEMORY;
     }
     if (bp->added_count > 1)
         qsort(bp->added, (size_t)bp->added_count, sizeof(sx_sorted_box), sx_box_cmp);
@@ -460,15 +468,7 @@ static sx_status sx_order_moving(sx_broadphase *bp, const sx_aabb *boxes,
     bp->added_count = 0;
     for (i = 0; i < moving_count; ++i) {
         int c = moving[i];
-        if (bp->mark[c] == 1) {
-            p = bp->added;
-            ok = sx_grow_array(&p, &bp->added_capacity, bp->added_count + 1, sizeof(sx_sorted_box));
-            bp->added = (sx_sorted_box *)p;
-            if (!ok) return SX_ERR_NO_MEMORY;
-            bp->added[bp->added_count].box = boxes[c];
-            bp->added[bp->added_count].slot = c;
-            bp->added[bp->added_count++].kind = kind[c];
-        }
+        if (bp->mark[c] == 1 && !sx_push_added(bp, boxes[c], c, kind[c])) return SX_ERR_NO_MEMORY;
         bp->mark[c] = 0;
     }
     if (bp->added_count > 1)
