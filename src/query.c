@@ -290,9 +290,9 @@ typedef struct segment_pair {
 static bool too_large(const segment_pair *g) {
     const sx_real big = SX_R(0.125) * sx_sqrt(SX_REAL_MAX);
     sx_vec2 r = g->r, s = g->s, w = g->w, z = sx_sub(g->q2, g->p1);
-    sx_real m = sx_maxr(
-        sx_maxr(sx_maxr(sx_absr(r.x), sx_absr(r.y)), sx_maxr(sx_absr(s.x), sx_absr(s.y))),
-        sx_maxr(sx_maxr(sx_absr(w.x), sx_absr(w.y)), sx_maxr(sx_absr(z.x), sx_absr(z.y))));
+    sx_real m =
+        sx_maxr(sx_maxr(sx_maxr(sx_absr(r.x), sx_absr(r.y)), sx_maxr(sx_absr(s.x), sx_absr(s.y))),
+                sx_maxr(sx_maxr(sx_absr(w.x), sx_absr(w.y)), sx_maxr(sx_absr(z.x), sx_absr(z.y))));
     return !(m <= big);
 }
 

@@ -46,8 +46,8 @@ typedef struct sx_broadphase {
     sx_real sorted_width; /* the widest box in sorted */
     unsigned char *mark;
     int mark_capacity;
-    int *proxy;         /* per collider slot: its tree leaf, -1 when none */
-    sx_aabb *fat;       /* per collider slot: the box its candidates were found for */
+    int *proxy;           /* per collider slot: its tree leaf, -1 when none */
+    sx_aabb *fat;         /* per collider slot: the box its candidates were found for */
     unsigned char *qmark; /* per collider slot: 1 while in requery */
     int proxy_capacity, fat_capacity, qmark_capacity;
     int *requery; /* slots that look for new candidates in this call */
