@@ -101,7 +101,7 @@ TEST_BINS := $(patsubst %.c,$(OUT)/tests/%,$(notdir $(TEST_SRCS)))
 CMOCKA_CFLAGS = $(shell pkg-config --cflags cmocka 2>/dev/null)
 CMOCKA_LIBS = $(shell pkg-config --libs cmocka 2>/dev/null || echo -lcmocka)
 
-.PHONY: all lib test check-exports check-layers check-headers readme-example doc-examples sample-pyramid deps-test deps-bench \
+.PHONY: all lib test check-exports check-layers file-map check-headers readme-example doc-examples sample-pyramid deps-test deps-bench \
         install uninstall clean bench bench-smoke format format-check help
 .DEFAULT_GOAL := all
 .SECONDARY:
@@ -170,6 +170,11 @@ check-exports: $(LIB_SO_REAL)
 # the table of layers).
 check-layers:
 	@sh scripts/check_layers.sh
+
+# The map of src/: each file's layer, lines and concept, and the longest
+# functions (N=25 lists more).
+file-map:
+	@sh scripts/file_map.sh
 
 # Public headers must compile as C++ too.
 # With include/sepax itself on the include path, no sepax header may take the
@@ -590,6 +595,7 @@ help:
 	@echo "  test              build the library and run every cmocka test, the documentation's examples and the sample"
 	@echo "  check-exports     libsepax.so must export exactly the SX_API declarations of include/sepax/*.h"
 	@echo "  check-layers      every include stays in its layer or below (base, shape, collide, world, ecs)"
+	@echo "  file-map          each src/ file's layer, line count and concept, and the 15 longest functions"
 	@echo "  check-headers     compile the public headers as C++"
 	@echo "  doc-examples      compile and run the C blocks of README.md and the C/C++ blocks of ecs/sepax_flecs.h"
 	@echo "  readme-example    the same as doc-examples (its former name)"

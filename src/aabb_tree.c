@@ -6,7 +6,9 @@
  * the node's place and hands its shorter child down. */
 #include "aabb_tree.h"
 
-#include "world_internal.h"
+#include <string.h>
+
+#include "world_array.h"
 
 void sx_tree_init(sx_aabb_tree *t) {
     memset(t, 0, sizeof(*t));

@@ -9,7 +9,16 @@
  * UINT32_MAX: then it is retired, since one more would wrap. Generations
  * start at 1, so the all-zero handle is never live. Input is validated here,
  * once; the step trusts it. */
+#include <string.h>
+
+#include "world_array.h"
+#include "world_body.h"
+#include "world_broadphase.h"
+#include "world_ccd.h"
+#include "world_contact.h"
 #include "world_internal.h"
+#include "world_island.h"
+#include "world_sensor.h"
 
 /* ---- handles ------------------------------------------------------------ */
 
@@ -44,6 +53,17 @@ int sx_body_slot(const sx_world *world, sx_body_id id) {
     info = &world->infos[id.index];
     if (!info->alive || info->generation != id.generation) return -1;
     return (int)id.index;
+}
+
+int sx_body_slot_checked(const sx_world *world, sx_body_id id, sx_status *status) {
+    int slot;
+    if (world == NULL) {
+        *status = SX_ERR_INVALID_ARG;
+        return -1;
+    }
+    slot = sx_body_slot(world, id);
+    *status = slot < 0 ? SX_ERR_STALE_HANDLE : SX_OK;
+    return slot;
 }
 
 int sx_collider_slot(const sx_world *world, sx_collider_id id) {
@@ -196,54 +216,6 @@ void sx_body_update_mass(sx_world *world, int slot) {
 }
 
 /* ---- creation and destruction ------------------------------------------ */
-
-sx_status sx_reserve_array(void **array, int *capacity, int need, size_t size) {
-    int cap = *capacity;
-    void *fresh;
-    if (need <= cap) return SX_OK;
-    if (need > SX_WORLD_MAX_ITEMS) return SX_ERR_CAPACITY;
-    if (cap < 16) cap = 16;
-    /* doubling, but never past the limit: 2 x cap stays below INT_MAX */
-    while (cap < need)
-        cap = cap > SX_WORLD_MAX_ITEMS / 2 ? SX_WORLD_MAX_ITEMS : 2 * cap;
-    /* where size_t is narrower than the byte count (32-bit targets), the
-     * exact need may still fit when the doubled capacity does not */
-    if ((size_t)cap > SIZE_MAX / size) cap = need;
-    if ((size_t)cap > SIZE_MAX / size) return SX_ERR_NO_MEMORY;
-    fresh = sx_alloc((size_t)cap * size);
-    if (fresh == NULL) return SX_ERR_NO_MEMORY;
-    if (*array != NULL) {
-        memcpy(fresh, *array, (size_t)*capacity * size);
-        sx_free(*array, (size_t)*capacity * size);
-    }
-    *array = fresh;
-    *capacity = cap;
-    return SX_OK;
-}
-
-bool sx_grow_array(void **array, int *capacity, int need, size_t size) {
-    return sx_reserve_array(array, capacity, need, size) == SX_OK;
-}
-
-bool sx_grow_zeroed(void **array, int *capacity, int need, size_t size) {
-    int old = *capacity;
-    if (!sx_grow_array(array, capacity, need, size)) return false;
-    if (*capacity > old) {
-        memset((unsigned char *)*array + (size_t)old * size, 0, (size_t)(*capacity - old) * size);
-    }
-    return true;
-}
-
-bool sx_push_int(int **array, int *count, int *capacity, int value) {
-    if (*count == *capacity) {
-        void *p = *array;
-        bool ok = sx_grow_array(&p, capacity, *count + 1, sizeof(int));
-        *array = (int *)p;
-        if (!ok) return false;
-    }
-    (*array)[(*count)++] = value;
-    return true;
-}
 
 /* Grows both body arrays; each keeps its own capacity so a failure half way
  * leaves both consistent. */
@@ -721,9 +693,9 @@ bool sx_body_is_awake(const sx_world *world, sx_body_id body) {
 sx_status sx_body_set_awake(sx_world *world, sx_body_id body, bool awake) {
     int slot;
     sx_body_sim *sim;
-    if (world == NULL) return SX_ERR_INVALID_ARG;
-    slot = sx_body_slot(world, body);
-    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    sx_status s;
+    slot = sx_body_slot_checked(world, body, &s);
+    if (slot < 0) return s;
     sim = &world->sims[slot];
     if (!sim->dynamic) return SX_OK;
     if (awake) {
@@ -740,9 +712,9 @@ sx_status sx_body_set_awake(sx_world *world, sx_body_id body, bool awake) {
 
 sx_status sx_body_set_sleep_enabled(sx_world *world, sx_body_id body, bool enable) {
     int slot;
-    if (world == NULL) return SX_ERR_INVALID_ARG;
-    slot = sx_body_slot(world, body);
-    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    sx_status s;
+    slot = sx_body_slot_checked(world, body, &s);
+    if (slot < 0) return s;
     world->infos[slot].enable_sleep = enable;
     if (!enable) sx_wake_body(world, slot);
     return SX_OK;
@@ -758,9 +730,9 @@ bool sx_body_is_sleep_enabled(const sx_world *world, sx_body_id body) {
 sx_status sx_body_set_transform(sx_world *world, sx_body_id body, sx_vec2 position, sx_real angle) {
     int slot, c;
     sx_body_sim *sim;
-    if (world == NULL) return SX_ERR_INVALID_ARG;
-    slot = sx_body_slot(world, body);
-    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    sx_status s;
+    slot = sx_body_slot_checked(world, body, &s);
+    if (slot < 0) return s;
     if (!sx_vec2_is_finite(position) || !sx_is_finite(angle)) return SX_ERR_NONFINITE;
     sim = &world->sims[slot];
     sx_wake_touching(world, slot);
@@ -774,9 +746,9 @@ sx_status sx_body_set_transform(sx_world *world, sx_body_id body, sx_vec2 positi
 
 sx_status sx_body_set_linear_velocity(sx_world *world, sx_body_id body, sx_vec2 v) {
     int slot;
-    if (world == NULL) return SX_ERR_INVALID_ARG;
-    slot = sx_body_slot(world, body);
-    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    sx_status s;
+    slot = sx_body_slot_checked(world, body, &s);
+    if (slot < 0) return s;
     if (!sx_vec2_is_finite(v)) return SX_ERR_NONFINITE;
     if (world->infos[slot].type != SX_BODY_STATIC) {
         sx_wake_body(world, slot);
@@ -789,9 +761,9 @@ sx_status sx_body_set_linear_velocity(sx_world *world, sx_body_id body, sx_vec2 
 sx_status sx_body_set_angular_velocity(sx_world *world, sx_body_id body, sx_real w) {
     int slot;
     const sx_body_info *info;
-    if (world == NULL) return SX_ERR_INVALID_ARG;
-    slot = sx_body_slot(world, body);
-    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    sx_status s;
+    slot = sx_body_slot_checked(world, body, &s);
+    if (slot < 0) return s;
     if (!sx_is_finite(w)) return SX_ERR_NONFINITE;
     info = &world->infos[slot];
     if (info->type == SX_BODY_KINEMATIC ||
@@ -805,9 +777,9 @@ sx_status sx_body_set_angular_velocity(sx_world *world, sx_body_id body, sx_real
 
 sx_status sx_body_set_type(sx_world *world, sx_body_id body, sx_body_type type) {
     int slot;
-    if (world == NULL) return SX_ERR_INVALID_ARG;
-    slot = sx_body_slot(world, body);
-    if (slot < 0) return SX_ERR_STALE_HANDLE;
+    sx_status s;
+    slot = sx_body_slot_checked(world, body, &s);
+    if (slot < 0) return s;
     if (type != SX_BODY_STATIC && type != SX_BODY_KINEMATIC && type != SX_BODY_DYNAMIC) {
         return SX_ERR_INVALID_ARG;
     }
@@ -822,17 +794,8 @@ sx_status sx_body_set_type(sx_world *world, sx_body_id body, sx_body_type type) 
 /* The simulated state of a body that accepts forces, or NULL (static,
  * kinematic or disabled: they ignore forces). *status gets the answer. */
 static sx_body_sim *sx_force_target(sx_world *world, sx_body_id body, sx_status *status) {
-    int slot;
-    if (world == NULL) {
-        *status = SX_ERR_INVALID_ARG;
-        return NULL;
-    }
-    slot = sx_body_slot(world, body);
-    if (slot < 0) {
-        *status = SX_ERR_STALE_HANDLE;
-        return NULL;
-    }
-    *status = SX_OK;
+    int slot = sx_body_slot_checked(world, body, status);
+    if (slot < 0) return NULL;
     if (world->infos[slot].type != SX_BODY_DYNAMIC) return NULL;
     sx_wake_body(world, slot);
     return &world->sims[slot];
@@ -860,54 +823,46 @@ static sx_status sx_accumulate(sx_body_sim *sim, sx_vec2 linear, sx_real angular
     return SX_OK;
 }
 
-sx_status sx_body_apply_force(sx_world *world, sx_body_id body, sx_vec2 force) {
+/* A force (impulse false) or an impulse: `linear` through the centre of
+ * mass and `angular` about it, or with a point (world) `linear` at that
+ * point, its moment about the centre of mass taking the place of
+ * `angular`. */
+static sx_status sx_apply(sx_world *world, sx_body_id body, sx_vec2 linear, sx_real angular,
+                          const sx_vec2 *point, bool impulse) {
     sx_status s;
     sx_body_sim *sim = sx_force_target(world, body, &s);
     if (s != SX_OK) return s;
-    if (!sx_vec2_is_finite(force)) return SX_ERR_NONFINITE;
-    return sx_accumulate(sim, force, SX_R(0.0), false);
+    if (!sx_vec2_is_finite(linear) || !sx_is_finite(angular) ||
+        (point != NULL && !sx_vec2_is_finite(*point))) {
+        return SX_ERR_NONFINITE;
+    }
+    if (sim == NULL) return SX_OK;
+    if (point != NULL) angular = sx_cross(sx_sub(*point, sim->center), linear);
+    return sx_accumulate(sim, linear, angular, impulse);
+}
+
+sx_status sx_body_apply_force(sx_world *world, sx_body_id body, sx_vec2 force) {
+    return sx_apply(world, body, force, SX_R(0.0), NULL, false);
 }
 
 sx_status sx_body_apply_force_at_point(sx_world *world, sx_body_id body, sx_vec2 force,
                                        sx_vec2 point) {
-    sx_status s;
-    sx_body_sim *sim = sx_force_target(world, body, &s);
-    if (s != SX_OK) return s;
-    if (!sx_vec2_is_finite(force) || !sx_vec2_is_finite(point)) return SX_ERR_NONFINITE;
-    if (sim == NULL) return SX_OK;
-    return sx_accumulate(sim, force, sx_cross(sx_sub(point, sim->center), force), false);
+    return sx_apply(world, body, force, SX_R(0.0), &point, false);
 }
 
 sx_status sx_body_apply_torque(sx_world *world, sx_body_id body, sx_real torque) {
-    sx_status s;
-    sx_body_sim *sim = sx_force_target(world, body, &s);
-    if (s != SX_OK) return s;
-    if (!sx_is_finite(torque)) return SX_ERR_NONFINITE;
-    return sx_accumulate(sim, sx_v2_zero(), torque, false);
+    return sx_apply(world, body, sx_v2_zero(), torque, NULL, false);
 }
 
 sx_status sx_body_apply_impulse(sx_world *world, sx_body_id body, sx_vec2 impulse) {
-    sx_status s;
-    sx_body_sim *sim = sx_force_target(world, body, &s);
-    if (s != SX_OK) return s;
-    if (!sx_vec2_is_finite(impulse)) return SX_ERR_NONFINITE;
-    return sx_accumulate(sim, impulse, SX_R(0.0), true);
+    return sx_apply(world, body, impulse, SX_R(0.0), NULL, true);
 }
 
 sx_status sx_body_apply_impulse_at_point(sx_world *world, sx_body_id body, sx_vec2 impulse,
                                          sx_vec2 point) {
-    sx_status s;
-    sx_body_sim *sim = sx_force_target(world, body, &s);
-    if (s != SX_OK) return s;
-    if (!sx_vec2_is_finite(impulse) || !sx_vec2_is_finite(point)) return SX_ERR_NONFINITE;
-    if (sim == NULL) return SX_OK;
-    return sx_accumulate(sim, impulse, sx_cross(sx_sub(point, sim->center), impulse), true);
+    return sx_apply(world, body, impulse, SX_R(0.0), &point, true);
 }
 
 sx_status sx_body_apply_angular_impulse(sx_world *world, sx_body_id body, sx_real impulse) {
-    sx_status s;
-    sx_body_sim *sim = sx_force_target(world, body, &s);
-    if (s != SX_OK) return s;
-    if (!sx_is_finite(impulse)) return SX_ERR_NONFINITE;
-    return sx_accumulate(sim, sx_v2_zero(), impulse, true);
+    return sx_apply(world, body, sx_v2_zero(), impulse, NULL, true);
 }

@@ -15,7 +15,12 @@
  * them meanwhile. Removal keeps the order of what remains, as the eager
  * compaction it replaces did, so the solver sees the same contacts in the
  * same order. */
+#include <string.h>
+
+#include "world_array.h"
+#include "world_contact.h"
 #include "world_internal.h"
+#include "world_island.h"
 
 /* The contact at position p of the step's list followed by the frozen
  * store. */

@@ -8,7 +8,11 @@
  * (material, filter, mass) wakes the body, so a sleeping island never keeps
  * a value the game replaced; contacts rebuild their mixed friction and
  * restitution at every collide, so nothing else is cached. */
+#include "world_body.h"
+#include "world_contact.h"
 #include "world_internal.h"
+#include "world_island.h"
+#include "world_sensor.h"
 
 /* ---- world settings ------------------------------------------------------- */
 
@@ -111,18 +115,6 @@ sx_status sx_collider_destroy(sx_world *world, sx_collider_id collider) {
 
 /* ---- body properties ------------------------------------------------------- */
 
-/* The slot of the body a setter changes, or -1 with *status set. */
-static int sx_setter_slot(const sx_world *world, sx_body_id body, sx_status *status) {
-    int slot;
-    if (world == NULL) {
-        *status = SX_ERR_INVALID_ARG;
-        return -1;
-    }
-    slot = sx_body_slot(world, body);
-    *status = slot < 0 ? SX_ERR_STALE_HANDLE : SX_OK;
-    return slot;
-}
-
 /* The status of a damping, friction, restitution or density value. */
 static sx_status sx_check_nonnegative(sx_real value) {
     if (!sx_is_finite(value)) return SX_ERR_NONFINITE;
@@ -131,7 +123,7 @@ static sx_status sx_check_nonnegative(sx_real value) {
 
 sx_status sx_body_set_enabled(sx_world *world, sx_body_id body, bool enabled) {
     sx_status s;
-    int slot = sx_setter_slot(world, body, &s), c;
+    int slot = sx_body_slot_checked(world, body, &s), c;
     sx_body_info *info;
     if (slot < 0) return s;
     info = &world->infos[slot];
@@ -157,7 +149,7 @@ bool sx_body_is_enabled(const sx_world *world, sx_body_id body) {
 
 sx_status sx_body_set_gravity_scale(sx_world *world, sx_body_id body, sx_real scale) {
     sx_status s;
-    int slot = sx_setter_slot(world, body, &s);
+    int slot = sx_body_slot_checked(world, body, &s);
     if (slot < 0) return s;
     if (!sx_is_finite(scale)) return SX_ERR_NONFINITE;
     world->sims[slot].gravity_scale = scale;
@@ -170,14 +162,22 @@ sx_real sx_body_get_gravity_scale(const sx_world *world, sx_body_id body) {
     return slot < 0 ? SX_R(0.0) : world->sims[slot].gravity_scale;
 }
 
-sx_status sx_body_set_linear_damping(sx_world *world, sx_body_id body, sx_real damping) {
+/* Sets the linear or the angular damping of a body. */
+static sx_status sx_set_damping(sx_world *world, sx_body_id body, sx_real damping, bool angular) {
     sx_status s;
-    int slot = sx_setter_slot(world, body, &s);
+    int slot = sx_body_slot_checked(world, body, &s);
     if (slot < 0) return s;
     s = sx_check_nonnegative(damping);
     if (s != SX_OK) return s;
-    world->sims[slot].linear_damping = damping;
+    if (angular)
+        world->sims[slot].angular_damping = damping;
+    else
+        world->sims[slot].linear_damping = damping;
     return SX_OK;
+}
+
+sx_status sx_body_set_linear_damping(sx_world *world, sx_body_id body, sx_real damping) {
+    return sx_set_damping(world, body, damping, false);
 }
 
 sx_real sx_body_get_linear_damping(const sx_world *world, sx_body_id body) {
@@ -186,13 +186,7 @@ sx_real sx_body_get_linear_damping(const sx_world *world, sx_body_id body) {
 }
 
 sx_status sx_body_set_angular_damping(sx_world *world, sx_body_id body, sx_real damping) {
-    sx_status s;
-    int slot = sx_setter_slot(world, body, &s);
-    if (slot < 0) return s;
-    s = sx_check_nonnegative(damping);
-    if (s != SX_OK) return s;
-    world->sims[slot].angular_damping = damping;
-    return SX_OK;
+    return sx_set_damping(world, body, damping, true);
 }
 
 sx_real sx_body_get_angular_damping(const sx_world *world, sx_body_id body) {
@@ -202,7 +196,7 @@ sx_real sx_body_get_angular_damping(const sx_world *world, sx_body_id body) {
 
 sx_status sx_body_set_fixed_rotation(sx_world *world, sx_body_id body, bool fixed) {
     sx_status s;
-    int slot = sx_setter_slot(world, body, &s);
+    int slot = sx_body_slot_checked(world, body, &s);
     if (slot < 0) return s;
     world->infos[slot].fixed_rotation = fixed;
     sx_body_update_mass(world, slot);
@@ -217,7 +211,7 @@ bool sx_body_is_fixed_rotation(const sx_world *world, sx_body_id body) {
 
 sx_status sx_body_set_user_data(sx_world *world, sx_body_id body, void *user_data) {
     sx_status s;
-    int slot = sx_setter_slot(world, body, &s);
+    int slot = sx_body_slot_checked(world, body, &s);
     if (slot < 0) return s;
     world->infos[slot].user_data = user_data;
     return SX_OK;

@@ -1,6 +1,6 @@
 /* sepax — the broadphase: which collider pairs are worth a narrowphase call.
  *
- * Two sets (world_internal.h has the layout). The fixed and sleeping
+ * Two sets (world_broadphase.h has the layout). The fixed and sleeping
  * colliders sit in an array sorted by lower x, searched from the first box
  * that could reach a query (binary search, bounded by the widest narrow
  * box), plus the short list of wide boxes (over 8 times the median width:
@@ -34,7 +34,10 @@
  * meeting a sleeping one, which must wake it. */
 #include <stdlib.h>
 
-#include "world_internal.h"
+#include <string.h>
+
+#include "world_array.h"
+#include "world_broadphase.h"
 
 void sx_broadphase_init(sx_broadphase *bp) {
     memset(bp, 0, sizeof(*bp));
@@ -159,6 +162,20 @@ static int sx_real_cmp(const void *pa, const void *pb) {
     return a < b ? -1 : (a > b ? 1 : 0);
 }
 
+/* Appends a box to bp->added; false when the array could not grow. */
+static bool sx_push_added(sx_broadphase *bp, sx_aabb box, int slot, unsigned char kind) {
+    sx_sorted_box *e;
+    void *p = bp->added;
+    bool ok = sx_grow_array(&p, &bp->added_capacity, bp->added_count + 1, sizeof(sx_sorted_box));
+    bp->added = (sx_sorted_box *)p;
+    if (!ok) return false;
+    e = &bp->added[bp->added_count++];
+    e->box = box;
+    e->slot = slot;
+    e->kind = kind;
+    return true;
+}
+
 /* Redoes the fixed set's entries of the touched colliders: the kept entries
  * stay in order, the new ones are sorted among themselves and merged in
  * (linear in the set plus k log k for k changes), then the wide boxes are
@@ -175,13 +192,7 @@ static sx_status sx_update_fixed(sx_broadphase *bp, const sx_aabb *aabbs, const 
     for (i = 0; i < bp->touched_count; ++i) {
         int slot = bp->touched[i];
         if (slot >= slot_count || !sx_is_fixed_kind(kind[slot])) continue;
-        p = bp->added;
-        ok = sx_grow_array(&p, &bp->added_capacity, bp->added_count + 1, sizeof(sx_sorted_box));
-        bp->added = (sx_sorted_box *)p;
-        if (!ok) return SX_ERR_NO_MEMORY;
-        bp->added[bp->added_count].box = aabbs[slot];
-        bp->added[bp->added_count].slot = slot;
-        bp->added[bp->added_count++].kind = kind[slot];
+        if (!sx_push_added(bp, aabbs[slot], slot, kind[slot])) return SX_ERR_NO_MEMORY;
     }
     if (bp->added_count > 1)
         qsort(bp->added, (size_t)bp->added_count, sizeof(sx_sorted_box), sx_box_cmp);
@@ -235,23 +246,37 @@ static sx_status sx_update_fixed(sx_broadphase *bp, const sx_aabb *aabbs, const 
     return SX_OK;
 }
 
+/* Swaps two key buffers with their capacities: the double-buffered lists
+ * trade places instead of copying. */
+static void sx_swap_keys(uint64_t **a, int *a_capacity, uint64_t **b, int *b_capacity) {
+    uint64_t *t = *a;
+    int c = *a_capacity;
+    *a = *b;
+    *a_capacity = *b_capacity;
+    *b = t;
+    *b_capacity = c;
+}
+
+/* The index of the first of boxes[0..count) (sorted by lower x) whose lower
+ * x is not below from: binary search. */
+static int sx_first_from(const sx_sorted_box *boxes, int count, sx_real from) {
+    int i = 0, hi = count;
+    while (i < hi) {
+        int mid = i + (hi - i) / 2;
+        if (boxes[mid].box.lower.x < from)
+            i = mid + 1;
+        else
+            hi = mid;
+    }
+    return i;
+}
+
 /* Walks the fixed set's boxes that overlap `box`: the narrow ones from the
  * first whose lower x could reach it (binary search, bounded by the widest
  * narrow box), then the wide list. Start with *at = -1; NULL at the end. */
 static const sx_sorted_box *sx_fixed_next(const sx_broadphase *bp, sx_aabb box, int *at) {
     int i = *at + 1;
-    if (*at < 0) {
-        const sx_real from = box.lower.x - bp->wide_limit;
-        int hi = bp->fixed_count;
-        i = 0;
-        while (i < hi) {
-            int mid = i + (hi - i) / 2;
-            if (bp->fixed[mid].box.lower.x < from)
-                i = mid + 1;
-            else
-                hi = mid;
-        }
-    }
+    if (*at < 0) i = sx_first_from(bp->fixed, bp->fixed_count, box.lower.x - bp->wide_limit);
     for (; i < bp->fixed_count; ++i) {
         const sx_sorted_box *b = &bp->fixed[i];
         if (b->box.lower.x > box.upper.x) {
@@ -323,15 +348,7 @@ static sx_aabb sx_fat_box(sx_aabb b, sx_real margin) {
  * bounds overlap box: from the first whose lower x could reach it (binary
  * search, bounded by the widest box) to the first past it. */
 static sx_status sx_sorted_hits(sx_broadphase *bp, sx_aabb box) {
-    const sx_real from = box.lower.x - bp->sorted_width;
-    int i = 0, hi = bp->order_count;
-    while (i < hi) {
-        int mid = i + (hi - i) / 2;
-        if (bp->sorted[mid].box.lower.x < from)
-            i = mid + 1;
-        else
-            hi = mid;
-    }
+    int i = sx_first_from(bp->sorted, bp->order_count, box.lower.x - bp->sorted_width);
     for (; i < bp->order_count; ++i) {
         const sx_sorted_box *b = &bp->sorted[i];
         if (b->box.lower.x > box.upper.x) break;
@@ -451,15 +468,7 @@ static sx_status sx_order_moving(sx_broadphase *bp, const sx_aabb *boxes,
     bp->added_count = 0;
     for (i = 0; i < moving_count; ++i) {
         int c = moving[i];
-        if (bp->mark[c] == 1) {
-            p = bp->added;
-            ok = sx_grow_array(&p, &bp->added_capacity, bp->added_count + 1, sizeof(sx_sorted_box));
-            bp->added = (sx_sorted_box *)p;
-            if (!ok) return SX_ERR_NO_MEMORY;
-            bp->added[bp->added_count].box = boxes[c];
-            bp->added[bp->added_count].slot = c;
-            bp->added[bp->added_count++].kind = kind[c];
-        }
+        if (bp->mark[c] == 1 && !sx_push_added(bp, boxes[c], c, kind[c])) return SX_ERR_NO_MEMORY;
         bp->mark[c] = 0;
     }
     if (bp->added_count > 1)
@@ -534,17 +543,10 @@ static sx_status sx_sweep_moving(sx_broadphase *bp, const sx_aabb *aabbs,
     }
     s = sx_sort_fresh(bp, slot_count);
     if (s != SX_OK) return s;
-    {
-        /* the sorted pairs are the answer */
-        uint64_t *t = bp->pairs;
-        int c = bp->pair_capacity;
-        bp->pairs = bp->fresh;
-        bp->pair_capacity = bp->fresh_capacity;
-        bp->pair_count = bp->fresh_count;
-        bp->fresh = t;
-        bp->fresh_capacity = c;
-        bp->fresh_count = 0;
-    }
+    /* the sorted pairs are the answer */
+    sx_swap_keys(&bp->pairs, &bp->pair_capacity, &bp->fresh, &bp->fresh_capacity);
+    bp->pair_count = bp->fresh_count;
+    bp->fresh_count = 0;
     return SX_OK;
 }
 
@@ -597,14 +599,7 @@ static sx_status sx_merge_candidates(sx_broadphase *bp, const sx_aabb *aabbs,
         bp->cand_next[out++] = key;
         if (sx_aabb_overlaps(aabbs[a], aabbs[b])) bp->pairs[bp->pair_count++] = key;
     }
-    {
-        uint64_t *t = bp->cand;
-        int c = bp->cand_capacity;
-        bp->cand = bp->cand_next;
-        bp->cand_capacity = bp->cand_next_capacity;
-        bp->cand_next = t;
-        bp->cand_next_capacity = c;
-    }
+    sx_swap_keys(&bp->cand, &bp->cand_capacity, &bp->cand_next, &bp->cand_next_capacity);
     bp->cand_count = out;
     return SX_OK;
 }

@@ -9,7 +9,7 @@
  * aim at.
  *
  * Data: each sub-step's gather walks the contacts once and copies what
- * the velocity passes read into compact arrays, warm-starting the copies (world_internal.h,
+ * the velocity passes read into compact arrays, warm-starting the copies (world_contact.h,
  * sx_constraint and sx_solver_body); the passes touch nothing else, and the
  * last one hands the impulses back to the contacts as it goes. The passes
  * are bound by the chain of dependent operations within a contact (each
@@ -47,6 +47,11 @@
  * the two bodies apart along the normal by a fraction of the overlap beyond
  * the slop, the move split by inverse mass and inverse inertia (a
  * pseudo-impulse that changes positions only). */
+#include <string.h>
+
+#include "world_array.h"
+#include "world_body.h"
+#include "world_contact.h"
 #include "world_internal.h"
 
 /* Largest condition estimate k11^2 / det(K) of a two-point contact's mass

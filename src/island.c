@@ -10,7 +10,11 @@
  * sliding. A sleeping body remembers its island's root, which is how waking
  * one body wakes the island: a falling box that lands on a sleeping pile
  * wakes the whole pile, not just the box it hit. */
+#include "world_array.h"
+#include "world_body.h"
+#include "world_contact.h"
 #include "world_internal.h"
+#include "world_island.h"
 
 static int sx_find(int *parent, int i) {
     while (parent[i] != i) {
@@ -81,37 +85,35 @@ int sx_world_awake_body_count(const sx_world *world) {
     return n;
 }
 
-sx_status sx_world_update_sleep(sx_world *world, sx_real dt) {
-    sx_real lin, ang;
-    int i, ak, *parent;
-    sx_status s;
-    sx_real *rest;
-    void *p;
-    bool ok;
-    if (world == NULL) return SX_ERR_INVALID_ARG;
-    if (sx_world_locked(world)) return SX_ERR_LOCKED;
-    if (!sx_is_finite(dt)) return SX_ERR_NONFINITE;
-    if (!(dt > SX_R(0.0))) return SX_ERR_INVALID_ARG;
-    if (!world->def.enable_sleep) return SX_OK;
-    p = world->island_parent;
-    ok = sx_grow_array(&p, &world->parent_capacity, world->body_slots, sizeof(int));
+/* Grows the union-find scratch to one entry per body slot. */
+static bool sx_island_scratch(sx_world *world) {
+    void *p = world->island_parent;
+    bool ok = sx_grow_array(&p, &world->parent_capacity, world->body_slots, sizeof(int));
     world->island_parent = (int *)p;
-    if (!ok) return SX_ERR_NO_MEMORY;
+    if (!ok) return false;
     p = world->island_time;
     ok = sx_grow_array(&p, &world->time_capacity, world->body_slots, sizeof(sx_real));
     world->island_time = (sx_real *)p;
-    if (!ok) return SX_ERR_NO_MEMORY;
-    parent = world->island_parent;
-    rest = world->island_time;
-    lin = world->def.sleep_linear_speed;
-    ang = world->def.sleep_angular_speed;
+    return ok;
+}
 
-    s = sx_world_refresh_sets(world);
-    if (s != SX_OK) return s;
-    sx_world_purge_contacts(world);
+/* A kinematic body that moves: what it carries or pushes is not at rest. */
+static bool sx_kinematic_moves(const sx_body_sim *b) {
+    return b->moving && !b->dynamic &&
+           (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0));
+}
+
+/* Each active body becomes an island of its own; each awake dynamic one
+ * adds dt to its rest time if it is slower than the sleep speeds, and
+ * starts again from zero otherwise. */
+static void sx_rest_times(sx_world *world, sx_real dt) {
+    int *parent = world->island_parent;
+    sx_real *rest = world->island_time;
+    sx_real lin = world->def.sleep_linear_speed, ang = world->def.sleep_angular_speed;
+    int ak;
     /* only awake bodies take part: a sleeping one costs nothing */
     for (ak = 0; ak < world->active_body_count; ++ak) {
-        i = world->active_bodies[ak];
+        int i = world->active_bodies[ak];
         sx_body_sim *b = &world->sims[i];
         sx_body_info *info = &world->infos[i];
         parent[i] = i;
@@ -123,6 +125,12 @@ sx_status sx_world_update_sleep(sx_world *world, sx_real dt) {
             info->sleep_time += dt;
         }
     }
+}
+
+/* Joins the islands of the awake dynamic bodies each contact touches, and
+ * takes the rest time of the bodies that a contact shows not at rest. */
+static void sx_join_islands(sx_world *world) {
+    int i;
     for (i = 0; i < world->contact_count; ++i) {
         const sx_contact *c = &world->contacts[i];
         const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
@@ -138,27 +146,31 @@ sx_status sx_world_update_sleep(sx_world *world, sx_real dt) {
             }
         }
         if (da && db) {
-            sx_union(parent, c->body_a, c->body_b);
-        } else if (da && b->moving && !b->dynamic &&
-                   (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0))) {
+            sx_union(world->island_parent, c->body_a, c->body_b);
+        } else if (da && sx_kinematic_moves(b)) {
             /* carried or pushed by a moving kinematic body: not at rest */
             world->infos[c->body_a].sleep_time = SX_R(0.0);
-        } else if (db && a->moving && !a->dynamic &&
-                   (a->v.x != SX_R(0.0) || a->v.y != SX_R(0.0) || a->w != SX_R(0.0))) {
+        } else if (db && sx_kinematic_moves(a)) {
             world->infos[c->body_b].sleep_time = SX_R(0.0);
         }
     }
+}
+
+/* Puts to sleep the islands whose least rested body has rested
+ * time_to_sleep, each member remembering its island's root. */
+static void sx_sleep_islands(sx_world *world) {
+    int *parent = world->island_parent;
+    sx_real *rest = world->island_time;
+    int ak;
     /* the island's rest time is its least rested body's */
     for (ak = 0; ak < world->active_body_count; ++ak) {
-        int r;
-        i = world->active_bodies[ak];
+        int r, i = world->active_bodies[ak];
         if (!world->sims[i].dynamic || !world->sims[i].awake) continue;
         r = sx_find(parent, i);
         rest[r] = sx_minr(rest[r], world->infos[i].sleep_time);
     }
     for (ak = 0; ak < world->active_body_count; ++ak) {
-        int r;
-        i = world->active_bodies[ak];
+        int r, i = world->active_bodies[ak];
         sx_body_sim *b = &world->sims[i];
         if (!b->dynamic || !b->awake) continue;
         r = sx_find(parent, i);
@@ -174,12 +186,27 @@ sx_status sx_world_update_sleep(sx_world *world, sx_real dt) {
      * a member: the union-find ran over these very bodies). The active
      * bodies were all awake, so those asleep now fell asleep just above. */
     for (ak = 0; ak < world->active_body_count; ++ak) {
-        int r;
-        i = world->active_bodies[ak];
-        r = world->infos[i].island;
+        int i = world->active_bodies[ak];
+        int r = world->infos[i].island;
         if (world->sims[i].awake || r == i) continue;
         world->infos[i].island_next = world->infos[r].island_next;
         world->infos[r].island_next = i;
     }
+}
+
+sx_status sx_world_update_sleep(sx_world *world, sx_real dt) {
+    sx_status s;
+    if (world == NULL) return SX_ERR_INVALID_ARG;
+    if (sx_world_locked(world)) return SX_ERR_LOCKED;
+    if (!sx_is_finite(dt)) return SX_ERR_NONFINITE;
+    if (!(dt > SX_R(0.0))) return SX_ERR_INVALID_ARG;
+    if (!world->def.enable_sleep) return SX_OK;
+    if (!sx_island_scratch(world)) return SX_ERR_NO_MEMORY;
+    s = sx_world_refresh_sets(world);
+    if (s != SX_OK) return s;
+    sx_world_purge_contacts(world);
+    sx_rest_times(world, dt);
+    sx_join_islands(world);
+    sx_sleep_islands(world);
     return SX_OK;
 }

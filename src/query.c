@@ -277,11 +277,120 @@ static bool point_on_segment(sx_vec2 c, sx_vec2 a, sx_vec2 d, sx_real dlen, sx_r
     return true;
 }
 
+/* The two segments p1 p2 and q1 q2 as sx_intersect_segments reads them:
+ * r and s their directions, w from p1 to q1, rlen and slen the lengths. */
+typedef struct segment_pair {
+    sx_vec2 p1, p2, q1, q2;
+    sx_vec2 r, s, w;
+    sx_real rlen, slen;
+} segment_pair;
+
+/* True when the coordinates are large enough for the cross products of
+ * sx_intersect_segments to overflow. */
+static bool too_large(const segment_pair *g) {
+    const sx_real big = SX_R(0.125) * sx_sqrt(SX_REAL_MAX);
+    sx_vec2 r = g->r, s = g->s, w = g->w, z = sx_sub(g->q2, g->p1);
+    sx_real m =
+        sx_maxr(sx_maxr(sx_maxr(sx_absr(r.x), sx_absr(r.y)), sx_maxr(sx_absr(s.x), sx_absr(s.y))),
+                sx_maxr(sx_maxr(sx_absr(w.x), sx_absr(w.y)), sx_maxr(sx_absr(z.x), sx_absr(z.y))));
+    return !(m <= big);
+}
+
+/* Two segments of non-zero length on lines that cross at one point (rxs:
+ * r x s, clear of zero): t and u from the cross products. */
+static sx_segment_relation crossing(const segment_pair *g, sx_real rxs,
+                                    sx_segment_intersection *out) {
+    const sx_real tol = SX_QUERY_REL_TOLERANCE;
+    sx_real t = sx_cross(g->w, g->s) / rxs;
+    sx_real u = sx_cross(g->w, g->r) / rxs;
+    sx_real t_tol = tol * sx_maxr(SX_R(1.0), sx_length(g->w) / g->rlen);
+    sx_real u_tol = tol * sx_maxr(SX_R(1.0), sx_length(g->w) / g->slen);
+    sx_vec2 c;
+    if (t < -t_tol || t > SX_R(1.0) + t_tol || u < -u_tol || u > SX_R(1.0) + u_tol) {
+        return finish(out, SX_SEGMENTS_DISJOINT);
+    }
+    /* Within the slack of an end, snap to it: a T-junction reports the
+     * exact end point rather than a point a rounding error away. */
+    t = t < t_tol ? SX_R(0.0) : (t > SX_R(1.0) - t_tol ? SX_R(1.0) : t);
+    u = u < u_tol ? SX_R(0.0) : (u > SX_R(1.0) - u_tol ? SX_R(1.0) : u);
+    /* An end point that is part of the answer is returned exactly. */
+    if (t == SX_R(0.0)) {
+        c = g->p1;
+    } else if (t == SX_R(1.0)) {
+        c = g->p2;
+    } else if (u == SX_R(0.0)) {
+        c = g->q1;
+    } else if (u == SX_R(1.0)) {
+        c = g->q2;
+    } else {
+        c = sx_mul_add(g->p1, t, g->r);
+    }
+    return single_point(out, c, t, u);
+}
+
+/* Two parallel segments of non-zero length. Collinear when both of q's end
+ * points lie on p's line, within the relative tolerance of the
+ * configuration's size. */
+static sx_segment_relation parallel(const segment_pair *g, sx_segment_intersection *out) {
+    const sx_real tol = SX_QUERY_REL_TOLERANCE;
+    sx_vec2 p1 = g->p1, p2 = g->p2, q1 = g->q1, q2 = g->q2, r = g->r, w = g->w;
+    sx_real rlen = g->rlen;
+    sx_real scale = sx_maxr(sx_maxr(rlen, g->slen), sx_maxr(sx_length(w), sx_distance(p1, q2)));
+    sx_real rr = rlen * rlen;
+    sx_real t0, t1, lo, hi, slack;
+    sx_vec2 lo_point, hi_point;
+    if (sx_absr(sx_cross(r, w)) > tol * scale * rlen ||
+        sx_absr(sx_cross(r, sx_sub(q2, p1))) > tol * scale * rlen) {
+        return finish(out, SX_SEGMENTS_PARALLEL);
+    }
+    /* q's end points as parameters along p; the shared part is the
+     * intersection of [t0, t1] (sorted) with [0, 1]. */
+    t0 = sx_dot(w, r) / rr;
+    t1 = sx_dot(sx_sub(q2, p1), r) / rr;
+    slack = tol * scale / rlen;
+    if (t0 <= t1) {
+        lo = t0;
+        lo_point = q1;
+        hi = t1;
+        hi_point = q2;
+    } else {
+        lo = t1;
+        lo_point = q2;
+        hi = t0;
+        hi_point = q1;
+    }
+    if (hi < -slack || lo > SX_R(1.0) + slack) return finish(out, SX_SEGMENTS_COLLINEAR_DISJOINT);
+    if (lo <= SX_R(0.0)) {
+        lo = SX_R(0.0);
+        lo_point = p1;
+    } else if (lo >= SX_R(1.0)) {
+        lo = SX_R(1.0);
+        lo_point = p2;
+    }
+    if (hi >= SX_R(1.0)) {
+        hi = SX_R(1.0);
+        hi_point = p2;
+    } else if (hi <= SX_R(0.0)) {
+        hi = SX_R(0.0);
+        hi_point = p1;
+    }
+    if (out != NULL) {
+        sx_real u;
+        out->point = lo_point;
+        out->t = lo;
+        (void)sx_closest_point_on_segment(q1, q2, lo_point, &u);
+        out->u = u;
+        out->overlap_start = lo_point;
+        out->overlap_end = hi < lo ? lo_point : hi_point;
+    }
+    return finish(out, SX_SEGMENTS_OVERLAP);
+}
+
 sx_segment_relation sx_intersect_segments(sx_vec2 p1, sx_vec2 p2, sx_vec2 q1, sx_vec2 q2,
                                           sx_segment_intersection *out) {
     const sx_real tol = SX_QUERY_REL_TOLERANCE;
-    sx_vec2 r = sx_sub(p2, p1), s = sx_sub(q2, q1), w = sx_sub(q1, p1);
-    sx_real rlen, slen, rxs, v;
+    segment_pair g;
+    sx_real rxs, v;
     if (out != NULL) {
         out->point = sx_v2_zero();
         out->t = SX_R(0.0);
@@ -289,119 +398,35 @@ sx_segment_relation sx_intersect_segments(sx_vec2 p1, sx_vec2 p2, sx_vec2 q1, sx
         out->overlap_start = sx_v2_zero();
         out->overlap_end = sx_v2_zero();
     }
-    if (!sx_vec2_is_finite(r) || !sx_vec2_is_finite(s) || !sx_vec2_is_finite(w) ||
-        !sx_vec2_is_finite(p1) || !sx_vec2_is_finite(q1)) {
+    g.p1 = p1;
+    g.p2 = p2;
+    g.q1 = q1;
+    g.q2 = q2;
+    g.r = sx_sub(p2, p1);
+    g.s = sx_sub(q2, q1);
+    g.w = sx_sub(q1, p1);
+    if (!sx_vec2_is_finite(g.r) || !sx_vec2_is_finite(g.s) || !sx_vec2_is_finite(g.w) ||
+        !sx_vec2_is_finite(p1) || !sx_vec2_is_finite(q1) || too_large(&g)) {
         return finish(out, SX_SEGMENTS_DEGENERATE);
     }
-    {
-        /* Beyond this the cross products below would overflow. */
-        const sx_real big = SX_R(0.125) * sx_sqrt(SX_REAL_MAX);
-        sx_vec2 z = sx_sub(q2, p1);
-        sx_real m = sx_maxr(
-            sx_maxr(sx_maxr(sx_absr(r.x), sx_absr(r.y)), sx_maxr(sx_absr(s.x), sx_absr(s.y))),
-            sx_maxr(sx_maxr(sx_absr(w.x), sx_absr(w.y)), sx_maxr(sx_absr(z.x), sx_absr(z.y))));
-        if (!(m <= big)) return finish(out, SX_SEGMENTS_DEGENERATE);
-    }
-    rlen = sx_length(r);
-    slen = sx_length(s);
+    g.rlen = sx_length(g.r);
+    g.slen = sx_length(g.s);
 
     /* Zero-length segments are points: on the other segment or not. Two
      * points meet only when they are equal. */
-    if (!(rlen > SX_R(0.0)) && !(slen > SX_R(0.0))) {
+    if (!(g.rlen > SX_R(0.0)) && !(g.slen > SX_R(0.0))) {
         if (p1.x == q1.x && p1.y == q1.y) return single_point(out, p1, SX_R(0.0), SX_R(0.0));
         return finish(out, SX_SEGMENTS_DISJOINT);
     }
-    if (!(rlen > SX_R(0.0))) {
-        if (point_on_segment(p1, q1, s, slen, &v)) return single_point(out, p1, SX_R(0.0), v);
+    if (!(g.rlen > SX_R(0.0))) {
+        if (point_on_segment(p1, q1, g.s, g.slen, &v)) return single_point(out, p1, SX_R(0.0), v);
         return finish(out, SX_SEGMENTS_DISJOINT);
     }
-    if (!(slen > SX_R(0.0))) {
-        if (point_on_segment(q1, p1, r, rlen, &v)) return single_point(out, q1, v, SX_R(0.0));
+    if (!(g.slen > SX_R(0.0))) {
+        if (point_on_segment(q1, p1, g.r, g.rlen, &v)) return single_point(out, q1, v, SX_R(0.0));
         return finish(out, SX_SEGMENTS_DISJOINT);
     }
-
-    rxs = sx_cross(r, s);
-    if (sx_absr(rxs) > tol * rlen * slen) {
-        /* Lines cross at one point: t and u from the cross products. */
-        sx_real t = sx_cross(w, s) / rxs;
-        sx_real u = sx_cross(w, r) / rxs;
-        sx_real t_tol = tol * sx_maxr(SX_R(1.0), sx_length(w) / rlen);
-        sx_real u_tol = tol * sx_maxr(SX_R(1.0), sx_length(w) / slen);
-        sx_vec2 c;
-        if (t < -t_tol || t > SX_R(1.0) + t_tol || u < -u_tol || u > SX_R(1.0) + u_tol) {
-            return finish(out, SX_SEGMENTS_DISJOINT);
-        }
-        /* Within the slack of an end, snap to it: a T-junction reports the
-         * exact end point rather than a point a rounding error away. */
-        t = t < t_tol ? SX_R(0.0) : (t > SX_R(1.0) - t_tol ? SX_R(1.0) : t);
-        u = u < u_tol ? SX_R(0.0) : (u > SX_R(1.0) - u_tol ? SX_R(1.0) : u);
-        /* An end point that is part of the answer is returned exactly. */
-        if (t == SX_R(0.0)) {
-            c = p1;
-        } else if (t == SX_R(1.0)) {
-            c = p2;
-        } else if (u == SX_R(0.0)) {
-            c = q1;
-        } else if (u == SX_R(1.0)) {
-            c = q2;
-        } else {
-            c = sx_mul_add(p1, t, r);
-        }
-        return single_point(out, c, t, u);
-    }
-
-    /* Parallel. Collinear when both of q's end points lie on p's line, within
-     * the relative tolerance of the configuration's size. */
-    {
-        sx_real scale = sx_maxr(sx_maxr(rlen, slen), sx_maxr(sx_length(w), sx_distance(p1, q2)));
-        sx_real rr = rlen * rlen;
-        sx_real t0, t1, lo, hi, slack;
-        sx_vec2 lo_point, hi_point;
-        if (sx_absr(sx_cross(r, w)) > tol * scale * rlen ||
-            sx_absr(sx_cross(r, sx_sub(q2, p1))) > tol * scale * rlen) {
-            return finish(out, SX_SEGMENTS_PARALLEL);
-        }
-        /* q's end points as parameters along p; the shared part is the
-         * intersection of [t0, t1] (sorted) with [0, 1]. */
-        t0 = sx_dot(w, r) / rr;
-        t1 = sx_dot(sx_sub(q2, p1), r) / rr;
-        slack = tol * scale / rlen;
-        if (t0 <= t1) {
-            lo = t0;
-            lo_point = q1;
-            hi = t1;
-            hi_point = q2;
-        } else {
-            lo = t1;
-            lo_point = q2;
-            hi = t0;
-            hi_point = q1;
-        }
-        if (hi < -slack || lo > SX_R(1.0) + slack)
-            return finish(out, SX_SEGMENTS_COLLINEAR_DISJOINT);
-        if (lo <= SX_R(0.0)) {
-            lo = SX_R(0.0);
-            lo_point = p1;
-        } else if (lo >= SX_R(1.0)) {
-            lo = SX_R(1.0);
-            lo_point = p2;
-        }
-        if (hi >= SX_R(1.0)) {
-            hi = SX_R(1.0);
-            hi_point = p2;
-        } else if (hi <= SX_R(0.0)) {
-            hi = SX_R(0.0);
-            hi_point = p1;
-        }
-        if (out != NULL) {
-            sx_real u;
-            out->point = lo_point;
-            out->t = lo;
-            (void)sx_closest_point_on_segment(q1, q2, lo_point, &u);
-            out->u = u;
-            out->overlap_start = lo_point;
-            out->overlap_end = hi < lo ? lo_point : hi_point;
-        }
-        return finish(out, SX_SEGMENTS_OVERLAP);
-    }
+    rxs = sx_cross(g.r, g.s);
+    if (sx_absr(rxs) > tol * g.rlen * g.slen) return crossing(&g, rxs, out);
+    return parallel(&g, out);
 }

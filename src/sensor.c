@@ -6,7 +6,13 @@
  * no manifold) on those. A world with no sensor spends nothing here. The overlaps are kept as
  * a sorted list of pair keys; comparing it with the previous list (one merge
  * walk) gives the begin and end events, in a deterministic order. */
+#include <string.h>
+
+#include "world_array.h"
+#include "world_body.h"
+#include "world_broadphase.h"
 #include "world_internal.h"
+#include "world_sensor.h"
 
 void sx_sensors_free(sx_world *world) {
     sx_free(world->visitors, (size_t)world->visitor_capacity * sizeof(int));

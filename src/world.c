@@ -16,9 +16,17 @@
  * starting. Buffers only grow; a warmed-up world allocates nothing per
  * step. */
 #include <stdlib.h>
+#include <string.h>
 
 #include "collide_world.h"
+#include "world_array.h"
+#include "world_body.h"
+#include "world_broadphase.h"
+#include "world_ccd.h"
+#include "world_contact.h"
 #include "world_internal.h"
+#include "world_island.h"
+#include "world_sensor.h"
 
 sx_world_def sx_default_world_def(void) {
     sx_world_def d;

@@ -24,6 +24,10 @@
 #include <stdlib.h>
 
 #include "distance.h"
+#include "world_array.h"
+#include "world_body.h"
+#include "world_broadphase.h"
+#include "world_ccd.h"
 #include "world_internal.h"
 
 /* A bullet the continuous stage moves (sx_bullets_meet): its motion over

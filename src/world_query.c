@@ -17,6 +17,10 @@
  * walk to return, and the walks stop calling back once it is asked for. */
 #include <stdint.h>
 
+#include <string.h>
+
+#include "world_body.h"
+#include "world_contact.h"
 #include "world_internal.h"
 
 /* The collider and body handles of collider slot i. */

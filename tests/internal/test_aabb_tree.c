@@ -12,7 +12,6 @@
 #include <string.h>
 
 #include "../../src/aabb_tree.h"
-#include "../../src/world_internal.h"
 #include "test_support.h"
 
 #define ITEMS 300

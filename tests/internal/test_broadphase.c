@@ -15,6 +15,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../../src/world_body.h"
+#include "../../src/world_broadphase.h"
 #include "../../src/world_internal.h"
 #include "test_support.h"
 

@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../../src/world_array.h"
 #include "../../src/world_internal.h"
 #include "test_support.h"
 

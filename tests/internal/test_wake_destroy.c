@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../../src/world_body.h"
 #include "../../src/world_internal.h"
 #include "test_support.h"
 
