@@ -162,4 +162,155 @@ static inline bool sx_m4_any(sx_m4 m) { return sx_m4_bits(m) != 0; }
 /** True when every lane of m is. */
 static inline bool sx_m4_all(sx_m4 m) { return sx_m4_bits(m) == 15; }
 
+/* ---- lane moves, integer lanes and reductions ---------------------------
+ * What the narrowphase needs besides lane-wise arithmetic: points stored as
+ * pairs of reals loaded two or four at a time, lanes moved in a fixed order
+ * (named for the order, so that both paths move them alike), feature
+ * indices kept in integer lanes beside the reals that choose them. */
+
+#if SX_SIMD
+
+/** Four 32-bit ints. */
+typedef __m128i sx_i4;
+
+/** [p[0], p[1], a2, a3]: two reals, 8 bytes, any alignment. */
+static inline sx_r4 sx_r4_load_low(sx_r4 a, const sx_real *p) {
+    return _mm_loadl_pi(a, (const __m64 *)(const void *)p);
+}
+/** [a0, a1, p[0], p[1]]. */
+static inline sx_r4 sx_r4_load_high(sx_r4 a, const sx_real *p) {
+    return _mm_loadh_pi(a, (const __m64 *)(const void *)p);
+}
+/** Lanes 0 and 1 of a to p[0], p[1]. */
+static inline void sx_r4_store_low(sx_real *p, sx_r4 a) { _mm_storel_pi((__m64 *)(void *)p, a); }
+/** Lanes 2 and 3 of a to p[0], p[1]. */
+static inline void sx_r4_store_high(sx_real *p, sx_r4 a) { _mm_storeh_pi((__m64 *)(void *)p, a); }
+/** Lane 0 of a. */
+static inline sx_real sx_r4_first(sx_r4 a) { return _mm_cvtss_f32(a); }
+/** [a1, a0, a3, a2]. */
+static inline sx_r4 sx_r4_swap_pairs(sx_r4 a) {
+    return _mm_shuffle_ps(a, a, _MM_SHUFFLE(2, 3, 0, 1));
+}
+/** [a2, a3, a0, a1]. */
+static inline sx_r4 sx_r4_swap_halves(sx_r4 a) {
+    return _mm_shuffle_ps(a, a, _MM_SHUFFLE(1, 0, 3, 2));
+}
+/** [a0, a1, b0, b1]. */
+static inline sx_r4 sx_r4_low_halves(sx_r4 a, sx_r4 b) { return _mm_movelh_ps(a, b); }
+/** [a0, a1, b2, b3]. */
+static inline sx_r4 sx_r4_low_high(sx_r4 a, sx_r4 b) {
+    return _mm_shuffle_ps(a, b, _MM_SHUFFLE(3, 2, 1, 0));
+}
+/** [a0, a2, b0, b2]: the x of two pairs of points. */
+static inline sx_r4 sx_r4_evens(sx_r4 a, sx_r4 b) {
+    return _mm_shuffle_ps(a, b, _MM_SHUFFLE(2, 0, 2, 0));
+}
+/** [a1, a3, b1, b3]: their y. */
+static inline sx_r4 sx_r4_odds(sx_r4 a, sx_r4 b) {
+    return _mm_shuffle_ps(a, b, _MM_SHUFFLE(3, 1, 3, 1));
+}
+/** Lane 2 of a in every lane. */
+static inline sx_r4 sx_r4_splat2(sx_r4 a) { return _mm_shuffle_ps(a, a, _MM_SHUFFLE(2, 2, 2, 2)); }
+/** Lane 3 of a in every lane. */
+static inline sx_r4 sx_r4_splat3(sx_r4 a) { return _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 3, 3, 3)); }
+/** a with its sign bit flipped in the lanes where s is -0 (s: +0 or -0). */
+static inline sx_r4 sx_r4_flip_signs(sx_r4 a, sx_r4 s) { return _mm_xor_ps(a, s); }
+
+static inline sx_i4 sx_i4_set1(int32_t a) { return _mm_set1_epi32(a); }
+/** m ? a : b per lane. */
+static inline sx_i4 sx_i4_select(sx_m4 m, sx_i4 a, sx_i4 b) {
+    __m128i k = _mm_castps_si128(m);
+    return _mm_or_si128(_mm_and_si128(k, a), _mm_andnot_si128(k, b));
+}
+/** Four ints to p[0..3], any alignment. */
+static inline void sx_i4_store(int32_t *p, sx_i4 a) { _mm_storeu_si128((__m128i *)(void *)p, a); }
+
+#else /* the portable lanes */
+
+typedef struct sx_i4 {
+    int32_t i[4];
+} sx_i4;
+
+static inline sx_r4 sx_r4_load_low(sx_r4 a, const sx_real *p) {
+    return sx_r4_set(p[0], p[1], a.v[2], a.v[3]);
+}
+static inline sx_r4 sx_r4_load_high(sx_r4 a, const sx_real *p) {
+    return sx_r4_set(a.v[0], a.v[1], p[0], p[1]);
+}
+static inline void sx_r4_store_low(sx_real *p, sx_r4 a) {
+    p[0] = a.v[0];
+    p[1] = a.v[1];
+}
+static inline void sx_r4_store_high(sx_real *p, sx_r4 a) {
+    p[0] = a.v[2];
+    p[1] = a.v[3];
+}
+static inline sx_real sx_r4_first(sx_r4 a) { return a.v[0]; }
+static inline sx_r4 sx_r4_swap_pairs(sx_r4 a) { return sx_r4_set(a.v[1], a.v[0], a.v[3], a.v[2]); }
+static inline sx_r4 sx_r4_swap_halves(sx_r4 a) { return sx_r4_set(a.v[2], a.v[3], a.v[0], a.v[1]); }
+static inline sx_r4 sx_r4_low_halves(sx_r4 a, sx_r4 b) {
+    return sx_r4_set(a.v[0], a.v[1], b.v[0], b.v[1]);
+}
+static inline sx_r4 sx_r4_low_high(sx_r4 a, sx_r4 b) {
+    return sx_r4_set(a.v[0], a.v[1], b.v[2], b.v[3]);
+}
+static inline sx_r4 sx_r4_evens(sx_r4 a, sx_r4 b) {
+    return sx_r4_set(a.v[0], a.v[2], b.v[0], b.v[2]);
+}
+static inline sx_r4 sx_r4_odds(sx_r4 a, sx_r4 b) {
+    return sx_r4_set(a.v[1], a.v[3], b.v[1], b.v[3]);
+}
+static inline sx_r4 sx_r4_splat2(sx_r4 a) { return sx_r4_set1(a.v[2]); }
+static inline sx_r4 sx_r4_splat3(sx_r4 a) { return sx_r4_set1(a.v[3]); }
+/* Negation flips the sign bit alone in IEEE arithmetic, NaN and zero
+ * included, as SSE2's exclusive or with -0 does. */
+static inline sx_r4 sx_r4_flip_signs(sx_r4 a, sx_r4 s) {
+    return sx_r4_set(signbit(s.v[0]) ? -a.v[0] : a.v[0], signbit(s.v[1]) ? -a.v[1] : a.v[1],
+                     signbit(s.v[2]) ? -a.v[2] : a.v[2], signbit(s.v[3]) ? -a.v[3] : a.v[3]);
+}
+
+static inline sx_i4 sx_i4_set1(int32_t a) {
+    sx_i4 r;
+    r.i[0] = r.i[1] = r.i[2] = r.i[3] = a;
+    return r;
+}
+static inline sx_i4 sx_i4_select(sx_m4 m, sx_i4 a, sx_i4 b) {
+    sx_i4 r;
+    int k;
+    for (k = 0; k < 4; ++k)
+        r.i[k] = m.m[k] ? a.i[k] : b.i[k];
+    return r;
+}
+static inline void sx_i4_store(int32_t *p, sx_i4 a) {
+    p[0] = a.i[0];
+    p[1] = a.i[1];
+    p[2] = a.i[2];
+    p[3] = a.i[3];
+}
+
+#endif /* SX_SIMD */
+
+/** [p[0], p[1], 0, 0]. */
+static inline sx_r4 sx_r4_load2(const sx_real *p) { return sx_r4_load_low(sx_r4_zero(), p); }
+/** [lo[0], lo[1], hi[0], hi[1]]: two 8-byte loads, which two 8-byte stores
+ *  still in flight can forward to (a 16-byte load of them cannot). */
+static inline sx_r4 sx_r4_load2x2(const sx_real *lo, const sx_real *hi) {
+    return sx_r4_load_high(sx_r4_load2(lo), hi);
+}
+/** The least lane of a in every lane: halves first, then pairs, with
+ *  sx_r4_min's rule for NaN and signed zeros at each step. */
+static inline sx_r4 sx_r4_min_lanes(sx_r4 a) {
+    a = sx_r4_min(a, sx_r4_swap_halves(a));
+    return sx_r4_min(a, sx_r4_swap_pairs(a));
+}
+/** The largest lane of a in every lane, in sx_r4_min_lanes's order. */
+static inline sx_r4 sx_r4_max_lanes(sx_r4 a) {
+    a = sx_r4_max(a, sx_r4_swap_halves(a));
+    return sx_r4_max(a, sx_r4_swap_pairs(a));
+}
+/** True when some lane of a is NaN. */
+static inline bool sx_r4_any_nan(sx_r4 a) { return sx_m4_any(sx_r4_unordered(a, a)); }
+/** True when no lane of a is NaN or infinite (a - a is 0 for those only). */
+static inline bool sx_r4_all_finite(sx_r4 a) { return !sx_r4_any_nan(sx_r4_sub(a, a)); }
+
 #endif /* SEPAX_SIMD_H */
