@@ -156,10 +156,12 @@ int sx_core_polygon_point_manifold(const sx_polygon *a, sx_vec2 c, sx_real rb, s
  * transform by value; loaded 8 bytes at a time, as a by-value transform is
  * stored (a 16-byte load of two 8-byte stores cannot be forwarded). */
 typedef sx_r4 sx_xf;
-static inline sx_xf sx_xf_of(const sx_xform *x) { return sx_r4_load2x2(&x->p.x, &x->q.c); }
+static SX_ALWAYS_INLINE sx_xf sx_xf_of(const sx_xform *x) {
+    return sx_r4_load2x2(&x->p.x, &x->q.c);
+}
 /* The transform back as a value, for the calls into code that takes
  * transforms by value. */
-static inline sx_xform sx_xform_of_xf(sx_xf x) {
+static SX_ALWAYS_INLINE sx_xform sx_xform_of_xf(sx_xf x) {
     sx_xform t;
     sx_r4_store_low(&t.p.x, x);
     sx_r4_store_high(&t.q.c, x);
@@ -169,7 +171,7 @@ static inline sx_xform sx_xform_of_xf(sx_xf x) {
 /* The two vectors in v turned by the rotation in lanes 2, 3 of x, each lane
  * as sx_rotate computes it (c x - s y as c x + (-s) y, and s x + c y as
  * c y + s x, which IEEE arithmetic makes the same numbers). */
-static inline sx_r4 sx_xf_rotate(sx_xf x, sx_r4 v) {
+static SX_ALWAYS_INLINE sx_r4 sx_xf_rotate(sx_xf x, sx_r4 v) {
     sx_r4 s =
         sx_r4_flip_signs(sx_r4_splat3(x), sx_r4_set(SX_R(-0.0), SX_R(0.0), SX_R(-0.0), SX_R(0.0)));
     return sx_r4_add(sx_r4_mul(sx_r4_splat2(x), v), sx_r4_mul(s, sx_r4_swap_pairs(v)));
@@ -177,7 +179,7 @@ static inline sx_r4 sx_xf_rotate(sx_xf x, sx_r4 v) {
 
 /* The two vectors in v turned by the inverse of that rotation, each lane as
  * sx_inv_rotate computes it (-s x + c y as c y + (-s) x). */
-static inline sx_r4 sx_xf_inv_rotate(sx_xf x, sx_r4 v) {
+static SX_ALWAYS_INLINE sx_r4 sx_xf_inv_rotate(sx_xf x, sx_r4 v) {
     sx_r4 s =
         sx_r4_flip_signs(sx_r4_splat3(x), sx_r4_set(SX_R(0.0), SX_R(-0.0), SX_R(0.0), SX_R(-0.0)));
     return sx_r4_add(sx_r4_mul(sx_r4_splat2(x), v), sx_r4_mul(s, sx_r4_swap_pairs(v)));
@@ -187,14 +189,14 @@ static inline sx_r4 sx_xf_inv_rotate(sx_xf x, sx_r4 v) {
  * it: the offset [dx, dy] and B's rotation [bc, bs] turned back by A's
  * rotation give [c dx + s dy, -s dx + c dy, c bc + s bs, c bs - s bc],
  * which are the offset's sx_inv_rotate and sx_rot_inv_mul. */
-static inline sx_xf sx_xf_relative(sx_xf xa, sx_xf xb) {
+static SX_ALWAYS_INLINE sx_xf sx_xf_relative(sx_xf xa, sx_xf xb) {
     return sx_xf_inv_rotate(xa, sx_r4_low_high(sx_r4_sub(xb, xa), xb));
 }
 
 /* A circle B's centre in A's frame: the world offset of the positions first
  * (exact for nearby bodies far from the origin), then B's rotated centre,
  * then the rotation into A's frame (lanes 0, 1; the others are unused). */
-static inline sx_vec2 sx_circle_in_frame(const sx_circle *b, sx_xf xa, sx_xf xb) {
+static SX_ALWAYS_INLINE sx_vec2 sx_circle_in_frame(const sx_circle *b, sx_xf xa, sx_xf xb) {
     sx_r4 w = sx_r4_add(sx_r4_sub(xb, xa), sx_xf_rotate(xb, sx_r4_load2(&b->center.x)));
     sx_vec2 c;
     sx_r4_store_low(&c.x, sx_xf_inv_rotate(xa, w));
@@ -208,7 +210,7 @@ static inline sx_vec2 sx_circle_in_frame(const sx_circle *b, sx_xf xa, sx_xf xb)
  * is needed for. xa needs no check of its own: both components of the
  * inverse rotation take in both rotation components and both coordinates
  * of the offset. */
-static inline bool sx_circle_valid(const sx_circle *b, sx_xf xb, sx_vec2 c) {
+static SX_ALWAYS_INLINE bool sx_circle_valid(const sx_circle *b, sx_xf xb, sx_vec2 c) {
     sx_r4 v = sx_r4_set(b->center.x, b->center.y, c.x, c.y);
     return b->radius >= SX_R(0.0) && sx_is_finite(b->radius) &&
            !sx_r4_any_nan(sx_r4_add(sx_r4_sub(xb, xb), sx_r4_sub(v, v)));
@@ -221,7 +223,7 @@ static inline bool sx_circle_valid(const sx_circle *b, sx_xf xb, sx_vec2 c) {
  * sx_manifold: both are turned in one register, each lane as
  * sx_xform_vector and sx_xform_point compute it; one test checks every
  * output. */
-static inline int sx_world_manifold(sx_manifold *m, int count, sx_xf xa) {
+static SX_ALWAYS_INLINE int sx_world_manifold(sx_manifold *m, int count, sx_xf xa) {
     if (count > 0) {
         /* Two 8-byte loads, not one of 16: the routines before this store
          * the normal and the point separately (see sx_r4_load2x2). */

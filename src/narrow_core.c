@@ -71,7 +71,7 @@ bool sx_core_from_capsule(const sx_capsule *c, const sx_xform *x, sx_core *out) 
  * placed values do not depend on the width. Stored 16 bytes at a time, the
  * pairs best_face_lanes loads back, so the loads are forwarded from the
  * stores. */
-static inline void place_polygon_rel(const sx_polygon *p, sx_xf x, sx_core *out) {
+static SX_ALWAYS_INLINE void place_polygon_rel(const sx_polygon *p, sx_xf x, sx_core *out) {
     int i, n = p->count;
     sx_r4 t = sx_r4_low_halves(x, x);
     out->radius = p->radius;

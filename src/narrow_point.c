@@ -298,7 +298,7 @@ static SX_ALWAYS_INLINE sx_r4 point_face_lanes(const sx_vec2 *v, const sx_vec2 *
 }
 
 /* [p.x, p.y, p.x, p.y]. */
-static inline sx_r4 point_twice(const sx_vec2 *p) {
+static SX_ALWAYS_INLINE sx_r4 point_twice(const sx_vec2 *p) {
     sx_r4 r = sx_r4_load2(&p->x);
     return sx_r4_low_halves(r, r);
 }

@@ -25,7 +25,7 @@ static SX_MAYBE_UNUSED int next_index(const sx_core *c, int i) {
  * the inner loop of every polygon pair. A NaN (a 0 x inf product of cores
  * beyond the range) makes the separation unknown, and NaN says so to
  * sat_run. */
-static inline sx_real face_separation(const sx_core *p, int i, const sx_core *q) {
+static SX_ALWAYS_INLINE sx_real face_separation(const sx_core *p, int i, const sx_core *q) {
     sx_vec2 n = p->n[i], v = p->v[i];
     const sx_vec2 *qv = q->v;
     sx_real best0 = SX_REAL_MAX, best1 = SX_REAL_MAX, d0, d1;
@@ -106,7 +106,7 @@ typedef struct sx_sat {
  * to the sign of a zero minimum, which no caller can tell apart. q has 3 or
  * more vertices; lanes past its count repeat vertex 0, which cannot change a
  * minimum. */
-static inline sx_r4 vertex_pair_lanes(const sx_vec2 *v, int j, int m, sx_r4 v00) {
+static SX_ALWAYS_INLINE sx_r4 vertex_pair_lanes(const sx_vec2 *v, int j, int m, sx_r4 v00) {
     if (j + 1 < m) return sx_r4_load(&v[j].x);
     if (j < m) return sx_r4_load_low(v00, &v[j].x);
     return v00;
@@ -114,14 +114,14 @@ static inline sx_r4 vertex_pair_lanes(const sx_vec2 *v, int j, int m, sx_r4 v00)
 
 /* The separations of q's vertices (x, y: four lanes each) from face i of p,
  * as face_separation computes them. */
-static inline sx_r4 face_lanes(const sx_core *p, int i, sx_r4 x, sx_r4 y) {
+static SX_ALWAYS_INLINE sx_r4 face_lanes(const sx_core *p, int i, sx_r4 x, sx_r4 y) {
     sx_r4 nx = sx_r4_set1(p->n[i].x), ny = sx_r4_set1(p->n[i].y);
     sx_r4 vx = sx_r4_set1(p->v[i].x), vy = sx_r4_set1(p->v[i].y);
     return sx_r4_add(sx_r4_mul(nx, sx_r4_sub(x, vx)), sx_r4_mul(ny, sx_r4_sub(y, vy)));
 }
 
 /* The least of four lanes, or NaN when a lane of `bad` is set. */
-static inline sx_real lane_min(sx_r4 lo, sx_m4 bad) {
+static SX_ALWAYS_INLINE sx_real lane_min(sx_r4 lo, sx_m4 bad) {
     return sx_m4_any(bad) ? (sx_real)NAN : sx_r4_first(sx_r4_min_lanes(lo));
 }
 
