@@ -286,15 +286,23 @@ typedef struct sx_polygon_point {
  * computes it; faces past count repeat face 0 (v00, n00: its vertex and
  * normal in both halves), which cannot change a first maximum. */
 static SX_ALWAYS_INLINE sx_r4 point_face_lanes(const sx_vec2 *v, const sx_vec2 *nn, int count,
-                                               int i, sx_r4 cc, sx_r4 v00, sx_r4 n00, sx_r4 *fold) {
+                                               int i, sx_r4 cc, sx_r4 v00, sx_r4 n00) {
     sx_r4 v0 = vertex_pair_lanes(v, i, count, v00), v1 = vertex_pair_lanes(v, i + 2, count, v00);
     sx_r4 m0 = vertex_pair_lanes(nn, i, count, n00), m1 = vertex_pair_lanes(nn, i + 2, count, n00);
     sx_r4 p0 = sx_r4_mul(m0, sx_r4_sub(cc, v0)), p1 = sx_r4_mul(m1, sx_r4_sub(cc, v1));
-    /* (x - x): 0 for finite x, NaN otherwise (sx_polygon_values_finite's
-     * test, on the values loaded anyway). */
-    *fold = sx_r4_add(*fold, sx_r4_add(sx_r4_add(sx_r4_sub(v0, v0), sx_r4_sub(v1, v1)),
-                                       sx_r4_add(sx_r4_sub(m0, m0), sx_r4_sub(m1, m1))));
     return sx_r4_add(sx_r4_evens(p0, p1), sx_r4_odds(p0, p1));
+}
+
+/* (x - x) over the vertices and normals of faces i..i+3, padded as
+ * point_face_lanes pads them: lanes of 0 when all are finite, NaN
+ * otherwise (sx_polygon_values_finite's test). Taken only once the answer
+ * is not "apart", from values the face loop has just brought in. */
+static SX_ALWAYS_INLINE sx_r4 point_finite_lanes(const sx_vec2 *v, const sx_vec2 *nn, int count,
+                                                 int i, sx_r4 v00, sx_r4 n00) {
+    sx_r4 v0 = vertex_pair_lanes(v, i, count, v00), v1 = vertex_pair_lanes(v, i + 2, count, v00);
+    sx_r4 m0 = vertex_pair_lanes(nn, i, count, n00), m1 = vertex_pair_lanes(nn, i + 2, count, n00);
+    return sx_r4_add(sx_r4_add(sx_r4_sub(v0, v0), sx_r4_sub(v1, v1)),
+                     sx_r4_add(sx_r4_sub(m0, m0), sx_r4_sub(m1, m1)));
 }
 
 /* [p.x, p.y, p.x, p.y]. */
@@ -318,13 +326,13 @@ static SX_ALWAYS_INLINE int polygon_point(const sx_vec2 *v, const sx_vec2 *nn, i
          * then taken once more by the scalar expression: the maximum of
          * the lanes may differ from it in the sign of a zero. */
         sx_r4 cc = point_twice(&c), v00 = point_twice(&v[0]), n00 = point_twice(&nn[0]);
-        sx_r4 fold = sx_r4_zero(), s0, mx;
+        sx_r4 s0, mx;
         sx_m4 bad;
         int mask;
-        s0 = point_face_lanes(v, nn, count, 0, cc, v00, n00, &fold);
+        s0 = point_face_lanes(v, nn, count, 0, cc, v00, n00);
         bad = sx_r4_unordered(s0, s0);
         if (count > 4) {
-            sx_r4 s1 = point_face_lanes(v, nn, count, 4, cc, v00, n00, &fold);
+            sx_r4 s1 = point_face_lanes(v, nn, count, 4, cc, v00, n00);
             bad = sx_m4_or(bad, sx_r4_unordered(s1, s1));
             mx = sx_r4_max_lanes(sx_r4_max(s0, s1));
             mask = sx_m4_bits(sx_r4_eq(s0, mx)) | (sx_m4_bits(sx_r4_eq(s1, mx)) << 4);
@@ -336,7 +344,11 @@ static SX_ALWAYS_INLINE int polygon_point(const sx_vec2 *v, const sx_vec2 *nn, i
         if (sx_m4_any(bad) || !(best <= limit)) return 0;
         face = sx_lowest_bit((uint64_t)mask);
         best = sx_dot(nn[face], sx_sub(c, v[face]));
-        if (values_finite) *values_finite = !sx_r4_any_nan(fold);
+        if (values_finite) {
+            sx_r4 fold = point_finite_lanes(v, nn, count, 0, v00, n00);
+            if (count > 4) fold = sx_r4_add(fold, point_finite_lanes(v, nn, count, 4, v00, n00));
+            *values_finite = !sx_r4_any_nan(fold);
+        }
     }
     out->face = face;
     out->sep = best;
