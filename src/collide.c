@@ -37,16 +37,11 @@ static inline bool xform_finite(sx_xform x) {
  * of A), so a NaN or infinity in xa or xb makes some component NaN or
  * infinite (inf x 0 is NaN, inf x nonzero is infinite). */
 SX_NOINLINE static bool relative_xform(sx_xform xa, sx_xform xb, sx_xform *rel) {
-#if SX_NARROW_SSE
     /* Out of line: inlined, GCC 12 copies xb through a 16-byte reload of
      * its two stored halves, a failed store forward on the hot path. */
-    __m128 r = sx_sse_relative_xform(sx_xf_of(&xa), sx_xf_of(&xb));
-    _mm_storeu_ps(&rel->p.x, r);
-    return sx_sse_finite(r);
-#else
-    *rel = sx_xform_inv_mul(xa, xb);
-    return xform_finite(*rel);
-#endif
+    sx_xf r = sx_xf_relative(sx_xf_of(&xa), sx_xf_of(&xb));
+    *rel = sx_xform_of_xf(r);
+    return sx_r4_all_finite(r);
 }
 
 /* Rotates a local MTV to world space; a non-finite result (overflow of huge
@@ -301,47 +296,47 @@ static inline int collide_circles(const sx_circle *a, sx_xform xa, const sx_circ
     return 0;
 }
 
-/* The manifold entry of two circles. In the SSE build the common case (a
- * square in full precision, centres apart by more than rounding noise) is
- * written out on the registers, each lane computed as collide_circles
+/* The manifold entry of two circles. The common case (a square in full
+ * precision, centres apart by more than rounding noise) is written out on
+ * the transforms' lanes, each lane computed as collide_circles
  * computes it; collide_circles answers the rest. */
 int sx_collide_circles_xf(const sx_circle *a, sx_xf xa, const sx_circle *b, sx_xf xb,
                           sx_real margin, sx_real hyst, sx_manifold *out) {
     SX_UNUSED(hyst); /* circles have no reference face */
-#if SX_NARROW_SSE
     if (a != NULL && b != NULL) {
-        __m128 z = _mm_setzero_ps();
-        __m128 ca = _mm_loadl_pi(z, (const __m64 *)(const void *)&a->center);
-        __m128 cb = _mm_loadl_pi(z, (const __m64 *)(const void *)&b->center);
-        __m128 wa = sx_sse_rotate(xa, ca), wb = sx_sse_rotate(xb, cb);
-        __m128 d = _mm_add_ps(_mm_sub_ps(xb, xa), _mm_sub_ps(wb, wa));
-        sx_real dx = _mm_cvtss_f32(d), dy = _mm_cvtss_f32(_mm_shuffle_ps(d, d, 1));
+        sx_r4 ca = sx_r4_load2(&a->center.x), cb = sx_r4_load2(&b->center.x);
+        sx_r4 wa = sx_xf_rotate(xa, ca), wb = sx_xf_rotate(xb, cb);
+        sx_r4 d = sx_r4_add(sx_r4_sub(xb, xa), sx_r4_sub(wb, wa));
+        sx_real dx = sx_r4_first(d), dy = sx_r4_first(sx_r4_swap_pairs(d));
         sx_real r = a->radius + b->radius, dsq = dx * dx + dy * dy, mg, limit, dist;
         mg = sx_is_finite(margin) && margin > SX_R(0.0) ? margin : SX_R(0.0);
         limit = r + mg;
         if (dsq >= SX_SQUARE_SAFE * SX_SQUARE_SAFE) {
-            __m128 v = _mm_movelh_ps(ca, cb), n, pt;
+            sx_r4 n, pt;
             sx_real depth;
             if (!(dsq <= limit * limit) ||
-                !(sx_sse_finite(_mm_add_ps(_mm_sub_ps(xa, xa), _mm_sub_ps(xb, xb))) &&
-                  sx_sse_finite(v) && sx_is_finite(a->radius) && sx_is_finite(b->radius) &&
-                  a->radius >= SX_R(0.0) && b->radius >= SX_R(0.0))) {
+                !(!sx_r4_any_nan(sx_r4_add(sx_r4_sub(xa, xa), sx_r4_sub(xb, xb))) &&
+                  sx_r4_all_finite(sx_r4_low_halves(ca, cb)) && sx_is_finite(a->radius) &&
+                  sx_is_finite(b->radius) && a->radius >= SX_R(0.0) && b->radius >= SX_R(0.0))) {
                 memset(out, 0, sizeof(*out));
                 return 0;
             }
             dist = sx_sqrt(dsq);
             if (dist > SX_R(64.0) * SX_REAL_EPSILON * r) {
-                n = _mm_mul_ps(_mm_set1_ps(SX_R(1.0) / dist), d);
-                pt = _mm_add_ps(
-                    _mm_add_ps(wa, xa),
-                    _mm_mul_ps(_mm_set1_ps(SX_R(0.5) * (a->radius + dist - b->radius)), n));
+                n = sx_r4_mul(sx_r4_set1(SX_R(1.0) / dist), d);
+                pt =
+                    sx_r4_add(sx_r4_add(wa, xa),
+                              sx_r4_mul(sx_r4_set1(SX_R(0.5) * (a->radius + dist - b->radius)), n));
                 depth = sx_maxr(r - dist, -mg);
-                n = _mm_movelh_ps(n, pt);
-                if (sx_sse_finite(n) && sx_is_finite(depth)) {
-                    _mm_storeu_ps(&out->normal.x, n);
+                n = sx_r4_low_halves(n, pt);
+                if (sx_r4_all_finite(n) && sx_is_finite(depth)) {
+                    sx_r4_store_low(&out->normal.x, n);
+                    sx_r4_store_high(&out->points[0].point.x, n);
                     out->points[0].depth = depth;
                     out->points[0].id = SX_FEATURE_ID(0, 0, 0);
-                    _mm_storeu_ps(&out->points[1].point.x, z);
+                    out->points[1].point = sx_v2_zero();
+                    out->points[1].depth = SX_R(0.0);
+                    out->points[1].id = 0;
                     out->count = 1;
                     return 1;
                 }
@@ -350,7 +345,6 @@ int sx_collide_circles_xf(const sx_circle *a, sx_xf xa, const sx_circle *b, sx_x
             }
         }
     }
-#endif
     return collide_circles(a, sx_xform_of_xf(xa), b, sx_xform_of_xf(xb), margin, out);
 }
 

@@ -16,17 +16,7 @@
 #include "collide_world.h"
 #include "core.h"
 #include "sepax/collide.h"
-
-/* SSE for the float build's inner loops (x86-64 always has SSE2); the
- * double build and -DSX_NO_SIMD keep the portable loops. Every SSE loop
- * computes each lane as the portable code computes it (no fused operations,
- * the same operands in the same order), so both answer bit for bit alike. */
-#if !defined(SX_DOUBLE) && !defined(SX_NO_SIMD) && defined(__SSE2__)
-#define SX_NARROW_SSE 1
-#include <emmintrin.h>
-#else
-#define SX_NARROW_SSE 0
-#endif
+#include "simd.h"
 
 /* Reference-face hysteresis (see collide.h): B's face becomes the reference
  * only when its separation beats A's by more than this. sx_collide and the
@@ -158,91 +148,60 @@ int sx_core_polygon_point_manifold(const sx_polygon *a, sx_vec2 c, sx_real rb, s
 
 /* ---- shared plumbing of the pair functions ------------------------------ */
 
-#if SX_NARROW_SSE
-/* A transform in one register: [p.x, p.y, q.c, q.s], loaded 8 bytes at a
- * time, as a by-value transform is stored (a 16-byte load of two 8-byte
- * stores cannot be forwarded). */
-static inline __m128 sx_sse_xform(const sx_xform *x) {
-    return _mm_loadh_pi(_mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&x->p),
-                        (const __m64 *)(const void *)&x->q);
+/* A transform handed between the narrowphase's functions: four lanes,
+ * [p.x, p.y, q.c, q.s]. In the float build it travels in one register, not
+ * by address: where a function took the address of its by-value transform,
+ * GCC 12 copied it through a 16-byte reload of its two stored 8-byte
+ * halves, a failed store forward on every call (the portable lanes pass
+ * it as a struct). Made with sx_xf_of in the function that holds the
+ * transform by value; loaded 8 bytes at a time, as a by-value transform is
+ * stored (a 16-byte load of two 8-byte stores cannot be forwarded). */
+typedef sx_r4 sx_xf;
+static SX_ALWAYS_INLINE sx_xf sx_xf_of(const sx_xform *x) {
+    return sx_r4_load2x2(&x->p.x, &x->q.c);
 }
-
-/* A transform handed between the narrowphase's functions: one register,
- * [p.x, p.y, q.c, q.s]. Passed in a register, not by address: where a
- * function took the address of its by-value transform, GCC 12 copies it
- * through a 16-byte reload of its two stored 8-byte halves, a failed store
- * forward on every call. Made
- * with sx_xf_of in the function that holds the transform by value (the two
- * halves arrive in two registers and become one without memory). */
-typedef __m128 sx_xf;
-static inline sx_xf sx_xf_of(const sx_xform *x) { return sx_sse_xform(x); }
-/* The transform back as a value, for the rare calls into code that takes
+/* The transform back as a value, for the calls into code that takes
  * transforms by value. */
-static inline sx_xform sx_xform_of_xf(sx_xf x) {
+static SX_ALWAYS_INLINE sx_xform sx_xform_of_xf(sx_xf x) {
     sx_xform t;
-    _mm_storeu_ps(&t.p.x, x);
+    sx_r4_store_low(&t.p.x, x);
+    sx_r4_store_high(&t.q.c, x);
     return t;
 }
 
-/* sx_rotate by the rotation in lanes 2, 3 of x of the two vectors in v,
- * each lane computed as sx_rotate computes it (c x - s y as c x + (-s) y,
- * which IEEE arithmetic makes the same number). */
-static inline __m128 sx_sse_rotate(__m128 x, __m128 v) {
-    __m128 c = _mm_shuffle_ps(x, x, _MM_SHUFFLE(2, 2, 2, 2));
-    __m128 s = _mm_shuffle_ps(x, x, _MM_SHUFFLE(3, 3, 3, 3));
-    s = _mm_xor_ps(s, _mm_setr_ps(SX_R(-0.0), SX_R(0.0), SX_R(-0.0), SX_R(0.0)));
-    return _mm_add_ps(_mm_mul_ps(c, v),
-                      _mm_mul_ps(s, _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1))));
+/* The two vectors in v turned by the rotation in lanes 2, 3 of x, each lane
+ * as sx_rotate computes it (c x - s y as c x + (-s) y, and s x + c y as
+ * c y + s x, which IEEE arithmetic makes the same numbers). */
+static SX_ALWAYS_INLINE sx_r4 sx_xf_rotate(sx_xf x, sx_r4 v) {
+    sx_r4 s =
+        sx_r4_flip_signs(sx_r4_splat3(x), sx_r4_set(SX_R(-0.0), SX_R(0.0), SX_R(-0.0), SX_R(0.0)));
+    return sx_r4_add(sx_r4_mul(sx_r4_splat2(x), v), sx_r4_mul(s, sx_r4_swap_pairs(v)));
 }
 
-/* B's placement in A's frame, [p.x, p.y, q.c, q.s], each component computed
- * as sx_xform_inv_mul computes it (a - b as a + (-b), which IEEE arithmetic
- * makes the same number), so the answer is the portable one's bit for bit:
- * [ac, -as, ac, ac] x [dx, dx, bc, bs] + [as, ac, as, -as] x [dy, dy, bs, bc]. */
-static inline __m128 sx_sse_relative_xform(sx_xf xa, sx_xf xb) {
-    __m128 aq = _mm_movehl_ps(xa, xa), bq = _mm_movehl_ps(xb, xb); /* c s c s */
-    __m128 d = _mm_sub_ps(xb, xa);                                 /* dx dy - - */
-    __m128 neg = _mm_setr_ps(SX_R(1.0), SX_R(-1.0), SX_R(1.0), SX_R(1.0));
-    __m128 neg2 = _mm_setr_ps(SX_R(1.0), SX_R(1.0), SX_R(1.0), SX_R(-1.0));
-    __m128 lhs1 = _mm_mul_ps(_mm_shuffle_ps(aq, aq, _MM_SHUFFLE(0, 0, 1, 0)), neg);
-    __m128 lhs2 = _mm_mul_ps(_mm_shuffle_ps(aq, aq, _MM_SHUFFLE(1, 1, 0, 1)), neg2);
-    __m128 rhs1 = _mm_shuffle_ps(d, bq, _MM_SHUFFLE(1, 0, 0, 0));
-    __m128 rhs2 = _mm_shuffle_ps(d, bq, _MM_SHUFFLE(0, 1, 1, 1));
-    return _mm_add_ps(_mm_mul_ps(lhs1, rhs1), _mm_mul_ps(lhs2, rhs2));
+/* The two vectors in v turned by the inverse of that rotation, each lane as
+ * sx_inv_rotate computes it (-s x + c y as c y + (-s) x). */
+static SX_ALWAYS_INLINE sx_r4 sx_xf_inv_rotate(sx_xf x, sx_r4 v) {
+    sx_r4 s =
+        sx_r4_flip_signs(sx_r4_splat3(x), sx_r4_set(SX_R(0.0), SX_R(-0.0), SX_R(0.0), SX_R(-0.0)));
+    return sx_r4_add(sx_r4_mul(sx_r4_splat2(x), v), sx_r4_mul(s, sx_r4_swap_pairs(v)));
 }
 
-/* True when no lane of v is NaN or infinite. */
-static inline bool sx_sse_finite(__m128 v) {
-    __m128 z = _mm_sub_ps(v, v);
-    return _mm_movemask_ps(_mm_cmpunord_ps(z, z)) == 0;
+/* B's placement in A's frame, each component as sx_xform_inv_mul computes
+ * it: the offset [dx, dy] and B's rotation [bc, bs] turned back by A's
+ * rotation give [c dx + s dy, -s dx + c dy, c bc + s bs, c bs - s bc],
+ * which are the offset's sx_inv_rotate and sx_rot_inv_mul. */
+static SX_ALWAYS_INLINE sx_xf sx_xf_relative(sx_xf xa, sx_xf xb) {
+    return sx_xf_inv_rotate(xa, sx_r4_low_high(sx_r4_sub(xb, xa), xb));
 }
-#else
-/* The portable build hands transforms by address. */
-typedef const sx_xform *sx_xf;
-static inline sx_xf sx_xf_of(const sx_xform *x) { return x; }
-static inline sx_xform sx_xform_of_xf(sx_xf x) { return *x; }
-#endif
 
 /* A circle B's centre in A's frame: the world offset of the positions first
  * (exact for nearby bodies far from the origin), then B's rotated centre,
- * then the rotation into A's frame. */
-static inline sx_vec2 sx_circle_in_frame(const sx_circle *b, sx_xf xa, sx_xf xb) {
-#if SX_NARROW_SSE
-    /* Each lane as the portable expression computes it: the inverse
-     * rotation is c x + s y and c y + (-s) x. */
-    __m128 a = xa, x = xb, sn, w;
-    __m128 ctr = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&b->center);
+ * then the rotation into A's frame (lanes 0, 1; the others are unused). */
+static SX_ALWAYS_INLINE sx_vec2 sx_circle_in_frame(const sx_circle *b, sx_xf xa, sx_xf xb) {
+    sx_r4 w = sx_r4_add(sx_r4_sub(xb, xa), sx_xf_rotate(xb, sx_r4_load2(&b->center.x)));
     sx_vec2 c;
-    w = _mm_add_ps(_mm_sub_ps(x, a), sx_sse_rotate(x, ctr));
-    sn = _mm_xor_ps(_mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 3, 3, 3)),
-                    _mm_setr_ps(SX_R(0.0), SX_R(-0.0), SX_R(0.0), SX_R(-0.0)));
-    w = _mm_add_ps(_mm_mul_ps(_mm_shuffle_ps(a, a, _MM_SHUFFLE(2, 2, 2, 2)), w),
-                   _mm_mul_ps(sn, _mm_shuffle_ps(w, w, _MM_SHUFFLE(2, 3, 0, 1))));
-    _mm_storel_pi((__m64 *)(void *)&c, w);
+    sx_r4_store_low(&c.x, sx_xf_inv_rotate(xa, w));
     return c;
-#else
-    return sx_inv_rotate(xa->q, sx_add(sx_sub(xb->p, xa->p), sx_rotate(xb->q, b->center)));
-#endif
 }
 
 /* The checks of a circle B and of its placed centre c, run only once the
@@ -252,51 +211,39 @@ static inline sx_vec2 sx_circle_in_frame(const sx_circle *b, sx_xf xa, sx_xf xb)
  * is needed for. xa needs no check of its own: both components of the
  * inverse rotation take in both rotation components and both coordinates
  * of the offset. */
-static inline bool sx_circle_valid(const sx_circle *b, sx_xf xb, sx_vec2 c) {
-#if SX_NARROW_SSE
-    __m128 x = xb, v = _mm_setr_ps(b->center.x, b->center.y, c.x, c.y);
+static SX_ALWAYS_INLINE bool sx_circle_valid(const sx_circle *b, sx_xf xb, sx_vec2 c) {
+    sx_r4 v = sx_r4_set(b->center.x, b->center.y, c.x, c.y);
     return b->radius >= SX_R(0.0) && sx_is_finite(b->radius) &&
-           sx_sse_finite(_mm_add_ps(_mm_sub_ps(x, x), _mm_sub_ps(v, v)));
-#else
-    return b->radius >= SX_R(0.0) && sx_is_finite(b->radius) && sx_vec2_is_finite(b->center) &&
-           sx_is_finite(((xb->p.x - xb->p.x) + (xb->p.y - xb->p.y)) +
-                        ((xb->q.c - xb->q.c) + (xb->q.s - xb->q.s))) &&
-           sx_vec2_is_finite(c);
-#endif
+           !sx_r4_any_nan(sx_r4_add(sx_r4_sub(xb, xb), sx_r4_sub(v, v)));
 }
 
 /* Moves a local manifold of `count` points (A's frame) to world space in
  * place and completes it (count set, unused points zeroed); a non-finite
  * result (overflow of huge inputs) becomes 0 points with a zero normal.
- * Returns the count. */
-static inline int sx_world_manifold(sx_manifold *m, int count, sx_xf xa) {
-#if SX_NARROW_SSE
-    /* The normal and the first point are adjacent in sx_manifold: both are
-     * turned in one register, each lane computed as sx_xform_vector and
-     * sx_xform_point compute it; one test checks every output. */
+ * Returns the count. The normal and the first point are adjacent in
+ * sx_manifold: both are turned in one register, each lane as
+ * sx_xform_vector and sx_xform_point compute it; one test checks every
+ * output. */
+static SX_ALWAYS_INLINE int sx_world_manifold(sx_manifold *m, int count, sx_xf xa) {
     if (count > 0) {
-        __m128 x = xa, z = _mm_setzero_ps();
         /* Two 8-byte loads, not one of 16: the routines before this store
-         * the normal and the point separately, and a 16-byte load of two
-         * stores still in flight cannot take their values (a failed store
-         * forward). */
-        __m128 np = _mm_loadh_pi(_mm_loadl_pi(z, (const __m64 *)(const void *)&m->normal),
-                                 (const __m64 *)(const void *)&m->points[0].point);
+         * the normal and the point separately (see sx_r4_load2x2). */
+        sx_r4 np = sx_r4_load2x2(&m->normal.x, &m->points[0].point.x);
         /* -0 is the identity of addition (+0 would turn a -0 normal
          * component into +0). */
-        __m128 w = _mm_add_ps(sx_sse_rotate(x, np), _mm_movelh_ps(_mm_set1_ps(SX_R(-0.0)), x));
-        __m128 depth = _mm_set_ss(m->points[0].depth), p1 = z;
+        sx_r4 w = sx_r4_add(sx_xf_rotate(xa, np), sx_r4_low_halves(sx_r4_set1(SX_R(-0.0)), xa));
+        sx_r4 depth = sx_r4_set(m->points[0].depth, SX_R(0.0), SX_R(0.0), SX_R(0.0));
+        sx_r4 p1 = sx_r4_zero();
         if (count > 1) {
-            p1 = _mm_loadl_pi(z, (const __m64 *)(const void *)&m->points[1].point);
-            p1 = _mm_add_ps(sx_sse_rotate(x, p1), x);
-            depth = _mm_setr_ps(m->points[0].depth, m->points[1].depth, SX_R(0.0), SX_R(0.0));
+            p1 = sx_r4_add(sx_xf_rotate(xa, sx_r4_load2(&m->points[1].point.x)), xa);
+            depth = sx_r4_set(m->points[0].depth, m->points[1].depth, SX_R(0.0), SX_R(0.0));
         }
-        __m128 rest = _mm_movelh_ps(p1, depth);
-        __m128 bad = _mm_add_ps(_mm_sub_ps(w, w), _mm_sub_ps(rest, rest));
-        if (_mm_movemask_ps(_mm_cmpunord_ps(bad, bad)) == 0) {
-            _mm_storeu_ps(&m->normal.x, w);
+        sx_r4 rest = sx_r4_low_halves(p1, depth);
+        if (!sx_r4_any_nan(sx_r4_add(sx_r4_sub(w, w), sx_r4_sub(rest, rest)))) {
+            sx_r4_store_low(&m->normal.x, w);
+            sx_r4_store_high(&m->points[0].point.x, w);
             if (count > 1) {
-                _mm_storel_pi((__m64 *)(void *)&m->points[1].point, p1);
+                sx_r4_store_low(&m->points[1].point.x, p1);
             } else {
                 m->points[1].point = sx_v2_zero();
                 m->points[1].depth = SX_R(0.0);
@@ -308,27 +255,6 @@ static inline int sx_world_manifold(sx_manifold *m, int count, sx_xf xa) {
     }
     memset(m, 0, sizeof(*m));
     return 0;
-#else
-    int i;
-    m->normal = sx_xform_vector(*xa, m->normal);
-    for (i = 0; i < count; ++i) {
-        m->points[i].point = sx_xform_point(*xa, m->points[i].point);
-        if (!sx_vec2_is_finite(m->points[i].point) || !sx_is_finite(m->points[i].depth)) {
-            count = 0;
-        }
-    }
-    if (count == 0 || !sx_vec2_is_finite(m->normal)) {
-        count = 0;
-        m->normal = sx_v2_zero();
-    }
-    m->count = count;
-    for (i = count; i < 2; ++i) {
-        m->points[i].point = sx_v2_zero();
-        m->points[i].depth = SX_R(0.0);
-        m->points[i].id = 0;
-    }
-    return count;
-#endif
 }
 
 /* collide.c's general route, for what the fused routines hand back: the

@@ -41,62 +41,33 @@ static inline void closest_start(sx_closest *out, sx_vec2 pa, sx_vec2 pb) {
     out->normal = sx_v2_zero();
 }
 
-#if SX_NARROW_SSE
-/* The lane-wise largest magnitudes of a core's points, two points a
- * register (unreduced: the caller folds the lanes once). */
-static SX_ALWAYS_INLINE __m128 sse_core_magnitudes(const sx_core *c, __m128 m) {
+/* The lane-wise largest magnitudes of a core's points and m's, two points
+ * a register (unreduced: the caller folds the lanes once). */
+static SX_ALWAYS_INLINE sx_r4 core_magnitudes(const sx_core *c, sx_r4 m) {
     int i, n = c->count;
-    __m128 sign = _mm_set1_ps(SX_R(-0.0));
     for (i = 0; i + 1 < n; i += 2)
-        m = _mm_max_ps(m, _mm_andnot_ps(sign, _mm_loadu_ps(&c->v[i].x)));
-    if (i < n) {
-        m = _mm_max_ps(m, _mm_andnot_ps(sign, _mm_loadl_pi(_mm_setzero_ps(),
-                                                           (const __m64 *)(const void *)&c->v[i])));
-    }
+        m = sx_r4_max(m, sx_r4_abs(sx_r4_load(&c->v[i].x)));
+    if (i < n) m = sx_r4_max(m, sx_r4_abs(sx_r4_load2(&c->v[i].x)));
     return m;
 }
-#else
-/* Largest coordinate magnitude of a core's points. */
-static SX_MAYBE_UNUSED sx_real core_scale(const sx_core *c) {
-    sx_real m = SX_R(0.0);
-    int i;
-    for (i = 0; i < c->count; ++i)
-        m = sx_maxr(m, sx_maxr(sx_magnitude(c->v[i].x), sx_magnitude(c->v[i].y)));
-    return m;
-}
-#endif
 
 /* Largest coordinate magnitude of the points of two cores. The largest
- * magnitude of finite values does not depend on the order it is taken in,
- * so the SSE loop's is the portable loop's; with a NaN or an infinity in a
- * core the two may differ, but such a core never gets a manifold point or
- * an overlap, whatever the tests that use this scale say. */
+ * magnitude of finite values does not depend on the order it is taken in;
+ * with a NaN or an infinity in a core the order decides, but such a core
+ * never gets a manifold point or an overlap, whatever the tests that use
+ * this scale say. */
 static SX_ALWAYS_INLINE sx_real core_pair_scale(const sx_core *a, const sx_core *b) {
-#if SX_NARROW_SSE
-    __m128 m = sse_core_magnitudes(b, sse_core_magnitudes(a, _mm_setzero_ps()));
-    m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(1, 0, 3, 2)));
-    m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(2, 3, 0, 1)));
-    return _mm_cvtss_f32(m);
-#else
-    return sx_maxr(core_scale(a), core_scale(b));
-#endif
+    return sx_r4_first(sx_r4_max_lanes(core_magnitudes(b, core_magnitudes(a, sx_r4_zero()))));
 }
 
 /* core_pair_scale, with the magnitudes the SAT took (sat may be NULL). */
 static SX_ALWAYS_INLINE sx_real sat_pair_scale(const sx_core *a, const sx_core *b,
                                                const sx_sat *sat) {
-#if SX_NARROW_SSE
-    __m128 m;
+    sx_r4 m;
     if (sat == NULL) return core_pair_scale(a, b);
-    m = (sat->mags & 1) ? sat->mag_b : sse_core_magnitudes(b, _mm_setzero_ps());
-    m = (sat->mags & 2) ? _mm_max_ps(m, sat->mag_a) : sse_core_magnitudes(a, m);
-    m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(1, 0, 3, 2)));
-    m = _mm_max_ps(m, _mm_shuffle_ps(m, m, _MM_SHUFFLE(2, 3, 0, 1)));
-    return _mm_cvtss_f32(m);
-#else
-    SX_UNUSED(sat);
-    return core_pair_scale(a, b);
-#endif
+    m = (sat->mags & 1) ? sat->mag_b : core_magnitudes(b, sx_r4_zero());
+    m = (sat->mags & 2) ? sx_r4_max(m, sat->mag_a) : core_magnitudes(a, m);
+    return sx_r4_first(sx_r4_max_lanes(m));
 }
 
 /* The slack of cannot_win: the rounding of a separation computed from
@@ -293,8 +264,8 @@ static inline int sx_lowest_bit(uint64_t x) {
  * which changes nothing of its answer: an offer the sweep would not take
  * leaves it as it was. */
 static SX_MAYBE_UNUSED void offer_vertices(const sx_core *p, const sx_core *q, bool p_is_a,
-                                           sx_closest *out, const int *vface, const sx_real *vsep,
-                                           sx_real slack) {
+                                           sx_closest *out, const int32_t *vface,
+                                           const sx_real *vsep, sx_real slack) {
     int i, j, edges = p->count >= 3 ? p->count : p->count - 1;
 #if SX_MAX_POLYGON_VERTICES <= 8
     if (p->count >= 3) {
@@ -343,19 +314,15 @@ static SX_MAYBE_UNUSED void closest_features(const sx_core *a, const sx_core *b,
     int ea = a->count >= 3 ? a->count : a->count - 1;
     int eb = b->count >= 3 ? b->count : b->count - 1;
     closest_start(out, a->v[0], b->v[0]);
-    SX_UNUSED(sat);
-#if SX_NARROW_SSE
     if (sat != NULL && sat->rows) {
         sx_real slack = SX_PRUNE_SLACK * sat_pair_scale(a, b, sat);
-        int vface[SX_VERTEX_SLOTS];
+        int32_t vface[SX_VERTEX_SLOTS];
         sx_real vsep[SX_VERTEX_SLOTS];
-        sse_vertex_faces(sat->rows_b, a->count, b->count, vface, vsep);
+        vertex_faces(sat->rows_b, a->count, b->count, vface, vsep);
         offer_vertices(a, b, true, out, vface, vsep, slack);
-        sse_vertex_faces(sat->rows_a, b->count, a->count, vface, vsep);
+        vertex_faces(sat->rows_a, b->count, a->count, vface, vsep);
         offer_vertices(b, a, false, out, vface, vsep, slack);
-    } else
-#endif
-    {
+    } else {
         offer_vertices(a, b, true, out, NULL, NULL, SX_R(0.0));
         offer_vertices(b, a, false, out, NULL, NULL, SX_R(0.0));
     }

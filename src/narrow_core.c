@@ -30,17 +30,6 @@
 static sx_vec2 place_point(const sx_xform *x, sx_vec2 v) { return x ? sx_xform_point(*x, v) : v; }
 static sx_vec2 place_vector(const sx_xform *x, sx_vec2 v) { return x ? sx_rotate(x->q, v) : v; }
 
-#if !SX_NARROW_SSE
-/* (x - x) summed over the coordinates of a vertex and its normal: exactly 0
- * when all are finite, NaN otherwise. Summed over a polygon, one branch
- * checks it whole. */
-static inline sx_real finite_fold(sx_vec2 v, sx_vec2 m) {
-    /* Grouped as a tree: the sums are 0 or NaN whatever the grouping, and
-     * a chain of dependent additions is what this loop would wait on. */
-    return ((v.x - v.x) + (v.y - v.y)) + ((m.x - m.x) + (m.y - m.y));
-}
-#endif
-
 /* Builds the 2-point core a-b (or a 1-point core when a-b has no direction).
  * The normal is taken in the shape's frame and rotated, like polygon normals,
  * so it does not depend on the translation. */
@@ -76,42 +65,29 @@ bool sx_core_from_capsule(const sx_capsule *c, const sx_xform *x, sx_core *out) 
     return core_set_segment(c->a, c->b, c->radius, x, out);
 }
 
-#if SX_NARROW_SSE
-/* sx_xform_point and sx_rotate of two vertices (and normals) at a time, each
- * lane computed as those compute it (c x - s y as c x + (-s) y, which IEEE
- * arithmetic makes the same number), so the placed values are bit for bit
- * the portable loop's. Stored 16 bytes at a time, the pairs best_face_sse
- * loads back, so the loads are forwarded from the stores. */
-static inline __m128 sse_turn(__m128 c, __m128 s, __m128 v) {
-    return _mm_add_ps(_mm_mul_ps(c, v),
-                      _mm_mul_ps(s, _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 3, 0, 1))));
-}
-
-/* Places p by the transform x = [p.x, p.y, q.c, q.s] into out (count,
- * radius, storage and pointers). */
-static inline void place_polygon_rel(const sx_polygon *p, __m128 x, sx_core *out) {
+/* Places p by the transform x into out (count, radius, storage and
+ * pointers): two vertices (and normals) a register, each lane as
+ * sx_xform_point and sx_rotate compute it (see sx_xf_rotate), so the
+ * placed values do not depend on the width. Stored 16 bytes at a time, the
+ * pairs best_face_lanes loads back, so the loads are forwarded from the
+ * stores. */
+static SX_ALWAYS_INLINE void place_polygon_rel(const sx_polygon *p, sx_xf x, sx_core *out) {
     int i, n = p->count;
-    __m128 c = _mm_shuffle_ps(x, x, _MM_SHUFFLE(2, 2, 2, 2));
-    __m128 s = _mm_xor_ps(_mm_shuffle_ps(x, x, _MM_SHUFFLE(3, 3, 3, 3)),
-                          _mm_setr_ps(SX_R(-0.0), SX_R(0.0), SX_R(-0.0), SX_R(0.0)));
-    __m128 t = _mm_movelh_ps(x, x);
+    sx_r4 t = sx_r4_low_halves(x, x);
     out->radius = p->radius;
     out->count = n;
     out->v = out->vs;
     out->n = out->ns;
     for (i = 0; i + 1 < n; i += 2) {
-        __m128 v = _mm_loadu_ps(&p->vertices[i].x), m = _mm_loadu_ps(&p->normals[i].x);
-        _mm_storeu_ps(&out->vs[i].x, _mm_add_ps(sse_turn(c, s, v), t));
-        _mm_storeu_ps(&out->ns[i].x, sse_turn(c, s, m));
+        sx_r4_store(&out->vs[i].x, sx_r4_add(sx_xf_rotate(x, sx_r4_load(&p->vertices[i].x)), t));
+        sx_r4_store(&out->ns[i].x, sx_xf_rotate(x, sx_r4_load(&p->normals[i].x)));
     }
     if (i < n) {
-        __m128 v = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&p->vertices[i]);
-        __m128 m = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&p->normals[i]);
-        _mm_storel_pi((__m64 *)(void *)&out->vs[i], _mm_add_ps(sse_turn(c, s, v), t));
-        _mm_storel_pi((__m64 *)(void *)&out->ns[i], sse_turn(c, s, m));
+        sx_r4_store_low(&out->vs[i].x,
+                        sx_r4_add(sx_xf_rotate(x, sx_r4_load2(&p->vertices[i].x)), t));
+        sx_r4_store_low(&out->ns[i].x, sx_xf_rotate(x, sx_r4_load2(&p->normals[i].x)));
     }
 }
-#endif
 
 bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) {
     int n;
@@ -125,16 +101,7 @@ bool sx_core_from_polygon(const sx_polygon *p, const sx_xform *x, sx_core *out) 
         out->v = p->vertices;
         out->n = p->normals;
     } else {
-#if SX_NARROW_SSE
-        place_polygon_rel(p, _mm_loadu_ps(&x->p.x), out);
-#else
-        sx_xform q = *x;
-        int i;
-        for (i = 0; i < n; ++i) {
-            out->vs[i] = sx_xform_point(q, p->vertices[i]);
-            out->ns[i] = sx_rotate(q.q, p->normals[i]);
-        }
-#endif
+        place_polygon_rel(p, sx_xf_of(x), out);
         out->v = out->vs;
         out->n = out->ns;
     }
@@ -148,31 +115,23 @@ bool sx_core_values_finite(const sx_core *c) {
 }
 
 bool sx_polygon_values_finite(const sx_vec2 *v0, const sx_vec2 *n0, int n) {
+    /* (x - x) summed over every coordinate, two vertices a register: lanes
+     * of 0 when all are finite, NaN otherwise, so one test checks it all. */
+    sx_r4 sum = sx_r4_zero(), v, m;
     int i;
-#if SX_NARROW_SSE
-    /* finite_fold two vertices at a time: lanes of 0 or NaN. */
-    __m128 sum = _mm_setzero_ps(), v, m;
     for (i = 0; i + 1 < n; i += 2) {
-        v = _mm_loadu_ps(&v0[i].x);
-        m = _mm_loadu_ps(&n0[i].x);
-        sum = _mm_add_ps(sum, _mm_add_ps(_mm_sub_ps(v, v), _mm_sub_ps(m, m)));
+        v = sx_r4_load(&v0[i].x);
+        m = sx_r4_load(&n0[i].x);
+        sum = sx_r4_add(sum, sx_r4_add(sx_r4_sub(v, v), sx_r4_sub(m, m)));
     }
     if (i < n) {
-        v = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&v0[i]);
-        m = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&n0[i]);
-        sum = _mm_add_ps(sum, _mm_add_ps(_mm_sub_ps(v, v), _mm_sub_ps(m, m)));
+        v = sx_r4_load2(&v0[i].x);
+        m = sx_r4_load2(&n0[i].x);
+        sum = sx_r4_add(sum, sx_r4_add(sx_r4_sub(v, v), sx_r4_sub(m, m)));
     }
-    return _mm_movemask_ps(_mm_cmpunord_ps(sum, sum)) == 0;
-#else
-    sx_real acc = SX_R(0.0), acc1 = SX_R(0.0);
-    for (i = 0; i + 1 < n; i += 2) {
-        acc += finite_fold(v0[i], n0[i]);
-        acc1 += finite_fold(v0[i + 1], n0[i + 1]);
-    }
-    if (i < n) acc += finite_fold(v0[i], n0[i]);
-    return acc + acc1 == SX_R(0.0);
-#endif
+    return !sx_r4_any_nan(sum);
 }
+
 /* ---- overlap and MTV ---------------------------------------------------- */
 
 static SX_ALWAYS_INLINE bool core_overlap(const sx_core *a, const sx_core *b) {
@@ -530,26 +489,17 @@ static SX_ALWAYS_INLINE bool core_of(int kind, const void *shape, const sx_xform
  * for invalid input (a NULL or bad shape, a non-finite transform). */
 static SX_ALWAYS_INLINE bool cores_build(int ka, const void *a, sx_xf xa, int kb, const void *b,
                                          sx_xf xb, sx_core *ca, sx_core *cb) {
-    bool ok;
-#if SX_NARROW_SSE
-    __m128 r = sx_sse_relative_xform(xa, xb);
-    ok = sx_sse_finite(r);
+    sx_xf r = sx_xf_relative(xa, xb);
+    bool ok = sx_r4_all_finite(r);
     if (ok && kb == SX_SHAPE_POLYGON) {
         const sx_polygon *pb = (const sx_polygon *)b;
         ok = pb != NULL && sx_core_radius_ok(pb->radius) && pb->count >= 3 &&
              pb->count <= SX_MAX_POLYGON_VERTICES;
         if (ok) place_polygon_rel(pb, r, cb);
     } else if (ok) {
-        sx_xform rel;
-        _mm_storeu_ps(&rel.p.x, r);
+        sx_xform rel = sx_xform_of_xf(r);
         ok = core_of(kb, b, &rel, cb);
     }
-#else
-    sx_xform rel = sx_xform_inv_mul(*xa, *xb);
-    ok = sx_is_finite(((rel.p.x - rel.p.x) + (rel.p.y - rel.p.y)) +
-                      ((rel.q.c - rel.q.c) + (rel.q.s - rel.q.s))) &&
-         core_of(kb, b, &rel, cb);
-#endif
     return ok && core_of(ka, a, NULL, ca);
 }
 

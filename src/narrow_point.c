@@ -281,31 +281,35 @@ typedef struct sx_polygon_point {
  * -1: the general route answers (a square that overflows or underflows,
  * or c within rounding noise of a vertex, where the SAT's axis or
  * vertex_direction's scaling gives the direction). */
-#if SX_NARROW_SSE
 /* The separations sx_dot(nn[i], sx_sub(c, v[i])) of the point cc = [c.x,
  * c.y, c.x, c.y] from faces i..i+3, each computed as that expression
  * computes it; faces past count repeat face 0 (v00, n00: its vertex and
  * normal in both halves), which cannot change a first maximum. */
-static SX_ALWAYS_INLINE __m128 sse_point_faces(const sx_vec2 *v, const sx_vec2 *nn, int count,
-                                               int i, __m128 cc, __m128 v00, __m128 n00,
-                                               __m128 *fold) {
-    __m128 v0 = sse_vertex_pair(v, i, count, v00), v1 = sse_vertex_pair(v, i + 2, count, v00);
-    __m128 m0 = sse_vertex_pair(nn, i, count, n00), m1 = sse_vertex_pair(nn, i + 2, count, n00);
-    __m128 p0 = _mm_mul_ps(m0, _mm_sub_ps(cc, v0)), p1 = _mm_mul_ps(m1, _mm_sub_ps(cc, v1));
-    /* (x - x): 0 for finite x, NaN otherwise (sx_polygon_values_finite's
-     * test, on the values loaded anyway). */
-    *fold = _mm_add_ps(*fold, _mm_add_ps(_mm_add_ps(_mm_sub_ps(v0, v0), _mm_sub_ps(v1, v1)),
-                                         _mm_add_ps(_mm_sub_ps(m0, m0), _mm_sub_ps(m1, m1))));
-    return _mm_add_ps(_mm_shuffle_ps(p0, p1, _MM_SHUFFLE(2, 0, 2, 0)),
-                      _mm_shuffle_ps(p0, p1, _MM_SHUFFLE(3, 1, 3, 1)));
+static SX_ALWAYS_INLINE sx_r4 point_face_lanes(const sx_vec2 *v, const sx_vec2 *nn, int count,
+                                               int i, sx_r4 cc, sx_r4 v00, sx_r4 n00) {
+    sx_r4 v0 = vertex_pair_lanes(v, i, count, v00), v1 = vertex_pair_lanes(v, i + 2, count, v00);
+    sx_r4 m0 = vertex_pair_lanes(nn, i, count, n00), m1 = vertex_pair_lanes(nn, i + 2, count, n00);
+    sx_r4 p0 = sx_r4_mul(m0, sx_r4_sub(cc, v0)), p1 = sx_r4_mul(m1, sx_r4_sub(cc, v1));
+    return sx_r4_add(sx_r4_evens(p0, p1), sx_r4_odds(p0, p1));
 }
 
-/* The largest of four lanes, in every lane. */
-static SX_ALWAYS_INLINE __m128 sse_lane_max(__m128 s) {
-    s = _mm_max_ps(s, _mm_shuffle_ps(s, s, _MM_SHUFFLE(1, 0, 3, 2)));
-    return _mm_max_ps(s, _mm_shuffle_ps(s, s, _MM_SHUFFLE(2, 3, 0, 1)));
+/* (x - x) over the vertices and normals of faces i..i+3, padded as
+ * point_face_lanes pads them: lanes of 0 when all are finite, NaN
+ * otherwise (sx_polygon_values_finite's test). Taken only once the answer
+ * is not "apart", from values the face loop has just brought in. */
+static SX_ALWAYS_INLINE sx_r4 point_finite_lanes(const sx_vec2 *v, const sx_vec2 *nn, int count,
+                                                 int i, sx_r4 v00, sx_r4 n00) {
+    sx_r4 v0 = vertex_pair_lanes(v, i, count, v00), v1 = vertex_pair_lanes(v, i + 2, count, v00);
+    sx_r4 m0 = vertex_pair_lanes(nn, i, count, n00), m1 = vertex_pair_lanes(nn, i + 2, count, n00);
+    return sx_r4_add(sx_r4_add(sx_r4_sub(v0, v0), sx_r4_sub(v1, v1)),
+                     sx_r4_add(sx_r4_sub(m0, m0), sx_r4_sub(m1, m1)));
 }
-#endif
+
+/* [p.x, p.y, p.x, p.y]. */
+static SX_ALWAYS_INLINE sx_r4 point_twice(const sx_vec2 *p) {
+    sx_r4 r = sx_r4_load2(&p->x);
+    return sx_r4_low_halves(r, r);
+}
 
 /* values_finite (may be NULL): whether every vertex and normal is finite,
  * set when the answer is 1 (sx_polygon_values_finite's answer). */
@@ -315,55 +319,37 @@ static SX_ALWAYS_INLINE int polygon_point(const sx_vec2 *v, const sx_vec2 *nn, i
     int face = 0, i2, vertex = -1;
     sx_real best, t, dsq;
     sx_vec2 w, n, dir;
-#if SX_NARROW_SSE
     {
         /* Every face's separation four to a register; the first of the
-         * largest is the lowest lane equal to the maximum (the scalar loop
+         * largest is the lowest lane equal to the maximum (a scalar loop
          * keeps the first with a strict comparison). Its separation is
          * then taken once more by the scalar expression: the maximum of
          * the lanes may differ from it in the sign of a zero. */
-        __m128 cc = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&c);
-        __m128 v00 = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&v[0]);
-        __m128 n00 = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&nn[0]);
-        __m128 s0, mx, bad, fold = _mm_setzero_ps();
+        sx_r4 cc = point_twice(&c), v00 = point_twice(&v[0]), n00 = point_twice(&nn[0]);
+        sx_r4 s0, mx;
+        sx_m4 bad;
         int mask;
-        cc = _mm_movelh_ps(cc, cc);
-        v00 = _mm_movelh_ps(v00, v00);
-        n00 = _mm_movelh_ps(n00, n00);
-        s0 = sse_point_faces(v, nn, count, 0, cc, v00, n00, &fold);
-        bad = _mm_cmpunord_ps(s0, s0);
+        s0 = point_face_lanes(v, nn, count, 0, cc, v00, n00);
+        bad = sx_r4_unordered(s0, s0);
         if (count > 4) {
-            __m128 s1 = sse_point_faces(v, nn, count, 4, cc, v00, n00, &fold);
-            bad = _mm_or_ps(bad, _mm_cmpunord_ps(s1, s1));
-            mx = sse_lane_max(_mm_max_ps(s0, s1));
-            mask = _mm_movemask_ps(_mm_cmpeq_ps(s0, mx)) |
-                   (_mm_movemask_ps(_mm_cmpeq_ps(s1, mx)) << 4);
+            sx_r4 s1 = point_face_lanes(v, nn, count, 4, cc, v00, n00);
+            bad = sx_m4_or(bad, sx_r4_unordered(s1, s1));
+            mx = sx_r4_max_lanes(sx_r4_max(s0, s1));
+            mask = sx_m4_bits(sx_r4_eq(s0, mx)) | (sx_m4_bits(sx_r4_eq(s1, mx)) << 4);
         } else {
-            mx = sse_lane_max(s0);
-            mask = _mm_movemask_ps(_mm_cmpeq_ps(s0, mx));
+            mx = sx_r4_max_lanes(s0);
+            mask = sx_m4_bits(sx_r4_eq(s0, mx));
         }
-        best = _mm_cvtss_f32(mx);
-        if (_mm_movemask_ps(bad) != 0 || !(best <= limit)) return 0;
-        face = __builtin_ctz((unsigned)mask);
+        best = sx_r4_first(mx);
+        if (sx_m4_any(bad) || !(best <= limit)) return 0;
+        face = sx_lowest_bit((uint64_t)mask);
         best = sx_dot(nn[face], sx_sub(c, v[face]));
-        if (values_finite) *values_finite = _mm_movemask_ps(_mm_cmpunord_ps(fold, fold)) == 0;
-    }
-#else
-    {
-        int i;
-        bool bad;
-        best = sx_dot(nn[0], sx_sub(c, v[0]));
-        bad = best != best;
-        for (i = 1; i < count; ++i) {
-            sx_real s = sx_dot(nn[i], sx_sub(c, v[i]));
-            bad |= s != s;
-            face = s > best ? i : face;
-            best = s > best ? s : best;
+        if (values_finite) {
+            sx_r4 fold = point_finite_lanes(v, nn, count, 0, v00, n00);
+            if (count > 4) fold = sx_r4_add(fold, point_finite_lanes(v, nn, count, 4, v00, n00));
+            *values_finite = !sx_r4_any_nan(fold);
         }
-        if (bad || !(best <= limit)) return 0;
-        if (values_finite) *values_finite = sx_polygon_values_finite(v, nn, count);
     }
-#endif
     out->face = face;
     out->sep = best;
     if (best <= SX_R(0.0)) {

@@ -1,7 +1,7 @@
 /* sepax — private: the separating-axis test of two cores (see narrow.h):
  * every face of both (and the caps when both have zero area), the largest
- * separation and its face, and the SSE lanes that keep the rows the
- * closest features reuse.
+ * separation and its face, and the four-lane rows that the closest
+ * features reuse.
  *
  * The functions are static and defined here, not in a .c file, because
  * both users (narrow_core.c: two cores; narrow_point.c: a core against a
@@ -25,7 +25,7 @@ static SX_MAYBE_UNUSED int next_index(const sx_core *c, int i) {
  * the inner loop of every polygon pair. A NaN (a 0 x inf product of cores
  * beyond the range) makes the separation unknown, and NaN says so to
  * sat_run. */
-static inline sx_real face_separation(const sx_core *p, int i, const sx_core *q) {
+static SX_ALWAYS_INLINE sx_real face_separation(const sx_core *p, int i, const sx_core *q) {
     sx_vec2 n = p->n[i], v = p->v[i];
     const sx_vec2 *qv = q->v;
     sx_real best0 = SX_REAL_MAX, best1 = SX_REAL_MAX, d0, d1;
@@ -74,7 +74,12 @@ static SX_MAYBE_UNUSED sx_real cap_separation(const sx_core *p, const sx_core *q
  * examined is always taken (the choice tests face < 0 first). */
 #define SX_NO_SEPARATION (-(sx_real)INFINITY)
 
-/* Per-vertex slots of the SAT's records: the SSE loops store eight lanes. */
+/* The lane loops below hold a polygon's vertices in two registers. */
+#if SX_MAX_POLYGON_VERTICES > 8
+#error "best_face_lanes and polygon_point take at most eight vertices"
+#endif
+
+/* Per-vertex slots of the SAT's records: the lane loops store eight lanes. */
 #define SX_VERTEX_SLOTS (SX_MAX_POLYGON_VERTICES > 8 ? SX_MAX_POLYGON_VERTICES : 8)
 
 typedef struct sx_sat {
@@ -83,46 +88,41 @@ typedef struct sx_sat {
     sx_real sep;          /* best over every axis, caps included */
     sx_vec2 axis;         /* unit axis of sep, from A towards B */
     bool has_axes;
-#if SX_NARROW_SSE
     /* mags bit 1: mag_b holds the lane-wise largest magnitudes of B's
      * coordinates (from the SAT's loads); bit 2: mag_a, A's. */
     int mags;
-    __m128 mag_a, mag_b;
+    sx_r4 mag_a, mag_b;
     /* When rows is set (two polygon cores, limit > 0): the separation of
-     * each vertex of B from each face of A (rows_b, best_face_sse's rows)
+     * each vertex of B from each face of A (rows_b, best_face_lanes's rows)
      * and of A's vertices from B's faces (rows_a), for the closest-feature
      * sweep. */
     bool rows;
-    __m128 rows_b[2 * SX_VERTEX_SLOTS], rows_a[2 * SX_VERTEX_SLOTS];
-#endif
+    sx_r4 rows_b[2 * SX_VERTEX_SLOTS], rows_a[2 * SX_VERTEX_SLOTS];
 } sx_sat;
 
-#if SX_NARROW_SSE
 /* best_face with q's vertices four to a register (structure of arrays): the
  * same separations, each computed as face_separation computes it (no fused
  * operations, the same operand order), so the answers agree bit for bit up
  * to the sign of a zero minimum, which no caller can tell apart. q has 3 or
  * more vertices; lanes past its count repeat vertex 0, which cannot change a
  * minimum. */
-static inline __m128 sse_vertex_pair(const sx_vec2 *v, int j, int m, __m128 v00) {
-    if (j + 1 < m) return _mm_loadu_ps(&v[j].x);
-    if (j < m) return _mm_loadl_pi(v00, (const __m64 *)(const void *)&v[j]);
+static SX_ALWAYS_INLINE sx_r4 vertex_pair_lanes(const sx_vec2 *v, int j, int m, sx_r4 v00) {
+    if (j + 1 < m) return sx_r4_load(&v[j].x);
+    if (j < m) return sx_r4_load_low(v00, &v[j].x);
     return v00;
 }
 
 /* The separations of q's vertices (x, y: four lanes each) from face i of p,
  * as face_separation computes them. */
-static inline __m128 sse_face_lanes(const sx_core *p, int i, __m128 x, __m128 y) {
-    __m128 nx = _mm_set1_ps(p->n[i].x), ny = _mm_set1_ps(p->n[i].y);
-    __m128 vx = _mm_set1_ps(p->v[i].x), vy = _mm_set1_ps(p->v[i].y);
-    return _mm_add_ps(_mm_mul_ps(nx, _mm_sub_ps(x, vx)), _mm_mul_ps(ny, _mm_sub_ps(y, vy)));
+static SX_ALWAYS_INLINE sx_r4 face_lanes(const sx_core *p, int i, sx_r4 x, sx_r4 y) {
+    sx_r4 nx = sx_r4_set1(p->n[i].x), ny = sx_r4_set1(p->n[i].y);
+    sx_r4 vx = sx_r4_set1(p->v[i].x), vy = sx_r4_set1(p->v[i].y);
+    return sx_r4_add(sx_r4_mul(nx, sx_r4_sub(x, vx)), sx_r4_mul(ny, sx_r4_sub(y, vy)));
 }
 
-/* The least of four lanes (in lane 0), or NaN when a lane of `bad` is set. */
-static inline sx_real sse_lane_min(__m128 lo, __m128 bad) {
-    lo = _mm_min_ps(lo, _mm_shuffle_ps(lo, lo, _MM_SHUFFLE(1, 0, 3, 2)));
-    lo = _mm_min_ps(lo, _mm_shuffle_ps(lo, lo, _MM_SHUFFLE(2, 3, 0, 1)));
-    return _mm_movemask_ps(bad) != 0 ? (sx_real)NAN : _mm_cvtss_f32(lo);
+/* The least of four lanes, or NaN when a lane of `bad` is set. */
+static SX_ALWAYS_INLINE sx_real lane_min(sx_r4 lo, sx_m4 bad) {
+    return sx_m4_any(bad) ? (sx_real)NAN : sx_r4_first(sx_r4_min_lanes(lo));
 }
 
 /* best_face with q's vertices four to a register. With track != 0, the
@@ -130,24 +130,25 @@ static inline sx_real sse_lane_min(__m128 lo, __m128 bad) {
  * face_separation computes them) are also kept, in rows[2 i] (vertices
  * 0..3) and rows[2 i + 1] (4..7), for the closest-feature sweep; they are
  * complete when the call returns true. */
-static SX_ALWAYS_INLINE bool best_face_sse(const sx_core *p, const sx_core *q, sx_real limit,
-                                           sx_real *sep, int *face, sx_real *stop, int track,
-                                           __m128 *rows, __m128 *qmag) {
+static SX_ALWAYS_INLINE bool best_face_lanes(const sx_core *p, const sx_core *q, sx_real limit,
+                                             sx_real *sep, int *face, sx_real *stop, int track,
+                                             sx_r4 *rows, sx_r4 *qmag) {
     int i, n = p->count, m = q->count, f = 0;
-    __m128 v0 = _mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)&q->v[0]);
-    __m128 v00 = _mm_movelh_ps(v0, v0);
-    __m128 p0 = sse_vertex_pair(q->v, 0, m, v00), p1 = sse_vertex_pair(q->v, 2, m, v00);
-    __m128 x0 = _mm_shuffle_ps(p0, p1, _MM_SHUFFLE(2, 0, 2, 0));
-    __m128 y0 = _mm_shuffle_ps(p0, p1, _MM_SHUFFLE(3, 1, 3, 1));
-    __m128 sign = _mm_set1_ps(SX_R(-0.0));
+    sx_r4 v00 = sx_r4_load2(&q->v[0].x);
+    sx_r4 p0, p1, x0, y0;
     sx_real best = SX_NO_SEPARATION, s;
+    v00 = sx_r4_low_halves(v00, v00);
+    p0 = vertex_pair_lanes(q->v, 0, m, v00);
+    p1 = vertex_pair_lanes(q->v, 2, m, v00);
+    x0 = sx_r4_evens(p0, p1);
+    y0 = sx_r4_odds(p0, p1);
     /* The lane-wise largest magnitudes of q's coordinates, from the values
      * loaded anyway (the clear-cut test's scale; padding repeats vertex 0). */
-    *qmag = _mm_max_ps(_mm_andnot_ps(sign, p0), _mm_andnot_ps(sign, p1));
+    *qmag = sx_r4_max(sx_r4_abs(p0), sx_r4_abs(p1));
     if (m <= 4) {
         for (i = 0; i < n; ++i) {
-            __m128 d = sse_face_lanes(p, i, x0, y0);
-            s = sse_lane_min(d, _mm_cmpunord_ps(d, d));
+            sx_r4 d = face_lanes(p, i, x0, y0);
+            s = lane_min(d, sx_r4_unordered(d, d));
             if (!(s <= limit)) {
                 *stop = s;
                 return false;
@@ -157,13 +158,12 @@ static SX_ALWAYS_INLINE bool best_face_sse(const sx_core *p, const sx_core *q, s
             if (track) rows[2 * i] = d;
         }
     } else {
-        __m128 p2 = sse_vertex_pair(q->v, 4, m, v00), p3 = sse_vertex_pair(q->v, 6, m, v00);
-        __m128 x1 = _mm_shuffle_ps(p2, p3, _MM_SHUFFLE(2, 0, 2, 0));
-        __m128 y1 = _mm_shuffle_ps(p2, p3, _MM_SHUFFLE(3, 1, 3, 1));
-        *qmag = _mm_max_ps(*qmag, _mm_max_ps(_mm_andnot_ps(sign, p2), _mm_andnot_ps(sign, p3)));
+        sx_r4 p2 = vertex_pair_lanes(q->v, 4, m, v00), p3 = vertex_pair_lanes(q->v, 6, m, v00);
+        sx_r4 x1 = sx_r4_evens(p2, p3), y1 = sx_r4_odds(p2, p3);
+        *qmag = sx_r4_max(*qmag, sx_r4_max(sx_r4_abs(p2), sx_r4_abs(p3)));
         for (i = 0; i < n; ++i) {
-            __m128 d0 = sse_face_lanes(p, i, x0, y0), d1 = sse_face_lanes(p, i, x1, y1);
-            s = sse_lane_min(_mm_min_ps(d0, d1), _mm_cmpunord_ps(d0, d1));
+            sx_r4 d0 = face_lanes(p, i, x0, y0), d1 = face_lanes(p, i, x1, y1);
+            s = lane_min(sx_r4_min(d0, d1), sx_r4_unordered(d0, d1));
             if (!(s <= limit)) {
                 *stop = s;
                 return false;
@@ -183,33 +183,33 @@ static SX_ALWAYS_INLINE bool best_face_sse(const sx_core *p, const sx_core *q, s
 
 /* For each vertex j of q (count m) the face of p (n faces) that separates
  * it the most, the first of largest separation, and that separation, from
- * the rows best_face_sse kept: point_best_face's answer bit for bit (its
- * separations are these lanes; d > m ? d : m is _mm_max_ps(d, m)). */
-static SX_MAYBE_UNUSED void sse_vertex_faces(const __m128 *rows, int n, int m, int *vface,
-                                             sx_real *vsep) {
+ * the rows best_face_lanes kept: point_best_face's answer bit for bit (its
+ * separations are these lanes; d > m ? d : m is sx_r4_max(d, m)). */
+static SX_MAYBE_UNUSED void vertex_faces(const sx_r4 *rows, int n, int m, int32_t *vface,
+                                         sx_real *vsep) {
     int i;
-    __m128 m0 = rows[0], m1 = rows[1];
-    __m128i f0 = _mm_setzero_si128(), f1 = f0;
+    sx_r4 m0 = rows[0], m1 = rows[1];
+    sx_i4 f0 = sx_i4_set1(0), f1 = f0;
     for (i = 1; i < n; ++i) {
-        __m128 d0 = rows[2 * i];
-        __m128i g0 = _mm_castps_si128(_mm_cmpgt_ps(d0, m0)), fi = _mm_set1_epi32(i);
-        m0 = _mm_max_ps(d0, m0);
-        f0 = _mm_or_si128(_mm_and_si128(g0, fi), _mm_andnot_si128(g0, f0));
+        sx_r4 d0 = rows[2 * i];
+        sx_m4 g0 = sx_r4_gt(d0, m0);
+        sx_i4 fi = sx_i4_set1(i);
+        m0 = sx_r4_max(d0, m0);
+        f0 = sx_i4_select(g0, fi, f0);
         if (m > 4) {
-            __m128 d1 = rows[2 * i + 1];
-            __m128i g1 = _mm_castps_si128(_mm_cmpgt_ps(d1, m1));
-            m1 = _mm_max_ps(d1, m1);
-            f1 = _mm_or_si128(_mm_and_si128(g1, fi), _mm_andnot_si128(g1, f1));
+            sx_r4 d1 = rows[2 * i + 1];
+            sx_m4 g1 = sx_r4_gt(d1, m1);
+            m1 = sx_r4_max(d1, m1);
+            f1 = sx_i4_select(g1, fi, f1);
         }
     }
-    _mm_storeu_ps(&vsep[0], m0);
-    _mm_storeu_si128((__m128i *)(void *)&vface[0], f0);
+    sx_r4_store(&vsep[0], m0);
+    sx_i4_store(&vface[0], f0);
     if (m > 4) {
-        _mm_storeu_ps(&vsep[4], m1);
-        _mm_storeu_si128((__m128i *)(void *)&vface[4], f1);
+        sx_r4_store(&vsep[4], m1);
+        sx_i4_store(&vface[4], f1);
     }
 }
-#endif
 
 /* The best face of p against q: the first of largest separation. Returns
  * false as soon as a face separates by more than limit (or by NaN), with
@@ -220,16 +220,11 @@ static SX_ALWAYS_INLINE bool best_face(const sx_core *p, const sx_core *q, sx_re
                                        int mag_bit) {
     int i, n = face_count(p), f = 0;
     sx_real best;
-#if SX_NARROW_SSE
     if (n >= 3 && q->count >= 3) {
         sat->mags |= mag_bit;
-        return best_face_sse(p, q, limit, sep, face, stop, 0, NULL,
-                             mag_bit == 1 ? &sat->mag_b : &sat->mag_a);
+        return best_face_lanes(p, q, limit, sep, face, stop, 0, NULL,
+                               mag_bit == 1 ? &sat->mag_b : &sat->mag_a);
     }
-#else
-    SX_UNUSED(sat);
-    SX_UNUSED(mag_bit);
-#endif
     if (n == 0) {
         *sep = SX_NO_SEPARATION;
         *face = -1;
@@ -284,7 +279,6 @@ static SX_ALWAYS_INLINE bool sat_caps(const sx_core *p, const sx_core *q, sx_rea
 static SX_ALWAYS_INLINE bool sat_run(const sx_core *a, const sx_core *b, sx_real limit,
                                      sx_sat *out) {
     int na = face_count(a), nb = face_count(b);
-#if SX_NARROW_SSE
     out->rows = false;
     out->mags = 0;
     if (limit > SX_R(0.0) && na >= 3 && nb >= 3) {
@@ -292,19 +286,17 @@ static SX_ALWAYS_INLINE bool sat_run(const sx_core *a, const sx_core *b, sx_real
          * whose sweep starts from each vertex's face of largest
          * separation: the SAT's lanes have what it needs. */
         out->mags = 1;
-        if (!best_face_sse(a, b, limit, &out->sep_a, &out->face_a, &out->sep, 1, out->rows_b,
-                           &out->mag_b)) {
+        if (!best_face_lanes(a, b, limit, &out->sep_a, &out->face_a, &out->sep, 1, out->rows_b,
+                             &out->mag_b)) {
             return false;
         }
         out->mags = 3;
-        if (!best_face_sse(b, a, limit, &out->sep_b, &out->face_b, &out->sep, 1, out->rows_a,
-                           &out->mag_a)) {
+        if (!best_face_lanes(b, a, limit, &out->sep_b, &out->face_b, &out->sep, 1, out->rows_a,
+                             &out->mag_a)) {
             return false;
         }
         out->rows = true;
-    } else
-#endif
-    {
+    } else {
         if (!best_face(a, b, limit, &out->sep_a, &out->face_a, &out->sep, out, 1)) return false;
         if (!best_face(b, a, limit, &out->sep_b, &out->face_b, &out->sep, out, 2)) return false;
     }

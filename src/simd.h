@@ -28,49 +28,49 @@ typedef __m128 sx_r4;
 /** Four lane masks (all bits set: true, all clear: false). */
 typedef __m128 sx_m4;
 
-static inline sx_r4 sx_r4_set1(sx_real a) { return _mm_set1_ps(a); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_set1(sx_real a) { return _mm_set1_ps(a); }
 /** Lanes 0..3 are a, b, c, d. */
-static inline sx_r4 sx_r4_set(sx_real a, sx_real b, sx_real c, sx_real d) {
+static SX_ALWAYS_INLINE sx_r4 sx_r4_set(sx_real a, sx_real b, sx_real c, sx_real d) {
     return _mm_setr_ps(a, b, c, d);
 }
-static inline sx_r4 sx_r4_zero(void) { return _mm_setzero_ps(); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_zero(void) { return _mm_setzero_ps(); }
 /** Four reals from memory, any alignment. */
-static inline sx_r4 sx_r4_load(const sx_real *p) { return _mm_loadu_ps(p); }
-static inline void sx_r4_store(sx_real *p, sx_r4 a) { _mm_storeu_ps(p, a); }
-static inline sx_r4 sx_r4_add(sx_r4 a, sx_r4 b) { return _mm_add_ps(a, b); }
-static inline sx_r4 sx_r4_sub(sx_r4 a, sx_r4 b) { return _mm_sub_ps(a, b); }
-static inline sx_r4 sx_r4_mul(sx_r4 a, sx_r4 b) { return _mm_mul_ps(a, b); }
-static inline sx_r4 sx_r4_div(sx_r4 a, sx_r4 b) { return _mm_div_ps(a, b); }
-static inline sx_r4 sx_r4_sqrt(sx_r4 a) { return _mm_sqrt_ps(a); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_load(const sx_real *p) { return _mm_loadu_ps(p); }
+static SX_ALWAYS_INLINE void sx_r4_store(sx_real *p, sx_r4 a) { _mm_storeu_ps(p, a); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_add(sx_r4 a, sx_r4 b) { return _mm_add_ps(a, b); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_sub(sx_r4 a, sx_r4 b) { return _mm_sub_ps(a, b); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_mul(sx_r4 a, sx_r4 b) { return _mm_mul_ps(a, b); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_div(sx_r4 a, sx_r4 b) { return _mm_div_ps(a, b); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_sqrt(sx_r4 a) { return _mm_sqrt_ps(a); }
 /** a < b ? a : b per lane (b when either is NaN). */
-static inline sx_r4 sx_r4_min(sx_r4 a, sx_r4 b) { return _mm_min_ps(a, b); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_min(sx_r4 a, sx_r4 b) { return _mm_min_ps(a, b); }
 /** a > b ? a : b per lane (b when either is NaN). */
-static inline sx_r4 sx_r4_max(sx_r4 a, sx_r4 b) { return _mm_max_ps(a, b); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_max(sx_r4 a, sx_r4 b) { return _mm_max_ps(a, b); }
 /** -a (the sign bit flipped, NaN and zero included). */
-static inline sx_r4 sx_r4_neg(sx_r4 a) { return _mm_xor_ps(a, _mm_set1_ps(-0.0f)); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_neg(sx_r4 a) { return _mm_xor_ps(a, _mm_set1_ps(-0.0f)); }
 /** |a| (the sign bit cleared). */
-static inline sx_r4 sx_r4_abs(sx_r4 a) { return _mm_andnot_ps(_mm_set1_ps(-0.0f), a); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_abs(sx_r4 a) { return _mm_andnot_ps(_mm_set1_ps(-0.0f), a); }
 
-static inline sx_m4 sx_r4_lt(sx_r4 a, sx_r4 b) { return _mm_cmplt_ps(a, b); }
-static inline sx_m4 sx_r4_le(sx_r4 a, sx_r4 b) { return _mm_cmple_ps(a, b); }
-static inline sx_m4 sx_r4_gt(sx_r4 a, sx_r4 b) { return _mm_cmpgt_ps(a, b); }
-static inline sx_m4 sx_r4_ge(sx_r4 a, sx_r4 b) { return _mm_cmpge_ps(a, b); }
-static inline sx_m4 sx_r4_eq(sx_r4 a, sx_r4 b) { return _mm_cmpeq_ps(a, b); }
+static SX_ALWAYS_INLINE sx_m4 sx_r4_lt(sx_r4 a, sx_r4 b) { return _mm_cmplt_ps(a, b); }
+static SX_ALWAYS_INLINE sx_m4 sx_r4_le(sx_r4 a, sx_r4 b) { return _mm_cmple_ps(a, b); }
+static SX_ALWAYS_INLINE sx_m4 sx_r4_gt(sx_r4 a, sx_r4 b) { return _mm_cmpgt_ps(a, b); }
+static SX_ALWAYS_INLINE sx_m4 sx_r4_ge(sx_r4 a, sx_r4 b) { return _mm_cmpge_ps(a, b); }
+static SX_ALWAYS_INLINE sx_m4 sx_r4_eq(sx_r4 a, sx_r4 b) { return _mm_cmpeq_ps(a, b); }
 /** True where a or b is NaN. */
-static inline sx_m4 sx_r4_unordered(sx_r4 a, sx_r4 b) { return _mm_cmpunord_ps(a, b); }
+static SX_ALWAYS_INLINE sx_m4 sx_r4_unordered(sx_r4 a, sx_r4 b) { return _mm_cmpunord_ps(a, b); }
 
-static inline sx_m4 sx_m4_and(sx_m4 a, sx_m4 b) { return _mm_and_ps(a, b); }
-static inline sx_m4 sx_m4_or(sx_m4 a, sx_m4 b) { return _mm_or_ps(a, b); }
+static SX_ALWAYS_INLINE sx_m4 sx_m4_and(sx_m4 a, sx_m4 b) { return _mm_and_ps(a, b); }
+static SX_ALWAYS_INLINE sx_m4 sx_m4_or(sx_m4 a, sx_m4 b) { return _mm_or_ps(a, b); }
 /** !a && b per lane. */
-static inline sx_m4 sx_m4_andnot(sx_m4 a, sx_m4 b) { return _mm_andnot_ps(a, b); }
+static SX_ALWAYS_INLINE sx_m4 sx_m4_andnot(sx_m4 a, sx_m4 b) { return _mm_andnot_ps(a, b); }
 /** Bit i set when lane i is true. */
-static inline int sx_m4_bits(sx_m4 m) { return _mm_movemask_ps(m); }
+static SX_ALWAYS_INLINE int sx_m4_bits(sx_m4 m) { return _mm_movemask_ps(m); }
 /** m ? a : b per lane. */
-static inline sx_r4 sx_r4_select(sx_m4 m, sx_r4 a, sx_r4 b) {
+static SX_ALWAYS_INLINE sx_r4 sx_r4_select(sx_m4 m, sx_r4 a, sx_r4 b) {
     return _mm_or_ps(_mm_and_ps(m, a), _mm_andnot_ps(m, b));
 }
 /** Lane i of a. */
-static inline sx_real sx_r4_lane(sx_r4 a, int i) {
+static SX_ALWAYS_INLINE sx_real sx_r4_lane(sx_r4 a, int i) {
     float out[4];
     _mm_storeu_ps(out, a);
     return out[i & 3];
@@ -85,7 +85,7 @@ typedef struct sx_m4 {
     int32_t m[4];
 } sx_m4;
 
-static inline sx_r4 sx_r4_set(sx_real a, sx_real b, sx_real c, sx_real d) {
+static SX_ALWAYS_INLINE sx_r4 sx_r4_set(sx_real a, sx_real b, sx_real c, sx_real d) {
     sx_r4 r;
     r.v[0] = a;
     r.v[1] = b;
@@ -93,58 +93,70 @@ static inline sx_r4 sx_r4_set(sx_real a, sx_real b, sx_real c, sx_real d) {
     r.v[3] = d;
     return r;
 }
-static inline sx_r4 sx_r4_set1(sx_real a) { return sx_r4_set(a, a, a, a); }
-static inline sx_r4 sx_r4_zero(void) { return sx_r4_set1(SX_R(0.0)); }
-static inline sx_r4 sx_r4_load(const sx_real *p) { return sx_r4_set(p[0], p[1], p[2], p[3]); }
-static inline void sx_r4_store(sx_real *p, sx_r4 a) {
+static SX_ALWAYS_INLINE sx_r4 sx_r4_set1(sx_real a) { return sx_r4_set(a, a, a, a); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_zero(void) { return sx_r4_set1(SX_R(0.0)); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_load(const sx_real *p) { return sx_r4_set(p[0], p[1], p[2], p[3]); }
+static SX_ALWAYS_INLINE void sx_r4_store(sx_real *p, sx_r4 a) {
     p[0] = a.v[0];
     p[1] = a.v[1];
     p[2] = a.v[2];
     p[3] = a.v[3];
 }
 
-/* One lane-wise operation, written out once for every binary operator. */
+/* One lane-wise operation, written out once for every binary operator.
+ * The four lanes are spelled out, not looped over: GCC at -O2 does not
+ * unroll a loop of four, and the lanes would then live in memory. */
+#define SX_R4_LANE(k, expr)                                                    \
+    {                                                                          \
+        const int i = k;                                                       \
+        r.v[k] = (expr);                                                       \
+    }
 #define SX_R4_LANES(expr)                                                      \
     sx_r4 r;                                                                   \
-    int i;                                                                     \
-    for (i = 0; i < 4; ++i) r.v[i] = (expr);                                   \
+    SX_R4_LANE(0, expr) SX_R4_LANE(1, expr) SX_R4_LANE(2, expr) SX_R4_LANE(3, expr) \
     return r
+#define SX_M4_LANE(k, expr)                                                    \
+    {                                                                          \
+        const int i = k;                                                       \
+        r.m[k] = (expr) ? -1 : 0;                                              \
+    }
 #define SX_M4_LANES(expr)                                                      \
     sx_m4 r;                                                                   \
-    int i;                                                                     \
-    for (i = 0; i < 4; ++i) r.m[i] = (expr) ? -1 : 0;                          \
+    SX_M4_LANE(0, expr) SX_M4_LANE(1, expr) SX_M4_LANE(2, expr) SX_M4_LANE(3, expr) \
     return r
 
-static inline sx_r4 sx_r4_add(sx_r4 a, sx_r4 b) { SX_R4_LANES(a.v[i] + b.v[i]); }
-static inline sx_r4 sx_r4_sub(sx_r4 a, sx_r4 b) { SX_R4_LANES(a.v[i] - b.v[i]); }
-static inline sx_r4 sx_r4_mul(sx_r4 a, sx_r4 b) { SX_R4_LANES(a.v[i] * b.v[i]); }
-static inline sx_r4 sx_r4_div(sx_r4 a, sx_r4 b) { SX_R4_LANES(a.v[i] / b.v[i]); }
-static inline sx_r4 sx_r4_sqrt(sx_r4 a) { SX_R4_LANES(sx_sqrt(a.v[i])); }
-static inline sx_r4 sx_r4_min(sx_r4 a, sx_r4 b) { SX_R4_LANES(a.v[i] < b.v[i] ? a.v[i] : b.v[i]); }
-static inline sx_r4 sx_r4_max(sx_r4 a, sx_r4 b) { SX_R4_LANES(a.v[i] > b.v[i] ? a.v[i] : b.v[i]); }
-static inline sx_r4 sx_r4_neg(sx_r4 a) { SX_R4_LANES(-a.v[i]); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_add(sx_r4 a, sx_r4 b) { SX_R4_LANES(a.v[i] + b.v[i]); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_sub(sx_r4 a, sx_r4 b) { SX_R4_LANES(a.v[i] - b.v[i]); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_mul(sx_r4 a, sx_r4 b) { SX_R4_LANES(a.v[i] * b.v[i]); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_div(sx_r4 a, sx_r4 b) { SX_R4_LANES(a.v[i] / b.v[i]); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_sqrt(sx_r4 a) { SX_R4_LANES(sx_sqrt(a.v[i])); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_min(sx_r4 a, sx_r4 b) { SX_R4_LANES(a.v[i] < b.v[i] ? a.v[i] : b.v[i]); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_max(sx_r4 a, sx_r4 b) { SX_R4_LANES(a.v[i] > b.v[i] ? a.v[i] : b.v[i]); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_neg(sx_r4 a) { SX_R4_LANES(-a.v[i]); }
 /* fabs clears the sign bit as SSE does (sx_absr keeps -0's) */
-static inline sx_r4 sx_r4_abs(sx_r4 a) { SX_R4_LANES((sx_real)fabs((double)a.v[i])); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_abs(sx_r4 a) { SX_R4_LANES((sx_real)fabs((double)a.v[i])); }
 
-static inline sx_m4 sx_r4_lt(sx_r4 a, sx_r4 b) { SX_M4_LANES(a.v[i] < b.v[i]); }
-static inline sx_m4 sx_r4_le(sx_r4 a, sx_r4 b) { SX_M4_LANES(a.v[i] <= b.v[i]); }
-static inline sx_m4 sx_r4_gt(sx_r4 a, sx_r4 b) { SX_M4_LANES(a.v[i] > b.v[i]); }
-static inline sx_m4 sx_r4_ge(sx_r4 a, sx_r4 b) { SX_M4_LANES(a.v[i] >= b.v[i]); }
-static inline sx_m4 sx_r4_eq(sx_r4 a, sx_r4 b) { SX_M4_LANES(a.v[i] == b.v[i]); }
-static inline sx_m4 sx_r4_unordered(sx_r4 a, sx_r4 b) {
+static SX_ALWAYS_INLINE sx_m4 sx_r4_lt(sx_r4 a, sx_r4 b) { SX_M4_LANES(a.v[i] < b.v[i]); }
+static SX_ALWAYS_INLINE sx_m4 sx_r4_le(sx_r4 a, sx_r4 b) { SX_M4_LANES(a.v[i] <= b.v[i]); }
+static SX_ALWAYS_INLINE sx_m4 sx_r4_gt(sx_r4 a, sx_r4 b) { SX_M4_LANES(a.v[i] > b.v[i]); }
+static SX_ALWAYS_INLINE sx_m4 sx_r4_ge(sx_r4 a, sx_r4 b) { SX_M4_LANES(a.v[i] >= b.v[i]); }
+static SX_ALWAYS_INLINE sx_m4 sx_r4_eq(sx_r4 a, sx_r4 b) { SX_M4_LANES(a.v[i] == b.v[i]); }
+static SX_ALWAYS_INLINE sx_m4 sx_r4_unordered(sx_r4 a, sx_r4 b) {
     SX_M4_LANES(a.v[i] != a.v[i] || b.v[i] != b.v[i]);
 }
 
-static inline sx_m4 sx_m4_and(sx_m4 a, sx_m4 b) { SX_M4_LANES(a.m[i] && b.m[i]); }
-static inline sx_m4 sx_m4_or(sx_m4 a, sx_m4 b) { SX_M4_LANES(a.m[i] || b.m[i]); }
-static inline sx_m4 sx_m4_andnot(sx_m4 a, sx_m4 b) { SX_M4_LANES(!a.m[i] && b.m[i]); }
-static inline int sx_m4_bits(sx_m4 m) {
+static SX_ALWAYS_INLINE sx_m4 sx_m4_and(sx_m4 a, sx_m4 b) { SX_M4_LANES(a.m[i] && b.m[i]); }
+static SX_ALWAYS_INLINE sx_m4 sx_m4_or(sx_m4 a, sx_m4 b) { SX_M4_LANES(a.m[i] || b.m[i]); }
+static SX_ALWAYS_INLINE sx_m4 sx_m4_andnot(sx_m4 a, sx_m4 b) { SX_M4_LANES(!a.m[i] && b.m[i]); }
+static SX_ALWAYS_INLINE int sx_m4_bits(sx_m4 m) {
     return (m.m[0] ? 1 : 0) | (m.m[1] ? 2 : 0) | (m.m[2] ? 4 : 0) | (m.m[3] ? 8 : 0);
 }
-static inline sx_r4 sx_r4_select(sx_m4 m, sx_r4 a, sx_r4 b) { SX_R4_LANES(m.m[i] ? a.v[i] : b.v[i]); }
-static inline sx_real sx_r4_lane(sx_r4 a, int i) { return a.v[i & 3]; }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_select(sx_m4 m, sx_r4 a, sx_r4 b) { SX_R4_LANES(m.m[i] ? a.v[i] : b.v[i]); }
+static SX_ALWAYS_INLINE sx_real sx_r4_lane(sx_r4 a, int i) { return a.v[i & 3]; }
 
+#undef SX_R4_LANE
 #undef SX_R4_LANES
+#undef SX_M4_LANE
 #undef SX_M4_LANES
 
 #endif /* SX_SIMD */
@@ -152,14 +164,166 @@ static inline sx_real sx_r4_lane(sx_r4 a, int i) { return a.v[i & 3]; }
 /* Built on the lanes above, so written once for both paths. */
 
 /** a * b + c, rounded twice (no fused multiply-add: both paths agree). */
-static inline sx_r4 sx_r4_mul_add(sx_r4 a, sx_r4 b, sx_r4 c) { return sx_r4_add(sx_r4_mul(a, b), c); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_mul_add(sx_r4 a, sx_r4 b, sx_r4 c) { return sx_r4_add(sx_r4_mul(a, b), c); }
 /** lo <= a <= hi per lane (hi wins when lo > hi; NaN a gives lo). */
-static inline sx_r4 sx_r4_clamp(sx_r4 a, sx_r4 lo, sx_r4 hi) {
+static SX_ALWAYS_INLINE sx_r4 sx_r4_clamp(sx_r4 a, sx_r4 lo, sx_r4 hi) {
     return sx_r4_min(hi, sx_r4_max(a, lo));
 }
 /** True when any lane of m is. */
-static inline bool sx_m4_any(sx_m4 m) { return sx_m4_bits(m) != 0; }
+static SX_ALWAYS_INLINE bool sx_m4_any(sx_m4 m) { return sx_m4_bits(m) != 0; }
 /** True when every lane of m is. */
-static inline bool sx_m4_all(sx_m4 m) { return sx_m4_bits(m) == 15; }
+static SX_ALWAYS_INLINE bool sx_m4_all(sx_m4 m) { return sx_m4_bits(m) == 15; }
+
+/* ---- lane moves, integer lanes and reductions ---------------------------
+ * What the narrowphase needs besides lane-wise arithmetic: points stored as
+ * pairs of reals loaded two or four at a time, lanes moved in a fixed order
+ * (named for the order, so that both paths move them alike), feature
+ * indices kept in integer lanes beside the reals that choose them. */
+
+#if SX_SIMD
+
+/** Four 32-bit ints. */
+typedef __m128i sx_i4;
+
+/** [p[0], p[1], a2, a3]: two reals, 8 bytes, any alignment. */
+static SX_ALWAYS_INLINE sx_r4 sx_r4_load_low(sx_r4 a, const sx_real *p) {
+    return _mm_loadl_pi(a, (const __m64 *)(const void *)p);
+}
+/** [a0, a1, p[0], p[1]]. */
+static SX_ALWAYS_INLINE sx_r4 sx_r4_load_high(sx_r4 a, const sx_real *p) {
+    return _mm_loadh_pi(a, (const __m64 *)(const void *)p);
+}
+/** Lanes 0 and 1 of a to p[0], p[1]. */
+static SX_ALWAYS_INLINE void sx_r4_store_low(sx_real *p, sx_r4 a) { _mm_storel_pi((__m64 *)(void *)p, a); }
+/** Lanes 2 and 3 of a to p[0], p[1]. */
+static SX_ALWAYS_INLINE void sx_r4_store_high(sx_real *p, sx_r4 a) { _mm_storeh_pi((__m64 *)(void *)p, a); }
+/** Lane 0 of a. */
+static SX_ALWAYS_INLINE sx_real sx_r4_first(sx_r4 a) { return _mm_cvtss_f32(a); }
+/** [a1, a0, a3, a2]. */
+static SX_ALWAYS_INLINE sx_r4 sx_r4_swap_pairs(sx_r4 a) {
+    return _mm_shuffle_ps(a, a, _MM_SHUFFLE(2, 3, 0, 1));
+}
+/** [a2, a3, a0, a1]. */
+static SX_ALWAYS_INLINE sx_r4 sx_r4_swap_halves(sx_r4 a) {
+    return _mm_shuffle_ps(a, a, _MM_SHUFFLE(1, 0, 3, 2));
+}
+/** [a0, a1, b0, b1]. */
+static SX_ALWAYS_INLINE sx_r4 sx_r4_low_halves(sx_r4 a, sx_r4 b) { return _mm_movelh_ps(a, b); }
+/** [a0, a1, b2, b3]. */
+static SX_ALWAYS_INLINE sx_r4 sx_r4_low_high(sx_r4 a, sx_r4 b) {
+    return _mm_shuffle_ps(a, b, _MM_SHUFFLE(3, 2, 1, 0));
+}
+/** [a0, a2, b0, b2]: the x of two pairs of points. */
+static SX_ALWAYS_INLINE sx_r4 sx_r4_evens(sx_r4 a, sx_r4 b) {
+    return _mm_shuffle_ps(a, b, _MM_SHUFFLE(2, 0, 2, 0));
+}
+/** [a1, a3, b1, b3]: their y. */
+static SX_ALWAYS_INLINE sx_r4 sx_r4_odds(sx_r4 a, sx_r4 b) {
+    return _mm_shuffle_ps(a, b, _MM_SHUFFLE(3, 1, 3, 1));
+}
+/** Lane 2 of a in every lane. */
+static SX_ALWAYS_INLINE sx_r4 sx_r4_splat2(sx_r4 a) { return _mm_shuffle_ps(a, a, _MM_SHUFFLE(2, 2, 2, 2)); }
+/** Lane 3 of a in every lane. */
+static SX_ALWAYS_INLINE sx_r4 sx_r4_splat3(sx_r4 a) { return _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 3, 3, 3)); }
+/** a with its sign bit flipped in the lanes where s is -0 (s: +0 or -0). */
+static SX_ALWAYS_INLINE sx_r4 sx_r4_flip_signs(sx_r4 a, sx_r4 s) { return _mm_xor_ps(a, s); }
+
+static SX_ALWAYS_INLINE sx_i4 sx_i4_set1(int32_t a) { return _mm_set1_epi32(a); }
+/** m ? a : b per lane. */
+static SX_ALWAYS_INLINE sx_i4 sx_i4_select(sx_m4 m, sx_i4 a, sx_i4 b) {
+    __m128i k = _mm_castps_si128(m);
+    return _mm_or_si128(_mm_and_si128(k, a), _mm_andnot_si128(k, b));
+}
+/** Four ints to p[0..3], any alignment. */
+static SX_ALWAYS_INLINE void sx_i4_store(int32_t *p, sx_i4 a) { _mm_storeu_si128((__m128i *)(void *)p, a); }
+
+#else /* the portable lanes */
+
+typedef struct sx_i4 {
+    int32_t i[4];
+} sx_i4;
+
+static SX_ALWAYS_INLINE sx_r4 sx_r4_load_low(sx_r4 a, const sx_real *p) {
+    return sx_r4_set(p[0], p[1], a.v[2], a.v[3]);
+}
+static SX_ALWAYS_INLINE sx_r4 sx_r4_load_high(sx_r4 a, const sx_real *p) {
+    return sx_r4_set(a.v[0], a.v[1], p[0], p[1]);
+}
+static SX_ALWAYS_INLINE void sx_r4_store_low(sx_real *p, sx_r4 a) {
+    p[0] = a.v[0];
+    p[1] = a.v[1];
+}
+static SX_ALWAYS_INLINE void sx_r4_store_high(sx_real *p, sx_r4 a) {
+    p[0] = a.v[2];
+    p[1] = a.v[3];
+}
+static SX_ALWAYS_INLINE sx_real sx_r4_first(sx_r4 a) { return a.v[0]; }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_swap_pairs(sx_r4 a) { return sx_r4_set(a.v[1], a.v[0], a.v[3], a.v[2]); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_swap_halves(sx_r4 a) { return sx_r4_set(a.v[2], a.v[3], a.v[0], a.v[1]); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_low_halves(sx_r4 a, sx_r4 b) {
+    return sx_r4_set(a.v[0], a.v[1], b.v[0], b.v[1]);
+}
+static SX_ALWAYS_INLINE sx_r4 sx_r4_low_high(sx_r4 a, sx_r4 b) {
+    return sx_r4_set(a.v[0], a.v[1], b.v[2], b.v[3]);
+}
+static SX_ALWAYS_INLINE sx_r4 sx_r4_evens(sx_r4 a, sx_r4 b) {
+    return sx_r4_set(a.v[0], a.v[2], b.v[0], b.v[2]);
+}
+static SX_ALWAYS_INLINE sx_r4 sx_r4_odds(sx_r4 a, sx_r4 b) {
+    return sx_r4_set(a.v[1], a.v[3], b.v[1], b.v[3]);
+}
+static SX_ALWAYS_INLINE sx_r4 sx_r4_splat2(sx_r4 a) { return sx_r4_set1(a.v[2]); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_splat3(sx_r4 a) { return sx_r4_set1(a.v[3]); }
+/* Negation flips the sign bit alone in IEEE arithmetic, NaN and zero
+ * included, as SSE2's exclusive or with -0 does. */
+static SX_ALWAYS_INLINE sx_r4 sx_r4_flip_signs(sx_r4 a, sx_r4 s) {
+    return sx_r4_set(signbit(s.v[0]) ? -a.v[0] : a.v[0], signbit(s.v[1]) ? -a.v[1] : a.v[1],
+                     signbit(s.v[2]) ? -a.v[2] : a.v[2], signbit(s.v[3]) ? -a.v[3] : a.v[3]);
+}
+
+static SX_ALWAYS_INLINE sx_i4 sx_i4_set1(int32_t a) {
+    sx_i4 r;
+    r.i[0] = r.i[1] = r.i[2] = r.i[3] = a;
+    return r;
+}
+static SX_ALWAYS_INLINE sx_i4 sx_i4_select(sx_m4 m, sx_i4 a, sx_i4 b) {
+    sx_i4 r;
+    r.i[0] = m.m[0] ? a.i[0] : b.i[0];
+    r.i[1] = m.m[1] ? a.i[1] : b.i[1];
+    r.i[2] = m.m[2] ? a.i[2] : b.i[2];
+    r.i[3] = m.m[3] ? a.i[3] : b.i[3];
+    return r;
+}
+static SX_ALWAYS_INLINE void sx_i4_store(int32_t *p, sx_i4 a) {
+    p[0] = a.i[0];
+    p[1] = a.i[1];
+    p[2] = a.i[2];
+    p[3] = a.i[3];
+}
+
+#endif /* SX_SIMD */
+
+/** [p[0], p[1], 0, 0]. */
+static SX_ALWAYS_INLINE sx_r4 sx_r4_load2(const sx_real *p) { return sx_r4_load_low(sx_r4_zero(), p); }
+/** [lo[0], lo[1], hi[0], hi[1]]: two 8-byte loads, which two 8-byte stores
+ *  still in flight can forward to (a 16-byte load of them cannot). */
+static SX_ALWAYS_INLINE sx_r4 sx_r4_load2x2(const sx_real *lo, const sx_real *hi) {
+    return sx_r4_load_high(sx_r4_load2(lo), hi);
+}
+/** The least lane of a in every lane: halves first, then pairs, with
+ *  sx_r4_min's rule for NaN and signed zeros at each step. */
+static SX_ALWAYS_INLINE sx_r4 sx_r4_min_lanes(sx_r4 a) {
+    a = sx_r4_min(a, sx_r4_swap_halves(a));
+    return sx_r4_min(a, sx_r4_swap_pairs(a));
+}
+/** The largest lane of a in every lane, in sx_r4_min_lanes's order. */
+static SX_ALWAYS_INLINE sx_r4 sx_r4_max_lanes(sx_r4 a) {
+    a = sx_r4_max(a, sx_r4_swap_halves(a));
+    return sx_r4_max(a, sx_r4_swap_pairs(a));
+}
+/** True when some lane of a is NaN. */
+static SX_ALWAYS_INLINE bool sx_r4_any_nan(sx_r4 a) { return sx_m4_any(sx_r4_unordered(a, a)); }
+/** True when no lane of a is NaN or infinite (a - a is 0 for those only). */
+static SX_ALWAYS_INLINE bool sx_r4_all_finite(sx_r4 a) { return !sx_r4_any_nan(sx_r4_sub(a, a)); }
 
 #endif /* SEPAX_SIMD_H */

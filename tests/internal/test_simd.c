@@ -19,7 +19,8 @@ static void lanes_load_store_and_arithmetic_are_exact(void **state) {
     int i;
     (void)state;
     sx_r4_store(out, a);
-    for (i = 0; i < 4; ++i) assert_true(same_bits(out[i], in[i]));
+    for (i = 0; i < 4; ++i)
+        assert_true(same_bits(out[i], in[i]));
     for (i = 0; i < 4; ++i) {
         sx_real x = in[i], y = sx_r4_lane(b, i);
         assert_true(same_bits(sx_r4_lane(sx_r4_add(a, b), i), x + y));
@@ -87,11 +88,97 @@ static void comparisons_masks_and_select(void **state) {
     }
 }
 
+/* The lane moves name their order: each lane checked by value. */
+static void lane_moves_follow_their_names(void **state) {
+    sx_real in[4] = {SX_R(1.0), SX_R(2.0), SX_R(3.0), SX_R(4.0)}, two[2];
+    sx_r4 a = sx_r4_load(in), b = sx_r4_set(SX_R(5.0), SX_R(6.0), SX_R(7.0), SX_R(8.0));
+    sx_real want[][4] = {{1, 2, 0, 0}, {3, 4, 7, 8},   {1, 2, 3, 4}, {2, 1, 4, 3}, {3, 4, 1, 2},
+                         {1, 2, 5, 6}, {1, 2, 7, 8},   {1, 3, 5, 7}, {2, 4, 6, 8}, {3, 3, 3, 3},
+                         {4, 4, 4, 4}, {-1, 2, 3, -4}, {1, 2, 1, 2}};
+    sx_r4 got[13];
+    int i, k;
+    (void)state;
+    got[0] = sx_r4_load2(in);
+    got[1] = sx_r4_load_low(b, &in[2]);
+    got[2] = sx_r4_load2x2(&in[0], &in[2]);
+    got[3] = sx_r4_swap_pairs(a);
+    got[4] = sx_r4_swap_halves(a);
+    got[5] = sx_r4_low_halves(a, b);
+    got[6] = sx_r4_low_high(a, b);
+    got[7] = sx_r4_evens(a, b);
+    got[8] = sx_r4_odds(a, b);
+    got[9] = sx_r4_splat2(a);
+    got[10] = sx_r4_splat3(a);
+    got[11] = sx_r4_flip_signs(a, sx_r4_set(SX_R(-0.0), SX_R(0.0), SX_R(0.0), SX_R(-0.0)));
+    got[12] = sx_r4_load_high(a, &in[0]);
+    for (k = 0; k < 13; ++k) {
+        for (i = 0; i < 4; ++i)
+            assert_true(same_bits(sx_r4_lane(got[k], i), want[k][i]));
+    }
+    assert_true(same_bits(sx_r4_first(b), SX_R(5.0)));
+    sx_r4_store_low(two, b);
+    assert_true(same_bits(two[0], SX_R(5.0)) && same_bits(two[1], SX_R(6.0)));
+    sx_r4_store_high(two, b);
+    assert_true(same_bits(two[0], SX_R(7.0)) && same_bits(two[1], SX_R(8.0)));
+    /* the sign of a zero and of a NaN flips too */
+    assert_true(
+        same_bits(sx_r4_first(sx_r4_flip_signs(sx_r4_zero(), sx_r4_set1(SX_R(-0.0)))), SX_R(-0.0)));
+    assert_true(signbit(sx_r4_first(sx_r4_flip_signs(
+                    sx_r4_set1((sx_real)NAN), sx_r4_set1(SX_R(-0.0))))) != signbit((sx_real)NAN));
+}
+
+/* Horizontal minimum and maximum: halves first, then pairs, so NaN and
+ * signed zeros land where sx_r4_min's rule puts them, the same in both
+ * paths. */
+static void lane_reductions_and_finite_tests(void **state) {
+    sx_real nan = (sx_real)NAN;
+    sx_r4 a = sx_r4_set(SX_R(3.0), SX_R(-1.0), SX_R(2.0), SX_R(5.0));
+    sx_r4 z = sx_r4_set(SX_R(0.0), SX_R(-0.0), SX_R(-0.0), SX_R(0.0));
+    sx_r4 n = sx_r4_set(SX_R(1.0), nan, SX_R(2.0), SX_R(0.5));
+    int i;
+    (void)state;
+    for (i = 0; i < 4; ++i) {
+        assert_true(same_bits(sx_r4_lane(sx_r4_min_lanes(a), i), SX_R(-1.0)));
+        assert_true(same_bits(sx_r4_lane(sx_r4_max_lanes(a), i), SX_R(5.0)));
+    }
+    /* min(z, [z2, z3, z0, z1]) = [-0, 0, 0, -0]; then with its pairs
+     * swapped: [0, -0, -0, 0] */
+    assert_true(same_bits(sx_r4_first(sx_r4_min_lanes(z)), SX_R(0.0)));
+    assert_true(same_bits(sx_r4_lane(sx_r4_min_lanes(z), 1), SX_R(-0.0)));
+    /* [1, nan, 2, 0.5] with its halves swapped: [2, 0.5, 2, nan]; then
+     * with its pairs swapped: [2, 2, nan, 2] */
+    assert_true(same_bits(sx_r4_first(sx_r4_max_lanes(n)), SX_R(2.0)));
+    assert_true(isnan(sx_r4_lane(sx_r4_max_lanes(n), 2)));
+    assert_true(same_bits(sx_r4_lane(sx_r4_max_lanes(n), 3), SX_R(2.0)));
+    assert_true(sx_r4_any_nan(n));
+    assert_false(sx_r4_any_nan(a));
+    assert_true(sx_r4_all_finite(a));
+    assert_false(sx_r4_all_finite(sx_r4_set(SX_R(1.0), SX_R(1.0), (sx_real)INFINITY, SX_R(1.0))));
+    assert_false(sx_r4_all_finite(n));
+}
+
+/* Integer lanes chosen by a mask, as the narrowphase keeps a face index
+ * beside the separation that chose it. */
+static void integer_lanes_follow_a_mask(void **state) {
+    sx_r4 a = sx_r4_set(SX_R(1.0), SX_R(5.0), (sx_real)NAN, SX_R(-2.0));
+    sx_r4 b = sx_r4_set1(SX_R(0.0));
+    int32_t out[4];
+    (void)state;
+    sx_i4_store(out, sx_i4_select(sx_r4_gt(a, b), sx_i4_set1(7), sx_i4_set1(-3)));
+    assert_int_equal(out[0], 7);
+    assert_int_equal(out[1], 7);
+    assert_int_equal(out[2], -3);
+    assert_int_equal(out[3], -3);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(lanes_load_store_and_arithmetic_are_exact),
         cmocka_unit_test(min_max_and_clamp_follow_the_sse_rules),
         cmocka_unit_test(comparisons_masks_and_select),
+        cmocka_unit_test(lane_moves_follow_their_names),
+        cmocka_unit_test(lane_reductions_and_finite_tests),
+        cmocka_unit_test(integer_lanes_follow_a_mask),
     };
     return cmocka_run_group_tests_name("simd", tests, sx_test_group_setup, sx_test_group_teardown);
 }
