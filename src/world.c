@@ -255,7 +255,9 @@ static void sx_collider_bounds(sx_world *world, int slot) {
     const sx_body_sim *b = &world->sims[c->body];
     sx_xform xf = b->xf;
     sx_aabb u;
-    sx_real half = SX_R(0.5) * world->margin, reach = SX_R(0.0), far;
+    sx_real half = SX_R(0.5) * world->margin, reach = SX_R(0.0);
+    bool moves = world->step_dt > SX_R(0.0) &&
+                 (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0));
     if (c->part_count > 0) {
         int k;
         for (k = 0; k < c->part_count; ++k) {
@@ -267,15 +269,18 @@ static void sx_collider_bounds(sx_world *world, int slot) {
         u = sx_shape_aabb(&c->shape, xf);
     }
     /* the farthest point of the bounds from the centre of mass bounds the
-     * lever of the turn */
-    far = sx_length(
-        sx_vmax(sx_vabs(sx_sub(u.lower, b->center)), sx_vabs(sx_sub(u.upper, b->center))));
-    if (world->step_dt > SX_R(0.0) && (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0))) {
-        reach = world->step_dt * (sx_length(b->v) + sx_absr(b->w) * far);
-        if (!sx_is_finite(reach)) reach = SX_R(0.0);
+     * lever of the turn, and the disc a bullet pair's test uses (only
+     * worlds with bullets read it) */
+    if (moves || world->bullet_count > 0) {
+        sx_real far = sx_length(
+            sx_vmax(sx_vabs(sx_sub(u.lower, b->center)), sx_vabs(sx_sub(u.upper, b->center))));
+        c->bound_radius = far;
+        if (moves) {
+            reach = world->step_dt * (sx_length(b->v) + sx_absr(b->w) * far);
+            if (!sx_is_finite(reach)) reach = SX_R(0.0);
+        }
     }
     c->reach = reach;
-    c->bound_radius = far;
     /* a bullet's bounds are not grown by its travel when the continuous
      * stage sweeps it (against bullets too, both moving): a volley would
      * otherwise pair each bullet with all the others; its margin keeps the
@@ -542,13 +547,6 @@ static void sx_limit_speed(sx_body_sim *b, sx_real h) {
     }
 }
 
-/* The speed limit for every awake moving body before the solver reads the
- * velocities: dynamic bodies meet it in sx_world_apply_forces already, but a
- * kinematic body's velocity is whatever the caller set (an angular velocity
- * of -FLT_MAX made w x r overflow in the solver and a contact's tangent
- * impulse NaN), and the stages may be called on their own. A no-op for any
- * velocity within half the limit, so ordinary scenes are unchanged bit for
- * bit. */
 /* The continuous stage's first test of each awake dynamic body, where the
  * step's motion left it (pose p, recorded at collide; the bounds of the
  * test precomputed by sx_ccd_test_make): whether it strayed from the end
@@ -589,26 +587,36 @@ static inline bool sx_ccd_may_need_sweep(const sx_world *world, const sx_ccd_tes
            (t->bullets && world->infos[slot].bullet);
 }
 
+/* Lists body slot for the continuous stage when it may need a sweep;
+ * false when the list could not grow. */
+static inline bool sx_ccd_list(sx_world *world, const sx_ccd_test *t, int slot,
+                               const sx_body_sim *b) {
+    return !sx_ccd_may_need_sweep(world, t, slot, b) ||
+           sx_push_int(&world->ccd_sweep, &world->ccd_sweep_count, &world->ccd_sweep_capacity,
+                       slot);
+}
+
 sx_status sx_ccd_mark(sx_world *world) {
     sx_ccd_test t = sx_ccd_test_make(world);
     int k;
     world->ccd_sweep_count = 0;
     for (k = 0; k < world->active_body_count; ++k) {
         int slot = world->active_bodies[k];
-        if (sx_ccd_may_need_sweep(world, &t, slot, &world->sims[slot]) &&
-            !sx_push_int(&world->ccd_sweep, &world->ccd_sweep_count, &world->ccd_sweep_capacity,
-                         slot)) {
-            return SX_ERR_NO_MEMORY;
-        }
+        if (!sx_ccd_list(world, &t, slot, &world->sims[slot])) return SX_ERR_NO_MEMORY;
     }
     world->ccd_marked = true;
     return SX_OK;
 }
 
-/* The speed limit of every awake moving body (below); with `mark`, also
- * sx_ccd_mark's list, in the same pass: the last sub-step's separate ends
- * the step's motion, and the continuous stage then visits only the bodies
- * listed. */
+/* The speed limit for every awake moving body before the solver reads the
+ * velocities: dynamic bodies meet it in sx_world_apply_forces already, but a
+ * kinematic body's velocity is whatever the caller set (an angular velocity
+ * of -FLT_MAX made w x r overflow in the solver and a contact's tangent
+ * impulse NaN), and the stages may be called on their own. A no-op for any
+ * velocity within half the limit, so ordinary scenes are unchanged bit for
+ * bit. With `mark`, the same pass also makes sx_ccd_mark's list: the last
+ * sub-step's separate ends the step's motion, and the continuous stage then
+ * visits only the bodies listed. */
 static sx_status sx_limit_speeds_marking(sx_world *world, sx_real h, bool mark) {
     sx_real wmax = sx_minr(SX_MAX_ROTATION / h, SX_REAL_MAX);
     sx_real vhalf = SX_R(0.5) * sx_minr(SX_HUGE / h, SX_REAL_MAX);
@@ -619,11 +627,7 @@ static sx_status sx_limit_speeds_marking(sx_world *world, sx_real h, bool mark) 
         int slot = world->active_bodies[k];
         sx_body_sim *b = &world->sims[slot];
         if (!b->moving || !b->awake) continue;
-        if (mark && sx_ccd_may_need_sweep(world, &t, slot, b) &&
-            !sx_push_int(&world->ccd_sweep, &world->ccd_sweep_count, &world->ccd_sweep_capacity,
-                         slot)) {
-            return SX_ERR_NO_MEMORY;
-        }
+        if (mark && !sx_ccd_list(world, &t, slot, b)) return SX_ERR_NO_MEMORY;
         if (sx_absr(b->w) <= wmax && sx_absr(b->v.x) <= vhalf && sx_absr(b->v.y) <= vhalf) continue;
         sx_limit_speed(b, h);
     }
