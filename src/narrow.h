@@ -152,10 +152,11 @@ int sx_core_polygon_point_manifold(const sx_polygon *a, sx_vec2 c, sx_real rb, s
  * [p.x, p.y, q.c, q.s]. In the float build it travels in one register, not
  * by address: where a function took the address of its by-value transform,
  * GCC 12 copied it through a 16-byte reload of its two stored 8-byte
- * halves, a failed store forward on every call (the portable lanes pass
- * it as a struct). Made with sx_xf_of in the function that holds the
- * transform by value; loaded 8 bytes at a time, as a by-value transform is
- * stored (a 16-byte load of two 8-byte stores cannot be forwarded). */
+ * halves, a failed store forward on every call (the double build's two
+ * registers and the portable lanes pass it as a struct, in memory). Made
+ * with sx_xf_of in the function that holds the transform by value; loaded
+ * 8 bytes at a time, as a by-value transform is stored (a 16-byte load of
+ * two 8-byte stores cannot be forwarded). */
 typedef sx_r4 sx_xf;
 static SX_ALWAYS_INLINE sx_xf sx_xf_of(const sx_xform *x) {
     return sx_r4_load2x2(&x->p.x, &x->q.c);

@@ -1,12 +1,13 @@
 /* sepax — private: four lanes of sx_real, the one place SIMD lives.
  *
  * The narrowphase's inner loops and the solver's wide passes are written
- * once against these operations. The float build on x86-64 maps them to
- * SSE2 (every x86-64 CPU has it); the double build and -DSX_NO_SIMD
- * (make SIMD=0) map them to plain C over four lanes. Each operation is an
+ * once against these operations. On x86-64 (every CPU there has SSE2) the
+ * float build maps them to one SSE2 register of four floats and the double
+ * build to two registers of two doubles; -DSX_NO_SIMD (make SIMD=0) and
+ * other CPUs map them to plain C over four lanes. Each operation is an
  * IEEE-exact lane-wise operation (no fused multiply-add, no approximate
  * reciprocal) and the scalar fallback reproduces SSE2's rules for min, max
- * and comparisons with NaN, so both paths answer bit for bit alike. */
+ * and comparisons with NaN, so every path answers bit for bit alike. */
 #ifndef SEPAX_SIMD_H
 #define SEPAX_SIMD_H
 
@@ -14,14 +15,23 @@
 
 #include "core.h"
 
-#if !defined(SX_DOUBLE) && !defined(SX_NO_SIMD) && defined(__SSE2__)
+/* SX_SIMD: some SSE2 mapping; SX_SIMD_F64: the double build's pairs of
+ * registers (a loop of padded lanes run in plain C costs the double build
+ * more than the scalar loop it replaces). */
+#if !defined(SX_NO_SIMD) && defined(__SSE2__)
 #define SX_SIMD 1
 #include <emmintrin.h>
+#ifdef SX_DOUBLE
+#define SX_SIMD_F64 1
+#else
+#define SX_SIMD_F64 0
+#endif
 #else
 #define SX_SIMD 0
+#define SX_SIMD_F64 0
 #endif
 
-#if SX_SIMD
+#if SX_SIMD && !SX_SIMD_F64
 
 /** Four reals. */
 typedef __m128 sx_r4;
@@ -76,6 +86,85 @@ static SX_ALWAYS_INLINE sx_real sx_r4_lane(sx_r4 a, int i) {
     return out[i & 3];
 }
 
+#elif SX_SIMD_F64 /* two registers of two doubles */
+
+/** Four reals: lanes 0 and 1 in lo, 2 and 3 in hi. */
+typedef struct sx_r4 {
+    __m128d lo, hi;
+} sx_r4;
+/** Four lane masks (all bits set: true, all clear: false), halved alike. */
+typedef sx_r4 sx_m4;
+
+static SX_ALWAYS_INLINE sx_r4 sx_r4_halves(__m128d lo, __m128d hi) {
+    sx_r4 r;
+    r.lo = lo;
+    r.hi = hi;
+    return r;
+}
+/* One SSE2 operation on both halves. */
+#define SX_PD(op, a, b) sx_r4_halves(op((a).lo, (b).lo), op((a).hi, (b).hi))
+
+static SX_ALWAYS_INLINE sx_r4 sx_r4_set1(sx_real a) {
+    __m128d d = _mm_set1_pd(a);
+    return sx_r4_halves(d, d);
+}
+static SX_ALWAYS_INLINE sx_r4 sx_r4_set(sx_real a, sx_real b, sx_real c, sx_real d) {
+    return sx_r4_halves(_mm_setr_pd(a, b), _mm_setr_pd(c, d));
+}
+static SX_ALWAYS_INLINE sx_r4 sx_r4_zero(void) {
+    return sx_r4_halves(_mm_setzero_pd(), _mm_setzero_pd());
+}
+static SX_ALWAYS_INLINE sx_r4 sx_r4_load(const sx_real *p) {
+    return sx_r4_halves(_mm_loadu_pd(p), _mm_loadu_pd(p + 2));
+}
+static SX_ALWAYS_INLINE void sx_r4_store(sx_real *p, sx_r4 a) {
+    _mm_storeu_pd(p, a.lo);
+    _mm_storeu_pd(p + 2, a.hi);
+}
+static SX_ALWAYS_INLINE sx_r4 sx_r4_add(sx_r4 a, sx_r4 b) { return SX_PD(_mm_add_pd, a, b); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_sub(sx_r4 a, sx_r4 b) { return SX_PD(_mm_sub_pd, a, b); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_mul(sx_r4 a, sx_r4 b) { return SX_PD(_mm_mul_pd, a, b); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_div(sx_r4 a, sx_r4 b) { return SX_PD(_mm_div_pd, a, b); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_sqrt(sx_r4 a) {
+    return sx_r4_halves(_mm_sqrt_pd(a.lo), _mm_sqrt_pd(a.hi));
+}
+static SX_ALWAYS_INLINE sx_r4 sx_r4_min(sx_r4 a, sx_r4 b) { return SX_PD(_mm_min_pd, a, b); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_max(sx_r4 a, sx_r4 b) { return SX_PD(_mm_max_pd, a, b); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_neg(sx_r4 a) {
+    return SX_PD(_mm_xor_pd, a, sx_r4_set1(SX_R(-0.0)));
+}
+static SX_ALWAYS_INLINE sx_r4 sx_r4_abs(sx_r4 a) {
+    return SX_PD(_mm_andnot_pd, sx_r4_set1(SX_R(-0.0)), a);
+}
+
+static SX_ALWAYS_INLINE sx_m4 sx_r4_lt(sx_r4 a, sx_r4 b) { return SX_PD(_mm_cmplt_pd, a, b); }
+static SX_ALWAYS_INLINE sx_m4 sx_r4_le(sx_r4 a, sx_r4 b) { return SX_PD(_mm_cmple_pd, a, b); }
+static SX_ALWAYS_INLINE sx_m4 sx_r4_gt(sx_r4 a, sx_r4 b) { return SX_PD(_mm_cmpgt_pd, a, b); }
+static SX_ALWAYS_INLINE sx_m4 sx_r4_ge(sx_r4 a, sx_r4 b) { return SX_PD(_mm_cmpge_pd, a, b); }
+static SX_ALWAYS_INLINE sx_m4 sx_r4_eq(sx_r4 a, sx_r4 b) { return SX_PD(_mm_cmpeq_pd, a, b); }
+static SX_ALWAYS_INLINE sx_m4 sx_r4_unordered(sx_r4 a, sx_r4 b) {
+    return SX_PD(_mm_cmpunord_pd, a, b);
+}
+
+static SX_ALWAYS_INLINE sx_m4 sx_m4_and(sx_m4 a, sx_m4 b) { return SX_PD(_mm_and_pd, a, b); }
+static SX_ALWAYS_INLINE sx_m4 sx_m4_or(sx_m4 a, sx_m4 b) { return SX_PD(_mm_or_pd, a, b); }
+static SX_ALWAYS_INLINE sx_m4 sx_m4_andnot(sx_m4 a, sx_m4 b) { return SX_PD(_mm_andnot_pd, a, b); }
+static SX_ALWAYS_INLINE int sx_m4_bits(sx_m4 m) {
+    return _mm_movemask_pd(m.lo) | (_mm_movemask_pd(m.hi) << 2);
+}
+static SX_ALWAYS_INLINE sx_r4 sx_r4_select(sx_m4 m, sx_r4 a, sx_r4 b) {
+    return sx_r4_halves(_mm_or_pd(_mm_and_pd(m.lo, a.lo), _mm_andnot_pd(m.lo, b.lo)),
+                        _mm_or_pd(_mm_and_pd(m.hi, a.hi), _mm_andnot_pd(m.hi, b.hi)));
+}
+static SX_ALWAYS_INLINE sx_real sx_r4_lane(sx_r4 a, int i) {
+    double out[4];
+    sx_r4_store(out, a);
+    return out[i & 3];
+}
+
+#undef SX_R4_PD
+#undef SX_M4_PD
+
 #else /* the portable lanes */
 
 typedef struct sx_r4 {
@@ -95,7 +184,9 @@ static SX_ALWAYS_INLINE sx_r4 sx_r4_set(sx_real a, sx_real b, sx_real c, sx_real
 }
 static SX_ALWAYS_INLINE sx_r4 sx_r4_set1(sx_real a) { return sx_r4_set(a, a, a, a); }
 static SX_ALWAYS_INLINE sx_r4 sx_r4_zero(void) { return sx_r4_set1(SX_R(0.0)); }
-static SX_ALWAYS_INLINE sx_r4 sx_r4_load(const sx_real *p) { return sx_r4_set(p[0], p[1], p[2], p[3]); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_load(const sx_real *p) {
+    return sx_r4_set(p[0], p[1], p[2], p[3]);
+}
 static SX_ALWAYS_INLINE void sx_r4_store(sx_real *p, sx_r4 a) {
     p[0] = a.v[0];
     p[1] = a.v[1];
@@ -106,32 +197,34 @@ static SX_ALWAYS_INLINE void sx_r4_store(sx_real *p, sx_r4 a) {
 /* One lane-wise operation, written out once for every binary operator.
  * The four lanes are spelled out, not looped over: GCC at -O2 does not
  * unroll a loop of four, and the lanes would then live in memory. */
-#define SX_R4_LANE(k, expr)                                                    \
-    {                                                                          \
-        const int i = k;                                                       \
-        r.v[k] = (expr);                                                       \
+#define SX_R4_LANE(k, expr)                                                                        \
+    {                                                                                              \
+        const int i = k;                                                                           \
+        r.v[k] = (expr);                                                                           \
     }
-#define SX_R4_LANES(expr)                                                      \
-    sx_r4 r;                                                                   \
-    SX_R4_LANE(0, expr) SX_R4_LANE(1, expr) SX_R4_LANE(2, expr) SX_R4_LANE(3, expr) \
-    return r
-#define SX_M4_LANE(k, expr)                                                    \
-    {                                                                          \
-        const int i = k;                                                       \
-        r.m[k] = (expr) ? -1 : 0;                                              \
+#define SX_R4_LANES(expr)                                                                          \
+    sx_r4 r;                                                                                       \
+    SX_R4_LANE(0, expr) SX_R4_LANE(1, expr) SX_R4_LANE(2, expr) SX_R4_LANE(3, expr) return r
+#define SX_M4_LANE(k, expr)                                                                        \
+    {                                                                                              \
+        const int i = k;                                                                           \
+        r.m[k] = (expr) ? -1 : 0;                                                                  \
     }
-#define SX_M4_LANES(expr)                                                      \
-    sx_m4 r;                                                                   \
-    SX_M4_LANE(0, expr) SX_M4_LANE(1, expr) SX_M4_LANE(2, expr) SX_M4_LANE(3, expr) \
-    return r
+#define SX_M4_LANES(expr)                                                                          \
+    sx_m4 r;                                                                                       \
+    SX_M4_LANE(0, expr) SX_M4_LANE(1, expr) SX_M4_LANE(2, expr) SX_M4_LANE(3, expr) return r
 
 static SX_ALWAYS_INLINE sx_r4 sx_r4_add(sx_r4 a, sx_r4 b) { SX_R4_LANES(a.v[i] + b.v[i]); }
 static SX_ALWAYS_INLINE sx_r4 sx_r4_sub(sx_r4 a, sx_r4 b) { SX_R4_LANES(a.v[i] - b.v[i]); }
 static SX_ALWAYS_INLINE sx_r4 sx_r4_mul(sx_r4 a, sx_r4 b) { SX_R4_LANES(a.v[i] * b.v[i]); }
 static SX_ALWAYS_INLINE sx_r4 sx_r4_div(sx_r4 a, sx_r4 b) { SX_R4_LANES(a.v[i] / b.v[i]); }
 static SX_ALWAYS_INLINE sx_r4 sx_r4_sqrt(sx_r4 a) { SX_R4_LANES(sx_sqrt(a.v[i])); }
-static SX_ALWAYS_INLINE sx_r4 sx_r4_min(sx_r4 a, sx_r4 b) { SX_R4_LANES(a.v[i] < b.v[i] ? a.v[i] : b.v[i]); }
-static SX_ALWAYS_INLINE sx_r4 sx_r4_max(sx_r4 a, sx_r4 b) { SX_R4_LANES(a.v[i] > b.v[i] ? a.v[i] : b.v[i]); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_min(sx_r4 a, sx_r4 b) {
+    SX_R4_LANES(a.v[i] < b.v[i] ? a.v[i] : b.v[i]);
+}
+static SX_ALWAYS_INLINE sx_r4 sx_r4_max(sx_r4 a, sx_r4 b) {
+    SX_R4_LANES(a.v[i] > b.v[i] ? a.v[i] : b.v[i]);
+}
 static SX_ALWAYS_INLINE sx_r4 sx_r4_neg(sx_r4 a) { SX_R4_LANES(-a.v[i]); }
 /* fabs clears the sign bit as SSE does (sx_absr keeps -0's) */
 static SX_ALWAYS_INLINE sx_r4 sx_r4_abs(sx_r4 a) { SX_R4_LANES((sx_real)fabs((double)a.v[i])); }
@@ -151,7 +244,9 @@ static SX_ALWAYS_INLINE sx_m4 sx_m4_andnot(sx_m4 a, sx_m4 b) { SX_M4_LANES(!a.m[
 static SX_ALWAYS_INLINE int sx_m4_bits(sx_m4 m) {
     return (m.m[0] ? 1 : 0) | (m.m[1] ? 2 : 0) | (m.m[2] ? 4 : 0) | (m.m[3] ? 8 : 0);
 }
-static SX_ALWAYS_INLINE sx_r4 sx_r4_select(sx_m4 m, sx_r4 a, sx_r4 b) { SX_R4_LANES(m.m[i] ? a.v[i] : b.v[i]); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_select(sx_m4 m, sx_r4 a, sx_r4 b) {
+    SX_R4_LANES(m.m[i] ? a.v[i] : b.v[i]);
+}
 static SX_ALWAYS_INLINE sx_real sx_r4_lane(sx_r4 a, int i) { return a.v[i & 3]; }
 
 #undef SX_R4_LANE
@@ -164,7 +259,9 @@ static SX_ALWAYS_INLINE sx_real sx_r4_lane(sx_r4 a, int i) { return a.v[i & 3]; 
 /* Built on the lanes above, so written once for both paths. */
 
 /** a * b + c, rounded twice (no fused multiply-add: both paths agree). */
-static SX_ALWAYS_INLINE sx_r4 sx_r4_mul_add(sx_r4 a, sx_r4 b, sx_r4 c) { return sx_r4_add(sx_r4_mul(a, b), c); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_mul_add(sx_r4 a, sx_r4 b, sx_r4 c) {
+    return sx_r4_add(sx_r4_mul(a, b), c);
+}
 /** lo <= a <= hi per lane (hi wins when lo > hi; NaN a gives lo). */
 static SX_ALWAYS_INLINE sx_r4 sx_r4_clamp(sx_r4 a, sx_r4 lo, sx_r4 hi) {
     return sx_r4_min(hi, sx_r4_max(a, lo));
@@ -180,7 +277,7 @@ static SX_ALWAYS_INLINE bool sx_m4_all(sx_m4 m) { return sx_m4_bits(m) == 15; }
  * (named for the order, so that both paths move them alike), feature
  * indices kept in integer lanes beside the reals that choose them. */
 
-#if SX_SIMD
+#if SX_SIMD && !SX_SIMD_F64
 
 /** Four 32-bit ints. */
 typedef __m128i sx_i4;
@@ -194,9 +291,13 @@ static SX_ALWAYS_INLINE sx_r4 sx_r4_load_high(sx_r4 a, const sx_real *p) {
     return _mm_loadh_pi(a, (const __m64 *)(const void *)p);
 }
 /** Lanes 0 and 1 of a to p[0], p[1]. */
-static SX_ALWAYS_INLINE void sx_r4_store_low(sx_real *p, sx_r4 a) { _mm_storel_pi((__m64 *)(void *)p, a); }
+static SX_ALWAYS_INLINE void sx_r4_store_low(sx_real *p, sx_r4 a) {
+    _mm_storel_pi((__m64 *)(void *)p, a);
+}
 /** Lanes 2 and 3 of a to p[0], p[1]. */
-static SX_ALWAYS_INLINE void sx_r4_store_high(sx_real *p, sx_r4 a) { _mm_storeh_pi((__m64 *)(void *)p, a); }
+static SX_ALWAYS_INLINE void sx_r4_store_high(sx_real *p, sx_r4 a) {
+    _mm_storeh_pi((__m64 *)(void *)p, a);
+}
 /** Lane 0 of a. */
 static SX_ALWAYS_INLINE sx_real sx_r4_first(sx_r4 a) { return _mm_cvtss_f32(a); }
 /** [a1, a0, a3, a2]. */
@@ -222,9 +323,13 @@ static SX_ALWAYS_INLINE sx_r4 sx_r4_odds(sx_r4 a, sx_r4 b) {
     return _mm_shuffle_ps(a, b, _MM_SHUFFLE(3, 1, 3, 1));
 }
 /** Lane 2 of a in every lane. */
-static SX_ALWAYS_INLINE sx_r4 sx_r4_splat2(sx_r4 a) { return _mm_shuffle_ps(a, a, _MM_SHUFFLE(2, 2, 2, 2)); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_splat2(sx_r4 a) {
+    return _mm_shuffle_ps(a, a, _MM_SHUFFLE(2, 2, 2, 2));
+}
 /** Lane 3 of a in every lane. */
-static SX_ALWAYS_INLINE sx_r4 sx_r4_splat3(sx_r4 a) { return _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 3, 3, 3)); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_splat3(sx_r4 a) {
+    return _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 3, 3, 3));
+}
 /** a with its sign bit flipped in the lanes where s is -0 (s: +0 or -0). */
 static SX_ALWAYS_INLINE sx_r4 sx_r4_flip_signs(sx_r4 a, sx_r4 s) { return _mm_xor_ps(a, s); }
 
@@ -235,7 +340,61 @@ static SX_ALWAYS_INLINE sx_i4 sx_i4_select(sx_m4 m, sx_i4 a, sx_i4 b) {
     return _mm_or_si128(_mm_and_si128(k, a), _mm_andnot_si128(k, b));
 }
 /** Four ints to p[0..3], any alignment. */
-static SX_ALWAYS_INLINE void sx_i4_store(int32_t *p, sx_i4 a) { _mm_storeu_si128((__m128i *)(void *)p, a); }
+static SX_ALWAYS_INLINE void sx_i4_store(int32_t *p, sx_i4 a) {
+    _mm_storeu_si128((__m128i *)(void *)p, a);
+}
+
+#elif SX_SIMD_F64
+
+/** Four 32-bit ints. */
+typedef __m128i sx_i4;
+
+/* A point of sx_vec2 is one register's two doubles. */
+static SX_ALWAYS_INLINE sx_r4 sx_r4_load_low(sx_r4 a, const sx_real *p) {
+    return sx_r4_halves(_mm_loadu_pd(p), a.hi);
+}
+static SX_ALWAYS_INLINE sx_r4 sx_r4_load_high(sx_r4 a, const sx_real *p) {
+    return sx_r4_halves(a.lo, _mm_loadu_pd(p));
+}
+static SX_ALWAYS_INLINE void sx_r4_store_low(sx_real *p, sx_r4 a) { _mm_storeu_pd(p, a.lo); }
+static SX_ALWAYS_INLINE void sx_r4_store_high(sx_real *p, sx_r4 a) { _mm_storeu_pd(p, a.hi); }
+static SX_ALWAYS_INLINE sx_real sx_r4_first(sx_r4 a) { return _mm_cvtsd_f64(a.lo); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_swap_pairs(sx_r4 a) {
+    return sx_r4_halves(_mm_shuffle_pd(a.lo, a.lo, 1), _mm_shuffle_pd(a.hi, a.hi, 1));
+}
+static SX_ALWAYS_INLINE sx_r4 sx_r4_swap_halves(sx_r4 a) { return sx_r4_halves(a.hi, a.lo); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_low_halves(sx_r4 a, sx_r4 b) {
+    return sx_r4_halves(a.lo, b.lo);
+}
+static SX_ALWAYS_INLINE sx_r4 sx_r4_low_high(sx_r4 a, sx_r4 b) { return sx_r4_halves(a.lo, b.hi); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_evens(sx_r4 a, sx_r4 b) {
+    return sx_r4_halves(_mm_unpacklo_pd(a.lo, a.hi), _mm_unpacklo_pd(b.lo, b.hi));
+}
+static SX_ALWAYS_INLINE sx_r4 sx_r4_odds(sx_r4 a, sx_r4 b) {
+    return sx_r4_halves(_mm_unpackhi_pd(a.lo, a.hi), _mm_unpackhi_pd(b.lo, b.hi));
+}
+static SX_ALWAYS_INLINE sx_r4 sx_r4_splat2(sx_r4 a) {
+    __m128d d = _mm_unpacklo_pd(a.hi, a.hi);
+    return sx_r4_halves(d, d);
+}
+static SX_ALWAYS_INLINE sx_r4 sx_r4_splat3(sx_r4 a) {
+    __m128d d = _mm_unpackhi_pd(a.hi, a.hi);
+    return sx_r4_halves(d, d);
+}
+static SX_ALWAYS_INLINE sx_r4 sx_r4_flip_signs(sx_r4 a, sx_r4 s) {
+    return sx_r4_halves(_mm_xor_pd(a.lo, s.lo), _mm_xor_pd(a.hi, s.hi));
+}
+
+static SX_ALWAYS_INLINE sx_i4 sx_i4_set1(int32_t a) { return _mm_set1_epi32(a); }
+static SX_ALWAYS_INLINE sx_i4 sx_i4_select(sx_m4 m, sx_i4 a, sx_i4 b) {
+    /* The low 32 bits of each 64-bit mask, four to a register. */
+    __m128i k = _mm_castps_si128(
+        _mm_shuffle_ps(_mm_castpd_ps(m.lo), _mm_castpd_ps(m.hi), _MM_SHUFFLE(2, 0, 2, 0)));
+    return _mm_or_si128(_mm_and_si128(k, a), _mm_andnot_si128(k, b));
+}
+static SX_ALWAYS_INLINE void sx_i4_store(int32_t *p, sx_i4 a) {
+    _mm_storeu_si128((__m128i *)(void *)p, a);
+}
 
 #else /* the portable lanes */
 
@@ -258,8 +417,12 @@ static SX_ALWAYS_INLINE void sx_r4_store_high(sx_real *p, sx_r4 a) {
     p[1] = a.v[3];
 }
 static SX_ALWAYS_INLINE sx_real sx_r4_first(sx_r4 a) { return a.v[0]; }
-static SX_ALWAYS_INLINE sx_r4 sx_r4_swap_pairs(sx_r4 a) { return sx_r4_set(a.v[1], a.v[0], a.v[3], a.v[2]); }
-static SX_ALWAYS_INLINE sx_r4 sx_r4_swap_halves(sx_r4 a) { return sx_r4_set(a.v[2], a.v[3], a.v[0], a.v[1]); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_swap_pairs(sx_r4 a) {
+    return sx_r4_set(a.v[1], a.v[0], a.v[3], a.v[2]);
+}
+static SX_ALWAYS_INLINE sx_r4 sx_r4_swap_halves(sx_r4 a) {
+    return sx_r4_set(a.v[2], a.v[3], a.v[0], a.v[1]);
+}
 static SX_ALWAYS_INLINE sx_r4 sx_r4_low_halves(sx_r4 a, sx_r4 b) {
     return sx_r4_set(a.v[0], a.v[1], b.v[0], b.v[1]);
 }
@@ -304,7 +467,9 @@ static SX_ALWAYS_INLINE void sx_i4_store(int32_t *p, sx_i4 a) {
 #endif /* SX_SIMD */
 
 /** [p[0], p[1], 0, 0]. */
-static SX_ALWAYS_INLINE sx_r4 sx_r4_load2(const sx_real *p) { return sx_r4_load_low(sx_r4_zero(), p); }
+static SX_ALWAYS_INLINE sx_r4 sx_r4_load2(const sx_real *p) {
+    return sx_r4_load_low(sx_r4_zero(), p);
+}
 /** [lo[0], lo[1], hi[0], hi[1]]: two 8-byte loads, which two 8-byte stores
  *  still in flight can forward to (a 16-byte load of them cannot). */
 static SX_ALWAYS_INLINE sx_r4 sx_r4_load2x2(const sx_real *lo, const sx_real *hi) {

@@ -1,9 +1,10 @@
 /* sepax tests — the four-lane operations of src/simd.h.
  *
  * A white-box test of the one SIMD header: the same assertions run on the
- * SSE2 lanes (the float build) and on the portable lanes (make test SIMD=0
- * and the double build), so passing in every build is what shows the two
- * paths agree, NaN, signed zeros and ties included. */
+ * SSE2 lanes of the float build, on the double build's pairs of SSE2
+ * registers and on the portable lanes (make test SIMD=0), so passing in
+ * every build is what shows the paths agree, NaN, signed zeros and ties
+ * included. */
 #include <math.h>
 #include <string.h>
 
