@@ -216,14 +216,6 @@ static bool outline_is_simple(const sx_vec2 *pts, int m, sx_real weld_tolerance)
     return true;
 }
 
-static sx_wide outline_area2(const sx_vec2 *pts, int m) {
-    sx_wide s = SX_W(0.0);
-    int i;
-    for (i = 1; i + 1 < m; ++i)
-        s += sx_wcross(sx_wdiff(pts[i], pts[0]), sx_wdiff(pts[i + 1], pts[0]));
-    return s;
-}
-
 /* A convex polygon with these vertex indices would pass sx_shape_validate. */
 static bool piece_valid(const decomp_work *w, const int *idx, int n, sx_hull *h) {
     int i;
@@ -539,7 +531,7 @@ sx_status sx_decompose_polygon_ex(const sx_vec2 *points, int count, sx_real weld
     if (m < 3) return SX_ERR_DEGENERATE;
     if (!outline_is_simple(w.pts, m, weld_tolerance)) return SX_ERR_INVALID_ARG;
     {
-        sx_wide area2 = outline_area2(w.pts, m);
+        sx_wide area2 = sx_warea2(w.pts, m);
         if (area2 == SX_W(0.0)) return SX_ERR_DEGENERATE;
         if (area2 < SX_W(0.0)) {
             for (i = 0; i < m / 2; ++i) {

@@ -73,17 +73,6 @@ sx_shape sx_box_shape(sx_real half_width, sx_real half_height) {
 
 /* ---- polygons --------------------------------------------------------------- */
 
-/* Twice the signed area of the hull, summed as a fan about its first vertex
- * in the wide type (exactly zero for collinear points with short binary
- * expansions, such as integer or float coordinates in the float build). */
-static sx_wide hull_area2(const sx_vec2 *v, int n) {
-    sx_wide a2 = SX_W(0.0);
-    int i;
-    for (i = 1; i + 1 < n; ++i)
-        a2 += sx_wcross(sx_wdiff(v[i], v[0]), sx_wdiff(v[i + 1], v[0]));
-    return a2;
-}
-
 /* Outward unit normal of the edge a -> b of a CCW polygon, normalised in the
  * wide type so even edges near SX_REAL_EPSILON long get a unit normal. */
 static sx_vec2 edge_normal(sx_vec2 a, sx_vec2 b) {
@@ -210,7 +199,7 @@ sx_status sx_polygon_from_hull(const sx_hull *hull, sx_real radius, sx_shape *ou
     for (i = 0; i < n; ++i) {
         if (!sx_vec2_is_finite(hull->points[i])) return SX_ERR_NONFINITE;
     }
-    if (hull_area2(hull->points, n) == SX_W(0.0)) return SX_ERR_DEGENERATE;
+    if (sx_warea2(hull->points, n) == SX_W(0.0)) return SX_ERR_DEGENERATE;
     if (!sx_validate_hull(hull, SX_R(0.0))) return SX_ERR_INVALID_ARG;
     s.type = SX_SHAPE_POLYGON;
     p->count = n;
@@ -269,7 +258,7 @@ static sx_status validate_polygon(const sx_polygon *p) {
     for (i = 0; i < n; ++i)
         hull.points[i] = p->vertices[i];
     hull.count = n;
-    if (hull_area2(hull.points, n) == SX_W(0.0)) return SX_ERR_DEGENERATE;
+    if (sx_warea2(hull.points, n) == SX_W(0.0)) return SX_ERR_DEGENERATE;
     if (!sx_validate_hull(&hull, SX_R(0.0))) return SX_ERR_INVALID_ARG;
     /* A stored normal may lean from its edge by up to the angular slop: an
      * offset box far from the origin rounds its vertices, not its normals.

@@ -66,6 +66,18 @@ static inline sx_wide sx_wline_distance(sx_vec2 a, sx_vec2 b, sx_vec2 v) {
     return sx_wcross(e, w) / len;
 }
 
+/** Twice the signed area of the polygon v[0..n), summed as a fan about its
+ *  first vertex in the wide type (exactly zero for collinear points with
+ *  short binary expansions, such as integer or float coordinates in the
+ *  float build). */
+static inline sx_wide sx_warea2(const sx_vec2 *v, int n) {
+    sx_wide a2 = SX_W(0.0);
+    int i;
+    for (i = 1; i + 1 < n; ++i)
+        a2 += sx_wcross(sx_wdiff(v[i], v[0]), sx_wdiff(v[i + 1], v[0]));
+    return a2;
+}
+
 /* Unit-density mass properties of a shape that passes sx_shape_validate, in
  * the wide real (shape.c): *area (the mass), *center (centre of mass) and
  * *inertia (polar second moment about that centre, >= 0). sx_shape_mass is
