@@ -311,13 +311,39 @@ static SX_ALWAYS_INLINE sx_r4 point_twice(const sx_vec2 *p) {
     return sx_r4_low_halves(r, r);
 }
 
+/* polygon_point once the closest point is out->vertex, a corner of `face`
+ * (i2: the vertex after face). */
+static SX_ALWAYS_INLINE int polygon_point_corner(const sx_vec2 *v, const sx_vec2 *nn, int count,
+                                                 sx_vec2 c, sx_real limit, int face, int i2,
+                                                 sx_polygon_point *out) {
+    int vertex = out->vertex;
+    /* The corner's region ends at the face past it: beyond, rounding
+     * chose the face (see offer_face_walk), and the general route walks
+     * on. */
+    int side_face = vertex == face ? (face > 0 ? face - 1 : count - 1) : i2;
+    sx_real past = sx_dot(sx_sub(c, v[vertex]), sx_v2(-nn[side_face].y, nn[side_face].x));
+    sx_real dsq;
+    if (vertex == face ? !(past >= SX_R(0.0)) : !(past <= SX_R(0.0))) return -1;
+    out->on = v[vertex];
+    dsq = sx_distance_sq(out->on, c);
+    if (!(dsq < SX_REAL_MAX)) return -1;
+    out->distance = sx_sqrt(dsq);
+    /* Below SX_SQUARE_SAFE vertex_direction measures the distance scaled,
+     * which may decide differently. */
+    if (!(out->distance >= SX_SQUARE_SAFE)) return -1;
+    if (!(out->distance <= limit)) return 0;
+    if (!(out->distance > SX_DIRECTION_EPSILON * max_abs_coord(out->on, c))) return -1;
+    out->dir = sx_scale(sx_sub(c, out->on), SX_R(1.0) / out->distance);
+    return 1;
+}
+
 /* values_finite (may be NULL): whether every vertex and normal is finite,
  * set when the answer is 1 (sx_polygon_values_finite's answer). */
 static SX_ALWAYS_INLINE int polygon_point(const sx_vec2 *v, const sx_vec2 *nn, int count, sx_vec2 c,
                                           sx_real limit, sx_polygon_point *out,
                                           bool *values_finite) {
     int face = 0, i2, vertex = -1;
-    sx_real best, t, dsq;
+    sx_real best, t;
     sx_vec2 w, n, dir;
     {
         /* Every face's separation four to a register; the first of the
@@ -372,25 +398,7 @@ static SX_ALWAYS_INLINE int polygon_point(const sx_vec2 *v, const sx_vec2 *nn, i
         vertex = i2;
     }
     out->vertex = vertex;
-    if (vertex >= 0) {
-        /* The corner's region ends at the face past it: beyond, rounding
-         * chose the face (see offer_face_walk), and the general route
-         * walks on. */
-        int side_face = vertex == face ? (face > 0 ? face - 1 : count - 1) : i2;
-        sx_real past = sx_dot(sx_sub(c, v[vertex]), sx_v2(-nn[side_face].y, nn[side_face].x));
-        if (vertex == face ? !(past >= SX_R(0.0)) : !(past <= SX_R(0.0))) return -1;
-        out->on = v[vertex];
-        dsq = sx_distance_sq(out->on, c);
-        if (!(dsq < SX_REAL_MAX)) return -1;
-        out->distance = sx_sqrt(dsq);
-        /* Below SX_SQUARE_SAFE vertex_direction measures the distance
-         * scaled, which may decide differently. */
-        if (!(out->distance >= SX_SQUARE_SAFE)) return -1;
-        if (!(out->distance <= limit)) return 0;
-        if (!(out->distance > SX_DIRECTION_EPSILON * max_abs_coord(out->on, c))) return -1;
-        out->dir = sx_scale(sx_sub(c, out->on), SX_R(1.0) / out->distance);
-        return 1;
-    }
+    if (vertex >= 0) return polygon_point_corner(v, nn, count, c, limit, face, i2, out);
     t = sx_dot(w, n);
     if (!(t * t <= SX_REAL_MAX)) return -1;
     out->on = sx_mul_sub(c, t, n);
