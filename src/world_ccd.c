@@ -343,12 +343,15 @@ static sx_status sx_ccd_list(sx_world *world) {
     world->ccd_sweep_count = 0;
     for (k = 0; k < n; ++k) {
         const int slot = active[k];
-        const sx_body_sim *b = &sims[slot];
-        const sx_ccd_rec *r = &recs[slot];
+        const sx_body_sim *b;
+        const sx_ccd_rec *r;
         sx_r4 d;
         /* recorded at this collide (a body changed since is forgotten; one
          * created since may lie past the records) */
-        if (slot >= cap || r->stamp != stamp) continue;
+        if (slot >= cap) continue;
+        r = &recs[slot];
+        if (r->stamp != stamp) continue;
+        b = &sims[slot];
         d = sx_r4_sub(sx_r4_load2x2(&b->xf.q.c, &b->center.x), sx_r4_load2x2(&r->q.c, &r->end.x));
         if (!sx_m4_any(sx_r4_gt(sx_r4_mul(d, d), bound)) &&
             !(bullets && world->infos[slot].bullet)) {
