@@ -297,15 +297,15 @@ static void sx_collider_bounds(sx_world *world, int slot) {
     world->aabbs[slot] = sx_aabb_fatten(u, half + reach);
     /* in collide's bounds pass (which reads this body already): where an
      * awake dynamic body starts the step, for the continuous stage
-     * (world_ccd.c; sx_ccd_record started the record and sized it for
-     * every body slot); never from the bounds a later stage finds */
+     * (world_ccd.c; sx_ccd_record made room for every body slot); never
+     * from the bounds a later stage finds */
     if (world->ccd_recording) {
         if (b->dynamic && b->awake) {
-            sx_ccd_pose *p = &world->ccd_poses[c->body];
-            p->center = b->center;
-            p->q = b->xf.q;
-            p->end = sx_mul_add(b->center, world->step_dt, b->v);
-            p->stamp = world->ccd_stamp;
+            sx_ccd_rec *r = &world->ccd_recs[c->body];
+            r->q = b->xf.q;
+            r->end = sx_mul_add(b->center, world->step_dt, b->v);
+            r->center = b->center;
+            r->stamp = world->ccd_stamp;
         } else if (b->v.x != SX_R(0.0) || b->v.y != SX_R(0.0) || b->w != SX_R(0.0)) {
             world->ccd_kinematic_moving = 1;
         }
@@ -547,96 +547,23 @@ static void sx_limit_speed(sx_body_sim *b, sx_real h) {
     }
 }
 
-/* The continuous stage's first test of each awake dynamic body, where the
- * step's motion left it (pose p, recorded at collide; the bounds of the
- * test precomputed by sx_ccd_test_make): whether it strayed from the end
- * its collide-time velocity foresaw (knocked on, deflected, stopped) by
- * more than half the margin (gravity bends the path by far less), turned
- * by more than a quarter of the angular slop (less moves no point far
- * enough to matter), or is a bullet. sx_needs_sweep (world_ccd.c) tests
- * the few listed with their extents. Inline: it runs for every body. */
-typedef struct sx_ccd_test {
-    uint32_t stamp;
-    sx_real half_sq, turn_sin;
-    bool bullets;
-} sx_ccd_test;
-
-static sx_ccd_test sx_ccd_test_make(const sx_world *world) {
-    sx_ccd_test t;
-    t.stamp = world->ccd_stamp;
-    t.half_sq = SX_R(0.25) * world->margin * world->margin;
-    t.turn_sin = SX_R(0.25) * SX_ANGULAR_SLOP;
-    t.bullets = world->bullet_count > 0;
-    return t;
-}
-
-static inline bool sx_ccd_may_need_sweep(const sx_world *world, const sx_ccd_test *t, int slot,
-                                         const sx_body_sim *b) {
-    const sx_ccd_pose *p;
-    sx_real dx, dy, s, c;
-    /* a body created since collide may have no pose */
-    if (slot >= world->ccd_pose_capacity) return false;
-    p = &world->ccd_poses[slot];
-    if (p->stamp != t->stamp || !b->dynamic) return false;
-    dx = b->center.x - p->end.x;
-    dy = b->center.y - p->end.y;
-    /* the turn since collide: sx_rot_inv_mul(p->q, b->xf.q) */
-    c = p->q.c * b->xf.q.c + p->q.s * b->xf.q.s;
-    s = p->q.c * b->xf.q.s - p->q.s * b->xf.q.c;
-    return dx * dx + dy * dy > t->half_sq || c < SX_R(0.0) || sx_absr(s) > t->turn_sin ||
-           (t->bullets && world->infos[slot].bullet);
-}
-
-/* Lists body slot for the continuous stage when it may need a sweep;
- * false when the list could not grow. */
-static inline bool sx_ccd_list(sx_world *world, const sx_ccd_test *t, int slot,
-                               const sx_body_sim *b) {
-    return !sx_ccd_may_need_sweep(world, t, slot, b) ||
-           sx_push_int(&world->ccd_sweep, &world->ccd_sweep_count, &world->ccd_sweep_capacity,
-                       slot);
-}
-
-sx_status sx_ccd_mark(sx_world *world) {
-    sx_ccd_test t = sx_ccd_test_make(world);
-    int k;
-    world->ccd_sweep_count = 0;
-    for (k = 0; k < world->active_body_count; ++k) {
-        int slot = world->active_bodies[k];
-        if (!sx_ccd_list(world, &t, slot, &world->sims[slot])) return SX_ERR_NO_MEMORY;
-    }
-    world->ccd_marked = true;
-    return SX_OK;
-}
-
 /* The speed limit for every awake moving body before the solver reads the
  * velocities: dynamic bodies meet it in sx_world_apply_forces already, but a
  * kinematic body's velocity is whatever the caller set (an angular velocity
  * of -FLT_MAX made w x r overflow in the solver and a contact's tangent
  * impulse NaN), and the stages may be called on their own. A no-op for any
  * velocity within half the limit, so ordinary scenes are unchanged bit for
- * bit. With `mark`, the same pass also makes sx_ccd_mark's list: the last
- * sub-step's separate ends the step's motion, and the continuous stage then
- * visits only the bodies listed. */
-static sx_status sx_limit_speeds_marking(sx_world *world, sx_real h, bool mark) {
+ * bit. */
+static void sx_limit_speeds(sx_world *world, sx_real h) {
     sx_real wmax = sx_minr(SX_MAX_ROTATION / h, SX_REAL_MAX);
     sx_real vhalf = SX_R(0.5) * sx_minr(SX_HUGE / h, SX_REAL_MAX);
-    sx_ccd_test t = sx_ccd_test_make(world);
     int k;
-    if (mark) world->ccd_sweep_count = 0;
     for (k = 0; k < world->active_body_count; ++k) {
-        int slot = world->active_bodies[k];
-        sx_body_sim *b = &world->sims[slot];
+        sx_body_sim *b = &world->sims[world->active_bodies[k]];
         if (!b->moving || !b->awake) continue;
-        if (mark && !sx_ccd_list(world, &t, slot, b)) return SX_ERR_NO_MEMORY;
         if (sx_absr(b->w) <= wmax && sx_absr(b->v.x) <= vhalf && sx_absr(b->v.y) <= vhalf) continue;
         sx_limit_speed(b, h);
     }
-    world->ccd_marked = mark;
-    return SX_OK;
-}
-
-static void sx_limit_speeds(sx_world *world, sx_real h) {
-    (void)sx_limit_speeds_marking(world, h, false);
 }
 
 /* ---- stage 1: forces ---------------------------------------------------- */
@@ -1267,8 +1194,6 @@ sx_status sx_world_integrate(sx_world *world, sx_real h) {
     }
     /* the time-of-impact corrections of this sub-step's impacts */
     sx_contacts_apply_impact_shifts(world);
-    /* a list of the continuous stage's made before this motion is stale */
-    world->ccd_marked = false;
     return SX_OK;
 }
 
@@ -1276,20 +1201,13 @@ sx_status sx_world_integrate(sx_world *world, sx_real h) {
 
 sx_status sx_world_separate(sx_world *world, sx_real h) {
     sx_status s = sx_check_step(world, h);
-    bool relaxed, mark = false;
+    bool relaxed;
     if (s != SX_OK) return s;
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
     sx_world_purge_contacts(world);
     relaxed = sx_contacts_relax(world, h, world->def.position_iterations);
-    /* the step's last sub-step (to rounding) lists the bodies the
-     * continuous stage may sweep */
-    if (world->ccd_dt > SX_R(0.0)) {
-        world->ccd_elapsed += h;
-        mark = world->ccd_elapsed > world->ccd_dt - SX_R(0.5) * h;
-    }
-    s = sx_limit_speeds_marking(world, h, mark);
-    if (s != SX_OK) return s;
+    sx_limit_speeds(world, h);
     return relaxed ? SX_OK : SX_ERR_NO_MEMORY;
 }
 

@@ -8,13 +8,12 @@
  * faster than it was going, or one turning so far that a contact's
  * linearised separation no longer holds (a spinning blade). So collide
  * records each awake dynamic body's pose and foreseen end (sx_ccd_record,
- * filled in by the bounds pass of world.c), the step's last separate lists
- * the bodies that strayed, turned or are bullets (world.c,
- * sx_ccd_may_need_sweep: a few comparisons in a pass it makes anyway), and
- * sx_world_continuous looks at those: only one that went farther than its
- * recorded velocity allows, strayed from the path it foresaw or turned, by
- * more than half its thinnest extent at its farthest point, or a fast
- * bullet, is
+ * filled in by the bounds pass of world.c, which reads the body anyway),
+ * sx_world_continuous lists the bodies that strayed, turned or are bullets
+ * (sx_ccd_list: a few lane operations per body skip the others), and of
+ * those only one that went farther than its recorded velocity allows,
+ * strayed from the path it foresaw or turned, by more than half its
+ * thinnest extent at its farthest point, or a fast bullet, is
  * swept from the recorded pose to the final one against the colliders its
  * swept box meets in the broadphase (conservative advancement, distance.c)
  * and put back at the earliest time of impact, keeping its velocity. Box2D
@@ -24,6 +23,7 @@
 #include <stdlib.h>
 
 #include "distance.h"
+#include "simd.h"
 #include "world_array.h"
 #include "world_body.h"
 #include "world_broadphase.h"
@@ -44,9 +44,10 @@ typedef struct sx_ccd_bullet {
 sx_status sx_ccd_record(sx_world *world) {
     uint32_t stamp = world->ccd_stamp + 1u;
     world->ccd_dt = SX_R(0.0);
-    world->ccd_marked = false;
     if (!world->def.enable_continuous || !(world->step_dt > SX_R(0.0))) return SX_OK;
-    if (!sx_grow_zeroed((void **)&world->ccd_poses, &world->ccd_pose_capacity, world->body_slots,
+    if (!sx_grow_zeroed((void **)&world->ccd_recs, &world->ccd_rec_capacity, world->body_slots,
+                        sizeof(sx_ccd_rec)) ||
+        !sx_grow_zeroed((void **)&world->ccd_poses, &world->ccd_pose_capacity, world->body_slots,
                         sizeof(sx_ccd_pose))) {
         return SX_ERR_NO_MEMORY;
     }
@@ -54,21 +55,19 @@ sx_status sx_ccd_record(sx_world *world) {
     if (stamp == 0u) stamp = 1u;
     world->ccd_stamp = stamp;
     world->ccd_kinematic_moving = 0;
-    world->ccd_elapsed = SX_R(0.0);
     world->ccd_sweep_count = 0;
     world->ccd_dt = world->step_dt;
     return SX_OK;
 }
 
 void sx_ccd_forget(sx_world *world, int slot) {
-    /* also no sweep this step: a new body in a reused slot has no pose */
-    if (slot < world->ccd_pose_capacity) {
-        world->ccd_poses[slot].ext_valid = false;
-        world->ccd_poses[slot].stamp = 0u;
-    }
+    /* also no sweep this step: a new body in a reused slot has no record */
+    if (slot < world->ccd_rec_capacity) world->ccd_recs[slot].stamp = 0u;
+    if (slot < world->ccd_pose_capacity) world->ccd_poses[slot].ext_valid = false;
 }
 
 void sx_ccd_free(sx_world *world) {
+    sx_free(world->ccd_recs, (size_t)world->ccd_rec_capacity * sizeof(sx_ccd_rec));
     sx_free(world->ccd_poses, (size_t)world->ccd_pose_capacity * sizeof(sx_ccd_pose));
     sx_free(world->ccd_found, (size_t)world->ccd_found_capacity * sizeof(int));
     sx_free(world->ccd_sweep, (size_t)world->ccd_sweep_capacity * sizeof(int));
@@ -129,12 +128,12 @@ static void sx_body_extents(sx_world *world, int slot, sx_real *max_ext, sx_real
     *min_ext = p->min_ext;
 }
 
-/* The turn of body slot since its recorded pose: the representative of the
- * change of angle nearest to w dt (a turn of several half turns in a step
- * is told from its remainder by the velocity). */
-static sx_real sx_turn(const sx_body_sim *b, const sx_ccd_pose *p, sx_real dt) {
+/* The turn of body b since its recorded rotation q0: the representative of
+ * the change of angle nearest to w dt (a turn of several half turns in a
+ * step is told from its remainder by the velocity). */
+static sx_real sx_turn(const sx_body_sim *b, sx_rot q0, sx_real dt) {
     sx_real guess = b->w * dt;
-    sx_real diff = sx_rot_angle(sx_rot_inv_mul(p->q, b->xf.q)) - guess;
+    sx_real diff = sx_rot_angle(sx_rot_inv_mul(q0, b->xf.q)) - guess;
     sx_real k = sx_floor((diff + SX_PI) / (SX_R(2.0) * SX_PI));
     return guess + diff - k * (SX_R(2.0) * SX_PI);
 }
@@ -142,13 +141,13 @@ static sx_real sx_turn(const sx_body_sim *b, const sx_ccd_pose *p, sx_real dt) {
 /* The motion of body slot over the step. */
 static sx_motion sx_body_motion(const sx_world *world, int slot) {
     const sx_body_sim *b = &world->sims[slot];
-    const sx_ccd_pose *p = &world->ccd_poses[slot];
+    const sx_ccd_rec *r = &world->ccd_recs[slot];
     sx_motion m;
     m.local_center = b->local_center;
-    m.c0 = p->center;
+    m.c0 = r->center;
     m.c1 = b->center;
     m.angle1 = sx_rot_angle(b->xf.q);
-    m.angle0 = m.angle1 - sx_turn(b, p, world->ccd_dt);
+    m.angle0 = m.angle1 - sx_turn(b, r->q, world->ccd_dt);
     return m;
 }
 
@@ -204,7 +203,7 @@ static void sx_sweep_pair(const sx_world *world, int slot, const sx_motion *m, i
  * path (sx_bullets_meet): awake and dynamic since collide. */
 static bool sx_moving_bullet(const sx_world *world, int slot) {
     return world->infos[slot].bullet && world->sims[slot].dynamic &&
-           slot < world->ccd_pose_capacity && world->ccd_poses[slot].stamp == world->ccd_stamp;
+           slot < world->ccd_rec_capacity && world->ccd_recs[slot].stamp == world->ccd_stamp;
 }
 
 /* Sweeps body slot along m; puts it at its first time of impact (t, or
@@ -276,14 +275,13 @@ static sx_status sx_sweep_body(sx_world *world, int slot, const sx_motion *m, sx
     return SX_OK;
 }
 
-/* Whether body slot, listed by sx_ccd_mark or the last separate (it
- * strayed, turned or is a bullet), needs the sweep: it went farther than
- * its collide-time velocity allows, or its farthest point strayed from the
- * path collide foresaw (or turned, or for a bullet moved) by more than
- * half its thinnest extent. */
+/* Whether body slot, listed by sx_ccd_list (it strayed, turned or is a
+ * bullet), needs the sweep: it went farther than its collide-time velocity
+ * allows, or its farthest point strayed from the path collide foresaw (or
+ * turned, or for a bullet moved) by more than half its thinnest extent. */
 static bool sx_needs_sweep(sx_world *world, int slot) {
     const sx_body_sim *b = &world->sims[slot];
-    const sx_ccd_pose *p = &world->ccd_poses[slot];
+    const sx_ccd_rec *p = &world->ccd_recs[slot];
     sx_real max_ext, min_ext, moved = sx_length(sx_sub(b->center, p->center)), path, thin;
     sx_rot dq = sx_rot_inv_mul(p->q, b->xf.q);
     bool bullet = world->bullet_count > 0 && world->infos[slot].bullet;
@@ -301,7 +299,71 @@ static bool sx_needs_sweep(sx_world *world, int slot) {
         if (!(bound * max_ext + path > thin)) return false;
         if (bound == s) return true;
     }
-    return sx_absr(sx_turn(b, p, world->ccd_dt)) * max_ext + path > thin;
+    return sx_absr(sx_turn(b, p->q, world->ccd_dt)) * max_ext + path > thin;
+}
+
+/* Whether body slot, where the step left it (b; its record r), strayed
+ * from the end its collide-time velocity foresaw by more than half the
+ * margin (gravity bends the path by far less), turned by more than a
+ * quarter of the angular slop (less moves no point far enough to matter),
+ * or is a bullet: the bodies sx_needs_sweep then tests with their
+ * extents. */
+static bool sx_strayed(const sx_world *world, int slot, const sx_body_sim *b, const sx_ccd_rec *r) {
+    sx_real dx = b->center.x - r->end.x, dy = b->center.y - r->end.y;
+    /* the turn since collide: sx_rot_inv_mul(r->q, b->xf.q) */
+    sx_real c = r->q.c * b->xf.q.c + r->q.s * b->xf.q.s;
+    sx_real s = r->q.c * b->xf.q.s - r->q.s * b->xf.q.c;
+    return dx * dx + dy * dy > SX_R(0.25) * world->margin * world->margin || c < SX_R(0.0) ||
+           sx_absr(s) > SX_R(0.25) * SX_ANGULAR_SLOP ||
+           (world->bullet_count > 0 && world->infos[slot].bullet);
+}
+
+/* Lists in ccd_sweep the awake dynamic bodies collide recorded that
+ * strayed, turned or are bullets (sx_strayed). It runs for every moving
+ * body each step, so a first test, in four lanes, skips those that did
+ * neither: the body's rotation and centre less its recorded rotation and
+ * foreseen end, squared lane by lane, none above its bound. A turn
+ * sx_strayed lists moves the rotation by at least the sine it tests, and
+ * a distance it lists has a coordinate of at least 1/sqrt(2) of it: the
+ * bounds (a little below those halves of the squares: rounding, and
+ * rotations up to a tenth off unit length) never skip a body sx_strayed
+ * lists. */
+static sx_status sx_ccd_list(sx_world *world) {
+    const sx_real turn = SX_R(0.25) * SX_ANGULAR_SLOP;
+    const sx_real near_sq = SX_R(0.45) * SX_R(0.25) * world->margin * world->margin;
+    const sx_real turn_sq = SX_R(0.4) * turn * turn;
+    const sx_r4 bound = sx_r4_set(turn_sq, turn_sq, near_sq, near_sq);
+    const sx_body_sim *sims = world->sims;
+    const sx_ccd_rec *recs = world->ccd_recs;
+    const int *active = world->active_bodies;
+    const uint32_t stamp = world->ccd_stamp;
+    const bool bullets = world->bullet_count > 0;
+    const int n = world->active_body_count, cap = world->ccd_rec_capacity;
+    int k;
+    world->ccd_sweep_count = 0;
+    for (k = 0; k < n; ++k) {
+        const int slot = active[k];
+        const sx_body_sim *b;
+        const sx_ccd_rec *r;
+        sx_r4 d;
+        /* recorded at this collide (a body changed since is forgotten; one
+         * created since may lie past the records) */
+        if (slot >= cap) continue;
+        r = &recs[slot];
+        if (r->stamp != stamp) continue;
+        b = &sims[slot];
+        d = sx_r4_sub(sx_r4_load2x2(&b->xf.q.c, &b->center.x), sx_r4_load2x2(&r->q.c, &r->end.x));
+        if (!sx_m4_any(sx_r4_gt(sx_r4_mul(d, d), bound)) &&
+            !(bullets && world->infos[slot].bullet)) {
+            continue;
+        }
+        if (!b->dynamic || !b->awake || !sx_strayed(world, slot, b, r)) continue;
+        if (!sx_push_int(&world->ccd_sweep, &world->ccd_sweep_count, &world->ccd_sweep_capacity,
+                         slot)) {
+            return SX_ERR_NO_MEMORY;
+        }
+    }
+    return SX_OK;
 }
 
 bool sx_paths_meet(sx_vec2 a0, sx_vec2 da, sx_vec2 b0, sx_vec2 db, sx_real r) {
@@ -399,20 +461,15 @@ sx_status sx_world_continuous(sx_world *world) {
     if (!(world->ccd_dt > SX_R(0.0))) return SX_OK;
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
-    /* the step's last separate listed the bodies that strayed, turned or
-     * are bullets as it applied the speed limit (unless the stages ran
-     * otherwise: then one pass here); of those, the ones that need it are
-     * swept, and the bullets last, against the others' final poses */
-    if (!world->ccd_marked) {
-        s = sx_ccd_mark(world);
-        if (s != SX_OK) return s;
-    }
+    /* the bodies that strayed, turned or are bullets; of those, the ones
+     * that need it are swept, and the bullets last, against the others'
+     * final poses */
+    s = sx_ccd_list(world);
+    if (s != SX_OK) return s;
     n = 0;
     for (k = 0; k < world->ccd_sweep_count; ++k) {
         int slot = world->ccd_sweep[k];
-        /* a body may have changed since it was listed */
-        if (world->ccd_poses[slot].stamp == world->ccd_stamp && world->sims[slot].dynamic &&
-            sx_needs_sweep(world, slot)) {
+        if (sx_needs_sweep(world, slot)) {
             world->ccd_poses[slot].swept = true;
             world->ccd_sweep[n++] = slot;
         }
@@ -444,7 +501,6 @@ sx_status sx_world_continuous(sx_world *world) {
     world->ccd_sweep_count = 0;
     /* once per collide */
     world->ccd_dt = SX_R(0.0);
-    world->ccd_marked = false;
     return SX_OK;
 }
 

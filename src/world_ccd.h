@@ -7,17 +7,21 @@
 #include "core.h"
 #include "sepax/world.h"
 
-/* Where a body was when the step's collide ran (world_ccd.c): the
- * continuous pass sweeps it from there; stamp tells which collide. */
-typedef struct sx_ccd_pose {
-    sx_vec2 center;
+/* An awake dynamic body as the step's collide found it, per body slot: its
+ * rotation and the end its velocity then foresaw side by side (the
+ * stage's test reads them with the body's rotation and centre), its
+ * centre, and which collide (stamp; 0: none). */
+typedef struct sx_ccd_rec {
     sx_rot q;
-    /* where its collide-time velocity takes it by the step's end: the
-     * look-ahead its bounds and margins were grown by */
     sx_vec2 end;
+    sx_vec2 center;
     uint32_t stamp;
-    /* the body's reach from its centre of mass and thinnest half extent,
-     * kept until its colliders or mass change (ext_valid) */
+} sx_ccd_rec;
+
+/* Per body slot, beside its record: its reach from its centre of mass and
+ * thinnest half extent, kept until its colliders or mass change
+ * (ext_valid). */
+typedef struct sx_ccd_pose {
     sx_real max_ext, min_ext;
     bool ext_valid;
     bool swept; /* while the continuous stage runs: it is to be swept */
@@ -26,20 +30,15 @@ typedef struct sx_ccd_pose {
 /* world_ccd.c */
 /* Starts the record of where the moving bodies are, for the continuous
  * pass at the end of the step (sx_world_collide calls it, and its bounds
- * pass fills the poses in). */
+ * pass fills each body's record in). */
 sx_status sx_ccd_record(sx_world *world);
 /* Frees its arrays (sx_world_destroy). */
 void sx_ccd_free(sx_world *world);
-/* Forgets body slot's cached extents and pose (its colliders or mass
+/* Forgets body slot's cached extents and record (its colliders or mass
  * changed, or it was just created). */
 void sx_ccd_forget(sx_world *world, int slot);
 /* Whether two points moving straight from a0 by da and from b0 by db over
  * a step come within r of each other (the closest approach; NaN: true). */
 bool sx_paths_meet(sx_vec2 a0, sx_vec2 da, sx_vec2 b0, sx_vec2 db, sx_real r);
-
-/* world.c: lists in ccd_sweep the bodies that may need the sweep (the
- * continuous pass's fallback when the step's last sx_world_separate did not
- * list them). */
-sx_status sx_ccd_mark(sx_world *world);
 
 #endif /* SEPAX_WORLD_CCD_H */

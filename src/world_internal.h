@@ -90,19 +90,19 @@ struct sx_world {
 
     sx_broadphase bp;
 
-    /* continuous collision (world_ccd.c): per body slot its pose at the last
-     * collide, the stamp of that collide, and the query scratch */
+    /* continuous collision (world_ccd.c): per body slot its record at the
+     * last collide (stamped) and its extents, and the query scratch */
+    sx_ccd_rec *ccd_recs;
+    int ccd_rec_capacity;
     sx_ccd_pose *ccd_poses;
     int ccd_pose_capacity;
     uint32_t ccd_stamp;
-    sx_real ccd_dt; /* the step the recorded poses start (0: none) */
+    sx_real ccd_dt;           /* the step the records start (0: none) */
     int ccd_kinematic_moving; /* a kinematic body moves this step (sx_ccd_record) */
-    int *ccd_sweep; /* the bodies that may need the sweep this step */
+    int *ccd_sweep;           /* the bodies that may need the sweep this step */
     int ccd_sweep_count, ccd_sweep_capacity;
-    sx_real ccd_elapsed; /* sub-step time separated since the record */
-    bool ccd_marked;     /* ccd_sweep holds the bodies as they end the step */
-    bool ccd_recording;  /* collide's bounds pass records the poses */
-    int bullet_count; /* live bodies with the bullet flag (body.c, world_ccd.c) */
+    bool ccd_recording; /* collide's bounds pass records the bodies */
+    int bullet_count;   /* live bodies with the bullet flag (body.c, world_ccd.c) */
     int *ccd_found;
     int ccd_found_count, ccd_found_capacity;
     struct sx_ccd_bullet *ccd_bullets; /* the moving bullets (world_ccd.c) */
