@@ -14,7 +14,17 @@
  * last one hands the impulses back to the contacts as it goes. The passes
  * are bound by the chain of dependent operations within a contact (each
  * impulse waits on the velocities the last one left), so what pays is
- * fewer operations on that chain, not fewer bytes.
+ * fewer operations on that chain, not fewer bytes, and more chains at once.
+ *
+ * Wide: the rigid passes solve independent constraints side by side, four
+ * per sx_r4 (SSE2 in the float build). The gather colours the constraints
+ * so that no two of a colour share a body the solver moves, in a way that
+ * keeps each body's impulses in contact order (see "the wide passes"), so
+ * the wide solver answers bit for bit what the one-at-a-time pass answers,
+ * in every build, and the scalar path stays the reference. The lanes are
+ * filled at the first gather after a collide (levers, masses, normals: all
+ * fixed for the step) and kept through the step's sub-steps, which only
+ * refresh the gaps; colours too small to fill a bundle stay one at a time.
  *
  * Velocities: each contact point is a constraint on the relative normal
  * velocity vn of the two bodies at the point. The solver visits the points in
@@ -689,11 +699,21 @@ static SX_ALWAYS_INLINE sx_r4 sx_lanes_speed(const sx_lanes_pair *v, sx_r4 dx, s
     return sx_r4_sub(sx_r4_add(s, sx_r4_mul(v->wb, r_b)), sx_r4_mul(v->wa, r_a));
 }
 
-/* sx_lever_apply, lane-wise, in the lanes of mask m only. */
+/* sx_lever_apply, lane-wise, in the lanes of mask m only (the selects
+ * skipped when m holds every lane, the common case). */
 static SX_ALWAYS_INLINE void sx_lanes_apply(sx_lanes_pair *v, sx_m4 m, sx_r4 ma, sx_r4 ia,
                                             sx_r4 mb, sx_r4 ib, sx_r4 dx, sx_r4 dy, sx_r4 r_a,
                                             sx_r4 r_b, sx_r4 lambda) {
     sx_r4 ix = sx_r4_mul(lambda, dx), iy = sx_r4_mul(lambda, dy);
+    if (sx_m4_all(m)) {
+        v->vax = sx_r4_sub(v->vax, sx_r4_mul(ma, ix));
+        v->vay = sx_r4_sub(v->vay, sx_r4_mul(ma, iy));
+        v->wa = sx_r4_sub(v->wa, sx_r4_mul(ia, sx_r4_mul(lambda, r_a)));
+        v->vbx = sx_r4_add(v->vbx, sx_r4_mul(mb, ix));
+        v->vby = sx_r4_add(v->vby, sx_r4_mul(mb, iy));
+        v->wb = sx_r4_add(v->wb, sx_r4_mul(ib, sx_r4_mul(lambda, r_b)));
+        return;
+    }
     v->vax = sx_r4_select(m, sx_r4_sub(v->vax, sx_r4_mul(ma, ix)), v->vax);
     v->vay = sx_r4_select(m, sx_r4_sub(v->vay, sx_r4_mul(ma, iy)), v->vay);
     v->wa = sx_r4_select(m, sx_r4_sub(v->wa, sx_r4_mul(ia, sx_r4_mul(lambda, r_a))), v->wa);
@@ -705,7 +725,10 @@ static SX_ALWAYS_INLINE void sx_lanes_apply(sx_lanes_pair *v, sx_m4 m, sx_r4 ma,
 /* sx_bounded_impulse, lane-wise. */
 static SX_ALWAYS_INLINE sx_r4 sx_lanes_bounded(sx_r4 x) {
     sx_r4 hi = sx_r4_set1(SX_IMPULSE_LIMIT), lo = sx_r4_set1(-SX_IMPULSE_LIMIT);
-    sx_r4 inside = sx_r4_select(sx_r4_le(x, hi), x, hi);
+    sx_m4 in = sx_r4_le(x, hi);
+    sx_r4 inside;
+    if (sx_m4_all(sx_m4_and(in, sx_r4_ge(x, lo)))) return x; /* the common case */
+    inside = sx_r4_select(in, x, hi);
     sx_r4 below = sx_r4_select(sx_r4_lt(x, lo), lo, sx_r4_zero());
     return sx_r4_select(sx_r4_ge(x, lo), inside, below);
 }
@@ -1185,7 +1208,7 @@ static void sx_solver_unname(sx_world *world) {
  * bodies keep their own velocities for the impact pass). */
 static bool sx_solver_gather(sx_world *world, bool warm) {
     sx_colour_item *items;
-    int i, k, n = 0, colours = 0, sink;
+    int i, k, n = 0, colours = 0, sink, min_colour;
     bool same;
     void *p;
     if (!sx_solver_reserve(world)) return false;
@@ -1260,6 +1283,7 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
         it->inv_mass_b = sb->inv_mass;
         it->inv_inertia_b = sb->inv_inertia;
     }
+    min_colour = world->wide_min_colour > 0 ? world->wide_min_colour : SX_WIDE_MIN_COLOUR;
     if (same && n == world->fill_count) {
         if (!world->fill_fresh || !world->groups_ready) sx_solver_refresh(world);
         sx_solver_warm_start(world, false);
@@ -1285,7 +1309,7 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
     for (i = 0; i < colours; ++i) {
         sx_colour_span *span = &world->spans[i];
         int count = world->colour_cursor[i];
-        span->wide = count >= SX_WIDE_MIN_COLOUR;
+        span->wide = count >= min_colour;
         if (span->wide) {
             span->first = world->bundle_count;
             span->count = (count + 3) / 4;

@@ -167,6 +167,9 @@ struct sx_world {
      * are the contacts' (the last pass handed them back, and the energy
      * guard scaled none since). */
     unsigned contact_serial, fill_serial;
+    /* colours of fewer constraints than this are solved one at a time (0:
+     * the solver's own threshold; tests set it to compare the paths) */
+    int wide_min_colour;
     int fill_count;
     bool fill_valid, fill_fresh;
     /* the arrays hold the current solve's gather (from the warm start to
