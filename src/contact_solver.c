@@ -843,14 +843,24 @@ static void sx_bundle_solve(sx_world *world, sx_bundle *u, sx_r4 inv_h, bool las
         y1 = sx_r4_neg(sx_r4_add(sx_r4_mul(inv11, b1), sx_r4_mul(inv12, b2)));
         y2 = sx_r4_neg(sx_r4_add(sx_r4_mul(inv12, b1), sx_r4_mul(inv22, b2)));
         c1 = sx_m4_and(sx_r4_ge(y1, zero), sx_r4_ge(y2, zero));
-        z1 = sx_r4_div(sx_r4_neg(b1), k11);
-        c2 = sx_m4_and(sx_r4_ge(z1, zero), sx_r4_ge(sx_r4_add(sx_r4_mul(k12, z1), b2), zero));
-        z2 = sx_r4_div(sx_r4_neg(b2), k22);
-        c3 = sx_m4_and(sx_r4_ge(z2, zero), sx_r4_ge(sx_r4_add(sx_r4_mul(k12, z2), b1), zero));
-        c4 = sx_m4_and(sx_r4_ge(b1, zero), sx_r4_ge(b2, zero));
-        x1 = sx_r4_select(c1, y1, sx_r4_select(c2, z1, zero));
-        x2 = sx_r4_select(c1, y2, sx_r4_select(c2, zero, sx_r4_select(c3, z2, zero)));
-        solved = sx_m4_and(solved, sx_m4_or(sx_m4_or(c1, c2), sx_m4_or(c3, c4)));
+        if (sx_m4_all(sx_m4_or(c1, sx_m4_andnot(solved, all)))) {
+            /* both points push in every lane that solves as a block (a
+             * resting face): the other cases and their divisions unneeded */
+            x1 = y1;
+            x2 = y2;
+            solved = sx_m4_and(solved, c1);
+        } else {
+            z1 = sx_r4_div(sx_r4_neg(b1), k11);
+            c2 = sx_m4_and(sx_r4_ge(z1, zero),
+                           sx_r4_ge(sx_r4_add(sx_r4_mul(k12, z1), b2), zero));
+            z2 = sx_r4_div(sx_r4_neg(b2), k22);
+            c3 = sx_m4_and(sx_r4_ge(z2, zero),
+                           sx_r4_ge(sx_r4_add(sx_r4_mul(k12, z2), b1), zero));
+            c4 = sx_m4_and(sx_r4_ge(b1, zero), sx_r4_ge(b2, zero));
+            x1 = sx_r4_select(c1, y1, sx_r4_select(c2, z1, zero));
+            x2 = sx_r4_select(c1, y2, sx_r4_select(c2, zero, sx_r4_select(c3, z2, zero)));
+            solved = sx_m4_and(solved, sx_m4_or(sx_m4_or(c1, c2), sx_m4_or(c3, c4)));
+        }
         solved = sx_m4_and(solved, sx_m4_and(sx_r4_le(x1, bound), sx_r4_le(x2, bound)));
         sx_lanes_apply(&v, solved, ma, ia, mb, ib, nx, ny, rna1, rnb1, sx_r4_sub(x1, n1));
         sx_lanes_apply(&v, solved, ma, ia, mb, ib, nx, ny, rna2, rnb2, sx_r4_sub(x2, n2));
@@ -1175,9 +1185,9 @@ static void sx_solver_refresh(sx_world *world) {
             const sx_contact_point *src = &ct->points[k];
             sx_real ni = src->normal_impulse, ti = src->tangent_impulse;
             if (!world->groups_ready) ni = ti = SX_R(0.0);
-            if (world->spans[it->colour].wide) {
-                sx_bundle *u = &world->bundles[it->at / 4];
-                int l = it->at % 4;
+            if (it->wide) {
+                sx_bundle *u = &world->bundles[it->at >> 2];
+                int l = it->at & 3;
                 u->normal_impulse[k][l] = ni;
                 u->tangent_impulse[k][l] = ti;
             } else {
@@ -1263,8 +1273,8 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
             /* the new gaps into the kept fill, while the contact is at hand */
             for (k = 0; k < ct->count; ++k) {
                 ct->points[k].impact_impulse = SX_R(0.0);
-                if (world->spans[it->colour].wide)
-                    world->bundles[it->at / 4].gap[k][it->at % 4] = ct->points[k].gap;
+                if (it->wide)
+                    world->bundles[it->at >> 2].gap[k][it->at & 3] = ct->points[k].gap;
                 else
                     world->constraints[it->at].points[k].gap = ct->points[k].gap;
             }
@@ -1336,10 +1346,11 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
     for (i = 0; i < n; ++i) {
         sx_colour_item *it = &items[i];
         it->at = world->colour_cursor[it->colour]++;
-        if (world->spans[it->colour].wide) {
+        it->wide = world->spans[it->colour].wide;
+        if (it->wide) {
             sx_constraint c;
             sx_constraint_fill(world, it->contact, it->body_a, it->body_b, &c, true);
-            sx_bundle_fill(&world->bundles[it->at / 4], it->at % 4, &c, sink);
+            sx_bundle_fill(&world->bundles[it->at >> 2], it->at & 3, &c, sink);
         } else {
             sx_constraint_fill(world, it->contact, it->body_a, it->body_b,
                                &world->constraints[it->at], true);
@@ -1350,8 +1361,19 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
         int at;
         if (!span->wide) continue;
         for (at = world->colour_cursor[i]; at < 4 * (span->first + span->count); ++at)
-            sx_bundle_fill(&world->bundles[at / 4], at % 4, NULL, sink);
+            sx_bundle_fill(&world->bundles[at >> 2], at & 3, NULL, sink);
     }
+    /* colours in a row of the same kind are one span for the passes (their
+     * constraints or bundles follow each other; a stack is one constraint
+     * per colour) */
+    for (i = 0, k = 0; i < colours; ++i) {
+        const sx_colour_span *span = &world->spans[i];
+        if (k > 0 && span->wide == world->spans[k - 1].wide)
+            world->spans[k - 1].count += span->count;
+        else
+            world->spans[k++] = *span;
+    }
+    world->span_count = k;
     world->fill_serial = world->contact_serial;
     world->fill_count = n;
     world->fill_valid = true;

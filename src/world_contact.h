@@ -141,6 +141,7 @@ typedef struct sx_colour_item {
     uint64_t key;
     int contact, part_a, part_b, count;
     int body_a, body_b, colour, at;
+    bool wide; /* in a bundle (else a one-at-a-time constraint) */
     sx_real inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
 } sx_colour_item;
 
