@@ -658,14 +658,15 @@ static SX_ALWAYS_INLINE void sx_constraint_solve(sx_world *world, sx_constraint 
  * point by point, speculative or overlapping points) are computed for the
  * lanes that need any and chosen per lane with masks, so a lane that does
  * not take a branch keeps its values bit for bit. Padding lanes have zero
- * masses and write to a sink entry past the solver bodies. Colours of few
- * constraints (a stack: one per colour) stay on the scalar path, where a
- * bundle would be mostly padding. The soft passes, the relax passes, the
- * warm start after an impact, the energy guard, the impact pass and the
+ * masses and write to a sink entry past the solver bodies. Colours of
+ * fewer constraints than a bundle holds (a stack: one per colour) stay on
+ * the scalar path, where a bundle would be mostly padding. The soft
+ * passes, the relax passes, the energy guard, the impact pass and the
  * positional pass stay scalar. */
 
-/* Colours of fewer constraints than this are solved one at a time. */
-#define SX_WIDE_MIN_COLOUR 8
+/* Colours of fewer constraints than this are solved one at a time (a full
+ * bundle: below it the pyramids gained nothing and a stack lost). */
+#define SX_WIDE_MIN_COLOUR 4
 
 /* Four solver bodies' velocities into lanes (vx, vy, w; pad kept). */
 static SX_ALWAYS_INLINE void sx_lanes_load(const sx_solver_body *bodies, const int *idx, sx_r4 *vx,
