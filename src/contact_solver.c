@@ -1223,12 +1223,12 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
     bool same;
     void *p;
     if (!sx_solver_reserve(world)) return false;
-    if (warm) sx_groups_build(world);
     world->solver_bodies[0].v = sx_v2_zero();
     world->solver_bodies[0].w = SX_R(0.0);
     world->solver_bodies[0].pad = SX_R(0.0);
     world->solver_body_count = 1;
     if (!warm || world->def.contact_hertz > SX_R(0.0)) {
+        if (warm) sx_groups_build(world);
         world->constraint_count = 0;
         /* one span in contact order, solved one at a time */
         for (i = 0; i < world->contact_count; ++i) {
@@ -1270,7 +1270,8 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
             it->part_a == ct->part_a && it->part_b == ct->part_b && it->count == ct->count &&
             it->body_a == a && it->body_b == b && it->inv_mass_a == sa->inv_mass &&
             it->inv_inertia_a == sa->inv_inertia && it->inv_mass_b == sb->inv_mass &&
-            it->inv_inertia_b == sb->inv_inertia) {
+            it->inv_inertia_b == sb->inv_inertia && it->dynamic_a == sa->dynamic &&
+            it->dynamic_b == sb->dynamic) {
             /* the new gaps into the kept fill, while the contact is at hand */
             for (k = 0; k < ct->count; ++k) {
                 ct->points[k].impact_impulse = SX_R(0.0);
@@ -1293,9 +1294,14 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
         it->inv_inertia_a = sa->inv_inertia;
         it->inv_mass_b = sb->inv_mass;
         it->inv_inertia_b = sb->inv_inertia;
+        it->dynamic_a = sa->dynamic;
+        it->dynamic_b = sb->dynamic;
     }
     min_colour = world->wide_min_colour > 0 ? world->wide_min_colour : SX_WIDE_MIN_COLOUR;
     if (same && n == world->fill_count) {
+        /* the energy guard's groups follow from the items too: kept, unless
+         * the last build found no room */
+        if (!world->groups_ready) sx_groups_build(world);
         if (!world->fill_fresh || !world->groups_ready) sx_solver_refresh(world);
         sx_solver_warm_start(world, false);
         world->solver_gathered = true;
@@ -1304,6 +1310,7 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
     world->fill_valid = false;
     world->constraint_count = 0;
     world->bundle_count = 0;
+    sx_groups_build(world);
     for (i = 0; i < n; ++i) {
         sx_colour_item *it = &items[i];
         int ca = it->body_a != 0 ? world->body_colour[it->body_a] : -1;

@@ -136,12 +136,14 @@ typedef struct sx_colour_span {
 /* A constraint as the gather's colouring sees it, and where its fill
  * went (`at`: its constraint, or 4 x bundle + lane), with what the fill
  * read that may change between two collides: the contact's identity and
- * point count, its solver bodies and their inverse masses. */
+ * point count, its solver bodies, their inverse masses and types (what
+ * the energy guard's groups follow from too). */
 typedef struct sx_colour_item {
     uint64_t key;
     int contact, part_a, part_b, count;
     int body_a, body_b, colour, at;
     bool wide; /* in a bundle (else a one-at-a-time constraint) */
+    bool dynamic_a, dynamic_b;
     sx_real inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
 } sx_colour_item;
 
