@@ -749,8 +749,8 @@ static SX_ALWAYS_INLINE sx_r4 sx_lanes_error(sx_r4 vn, sx_r4 gap, sx_r4 inv_h) {
 /* The warm start of a bundle (sx_warm_start lane-wise). */
 static void sx_bundle_warm_start(sx_solver_body *bodies, const sx_bundle *u) {
     sx_lanes_pair v;
-    sx_r4 nx = sx_r4_load(u->nx), ny = sx_r4_load(u->ny), tx = sx_r4_load(u->tx),
-          ty = sx_r4_load(u->ty);
+    /* the tangent (n.y, -n.x): sx_cross_vs(n, 1), exactly */
+    sx_r4 nx = sx_r4_load(u->nx), ny = sx_r4_load(u->ny), tx = ny, ty = sx_r4_neg(nx);
     sx_r4 ma = sx_r4_load(u->inv_mass_a), ia = sx_r4_load(u->inv_inertia_a);
     sx_r4 mb = sx_r4_load(u->inv_mass_b), ib = sx_r4_load(u->inv_inertia_b);
     sx_m4 all = sx_m4_true(), two = sx_r4_gt(sx_r4_load(u->two), sx_r4_zero());
@@ -802,7 +802,7 @@ static void sx_bundle_solve(sx_world *world, sx_bundle *u, sx_r4 inv_h, bool las
 
     /* friction (sx_friction_row2, or a one-point contact's point) */
     if (sx_m4_any(row)) {
-        sx_r4 tx = sx_r4_load(u->tx), ty = sx_r4_load(u->ty);
+        sx_r4 tx = ny, ty = sx_r4_neg(nx);
         sx_r4 rta = sx_r4_load(u->row_rt_a), rtb = sx_r4_load(u->row_rt_b);
         sx_r4 normal = sx_r4_add(n1, n2), limit = sx_r4_mul(friction, normal);
         sx_r4 old = sx_r4_add(t1, t2);
@@ -811,12 +811,17 @@ static void sx_bundle_solve(sx_world *world, sx_bundle *u, sx_r4 inv_h, bool las
         sx_r4 total = sx_lanes_bounded(sx_lanes_clamp(sx_r4_add(old, lambda), limit));
         sx_r4 share = sx_r4_select(sx_r4_gt(normal, zero), sx_r4_mul(total, sx_r4_div(n1, normal)),
                                    sx_r4_mul(sx_r4_set1(SX_R(0.5)), total));
-        t1 = sx_r4_select(row, share, t1);
-        t2 = sx_r4_select(row, sx_r4_sub(total, share), t2);
+        if (sx_m4_all(row)) {
+            t1 = share;
+            t2 = sx_r4_sub(total, share);
+        } else {
+            t1 = sx_r4_select(row, share, t1);
+            t2 = sx_r4_select(row, sx_r4_sub(total, share), t2);
+        }
         sx_lanes_apply(&v, row, ma, ia, mb, ib, tx, ty, rta, rtb, sx_r4_sub(total, old));
     }
     if (sx_m4_any(single)) {
-        sx_r4 tx = sx_r4_load(u->tx), ty = sx_r4_load(u->ty);
+        sx_r4 tx = ny, ty = sx_r4_neg(nx);
         sx_r4 rta = sx_r4_load(u->rt_a[0]), rtb = sx_r4_load(u->rt_b[0]);
         sx_r4 limit = sx_r4_mul(friction, n1);
         sx_r4 lambda = sx_r4_mul(sx_r4_neg(sx_r4_load(u->tangent_mass[0])),
@@ -1078,7 +1083,7 @@ static void sx_bundle_fill(sx_bundle *u, int l, const sx_constraint *c, int sink
         u->body_a[l] = sink;
         u->body_b[l] = sink;
         u->contact[l] = -1;
-        u->nx[l] = u->ny[l] = u->tx[l] = u->ty[l] = SX_R(0.0);
+        u->nx[l] = u->ny[l] = SX_R(0.0);
         u->friction[l] = SX_R(0.0);
         u->inv_mass_a[l] = u->inv_inertia_a[l] = u->inv_mass_b[l] = u->inv_inertia_b[l] = SX_R(0.0);
         u->two[l] = u->block_solve[l] = SX_R(0.0);
@@ -1097,11 +1102,6 @@ static void sx_bundle_fill(sx_bundle *u, int l, const sx_constraint *c, int sink
     u->contact[l] = c->contact;
     u->nx[l] = c->normal.x;
     u->ny[l] = c->normal.y;
-    {
-        sx_vec2 t = sx_cross_vs(c->normal, SX_R(1.0));
-        u->tx[l] = t.x;
-        u->ty[l] = t.y;
-    }
     u->friction[l] = c->friction;
     u->inv_mass_a[l] = c->inv_mass_a;
     u->inv_inertia_a[l] = c->inv_inertia_a;

@@ -110,8 +110,7 @@ typedef struct sx_constraint {
 typedef struct sx_bundle {
     int body_a[4], body_b[4];
     int contact[4];
-    int pad[4];
-    sx_real nx[4], ny[4], tx[4], ty[4];
+    sx_real nx[4], ny[4]; /* the normal (the tangent is (ny, -nx)) */
     sx_real friction[4];
     sx_real inv_mass_a[4], inv_inertia_a[4], inv_mass_b[4], inv_inertia_b[4];
     /* 1 or 0: a two-point contact; its block solve */
