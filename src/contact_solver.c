@@ -14,7 +14,17 @@
  * last one hands the impulses back to the contacts as it goes. The passes
  * are bound by the chain of dependent operations within a contact (each
  * impulse waits on the velocities the last one left), so what pays is
- * fewer operations on that chain, not fewer bytes.
+ * fewer operations on that chain, not fewer bytes, and more chains at once.
+ *
+ * Wide: the rigid passes solve independent constraints side by side, four
+ * per sx_r4 (SSE2 in the float build). The gather colours the constraints
+ * so that no two of a colour share a body the solver moves, in a way that
+ * keeps each body's impulses in contact order (see "the wide passes"), so
+ * the wide solver answers bit for bit what the one-at-a-time pass answers,
+ * in every build, and the scalar path stays the reference. The lanes are
+ * filled at the first gather after a collide (levers, masses, normals: all
+ * fixed for the step) and kept through the step's sub-steps, which only
+ * refresh the gaps; colours too small to fill a bundle stay one at a time.
  *
  * Velocities: each contact point is a constraint on the relative normal
  * velocity vn of the two bodies at the point. The solver visits the points in
@@ -49,6 +59,7 @@
  * pseudo-impulse that changes positions only). */
 #include <string.h>
 
+#include "simd.h"
 #include "world_array.h"
 #include "world_body.h"
 #include "world_contact.h"
@@ -303,6 +314,7 @@ static void sx_groups_settle(sx_world *world, bool scale) {
         if (!sx_contact_is_active(world, c)) continue;
         factor = sx_group_factor(&gb[sx_group_of(world, c)]);
         if (factor == SX_R(1.0)) continue;
+        world->fill_fresh = false; /* the kept fill's impulses are stale */
         for (k = 0; k < c->count; ++k) {
             c->points[k].normal_impulse *= factor;
             c->points[k].tangent_impulse *= factor;
@@ -373,6 +385,7 @@ static void sx_normal_masses(const sx_world *world, sx_contact *c) {
 
 void sx_contacts_prepare(sx_world *world) {
     int i, k;
+    world->contact_serial++;
     for (i = 0; i < world->contact_count; ++i) {
         sx_contact *c = &world->contacts[i];
         const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
@@ -555,10 +568,355 @@ static SX_ALWAYS_INLINE void sx_friction_row2(sx_constraint *c, sx_vec2 *va, sx_
                    c->inv_inertia_b, t, rta, rtb, total - old);
 }
 
-/* One pass over the constraints: sx_world_solve's (soft when the world's
- * contacts are) or a relax pass. `last`: the last pass of the solve also
- * hands each constraint's impulses back to its contact as it goes (the
- * stores overlap the solve, where a walk of their own waited on memory). */
+/* One constraint of a pass, one at a time: sx_constraints_pass's scalar
+ * path (soft when sft is set, a relax pass when relax). */
+static SX_ALWAYS_INLINE void sx_constraint_solve(sx_world *world, sx_constraint *c,
+                                                 sx_solver_body *bodies, sx_real inv_h,
+                                                 const sx_softness *sft, sx_real max_push,
+                                                 bool relax, bool last) {
+    sx_solver_body *a = &bodies[c->body_a], *b = &bodies[c->body_b];
+    sx_real ma = c->inv_mass_a, ia = c->inv_inertia_a, mb = c->inv_mass_b, ib = c->inv_inertia_b;
+    sx_vec2 va = a->v, vb = b->v, n = c->normal, t = sx_cross_vs(n, SX_R(1.0));
+    sx_real wa = a->w, wb = b->w;
+    bool solved = false;
+    int k;
+    /* Friction first, with the normal impulses of the last pass (or of
+     * the warm start): the normal constraints then have the last word,
+     * so a pass never ends with a point moving into the surface. A
+     * frictionless contact costs nothing here. */
+    if (c->friction > SX_R(0.0) && c->count == 2) {
+        sx_friction_row2(c, &va, &wa, &vb, &wb, t);
+    } else if (c->friction > SX_R(0.0)) {
+        for (k = 0; k < c->count; ++k) {
+            sx_constraint_point *p = &c->points[k];
+            sx_real limit = c->friction * p->normal_impulse;
+            sx_real lambda =
+                -p->tangent_mass * sx_lever_speed(va, wa, vb, wb, t, p->rt_a, p->rt_b);
+            sx_real total =
+                sx_bounded_impulse(sx_clampr(p->tangent_impulse + lambda, -limit, limit));
+            lambda = total - p->tangent_impulse;
+            p->tangent_impulse = total;
+            sx_lever_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, t, p->rt_a, p->rt_b, lambda);
+        }
+    }
+    /* the rigid passes solve a face's two points together */
+    if (c->block_solve && sft == NULL &&
+        (!relax || (c->points[0].gap <= SX_R(0.0) && c->points[1].gap <= SX_R(0.0)))) {
+        sx_constraint_point *p1 = &c->points[0], *p2 = &c->points[1];
+        sx_real x1, x2;
+        sx_real vn1 = sx_lever_speed(va, wa, vb, wb, n, p1->rn_a, p1->rn_b);
+        sx_real vn2 = sx_lever_speed(va, wa, vb, wb, n, p2->rn_a, p2->rn_b);
+        /* an overflowed solution (not <= the bound: inf or NaN) is
+         * left to the point-by-point solve below, which bounds it */
+        if (sx_block_solve(c, p1, p2, vn1, vn2, inv_h, &x1, &x2) && x1 <= SX_IMPULSE_LIMIT &&
+            x2 <= SX_IMPULSE_LIMIT) {
+            sx_real d1 = x1 - p1->normal_impulse, d2 = x2 - p2->normal_impulse;
+            sx_lever_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, n, p1->rn_a, p1->rn_b, d1);
+            sx_lever_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, n, p2->rn_a, p2->rn_b, d2);
+            p1->normal_impulse = x1;
+            p2->normal_impulse = x2;
+            solved = true;
+        }
+    }
+    if (!solved) {
+        for (k = 0; k < c->count; ++k) {
+            sx_solve_normal_point(&c->points[k], n, &va, &wa, &vb, &wb, ma, ia, mb, ib, inv_h,
+                                  sft, max_push, relax);
+        }
+    }
+    a->v = va;
+    a->w = wa;
+    b->v = vb;
+    b->w = wb;
+    if (last) {
+        sx_contact_point *out = world->contacts[c->contact].points;
+        for (k = 0; k < c->count; ++k) {
+            out[k].normal_impulse = c->points[k].normal_impulse;
+            out[k].tangent_impulse = c->points[k].tangent_impulse;
+        }
+    }
+}
+
+/* ---- the wide passes -----------------------------------------------------
+ *
+ * The rigid velocity pass, four constraints at a time (sx_r4 lanes, SSE2
+ * in the float build). The gather colours the constraints: each takes
+ * colour 1 + the largest colour given so far to either of its bodies that
+ * the solver moves, walking them in contact order. No two constraints of a
+ * colour share such a body, and the constraints of every body have rising
+ * colours in contact order, so solving colour after colour applies to each
+ * body the very impulses, in the very order, that the contact-order pass
+ * does: the answers stay bit for bit those of the one-at-a-time pass, in
+ * every build. (Greedy colouring, the first colour free at both bodies,
+ * gives fewer colours but reorders a body's impulses, and the pyramids
+ * lost accuracy with it.) Entry 0, the bodies the solver does not move, is
+ * read by every lane and stays exactly zero.
+ *
+ * Within a bundle of four, each lane runs the scalar pass's operations in
+ * their order (no fused multiply-add); its branches (two-point friction
+ * row or a single point, the block solve's four cases and its fallback to
+ * point by point, speculative or overlapping points) are computed for the
+ * lanes that need any and chosen per lane with masks, so a lane that does
+ * not take a branch keeps its values bit for bit. Padding lanes have zero
+ * masses and write to a sink entry past the solver bodies. Colours of
+ * fewer constraints than a bundle holds (a stack: one per colour) stay on
+ * the scalar path, where a bundle would be mostly padding. The soft
+ * passes, the relax passes, the energy guard, the impact pass and the
+ * positional pass stay scalar. */
+
+/* Colours of fewer constraints than this are solved one at a time (a full
+ * bundle: below it the pyramids gained nothing and a stack lost). */
+#define SX_WIDE_MIN_COLOUR 4
+
+/* Four solver bodies' velocities into lanes (vx, vy, w; pad kept). */
+static SX_ALWAYS_INLINE void sx_lanes_load(const sx_solver_body *bodies, const int *idx, sx_r4 *vx,
+                                           sx_r4 *vy, sx_r4 *w, sx_r4 *pad) {
+    *vx = sx_r4_load((const sx_real *)(const void *)&bodies[idx[0]]);
+    *vy = sx_r4_load((const sx_real *)(const void *)&bodies[idx[1]]);
+    *w = sx_r4_load((const sx_real *)(const void *)&bodies[idx[2]]);
+    *pad = sx_r4_load((const sx_real *)(const void *)&bodies[idx[3]]);
+    sx_r4_transpose(vx, vy, w, pad);
+}
+
+static SX_ALWAYS_INLINE void sx_lanes_store(sx_solver_body *bodies, const int *idx, sx_r4 vx,
+                                            sx_r4 vy, sx_r4 w, sx_r4 pad) {
+    sx_r4_transpose(&vx, &vy, &w, &pad);
+    sx_r4_store((sx_real *)(void *)&bodies[idx[0]], vx);
+    sx_r4_store((sx_real *)(void *)&bodies[idx[1]], vy);
+    sx_r4_store((sx_real *)(void *)&bodies[idx[2]], w);
+    sx_r4_store((sx_real *)(void *)&bodies[idx[3]], pad);
+}
+
+/* The two bodies of four constraints, lane-wise. */
+typedef struct sx_lanes_pair {
+    sx_r4 vax, vay, wa, pa, vbx, vby, wb, pb;
+} sx_lanes_pair;
+
+/* sx_lever_speed, lane-wise. */
+static SX_ALWAYS_INLINE sx_r4 sx_lanes_speed(const sx_lanes_pair *v, sx_r4 dx, sx_r4 dy,
+                                             sx_r4 r_a, sx_r4 r_b) {
+    sx_r4 ex = sx_r4_sub(v->vbx, v->vax), ey = sx_r4_sub(v->vby, v->vay);
+    sx_r4 s = sx_r4_add(sx_r4_mul(ex, dx), sx_r4_mul(ey, dy));
+    return sx_r4_sub(sx_r4_add(s, sx_r4_mul(v->wb, r_b)), sx_r4_mul(v->wa, r_a));
+}
+
+/* sx_lever_apply, lane-wise, in the lanes of mask m only (the selects
+ * skipped when m holds every lane, the common case). */
+static SX_ALWAYS_INLINE void sx_lanes_apply(sx_lanes_pair *v, sx_m4 m, sx_r4 ma, sx_r4 ia,
+                                            sx_r4 mb, sx_r4 ib, sx_r4 dx, sx_r4 dy, sx_r4 r_a,
+                                            sx_r4 r_b, sx_r4 lambda) {
+    sx_r4 ix = sx_r4_mul(lambda, dx), iy = sx_r4_mul(lambda, dy);
+    if (sx_m4_all(m)) {
+        v->vax = sx_r4_sub(v->vax, sx_r4_mul(ma, ix));
+        v->vay = sx_r4_sub(v->vay, sx_r4_mul(ma, iy));
+        v->wa = sx_r4_sub(v->wa, sx_r4_mul(ia, sx_r4_mul(lambda, r_a)));
+        v->vbx = sx_r4_add(v->vbx, sx_r4_mul(mb, ix));
+        v->vby = sx_r4_add(v->vby, sx_r4_mul(mb, iy));
+        v->wb = sx_r4_add(v->wb, sx_r4_mul(ib, sx_r4_mul(lambda, r_b)));
+        return;
+    }
+    v->vax = sx_r4_select(m, sx_r4_sub(v->vax, sx_r4_mul(ma, ix)), v->vax);
+    v->vay = sx_r4_select(m, sx_r4_sub(v->vay, sx_r4_mul(ma, iy)), v->vay);
+    v->wa = sx_r4_select(m, sx_r4_sub(v->wa, sx_r4_mul(ia, sx_r4_mul(lambda, r_a))), v->wa);
+    v->vbx = sx_r4_select(m, sx_r4_add(v->vbx, sx_r4_mul(mb, ix)), v->vbx);
+    v->vby = sx_r4_select(m, sx_r4_add(v->vby, sx_r4_mul(mb, iy)), v->vby);
+    v->wb = sx_r4_select(m, sx_r4_add(v->wb, sx_r4_mul(ib, sx_r4_mul(lambda, r_b))), v->wb);
+}
+
+/* sx_bounded_impulse, lane-wise. */
+static SX_ALWAYS_INLINE sx_r4 sx_lanes_bounded(sx_r4 x) {
+    sx_r4 hi = sx_r4_set1(SX_IMPULSE_LIMIT), lo = sx_r4_set1(-SX_IMPULSE_LIMIT);
+    sx_m4 in = sx_r4_le(x, hi);
+    sx_r4 inside;
+    if (sx_m4_all(sx_m4_and(in, sx_r4_ge(x, lo)))) return x; /* the common case */
+    inside = sx_r4_select(in, x, hi);
+    sx_r4 below = sx_r4_select(sx_r4_lt(x, lo), lo, sx_r4_zero());
+    return sx_r4_select(sx_r4_ge(x, lo), inside, below);
+}
+
+/* sx_clampr(a, -limit, limit), lane-wise. */
+static SX_ALWAYS_INLINE sx_r4 sx_lanes_clamp(sx_r4 a, sx_r4 limit) {
+    sx_r4 lo = sx_r4_neg(limit);
+    sx_r4 above = sx_r4_select(sx_r4_gt(a, limit), sx_r4_max(lo, limit), a);
+    return sx_r4_select(sx_r4_lt(a, lo), lo, above);
+}
+
+/* sx_normal_error, lane-wise. */
+static SX_ALWAYS_INLINE sx_r4 sx_lanes_error(sx_r4 vn, sx_r4 gap, sx_r4 inv_h) {
+    return sx_r4_select(sx_r4_gt(gap, sx_r4_zero()), sx_r4_add(vn, sx_r4_mul(gap, inv_h)), vn);
+}
+
+/* The warm start of a bundle (sx_warm_start lane-wise). */
+static void sx_bundle_warm_start(sx_solver_body *bodies, const sx_bundle *u) {
+    sx_lanes_pair v;
+    /* the tangent (n.y, -n.x): sx_cross_vs(n, 1), exactly */
+    sx_r4 nx = sx_r4_load(u->nx), ny = sx_r4_load(u->ny), tx = ny, ty = sx_r4_neg(nx);
+    sx_r4 ma = sx_r4_load(u->inv_mass_a), ia = sx_r4_load(u->inv_inertia_a);
+    sx_r4 mb = sx_r4_load(u->inv_mass_b), ib = sx_r4_load(u->inv_inertia_b);
+    sx_m4 all = sx_m4_true(), two = sx_r4_gt(sx_r4_load(u->two), sx_r4_zero());
+    int k;
+    sx_lanes_load(bodies, u->body_a, &v.vax, &v.vay, &v.wa, &v.pa);
+    sx_lanes_load(bodies, u->body_b, &v.vbx, &v.vby, &v.wb, &v.pb);
+    for (k = 0; k < 2; ++k) {
+        sx_m4 m = k == 0 ? all : two;
+        sx_r4 ni = sx_r4_load(u->normal_impulse[k]), ti = sx_r4_load(u->tangent_impulse[k]);
+        sx_r4 ix = sx_r4_add(sx_r4_mul(ni, nx), sx_r4_mul(ti, tx));
+        sx_r4 iy = sx_r4_add(sx_r4_mul(ni, ny), sx_r4_mul(ti, ty));
+        sx_r4 ma_ = sx_r4_add(sx_r4_mul(ni, sx_r4_load(u->rn_a[k])),
+                              sx_r4_mul(ti, sx_r4_load(u->rt_a[k])));
+        sx_r4 mb_ = sx_r4_add(sx_r4_mul(ni, sx_r4_load(u->rn_b[k])),
+                              sx_r4_mul(ti, sx_r4_load(u->rt_b[k])));
+        v.vax = sx_r4_select(m, sx_r4_sub(v.vax, sx_r4_mul(ma, ix)), v.vax);
+        v.vay = sx_r4_select(m, sx_r4_sub(v.vay, sx_r4_mul(ma, iy)), v.vay);
+        v.wa = sx_r4_select(m, sx_r4_sub(v.wa, sx_r4_mul(ia, ma_)), v.wa);
+        v.vbx = sx_r4_select(m, sx_r4_add(v.vbx, sx_r4_mul(mb, ix)), v.vbx);
+        v.vby = sx_r4_select(m, sx_r4_add(v.vby, sx_r4_mul(mb, iy)), v.vby);
+        v.wb = sx_r4_select(m, sx_r4_add(v.wb, sx_r4_mul(ib, mb_)), v.wb);
+    }
+    sx_lanes_store(bodies, u->body_a, v.vax, v.vay, v.wa, v.pa);
+    sx_lanes_store(bodies, u->body_b, v.vbx, v.vby, v.wb, v.pb);
+}
+
+/* One rigid pass over a bundle: sx_constraint_solve's rigid branches for
+ * four constraints at once. */
+static void sx_bundle_solve(sx_world *world, sx_bundle *u, sx_r4 inv_h, bool last) {
+    sx_solver_body *bodies = world->solver_bodies;
+    sx_lanes_pair v;
+    sx_r4 zero = sx_r4_zero();
+    sx_r4 nx = sx_r4_load(u->nx), ny = sx_r4_load(u->ny);
+    sx_r4 ma = sx_r4_load(u->inv_mass_a), ia = sx_r4_load(u->inv_inertia_a);
+    sx_r4 mb = sx_r4_load(u->inv_mass_b), ib = sx_r4_load(u->inv_inertia_b);
+    sx_r4 friction = sx_r4_load(u->friction);
+    sx_r4 n1 = sx_r4_load(u->normal_impulse[0]), n2 = sx_r4_load(u->normal_impulse[1]);
+    sx_r4 t1 = sx_r4_load(u->tangent_impulse[0]), t2 = sx_r4_load(u->tangent_impulse[1]);
+    sx_r4 rna1 = sx_r4_load(u->rn_a[0]), rnb1 = sx_r4_load(u->rn_b[0]);
+    sx_r4 rna2 = sx_r4_load(u->rn_a[1]), rnb2 = sx_r4_load(u->rn_b[1]);
+    sx_r4 g1 = sx_r4_load(u->gap[0]), g2 = sx_r4_load(u->gap[1]);
+    sx_r4 vn1, vn2, err1;
+    sx_m4 all = sx_m4_true(), two = sx_r4_gt(sx_r4_load(u->two), zero);
+    sx_m4 rubs = sx_r4_gt(friction, zero), solved, rest;
+    sx_m4 row = sx_m4_and(rubs, two), single = sx_m4_andnot(two, rubs);
+    int i;
+    sx_lanes_load(bodies, u->body_a, &v.vax, &v.vay, &v.wa, &v.pa);
+    sx_lanes_load(bodies, u->body_b, &v.vbx, &v.vby, &v.wb, &v.pb);
+
+    /* friction (sx_friction_row2, or a one-point contact's point) */
+    if (sx_m4_any(row)) {
+        sx_r4 tx = ny, ty = sx_r4_neg(nx);
+        sx_r4 rta = sx_r4_load(u->row_rt_a), rtb = sx_r4_load(u->row_rt_b);
+        sx_r4 normal = sx_r4_add(n1, n2), limit = sx_r4_mul(friction, normal);
+        sx_r4 old = sx_r4_add(t1, t2);
+        sx_r4 lambda = sx_r4_mul(sx_r4_neg(sx_r4_load(u->row_mass)),
+                                 sx_lanes_speed(&v, tx, ty, rta, rtb));
+        sx_r4 total = sx_lanes_bounded(sx_lanes_clamp(sx_r4_add(old, lambda), limit));
+        sx_r4 share = sx_r4_select(sx_r4_gt(normal, zero), sx_r4_mul(total, sx_r4_div(n1, normal)),
+                                   sx_r4_mul(sx_r4_set1(SX_R(0.5)), total));
+        if (sx_m4_all(row)) {
+            t1 = share;
+            t2 = sx_r4_sub(total, share);
+        } else {
+            t1 = sx_r4_select(row, share, t1);
+            t2 = sx_r4_select(row, sx_r4_sub(total, share), t2);
+        }
+        sx_lanes_apply(&v, row, ma, ia, mb, ib, tx, ty, rta, rtb, sx_r4_sub(total, old));
+    }
+    if (sx_m4_any(single)) {
+        sx_r4 tx = ny, ty = sx_r4_neg(nx);
+        sx_r4 rta = sx_r4_load(u->rt_a[0]), rtb = sx_r4_load(u->rt_b[0]);
+        sx_r4 limit = sx_r4_mul(friction, n1);
+        sx_r4 lambda = sx_r4_mul(sx_r4_neg(sx_r4_load(u->tangent_mass[0])),
+                                 sx_lanes_speed(&v, tx, ty, rta, rtb));
+        sx_r4 total = sx_lanes_bounded(sx_lanes_clamp(sx_r4_add(t1, lambda), limit));
+        sx_lanes_apply(&v, single, ma, ia, mb, ib, tx, ty, rta, rtb, sx_r4_sub(total, t1));
+        t1 = sx_r4_select(single, total, t1);
+    }
+
+    /* the normal points: the block solve where it applies and succeeds */
+    vn1 = sx_lanes_speed(&v, nx, ny, rna1, rnb1);
+    err1 = sx_lanes_error(vn1, g1, inv_h);
+    solved = sx_r4_gt(sx_r4_load(u->block_solve), zero);
+    if (sx_m4_any(solved)) {
+        sx_r4 k11 = sx_r4_load(u->k11), k12 = sx_r4_load(u->k12), k22 = sx_r4_load(u->k22);
+        sx_r4 inv11 = sx_r4_load(u->inv11), inv12 = sx_r4_load(u->inv12);
+        sx_r4 inv22 = sx_r4_load(u->inv22), bound = sx_r4_set1(SX_IMPULSE_LIMIT);
+        sx_r4 b1, b2, y1, y2, z1, z2, x1, x2;
+        sx_m4 c1, c2, c3, c4;
+        vn2 = sx_lanes_speed(&v, nx, ny, rna2, rnb2);
+        b1 = sx_r4_sub(err1, sx_r4_add(sx_r4_mul(k11, n1), sx_r4_mul(k12, n2)));
+        b2 = sx_r4_sub(sx_lanes_error(vn2, g2, inv_h),
+                       sx_r4_add(sx_r4_mul(k12, n1), sx_r4_mul(k22, n2)));
+        /* sx_solve_lcp2's four cases, the first that fits */
+        y1 = sx_r4_neg(sx_r4_add(sx_r4_mul(inv11, b1), sx_r4_mul(inv12, b2)));
+        y2 = sx_r4_neg(sx_r4_add(sx_r4_mul(inv12, b1), sx_r4_mul(inv22, b2)));
+        c1 = sx_m4_and(sx_r4_ge(y1, zero), sx_r4_ge(y2, zero));
+        if (sx_m4_all(sx_m4_or(c1, sx_m4_andnot(solved, all)))) {
+            /* both points push in every lane that solves as a block (a
+             * resting face): the other cases and their divisions unneeded */
+            x1 = y1;
+            x2 = y2;
+            solved = sx_m4_and(solved, c1);
+        } else {
+            z1 = sx_r4_div(sx_r4_neg(b1), k11);
+            c2 = sx_m4_and(sx_r4_ge(z1, zero),
+                           sx_r4_ge(sx_r4_add(sx_r4_mul(k12, z1), b2), zero));
+            z2 = sx_r4_div(sx_r4_neg(b2), k22);
+            c3 = sx_m4_and(sx_r4_ge(z2, zero),
+                           sx_r4_ge(sx_r4_add(sx_r4_mul(k12, z2), b1), zero));
+            c4 = sx_m4_and(sx_r4_ge(b1, zero), sx_r4_ge(b2, zero));
+            x1 = sx_r4_select(c1, y1, sx_r4_select(c2, z1, zero));
+            x2 = sx_r4_select(c1, y2, sx_r4_select(c2, zero, sx_r4_select(c3, z2, zero)));
+            solved = sx_m4_and(solved, sx_m4_or(sx_m4_or(c1, c2), sx_m4_or(c3, c4)));
+        }
+        solved = sx_m4_and(solved, sx_m4_and(sx_r4_le(x1, bound), sx_r4_le(x2, bound)));
+        sx_lanes_apply(&v, solved, ma, ia, mb, ib, nx, ny, rna1, rnb1, sx_r4_sub(x1, n1));
+        sx_lanes_apply(&v, solved, ma, ia, mb, ib, nx, ny, rna2, rnb2, sx_r4_sub(x2, n2));
+        n1 = sx_r4_select(solved, x1, n1);
+        n2 = sx_r4_select(solved, x2, n2);
+    }
+    /* the others point by point (sx_solve_normal_point, rigid) */
+    rest = sx_m4_andnot(solved, all);
+    if (sx_m4_any(rest)) {
+        sx_r4 total, lambda;
+        sx_m4 rest2 = sx_m4_and(rest, two);
+        lambda = sx_r4_mul(sx_r4_neg(sx_r4_load(u->normal_mass[0])), err1);
+        total = sx_lanes_bounded(sx_r4_max(sx_r4_add(n1, lambda), zero));
+        sx_lanes_apply(&v, rest, ma, ia, mb, ib, nx, ny, rna1, rnb1, sx_r4_sub(total, n1));
+        n1 = sx_r4_select(rest, total, n1);
+        if (sx_m4_any(rest2)) {
+            vn2 = sx_lanes_speed(&v, nx, ny, rna2, rnb2);
+            lambda = sx_r4_mul(sx_r4_neg(sx_r4_load(u->normal_mass[1])),
+                               sx_lanes_error(vn2, g2, inv_h));
+            total = sx_lanes_bounded(sx_r4_max(sx_r4_add(n2, lambda), zero));
+            sx_lanes_apply(&v, rest2, ma, ia, mb, ib, nx, ny, rna2, rnb2, sx_r4_sub(total, n2));
+            n2 = sx_r4_select(rest2, total, n2);
+        }
+    }
+
+    sx_lanes_store(bodies, u->body_a, v.vax, v.vay, v.wa, v.pa);
+    sx_lanes_store(bodies, u->body_b, v.vbx, v.vby, v.wb, v.pb);
+    sx_r4_store(u->normal_impulse[0], n1);
+    sx_r4_store(u->normal_impulse[1], n2);
+    sx_r4_store(u->tangent_impulse[0], t1);
+    sx_r4_store(u->tangent_impulse[1], t2);
+    if (!last) return;
+    for (i = 0; i < 4; ++i) {
+        sx_contact_point *out;
+        if (u->contact[i] < 0) continue;
+        out = world->contacts[u->contact[i]].points;
+        out[0].normal_impulse = u->normal_impulse[0][i];
+        out[0].tangent_impulse = u->tangent_impulse[0][i];
+        if (u->two[i] > SX_R(0.0)) {
+            out[1].normal_impulse = u->normal_impulse[1][i];
+            out[1].tangent_impulse = u->tangent_impulse[1][i];
+        }
+    }
+}
+
+/* One pass over the constraints, colour by colour: sx_world_solve's (soft
+ * when the world's contacts are) or a relax pass. `last`: the last pass of
+ * the solve also hands each constraint's impulses back to its contact as
+ * it goes (the stores overlap the solve, where a walk of their own waited
+ * on memory). */
 static void sx_constraints_pass(sx_world *world, sx_real h, bool relax, bool last) {
     sx_real inv_h = SX_R(1.0) / h;
     /* the stiffness follows the sub-step (a spring faster than a quarter of
@@ -571,77 +929,29 @@ static void sx_constraints_pass(sx_world *world, sx_real h, bool relax, bool las
     sx_real max_push = world->def.max_correction_speed;
     bool soft = !relax && world->def.contact_hertz > SX_R(0.0);
     sx_solver_body *bodies = world->solver_bodies;
-    int i, k;
-    for (i = 0; i < world->constraint_count; ++i) {
-        sx_constraint *c = &world->constraints[i];
-        sx_solver_body *a = &bodies[c->body_a], *b = &bodies[c->body_b];
-        sx_real ma = c->inv_mass_a, ia = c->inv_inertia_a, mb = c->inv_mass_b, ib = c->inv_inertia_b;
-        sx_vec2 va = a->v, vb = b->v, n = c->normal, t = sx_cross_vs(n, SX_R(1.0));
-        sx_real wa = a->w, wb = b->w;
-        const sx_softness *sft = NULL;
-        bool solved = false;
-        if (soft) sft = c->both_dynamic ? &moving : &fixed;
-        /* Friction first, with the normal impulses of the last pass (or of
-         * the warm start): the normal constraints then have the last word,
-         * so a pass never ends with a point moving into the surface. A
-         * frictionless contact costs nothing here. */
-        if (c->friction > SX_R(0.0) && c->count == 2) {
-            sx_friction_row2(c, &va, &wa, &vb, &wb, t);
-        } else if (c->friction > SX_R(0.0)) {
-            for (k = 0; k < c->count; ++k) {
-                sx_constraint_point *p = &c->points[k];
-                sx_real limit = c->friction * p->normal_impulse;
-                sx_real lambda =
-                    -p->tangent_mass * sx_lever_speed(va, wa, vb, wb, t, p->rt_a, p->rt_b);
-                sx_real total =
-                    sx_bounded_impulse(sx_clampr(p->tangent_impulse + lambda, -limit, limit));
-                lambda = total - p->tangent_impulse;
-                p->tangent_impulse = total;
-                sx_lever_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, t, p->rt_a, p->rt_b, lambda);
-            }
+    sx_r4 inv_h4 = sx_r4_set1(inv_h);
+    int s, i;
+    for (s = 0; s < world->span_count; ++s) {
+        const sx_colour_span *span = &world->spans[s];
+        int end = span->first + span->count;
+        if (span->wide) {
+            for (i = span->first; i < end; ++i)
+                sx_bundle_solve(world, &world->bundles[i], inv_h4, last);
+            continue;
         }
-        /* the rigid passes solve a face's two points together */
-        if (c->block_solve && sft == NULL &&
-            (!relax || (c->points[0].gap <= SX_R(0.0) && c->points[1].gap <= SX_R(0.0)))) {
-            sx_constraint_point *p1 = &c->points[0], *p2 = &c->points[1];
-            sx_real x1, x2;
-            sx_real vn1 = sx_lever_speed(va, wa, vb, wb, n, p1->rn_a, p1->rn_b);
-            sx_real vn2 = sx_lever_speed(va, wa, vb, wb, n, p2->rn_a, p2->rn_b);
-            /* an overflowed solution (not <= the bound: inf or NaN) is
-             * left to the point-by-point solve below, which bounds it */
-            if (sx_block_solve(c, p1, p2, vn1, vn2, inv_h, &x1, &x2) && x1 <= SX_IMPULSE_LIMIT &&
-                x2 <= SX_IMPULSE_LIMIT) {
-                sx_real d1 = x1 - p1->normal_impulse, d2 = x2 - p2->normal_impulse;
-                sx_lever_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, n, p1->rn_a, p1->rn_b, d1);
-                sx_lever_apply(&va, &wa, &vb, &wb, ma, ia, mb, ib, n, p2->rn_a, p2->rn_b, d2);
-                p1->normal_impulse = x1;
-                p2->normal_impulse = x2;
-                solved = true;
-            }
-        }
-        if (!solved) {
-            for (k = 0; k < c->count; ++k) {
-                sx_solve_normal_point(&c->points[k], n, &va, &wa, &vb, &wb, ma, ia, mb, ib, inv_h,
-                                      sft, max_push, relax);
-            }
-        }
-        a->v = va;
-        a->w = wa;
-        b->v = vb;
-        b->w = wb;
-        if (last) {
-            sx_contact_point *out = world->contacts[c->contact].points;
-            for (k = 0; k < c->count; ++k) {
-                out[k].normal_impulse = c->points[k].normal_impulse;
-                out[k].tangent_impulse = c->points[k].tangent_impulse;
-            }
+        for (i = span->first; i < end; ++i) {
+            sx_constraint *c = &world->constraints[i];
+            const sx_softness *sft = NULL;
+            if (soft) sft = c->both_dynamic ? &moving : &fixed;
+            sx_constraint_solve(world, c, bodies, inv_h, sft, max_push, relax, last);
         }
     }
 }
 
 /* Grows the solver's arrays for the current contacts and bodies. */
 static bool sx_solver_reserve(sx_world *world) {
-    int contacts = world->contact_count, bodies = 2 * contacts + 1;
+    /* the bodies, the static entry 0 and the wide passes' sink */
+    int contacts = world->contact_count, bodies = 2 * contacts + 2;
     void *p;
     bool ok;
     p = world->solver_bodies;
@@ -652,6 +962,10 @@ static bool sx_solver_reserve(sx_world *world) {
     ok = sx_grow_array(&p, &world->solver_slot_capacity, bodies, sizeof(int));
     world->solver_slots = (int *)p;
     if (!ok) return false;
+    p = world->body_colour;
+    ok = sx_grow_array(&p, &world->body_colour_capacity, bodies, sizeof(int));
+    world->body_colour = (int *)p;
+    if (!ok) return false;
     /* zeroed: a body slot maps to no solver body until a gather names it */
     p = world->solver_index;
     ok = sx_grow_zeroed(&p, &world->solver_index_capacity, world->body_slots, sizeof(int));
@@ -660,6 +974,19 @@ static bool sx_solver_reserve(sx_world *world) {
     p = world->constraints;
     ok = sx_grow_array(&p, &world->constraint_capacity, contacts, sizeof(sx_constraint));
     world->constraints = (sx_constraint *)p;
+    if (!ok) return false;
+    /* at most one colour per constraint (and one span without colours) */
+    p = world->spans;
+    ok = sx_grow_array(&p, &world->span_capacity, contacts + 1, sizeof(sx_colour_span));
+    world->spans = (sx_colour_span *)p;
+    if (!ok) return false;
+    p = world->colour_cursor;
+    ok = sx_grow_array(&p, &world->colour_cursor_capacity, contacts + 1, sizeof(int));
+    world->colour_cursor = (int *)p;
+    if (!ok) return false;
+    p = world->colour_items;
+    ok = sx_grow_array(&p, &world->colour_item_capacity, contacts, sizeof(sx_colour_item));
+    world->colour_items = (sx_colour_item *)p;
     return ok;
 }
 
@@ -674,6 +1001,8 @@ static int sx_solver_body_of(sx_world *world, int slot) {
     world->solver_slots[j] = slot;
     world->solver_bodies[j].v = sim->v;
     world->solver_bodies[j].w = sim->w;
+    world->solver_bodies[j].pad = SX_R(0.0);
+    world->body_colour[j] = -1;
     return j;
 }
 
@@ -700,66 +1029,363 @@ static void sx_warm_start(sx_world *world, const sx_constraint *c) {
     b->w = wb;
 }
 
-/* Copies the active contacts and their bodies' velocities into the solver's
- * arrays; false when they could not grow (nothing copied). `warm`: the
- * start of a solve, in the same walk over the contacts: each point's gap
- * from the current positions, the impact impulses zeroed, and the warm
- * start on the solver bodies only (the bodies keep their own velocities
- * for the impact pass). */
-static bool sx_solver_gather(sx_world *world, bool warm) {
-    int i, k;
-    if (!sx_solver_reserve(world)) return false;
-    if (warm) sx_groups_build(world);
-    world->solver_bodies[0].v = sx_v2_zero();
-    world->solver_bodies[0].w = SX_R(0.0);
-    world->solver_body_count = 1;
-    world->constraint_count = 0;
-    for (i = 0; i < world->contact_count; ++i) {
-        sx_contact *ct = &world->contacts[i];
-        const sx_body_sim *a = &world->sims[ct->body_a], *b = &world->sims[ct->body_b];
-        sx_constraint *c;
-        if (!sx_contact_is_active(world, ct)) continue;
-        if (warm) sx_update_gaps(world, ct);
-        c = &world->constraints[world->constraint_count++];
-        c->body_a = sx_solver_body_of(world, ct->body_a);
-        c->body_b = sx_solver_body_of(world, ct->body_b);
-        c->contact = i;
-        c->count = ct->count;
-        c->normal = ct->normal;
-        c->friction = ct->friction;
-        c->inv_mass_a = a->inv_mass;
-        c->inv_inertia_a = a->inv_inertia;
-        c->inv_mass_b = b->inv_mass;
-        c->inv_inertia_b = b->inv_inertia;
+/* Fills constraint c from contact i (solver bodies a and b). `warm`: the
+ * start of a solve: the impact impulses zeroed, and without room for the
+ * energy guard the accumulated impulses too. */
+static void sx_constraint_fill(sx_world *world, int i, int body_a, int body_b, sx_constraint *c,
+                               bool warm) {
+    sx_contact *ct = &world->contacts[i];
+    const sx_body_sim *a = &world->sims[ct->body_a], *b = &world->sims[ct->body_b];
+    int k;
+    c->body_a = body_a;
+    c->body_b = body_b;
+    c->contact = i;
+    c->count = ct->count;
+    c->normal = ct->normal;
+    c->friction = ct->friction;
+    c->inv_mass_a = a->inv_mass;
+    c->inv_inertia_a = a->inv_inertia;
+    c->inv_mass_b = b->inv_mass;
+    c->inv_inertia_b = b->inv_inertia;
+    for (k = 0; k < ct->count; ++k) {
+        const sx_contact_point *src = &ct->points[k];
+        sx_constraint_point *p = &c->points[k];
+        p->rn_a = sx_cross(src->anchor_a, ct->normal);
+        p->rn_b = sx_cross(src->anchor_b, ct->normal);
+        p->rt_a = sx_cross(src->anchor_a, sx_cross_vs(ct->normal, SX_R(1.0)));
+        p->rt_b = sx_cross(src->anchor_b, sx_cross_vs(ct->normal, SX_R(1.0)));
+        p->gap = src->gap;
+        p->normal_impulse = src->normal_impulse;
+        p->tangent_impulse = src->tangent_impulse;
+        p->normal_mass = src->normal_mass;
+        p->tangent_mass = src->tangent_mass;
+    }
+    c->block = ct->block;
+    c->block_solve = ct->block_solve;
+    c->both_dynamic = a->dynamic && b->dynamic;
+    if (warm) {
         for (k = 0; k < ct->count; ++k) {
-            const sx_contact_point *src = &ct->points[k];
-            sx_constraint_point *p = &c->points[k];
-            p->rn_a = sx_cross(src->anchor_a, ct->normal);
-            p->rn_b = sx_cross(src->anchor_b, ct->normal);
-            p->rt_a = sx_cross(src->anchor_a, sx_cross_vs(ct->normal, SX_R(1.0)));
-            p->rt_b = sx_cross(src->anchor_b, sx_cross_vs(ct->normal, SX_R(1.0)));
-            p->gap = src->gap;
-            p->normal_impulse = src->normal_impulse;
-            p->tangent_impulse = src->tangent_impulse;
-            p->normal_mass = src->normal_mass;
-            p->tangent_mass = src->tangent_mass;
-        }
-        c->block = ct->block;
-        c->block_solve = ct->block_solve;
-        c->both_dynamic = a->dynamic && b->dynamic;
-        if (warm) {
-            for (k = 0; k < ct->count; ++k) {
-                ct->points[k].impact_impulse = SX_R(0.0);
-                if (!world->groups_ready) {
-                    /* no room for the energy guard: start cold instead, from
-                     * which the passes only take energy out (friction aside) */
-                    c->points[k].normal_impulse = SX_R(0.0);
-                    c->points[k].tangent_impulse = SX_R(0.0);
-                }
+            ct->points[k].impact_impulse = SX_R(0.0);
+            if (!world->groups_ready) {
+                /* no room for the energy guard: start cold instead, from
+                 * which the passes only take energy out (friction aside) */
+                c->points[k].normal_impulse = SX_R(0.0);
+                c->points[k].tangent_impulse = SX_R(0.0);
             }
-            sx_warm_start(world, c);
         }
     }
+}
+
+/* Lane l of bundle u: constraint c, or padding (c NULL: bodies `sink`). */
+static void sx_bundle_fill(sx_bundle *u, int l, const sx_constraint *c, int sink) {
+    int k;
+    if (c == NULL) {
+        u->body_a[l] = sink;
+        u->body_b[l] = sink;
+        u->contact[l] = -1;
+        u->nx[l] = u->ny[l] = SX_R(0.0);
+        u->friction[l] = SX_R(0.0);
+        u->inv_mass_a[l] = u->inv_inertia_a[l] = u->inv_mass_b[l] = u->inv_inertia_b[l] = SX_R(0.0);
+        u->two[l] = u->block_solve[l] = SX_R(0.0);
+        for (k = 0; k < 2; ++k) {
+            u->rn_a[k][l] = u->rn_b[k][l] = u->rt_a[k][l] = u->rt_b[k][l] = SX_R(0.0);
+            u->gap[k][l] = u->normal_impulse[k][l] = u->tangent_impulse[k][l] = SX_R(0.0);
+            u->normal_mass[k][l] = u->tangent_mass[k][l] = SX_R(0.0);
+        }
+        u->row_rt_a[l] = u->row_rt_b[l] = u->row_mass[l] = SX_R(0.0);
+        u->k11[l] = u->k22[l] = SX_R(1.0);
+        u->k12[l] = u->inv11[l] = u->inv12[l] = u->inv22[l] = SX_R(0.0);
+        return;
+    }
+    u->body_a[l] = c->body_a;
+    u->body_b[l] = c->body_b;
+    u->contact[l] = c->contact;
+    u->nx[l] = c->normal.x;
+    u->ny[l] = c->normal.y;
+    u->friction[l] = c->friction;
+    u->inv_mass_a[l] = c->inv_mass_a;
+    u->inv_inertia_a[l] = c->inv_inertia_a;
+    u->inv_mass_b[l] = c->inv_mass_b;
+    u->inv_inertia_b[l] = c->inv_inertia_b;
+    u->two[l] = c->count == 2 ? SX_R(1.0) : SX_R(0.0);
+    u->block_solve[l] = c->count == 2 && c->block_solve ? SX_R(1.0) : SX_R(0.0);
+    for (k = 0; k < 2; ++k) {
+        /* a one-point contact's second point: zeros, never chosen */
+        static const sx_constraint_point none;
+        const sx_constraint_point *p = k < c->count ? &c->points[k] : &none;
+        u->rn_a[k][l] = p->rn_a;
+        u->rn_b[k][l] = p->rn_b;
+        u->rt_a[k][l] = p->rt_a;
+        u->rt_b[k][l] = p->rt_b;
+        u->gap[k][l] = p->gap;
+        u->normal_impulse[k][l] = p->normal_impulse;
+        u->tangent_impulse[k][l] = p->tangent_impulse;
+        u->normal_mass[k][l] = p->normal_mass;
+        u->tangent_mass[k][l] = p->tangent_mass;
+    }
+    if (c->count == 2) {
+        const sx_constraint_point *p1 = &c->points[0], *p2 = &c->points[1];
+        u->row_rt_a[l] = SX_R(0.5) * (p1->rt_a + p2->rt_a);
+        u->row_rt_b[l] = SX_R(0.5) * (p1->rt_b + p2->rt_b);
+        u->row_mass[l] = SX_R(0.5) * (p1->tangent_mass + p2->tangent_mass);
+    } else {
+        u->row_rt_a[l] = u->row_rt_b[l] = u->row_mass[l] = SX_R(0.0);
+    }
+    if (c->count == 2 && c->block_solve) {
+        u->k11[l] = c->block.k11;
+        u->k12[l] = c->block.k12;
+        u->k22[l] = c->block.k22;
+        u->inv11[l] = c->block.inv11;
+        u->inv12[l] = c->block.inv12;
+        u->inv22[l] = c->block.inv22;
+    } else {
+        u->k11[l] = u->k22[l] = SX_R(1.0);
+        u->k12[l] = u->inv11[l] = u->inv12[l] = u->inv22[l] = SX_R(0.0);
+    }
+}
+
+/* The warm start of every constraint, colour by colour (each body's
+ * impulses in contact order, as the passes take them); `gaps`: first the
+ * gaps again from the contacts (after an impact pass shifted them). */
+static void sx_solver_warm_start(sx_world *world, bool gaps) {
+    int s, i, k, l;
+    for (s = 0; s < world->span_count; ++s) {
+        const sx_colour_span *span = &world->spans[s];
+        int end = span->first + span->count;
+        for (i = span->first; i < end; ++i) {
+            if (span->wide) {
+                sx_bundle *u = &world->bundles[i];
+                for (l = 0; l < 4 && gaps; ++l) {
+                    const sx_contact *ct;
+                    if (u->contact[l] < 0) continue;
+                    ct = &world->contacts[u->contact[l]];
+                    for (k = 0; k < ct->count; ++k)
+                        u->gap[k][l] = ct->points[k].gap;
+                }
+                sx_bundle_warm_start(world->solver_bodies, u);
+            } else {
+                sx_constraint *c = &world->constraints[i];
+                for (k = 0; k < c->count && gaps; ++k)
+                    c->points[k].gap = world->contacts[c->contact].points[k].gap;
+                sx_warm_start(world, c);
+            }
+        }
+    }
+}
+
+/* The gather's refresh of a kept fill's accumulated impulses from the
+ * contacts (as sx_constraint_fill reads them), when the energy guard
+ * scaled some or the solve starts cold; the gaps the gather's walk
+ * refreshed. */
+static void sx_solver_refresh(sx_world *world) {
+    int i, k;
+    for (i = 0; i < world->fill_count; ++i) {
+        const sx_colour_item *it = &world->colour_items[i];
+        const sx_contact *ct = &world->contacts[it->contact];
+        for (k = 0; k < ct->count; ++k) {
+            const sx_contact_point *src = &ct->points[k];
+            sx_real ni = src->normal_impulse, ti = src->tangent_impulse;
+            if (!world->groups_ready) ni = ti = SX_R(0.0);
+            if (it->wide) {
+                sx_bundle *u = &world->bundles[it->at >> 2];
+                int l = it->at & 3;
+                u->normal_impulse[k][l] = ni;
+                u->tangent_impulse[k][l] = ti;
+            } else {
+                sx_constraint_point *p = &world->constraints[it->at].points[k];
+                p->normal_impulse = ni;
+                p->tangent_impulse = ti;
+            }
+        }
+    }
+}
+
+/* Ends a gather that could not finish: no solver body stays named. */
+static void sx_solver_unname(sx_world *world) {
+    int i;
+    for (i = 1; i < world->solver_body_count; ++i)
+        world->solver_index[world->solver_slots[i]] = 0;
+    world->solver_body_count = 0;
+    world->constraint_count = 0;
+    world->span_count = 0;
+    world->fill_valid = false;
+}
+
+/* Copies the active contacts and their bodies' velocities into the solver's
+ * arrays; false when they could not grow (nothing copied). `warm`: the
+ * start of a solve: each point's gap from the current positions, the
+ * impact impulses zeroed, the constraints coloured for the wide passes
+ * (rigid contacts), and the warm start on the solver bodies only (the
+ * bodies keep their own velocities for the impact pass). */
+static bool sx_solver_gather(sx_world *world, bool warm) {
+    sx_colour_item *items;
+    int i, k, n = 0, colours = 0, sink, min_colour;
+    bool same;
+    void *p;
+    if (!sx_solver_reserve(world)) return false;
+    world->solver_bodies[0].v = sx_v2_zero();
+    world->solver_bodies[0].w = SX_R(0.0);
+    world->solver_bodies[0].pad = SX_R(0.0);
+    world->solver_body_count = 1;
+    if (!warm || world->def.contact_hertz > SX_R(0.0)) {
+        if (warm) sx_groups_build(world);
+        world->constraint_count = 0;
+        /* one span in contact order, solved one at a time */
+        for (i = 0; i < world->contact_count; ++i) {
+            sx_contact *ct = &world->contacts[i];
+            sx_constraint *c;
+            int a, b;
+            if (!sx_contact_is_active(world, ct)) continue;
+            if (warm) sx_update_gaps(world, ct);
+            c = &world->constraints[world->constraint_count++];
+            a = sx_solver_body_of(world, ct->body_a);
+            b = sx_solver_body_of(world, ct->body_b);
+            sx_constraint_fill(world, i, a, b, c, warm);
+            if (warm) sx_warm_start(world, c);
+        }
+        world->spans[0].first = 0;
+        world->spans[0].count = world->constraint_count;
+        world->spans[0].wide = false;
+        world->span_count = 1;
+        world->fill_valid = false;
+        world->solver_gathered = true;
+        return true;
+    }
+
+    /* the colours, in contact order (the wide passes above say why); the
+     * fill of the last gather is kept while every item is unchanged */
+    items = world->colour_items;
+    same = world->fill_valid && world->fill_serial == world->contact_serial;
+    for (i = 0; i < world->contact_count; ++i) {
+        sx_contact *ct = &world->contacts[i];
+        const sx_body_sim *sa = &world->sims[ct->body_a], *sb = &world->sims[ct->body_b];
+        sx_colour_item *it = &items[n];
+        int a, b;
+        if (!sx_contact_is_active(world, ct)) continue;
+        sx_update_gaps(world, ct);
+        a = sx_solver_body_of(world, ct->body_a);
+        b = sx_solver_body_of(world, ct->body_b);
+        ++n;
+        if (same && n <= world->fill_count && it->contact == i && it->key == ct->key &&
+            it->part_a == ct->part_a && it->part_b == ct->part_b && it->count == ct->count &&
+            it->body_a == a && it->body_b == b && it->inv_mass_a == sa->inv_mass &&
+            it->inv_inertia_a == sa->inv_inertia && it->inv_mass_b == sb->inv_mass &&
+            it->inv_inertia_b == sb->inv_inertia && it->dynamic_a == sa->dynamic &&
+            it->dynamic_b == sb->dynamic) {
+            /* the new gaps into the kept fill, while the contact is at hand */
+            for (k = 0; k < ct->count; ++k) {
+                ct->points[k].impact_impulse = SX_R(0.0);
+                if (it->wide)
+                    world->bundles[it->at >> 2].gap[k][it->at & 3] = ct->points[k].gap;
+                else
+                    world->constraints[it->at].points[k].gap = ct->points[k].gap;
+            }
+            continue;
+        }
+        same = false;
+        it->key = ct->key;
+        it->contact = i;
+        it->part_a = ct->part_a;
+        it->part_b = ct->part_b;
+        it->count = ct->count;
+        it->body_a = a;
+        it->body_b = b;
+        it->inv_mass_a = sa->inv_mass;
+        it->inv_inertia_a = sa->inv_inertia;
+        it->inv_mass_b = sb->inv_mass;
+        it->inv_inertia_b = sb->inv_inertia;
+        it->dynamic_a = sa->dynamic;
+        it->dynamic_b = sb->dynamic;
+    }
+    min_colour = world->wide_min_colour > 0 ? world->wide_min_colour : SX_WIDE_MIN_COLOUR;
+    if (same && n == world->fill_count) {
+        /* the energy guard's groups follow from the items too: kept, unless
+         * the last build found no room */
+        if (!world->groups_ready) sx_groups_build(world);
+        if (!world->fill_fresh || !world->groups_ready) sx_solver_refresh(world);
+        sx_solver_warm_start(world, false);
+        world->solver_gathered = true;
+        return true;
+    }
+    world->fill_valid = false;
+    world->constraint_count = 0;
+    world->bundle_count = 0;
+    sx_groups_build(world);
+    for (i = 0; i < n; ++i) {
+        sx_colour_item *it = &items[i];
+        int ca = it->body_a != 0 ? world->body_colour[it->body_a] : -1;
+        int cb = it->body_b != 0 ? world->body_colour[it->body_b] : -1;
+        it->colour = (ca > cb ? ca : cb) + 1;
+        if (it->body_a != 0) world->body_colour[it->body_a] = it->colour;
+        if (it->body_b != 0) world->body_colour[it->body_b] = it->colour;
+        if (it->colour >= colours) colours = it->colour + 1;
+    }
+    for (i = 0; i < colours; ++i)
+        world->colour_cursor[i] = 0;
+    for (i = 0; i < n; ++i)
+        world->colour_cursor[items[i].colour]++;
+    for (i = 0; i < colours; ++i) {
+        sx_colour_span *span = &world->spans[i];
+        int count = world->colour_cursor[i];
+        span->wide = count >= min_colour;
+        if (span->wide) {
+            span->first = world->bundle_count;
+            span->count = (count + 3) / 4;
+            world->bundle_count += span->count;
+            world->colour_cursor[i] = 4 * span->first;
+        } else {
+            span->first = world->constraint_count;
+            span->count = count;
+            world->constraint_count += count;
+            world->colour_cursor[i] = span->first;
+        }
+    }
+    world->span_count = colours;
+    p = world->bundles;
+    if (!sx_grow_array(&p, &world->bundle_capacity, world->bundle_count, sizeof(sx_bundle))) {
+        sx_solver_unname(world);
+        return false;
+    }
+    world->bundles = (sx_bundle *)p;
+    sink = world->solver_body_count;
+    world->solver_bodies[sink].v = sx_v2_zero();
+    world->solver_bodies[sink].w = SX_R(0.0);
+    world->solver_bodies[sink].pad = SX_R(0.0);
+    for (i = 0; i < n; ++i) {
+        sx_colour_item *it = &items[i];
+        it->at = world->colour_cursor[it->colour]++;
+        it->wide = world->spans[it->colour].wide;
+        if (it->wide) {
+            sx_constraint c;
+            sx_constraint_fill(world, it->contact, it->body_a, it->body_b, &c, true);
+            sx_bundle_fill(&world->bundles[it->at >> 2], it->at & 3, &c, sink);
+        } else {
+            sx_constraint_fill(world, it->contact, it->body_a, it->body_b,
+                               &world->constraints[it->at], true);
+        }
+    }
+    for (i = 0; i < colours; ++i) {
+        const sx_colour_span *span = &world->spans[i];
+        int at;
+        if (!span->wide) continue;
+        for (at = world->colour_cursor[i]; at < 4 * (span->first + span->count); ++at)
+            sx_bundle_fill(&world->bundles[at >> 2], at & 3, NULL, sink);
+    }
+    /* colours in a row of the same kind are one span for the passes (their
+     * constraints or bundles follow each other; a stack is one constraint
+     * per colour) */
+    for (i = 0, k = 0; i < colours; ++i) {
+        const sx_colour_span *span = &world->spans[i];
+        if (k > 0 && span->wide == world->spans[k - 1].wide)
+            world->spans[k - 1].count += span->count;
+        else
+            world->spans[k++] = *span;
+    }
+    world->span_count = k;
+    world->fill_serial = world->contact_serial;
+    world->fill_count = n;
+    world->fill_valid = true;
+    sx_solver_warm_start(world, false);
     world->solver_gathered = true;
     return true;
 }
@@ -788,7 +1414,6 @@ static void sx_solver_scatter(sx_world *world) {
     for (i = 1; i < world->solver_body_count; ++i)
         world->solver_index[world->solver_slots[i]] = 0;
     world->solver_body_count = 0;
-    world->constraint_count = 0;
     world->solver_gathered = false;
 }
 
@@ -802,6 +1427,8 @@ static bool sx_solver_run(sx_world *world, sx_real h, int passes, bool relax) {
     }
     for (it = 0; it < passes; ++it)
         sx_constraints_pass(world, h, relax, it == passes - 1);
+    /* the last pass handed every impulse back: a kept fill holds them */
+    if (passes > 0) world->fill_fresh = true;
     sx_solver_scatter(world);
     return true;
 }
@@ -866,7 +1493,7 @@ static void sx_contacts_push_out(sx_world *world, sx_real h, int passes) {
 }
 
 bool sx_contacts_solve(sx_world *world, sx_real h, int passes) {
-    int i, k;
+    int i;
     if (!world->solver_gathered) return false;
     if (world->impact_shifts_pending) {
         /* the impact pass changed velocities and gaps: the warm start of the
@@ -876,12 +1503,7 @@ bool sx_contacts_solve(sx_world *world, sx_real h, int passes) {
             world->solver_bodies[i].v = sim->v;
             world->solver_bodies[i].w = sim->w;
         }
-        for (i = 0; i < world->constraint_count; ++i) {
-            sx_constraint *c = &world->constraints[i];
-            for (k = 0; k < c->count; ++k)
-                c->points[k].gap = world->contacts[c->contact].points[k].gap;
-            sx_warm_start(world, c);
-        }
+        sx_solver_warm_start(world, true);
     }
     /* the energy guard measures from the velocities before the warm start */
     for (i = 0; i < world->group_member_count && world->groups_ready; ++i) {
@@ -1326,6 +1948,11 @@ void sx_contacts_free(sx_world *world) {
     sx_free(world->solver_slots, (size_t)world->solver_slot_capacity * sizeof(int));
     sx_free(world->solver_index, (size_t)world->solver_index_capacity * sizeof(int));
     sx_free(world->constraints, (size_t)world->constraint_capacity * sizeof(sx_constraint));
+    sx_free(world->spans, (size_t)world->span_capacity * sizeof(sx_colour_span));
+    sx_free(world->bundles, (size_t)world->bundle_capacity * sizeof(sx_bundle));
+    sx_free(world->colour_items, (size_t)world->colour_item_capacity * sizeof(sx_colour_item));
+    sx_free(world->colour_cursor, (size_t)world->colour_cursor_capacity * sizeof(int));
+    sx_free(world->body_colour, (size_t)world->body_colour_capacity * sizeof(int));
     sx_free(world->group_bodies, (size_t)world->group_body_capacity * sizeof(sx_group_body));
     sx_free(world->group_members, (size_t)world->group_member_capacity * sizeof(int));
     sx_free(world->impact_bodies, (size_t)world->impact_body_capacity * sizeof(sx_impact_body));

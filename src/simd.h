@@ -344,6 +344,20 @@ static SX_ALWAYS_INLINE void sx_i4_store(int32_t *p, sx_i4 a) {
     _mm_storeu_si128((__m128i *)(void *)p, a);
 }
 
+/** Every lane true (all bits set). */
+static SX_ALWAYS_INLINE sx_m4 sx_m4_true(void) { return _mm_castsi128_ps(_mm_set1_epi32(-1)); }
+/** Rows a, b, c, d of a 4x4 matrix turned into its columns: a becomes
+ *  [a0, b0, c0, d0], b [a1, b1, c1, d1], and so on (four records of four
+ *  reals into four lanes of each field, and back). */
+static SX_ALWAYS_INLINE void sx_r4_transpose(sx_r4 *a, sx_r4 *b, sx_r4 *c, sx_r4 *d) {
+    __m128 t0 = _mm_unpacklo_ps(*a, *b), t1 = _mm_unpacklo_ps(*c, *d);
+    __m128 t2 = _mm_unpackhi_ps(*a, *b), t3 = _mm_unpackhi_ps(*c, *d);
+    *a = _mm_movelh_ps(t0, t1);
+    *b = _mm_movehl_ps(t1, t0);
+    *c = _mm_movelh_ps(t2, t3);
+    *d = _mm_movehl_ps(t3, t2);
+}
+
 #elif SX_SIMD_F64
 
 /** Four 32-bit ints. */
@@ -394,6 +408,20 @@ static SX_ALWAYS_INLINE sx_i4 sx_i4_select(sx_m4 m, sx_i4 a, sx_i4 b) {
 }
 static SX_ALWAYS_INLINE void sx_i4_store(int32_t *p, sx_i4 a) {
     _mm_storeu_si128((__m128i *)(void *)p, a);
+}
+
+/** Every lane true (all bits set). */
+static SX_ALWAYS_INLINE sx_m4 sx_m4_true(void) {
+    __m128d t = _mm_castsi128_pd(_mm_set1_epi32(-1));
+    return sx_r4_halves(t, t);
+}
+/** sx_r4_transpose of the float build, on pairs of doubles. */
+static SX_ALWAYS_INLINE void sx_r4_transpose(sx_r4 *a, sx_r4 *b, sx_r4 *c, sx_r4 *d) {
+    sx_r4 ra = *a, rb = *b, rc = *c, rd = *d;
+    *a = sx_r4_halves(_mm_unpacklo_pd(ra.lo, rb.lo), _mm_unpacklo_pd(rc.lo, rd.lo));
+    *b = sx_r4_halves(_mm_unpackhi_pd(ra.lo, rb.lo), _mm_unpackhi_pd(rc.lo, rd.lo));
+    *c = sx_r4_halves(_mm_unpacklo_pd(ra.hi, rb.hi), _mm_unpacklo_pd(rc.hi, rd.hi));
+    *d = sx_r4_halves(_mm_unpackhi_pd(ra.hi, rb.hi), _mm_unpackhi_pd(rc.hi, rd.hi));
 }
 
 #else /* the portable lanes */
@@ -462,6 +490,19 @@ static SX_ALWAYS_INLINE void sx_i4_store(int32_t *p, sx_i4 a) {
     p[1] = a.i[1];
     p[2] = a.i[2];
     p[3] = a.i[3];
+}
+
+static SX_ALWAYS_INLINE sx_m4 sx_m4_true(void) {
+    sx_m4 r;
+    r.m[0] = r.m[1] = r.m[2] = r.m[3] = -1;
+    return r;
+}
+static SX_ALWAYS_INLINE void sx_r4_transpose(sx_r4 *a, sx_r4 *b, sx_r4 *c, sx_r4 *d) {
+    sx_r4 ra = *a, rb = *b, rc = *c, rd = *d;
+    *a = sx_r4_set(ra.v[0], rb.v[0], rc.v[0], rd.v[0]);
+    *b = sx_r4_set(ra.v[1], rb.v[1], rc.v[1], rd.v[1]);
+    *c = sx_r4_set(ra.v[2], rb.v[2], rc.v[2], rd.v[2]);
+    *d = sx_r4_set(ra.v[3], rb.v[3], rc.v[3], rd.v[3]);
 }
 
 #endif /* SX_SIMD */

@@ -1035,9 +1035,11 @@ sx_status sx_world_collide(sx_world *world) {
     sx_status s;
     if (world == NULL) return SX_ERR_INVALID_ARG;
     if (sx_world_locked(world)) return SX_ERR_LOCKED;
-    /* the lists move from here on: the per-body chains go */
+    /* the lists move from here on: the per-body chains go, and the
+     * solver's fill with them */
     sx_world_purge_contacts(world);
     world->by_body_valid = false;
+    world->contact_serial++;
 
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;

@@ -73,6 +73,8 @@ typedef struct sx_contact {
 typedef struct sx_solver_body {
     sx_vec2 v;
     sx_real w;
+    /* to four reals: the wide passes move a body as one row of four lanes */
+    sx_real pad;
 } sx_solver_body;
 
 /* A contact point as the velocity passes see it: the anchors enter only as
@@ -100,6 +102,49 @@ typedef struct sx_constraint {
     /* both bodies dynamic: soft contacts take the softer stiffness */
     bool both_dynamic;
 } sx_constraint;
+
+/* Four constraints of one colour side by side, lane i holding constraint
+ * i (contact_solver.c's wide passes): the fields of sx_constraint, one
+ * array of four per field. Lanes past a colour's last constraint are
+ * padding: no contact (-1), zero masses, bodies the sink entry. */
+typedef struct sx_bundle {
+    int body_a[4], body_b[4];
+    int contact[4];
+    sx_real nx[4], ny[4]; /* the normal (the tangent is (ny, -nx)) */
+    sx_real friction[4];
+    sx_real inv_mass_a[4], inv_inertia_a[4], inv_mass_b[4], inv_inertia_b[4];
+    /* 1 or 0: a two-point contact; its block solve */
+    sx_real two[4], block_solve[4];
+    sx_real rn_a[2][4], rn_b[2][4], rt_a[2][4], rt_b[2][4];
+    sx_real gap[2][4];
+    sx_real normal_impulse[2][4], tangent_impulse[2][4];
+    sx_real normal_mass[2][4], tangent_mass[2][4];
+    /* a two-point contact's friction row: the mean levers and mass */
+    sx_real row_rt_a[4], row_rt_b[4], row_mass[4];
+    sx_real k11[4], k12[4], k22[4], inv11[4], inv12[4], inv22[4];
+} sx_bundle;
+
+/* One colour of the solve, in the order the passes take them: `count`
+ * constraints from world->constraints[first] (solved one at a time) or
+ * `count` bundles from world->bundles[first] (wide). */
+typedef struct sx_colour_span {
+    int first, count;
+    bool wide;
+} sx_colour_span;
+
+/* A constraint as the gather's colouring sees it, and where its fill
+ * went (`at`: its constraint, or 4 x bundle + lane), with what the fill
+ * read that may change between two collides: the contact's identity and
+ * point count, its solver bodies, their inverse masses and types (what
+ * the energy guard's groups follow from too). */
+typedef struct sx_colour_item {
+    uint64_t key;
+    int contact, part_a, part_b, count;
+    int body_a, body_b, colour, at;
+    bool wide; /* in a bundle (else a one-at-a-time constraint) */
+    bool dynamic_a, dynamic_b;
+    sx_real inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
+} sx_colour_item;
 
 /* Per body, for the impact pass: the position and angle correction that
  * puts the body where its piecewise-linear motion through this sub-step's

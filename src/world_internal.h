@@ -147,6 +147,31 @@ struct sx_world {
     int solver_body_count, constraint_count;
     int solver_body_capacity, solver_slot_capacity, solver_index_capacity;
     int constraint_capacity;
+    /* the colours of the gather (contact_solver.c): spans in solve order,
+     * the wide colours' bundles, and the colouring's scratch (per active
+     * contact, per colour, per solver body) */
+    sx_colour_span *spans;
+    sx_bundle *bundles;
+    sx_colour_item *colour_items;
+    int *colour_cursor;
+    int *body_colour;
+    int span_count, bundle_count;
+    int span_capacity, bundle_capacity, colour_item_capacity, colour_cursor_capacity;
+    int body_colour_capacity;
+    /* The colours and the wide passes' lanes are filled once per collide
+     * and kept for the sub-steps after it (each then refreshes gaps and
+     * impulses only), while every item is still what it was:
+     * fill_serial is contact_serial at the fill (bumped by every collide),
+     * fill_count the number of items, fill_valid false when another
+     * gather wrote over the arrays; fill_fresh: its accumulated impulses
+     * are the contacts' (the last pass handed them back, and the energy
+     * guard scaled none since). */
+    unsigned contact_serial, fill_serial;
+    /* colours of fewer constraints than this are solved one at a time (0:
+     * the solver's own threshold; tests set it to compare the paths) */
+    int wide_min_colour;
+    int fill_count;
+    bool fill_valid, fill_fresh;
     /* the arrays hold the current solve's gather (from the warm start to
      * the scatter after the passes) */
     bool solver_gathered;

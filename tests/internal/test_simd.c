@@ -172,6 +172,44 @@ static void integer_lanes_follow_a_mask(void **state) {
     assert_int_equal(out[3], -3);
 }
 
+/* The transpose the wide solver moves bodies with: four records of four
+ * reals in, the lanes of each field out, and back again bit for bit (a
+ * NaN's payload and a zero's sign included). The all-true mask selects
+ * every lane. */
+static void transpose_and_the_true_mask(void **state) {
+    sx_real in[4][4], out[4];
+    sx_r4 r[4];
+    int i, j;
+    (void)state;
+    for (i = 0; i < 4; ++i)
+        for (j = 0; j < 4; ++j)
+            in[i][j] = (sx_real)(10 * i + j) + SX_R(0.5);
+    in[2][1] = SX_R(-0.0);
+    in[3][3] = (sx_real)NAN;
+    for (i = 0; i < 4; ++i)
+        r[i] = sx_r4_load(in[i]);
+    sx_r4_transpose(&r[0], &r[1], &r[2], &r[3]);
+    for (j = 0; j < 4; ++j) {
+        sx_r4_store(out, r[j]);
+        for (i = 0; i < 4; ++i) {
+            if (i == 3 && j == 3)
+                assert_true(isnan(out[i]));
+            else
+                assert_true(same_bits(out[i], in[i][j]));
+        }
+    }
+    sx_r4_transpose(&r[0], &r[1], &r[2], &r[3]);
+    for (i = 0; i < 4; ++i) {
+        sx_r4_store(out, r[i]);
+        for (j = 0; j < 4; ++j)
+            assert_true(memcmp(&out[j], &in[i][j], sizeof(sx_real)) == 0);
+    }
+    assert_int_equal(sx_m4_bits(sx_m4_true()), 15);
+    sx_r4_store(out, sx_r4_select(sx_m4_true(), r[1], r[0]));
+    assert_true(same_bits(out[2], in[1][2]));
+    assert_int_equal(sx_m4_bits(sx_m4_andnot(sx_m4_true(), sx_m4_true())), 0);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(lanes_load_store_and_arithmetic_are_exact),
@@ -180,6 +218,7 @@ int main(void) {
         cmocka_unit_test(lane_moves_follow_their_names),
         cmocka_unit_test(lane_reductions_and_finite_tests),
         cmocka_unit_test(integer_lanes_follow_a_mask),
+        cmocka_unit_test(transpose_and_the_true_mask),
     };
     return cmocka_run_group_tests_name("simd", tests, sx_test_group_setup, sx_test_group_teardown);
 }
