@@ -10,7 +10,9 @@
  * records each awake dynamic body's pose and foreseen end (sx_ccd_record,
  * filled in by the bounds pass of world.c, which reads the body anyway),
  * sx_world_continuous lists the bodies that strayed, turned or are bullets
- * (sx_ccd_list: a few lane operations per body skip the others), and of
+ * (sx_ccd_list: a few lane operations per body skip the others) and whose
+ * farthest point moved at least their gate, an eighth of their thinnest
+ * width (sx_under_gate: one that moves less cannot tunnel), and of
  * those only one that went farther than its recorded velocity allows,
  * strayed from the path it foresaw or turned, by more than half its
  * thinnest extent at its farthest point, or a fast bullet, is
@@ -117,11 +119,16 @@ static void sx_measure_extents(const sx_world *world, int slot, sx_real *max_ext
     *min_ext = sx_maxr(*min_ext, world->linear_slop);
 }
 
-/* sx_measure_extents, cached in the pose record until sx_ccd_forget. */
+/* sx_measure_extents, cached in the pose record until sx_ccd_forget (the
+ * body's colliders or mass changed), with the size gate (sx_under_gate). */
 static void sx_body_extents(sx_world *world, int slot, sx_real *max_ext, sx_real *min_ext) {
     sx_ccd_pose *p = &world->ccd_poses[slot];
     if (!p->ext_valid) {
         sx_measure_extents(world, slot, &p->max_ext, &p->min_ext);
+        /* a quarter of the sound bound (min_ext, half the width): a gated
+         * body ends at most that deep in a wall, an overlap its contact
+         * then solves like any other */
+        p->gate = SX_R(0.25) * p->min_ext;
         p->ext_valid = true;
     }
     *max_ext = p->max_ext;
@@ -318,6 +325,29 @@ static bool sx_strayed(const sx_world *world, int slot, const sx_body_sim *b, co
            (world->bullet_count > 0 && world->infos[slot].bullet);
 }
 
+/* The size gate: whether every point of body slot (b; its record r) moved
+ * over the step less than its gate, an eighth of its thinnest width. A
+ * convex body cannot pass a zero-thickness wall by moving less than half
+ * its width (its middle stays on its side, and the contact pushes it back
+ * out there), nor, by the widths of the Minkowski difference, another
+ * body: such a body is never swept. The farthest point moves at most
+ * |d| + |turn| max_ext, and under a quarter turn |turn| <= |s| / c (the
+ * tangent): c |d| + |s| max_ext < c gate, compared squared. */
+static bool sx_under_gate(sx_world *world, int slot, const sx_body_sim *b, const sx_ccd_rec *r) {
+    const sx_ccd_pose *p = &world->ccd_poses[slot];
+    sx_real dx = b->center.x - r->center.x, dy = b->center.y - r->center.y;
+    sx_real c = r->q.c * b->xf.q.c + r->q.s * b->xf.q.s;
+    sx_real s = r->q.c * b->xf.q.s - r->q.s * b->xf.q.c;
+    sx_real wdt = b->w * world->ccd_dt, room;
+    sx_real max_ext, min_ext;
+    if (!p->ext_valid) sx_body_extents(world, slot, &max_ext, &min_ext);
+    /* a turn of a quarter or more, or a velocity that could tell a turn of
+     * several half turns (sx_turn), goes on to the full test */
+    if (!(c > SX_R(0.0)) || !(wdt * wdt < SX_R(0.25) * SX_PI * SX_PI)) return false;
+    room = c * p->gate - sx_absr(s) * p->max_ext;
+    return room > SX_R(0.0) && c * c * (dx * dx + dy * dy) < room * room;
+}
+
 /* Lists in ccd_sweep the awake dynamic bodies collide recorded that
  * strayed, turned or are bullets (sx_strayed). It runs for every moving
  * body each step, so a first test, in four lanes, skips those that did
@@ -358,6 +388,7 @@ static sx_status sx_ccd_list(sx_world *world) {
             continue;
         }
         if (!b->dynamic || !b->awake || !sx_strayed(world, slot, b, r)) continue;
+        if (sx_under_gate(world, slot, b, r)) continue;
         if (!sx_push_int(&world->ccd_sweep, &world->ccd_sweep_count, &world->ccd_sweep_capacity,
                          slot)) {
             return SX_ERR_NO_MEMORY;

@@ -23,6 +23,7 @@ typedef struct sx_ccd_rec {
  * (ext_valid). */
 typedef struct sx_ccd_pose {
     sx_real max_ext, min_ext;
+    sx_real gate; /* the motion under which it is never swept (sx_under_gate) */
     bool ext_valid;
     bool swept; /* while the continuous stage runs: it is to be swept */
 } sx_ccd_pose;

@@ -477,6 +477,101 @@ static void knocked_body_stops_at_a_thin_wall(void **state) {
     }
 }
 
+/* The size gate: a 0.5 m ball at rest, 2.5 cm before a thin static wall
+ * (beyond the margin: its contacts of the step do not see the wall), is
+ * knocked on by a ball at 6 m/s. It moves a few cm in that step, far more
+ * than its collide-time velocity foresaw, but less than its gate (an
+ * eighth of its width), so it is not swept: with continuous collision on
+ * or off both balls follow the same path bit for bit, and the contact
+ * pushes the struck ball back out on its own side. */
+static void slow_knocked_body_is_not_swept(void **state) {
+    sx_world *w[2];
+    sx_body_id a[2], b[2];
+    sx_shape ball = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+    double most = 0.0;
+    int on, k;
+    (void)state;
+    for (on = 0; on < 2; ++on) {
+        w[on] = make_world(sx_v2_zero());
+        assert_int_equal(sx_world_enable_continuous(w[on], on != 0), SX_OK);
+        (void)add(w[on], SX_BODY_STATIC, sx_v2_zero(), 0.0, sx_box_shape(SX_R(0.025), SX_R(2.0)),
+                  sx_v2_zero(), 0.0, false);
+        b[on] = add(w[on], SX_BODY_DYNAMIC, sx_v2(SX_R(-0.55), SX_R(0.0)), 0.0, ball, sx_v2_zero(),
+                    0.0, false);
+        a[on] = add(w[on], SX_BODY_DYNAMIC, sx_v2(SX_R(-1.6), SX_R(0.0)), 0.0, ball,
+                    sx_v2(SX_R(6.0), SX_R(0.0)), 0.0, false);
+    }
+    for (k = 0; k < 30; ++k) {
+        sx_vec2 before = sx_body_get_position(w[1], b[1]);
+        for (on = 0; on < 2; ++on)
+            assert_int_equal(sx_world_step(w[on], SX_R(1.0) / SX_R(60.0)), SX_OK);
+        most = fmax(most, (double)sx_distance(before, sx_body_get_position(w[1], b[1])));
+        for (on = 0; on < 2; ++on) {
+            sx_body_id id = on ? a[1] : b[1], off = on ? a[0] : b[0];
+            sx_vec2 p1 = sx_body_get_position(w[1], id), p0 = sx_body_get_position(w[0], off);
+            assert_true(p1.x == p0.x && p1.y == p0.y);
+            assert_true(sx_body_get_angle(w[1], id) == sx_body_get_angle(w[0], off));
+        }
+        /* never past the wall's middle */
+        assert_true((double)sx_body_get_position(w[1], b[1]).x < -0.5);
+    }
+    /* the knock moved it more than the stage lists (half the margin) but
+     * under its gate (0.125 m) */
+    assert_true(most > 0.02 && most < 0.125);
+    /* and the contact pushed it back out */
+    assert_true((double)sx_body_get_position(w[1], b[1]).x < -0.525 + 2.0 * (double)SX_LINEAR_SLOP);
+    for (on = 0; on < 2; ++on)
+        sx_world_destroy(w[on]);
+}
+
+/* Just above the gate: boxes and capsules spinning a little (so the stage
+ * lists them) while moving at 1.05-1.6 times their gate per step at a
+ * zero-thickness static segment, from many start gaps: none passes it,
+ * none ends more than two slops into it, none gains energy. */
+static void body_just_above_the_gate_never_passes_a_thin_wall(void **state) {
+    int shape_k, ki, si;
+    (void)state;
+    for (shape_k = 0; shape_k < 2; ++shape_k) {
+        for (si = 0; si < 4; ++si) {
+            for (ki = 0; ki < 8; ++ki) {
+                sx_world *w = make_world(sx_v2_zero());
+                /* half its thinnest extent 0.1 m either way: its gate 2.5 cm */
+                sx_shape shape = shape_k == 0 ? sx_box_shape(SX_R(0.3), SX_R(0.1))
+                                              : sx_capsule_shape(sx_v2(SX_R(-0.2), SX_R(0.0)),
+                                                                 sx_v2(SX_R(0.2), SX_R(0.0)),
+                                                                 SX_R(0.1));
+                double speed = 60.0 * 0.025 * (1.05 + 0.18 * si), e0, e1;
+                sx_body_id body;
+                int k;
+                (void)add(w, SX_BODY_STATIC, sx_v2_zero(), 0.0,
+                          sx_segment_shape(sx_v2(SX_R(-3.0), SX_R(0.0)), sx_v2(SX_R(3.0), SX_R(0.0))),
+                          sx_v2_zero(), 0.0, false);
+                body = add(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), (sx_real)(0.13 + 0.0071 * ki)), 0.0,
+                           shape, sx_v2(SX_R(0.0), (sx_real)-speed), 0.8, false);
+                e0 = kinetic(w, body);
+                for (k = 0; k < 20; ++k) {
+                    sx_xform xf;
+                    double low;
+                    assert_int_equal(sx_world_step(w, SX_R(1.0) / SX_R(60.0)), SX_OK);
+                    xf = sx_body_get_transform(w, body);
+                    /* the lowest point of its core, less its rounding */
+                    {
+                        double hx = shape_k == 0 ? 0.3 : 0.2, hy = shape_k == 0 ? 0.1 : 0.0;
+                        double r = shape_k == 0 ? 0.0 : 0.1;
+                        low = (double)xf.p.y - fabs((double)xf.q.s) * hx -
+                              fabs((double)xf.q.c) * hy - r;
+                    }
+                    assert_true((double)xf.p.y > 0.0);
+                    assert_true(low > -2.0 * (double)SX_LINEAR_SLOP);
+                    e1 = kinetic(w, body);
+                    assert_true(e1 <= e0 * (1.0 + 1e-4));
+                }
+                sx_world_destroy(w);
+            }
+        }
+    }
+}
+
 /* enable_continuous (default true) turns the whole stage off and on: a
  * ball at rest 1 m before a thin static wall, knocked on at 300 m/s by a
  * fast ball in the same step, passes the wall with it off (its contacts of
@@ -601,6 +696,8 @@ int main(void) {
         cmocka_unit_test(crossing_spinning_bullets_never_pass_a_thin_wall),
         cmocka_unit_test(knocked_body_stops_at_a_thin_wall),
         cmocka_unit_test(spinning_rod_never_crosses_a_thin_wall),
+        cmocka_unit_test(slow_knocked_body_is_not_swept),
+        cmocka_unit_test(body_just_above_the_gate_never_passes_a_thin_wall),
         cmocka_unit_test(continuous_collision_turns_off_and_on),
         cmocka_unit_test(a_body_created_between_collide_and_the_sub_steps_is_not_recorded),
         cmocka_unit_test(bullet_flag_round_trips_and_answers_stale_handles),
