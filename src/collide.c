@@ -67,7 +67,7 @@ static sx_real clean_margin(sx_real margin) {
 }
 
 static void clear_manifold(sx_manifold *out) {
-    if (out) memset(out, 0, sizeof(*out));
+    if (out) sx_manifold_clear(out);
 }
 
 /* Lexicographic order of the bit patterns of two runs of reals: arbitrary
@@ -292,7 +292,7 @@ static inline int collide_circles(const sx_circle *a, sx_xform xa, const sx_circ
             }
         }
     }
-    memset(m, 0, sizeof(*m));
+    sx_manifold_clear(m);
     return 0;
 }
 
@@ -319,7 +319,7 @@ int sx_collide_circles_xf(const sx_circle *a, sx_xf_arg pa, const sx_circle *b, 
                 !(!sx_r4_any_nan(sx_r4_add(sx_r4_sub(xa, xa), sx_r4_sub(xb, xb))) &&
                   sx_r4_all_finite(sx_r4_low_halves(ca, cb)) && sx_is_finite(a->radius) &&
                   sx_is_finite(b->radius) && a->radius >= SX_R(0.0) && b->radius >= SX_R(0.0))) {
-                memset(out, 0, sizeof(*out));
+                sx_manifold_clear(out);
                 return 0;
             }
             dist = sx_sqrt(dsq);
@@ -341,7 +341,7 @@ int sx_collide_circles_xf(const sx_circle *a, sx_xf_arg pa, const sx_circle *b, 
                     out->count = 1;
                     return 1;
                 }
-                memset(out, 0, sizeof(*out));
+                sx_manifold_clear(out);
                 return 0;
             }
         }

@@ -510,7 +510,7 @@ static SX_ALWAYS_INLINE int cores_collide(int ka, const void *a, sx_xf xa, int k
     int local, count;
     if (clear_cut) *clear_cut = false;
     if (!cores_build(ka, a, xa, kb, b, xb, &ca, &cb)) {
-        memset(out, 0, sizeof(*out));
+        sx_manifold_clear(out);
         return 0;
     }
     if (!(sx_is_finite(margin) && margin > SX_R(0.0))) margin = SX_R(0.0);

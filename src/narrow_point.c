@@ -482,7 +482,7 @@ static SX_ALWAYS_INLINE int collide_polygon_circle_fused(const sx_polygon *a, sx
     bool finite = false;
     if (a == NULL || !sx_core_radius_ok(a->radius) || a->count < 3 ||
         a->count > SX_MAX_POLYGON_VERTICES || b == NULL) {
-        memset(out, 0, sizeof(*out));
+        sx_manifold_clear(out);
         return 0;
     }
     c = sx_circle_in_frame(b, xa, xb);
@@ -499,7 +499,7 @@ static SX_ALWAYS_INLINE int collide_segment_circle_fused(sx_vec2 a0, sx_vec2 a1,
     sx_vec2 c;
     int local;
     if (b == NULL) {
-        memset(out, 0, sizeof(*out));
+        sx_manifold_clear(out);
         return 0;
     }
     c = sx_circle_in_frame(b, xa, xb);
