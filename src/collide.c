@@ -67,7 +67,7 @@ static sx_real clean_margin(sx_real margin) {
 }
 
 static void clear_manifold(sx_manifold *out) {
-    if (out) memset(out, 0, sizeof(*out));
+    if (out) sx_manifold_clear(out);
 }
 
 /* Lexicographic order of the bit patterns of two runs of reals: arbitrary
@@ -292,7 +292,7 @@ static inline int collide_circles(const sx_circle *a, sx_xform xa, const sx_circ
             }
         }
     }
-    memset(m, 0, sizeof(*m));
+    sx_manifold_clear(m);
     return 0;
 }
 
@@ -300,8 +300,9 @@ static inline int collide_circles(const sx_circle *a, sx_xform xa, const sx_circ
  * precision, centres apart by more than rounding noise) is written out on
  * the transforms' lanes, each lane computed as collide_circles
  * computes it; collide_circles answers the rest. */
-int sx_collide_circles_xf(const sx_circle *a, sx_xf xa, const sx_circle *b, sx_xf xb,
+int sx_collide_circles_xf(const sx_circle *a, sx_xf_arg pa, const sx_circle *b, sx_xf_arg pb,
                           sx_real margin, sx_real hyst, sx_manifold *out) {
+    sx_xf xa = sx_xf_in(pa), xb = sx_xf_in(pb);
     SX_UNUSED(hyst); /* circles have no reference face */
     if (a != NULL && b != NULL) {
         sx_r4 ca = sx_r4_load2(&a->center.x), cb = sx_r4_load2(&b->center.x);
@@ -318,7 +319,7 @@ int sx_collide_circles_xf(const sx_circle *a, sx_xf xa, const sx_circle *b, sx_x
                 !(!sx_r4_any_nan(sx_r4_add(sx_r4_sub(xa, xa), sx_r4_sub(xb, xb))) &&
                   sx_r4_all_finite(sx_r4_low_halves(ca, cb)) && sx_is_finite(a->radius) &&
                   sx_is_finite(b->radius) && a->radius >= SX_R(0.0) && b->radius >= SX_R(0.0))) {
-                memset(out, 0, sizeof(*out));
+                sx_manifold_clear(out);
                 return 0;
             }
             dist = sx_sqrt(dsq);
@@ -340,7 +341,7 @@ int sx_collide_circles_xf(const sx_circle *a, sx_xf xa, const sx_circle *b, sx_x
                     out->count = 1;
                     return 1;
                 }
-                memset(out, 0, sizeof(*out));
+                sx_manifold_clear(out);
                 return 0;
             }
         }
@@ -612,7 +613,7 @@ bool sx_mtv_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b,
 int sx_collide_segment_circle(const sx_segment *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_collide_segment_circle_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+    return sx_collide_segment_circle_xf(a, sx_xf_pass(&xa), b, sx_xf_pass(&xb), margin,
                                         SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
@@ -665,7 +666,7 @@ SX_NOINLINE int sx_collide_segments_gated(const sx_segment *a, sx_xf ta, const s
 int sx_collide_segments(const sx_segment *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_collide_segments_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+    return sx_collide_segments_xf(a, sx_xf_pass(&xa), b, sx_xf_pass(&xb), margin,
                                   SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
@@ -683,7 +684,7 @@ bool sx_mtv_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b,
 int sx_collide_capsule_circle(const sx_capsule *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_collide_capsule_circle_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+    return sx_collide_capsule_circle_xf(a, sx_xf_pass(&xa), b, sx_xf_pass(&xb), margin,
                                         SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
@@ -698,7 +699,7 @@ bool sx_mtv_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *
 int sx_collide_capsule_segment(const sx_capsule *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                                sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_collide_capsule_segment_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+    return sx_collide_capsule_segment_xf(a, sx_xf_pass(&xa), b, sx_xf_pass(&xb), margin,
                                          SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
@@ -731,7 +732,7 @@ SX_NOINLINE int sx_collide_capsules_gated(const sx_capsule *a, sx_xf ta, const s
 int sx_collide_capsules(const sx_capsule *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_collide_capsules_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+    return sx_collide_capsules_xf(a, sx_xf_pass(&xa), b, sx_xf_pass(&xb), margin,
                                   SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
@@ -782,7 +783,7 @@ bool sx_mtv_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b,
 int sx_collide_polygon_circle(const sx_polygon *a, sx_xform xa, const sx_circle *b, sx_xform xb,
                               sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_collide_polygon_circle_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+    return sx_collide_polygon_circle_xf(a, sx_xf_pass(&xa), b, sx_xf_pass(&xb), margin,
                                         SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
@@ -797,7 +798,7 @@ bool sx_mtv_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *
 int sx_collide_polygon_segment(const sx_polygon *a, sx_xform xa, const sx_segment *b, sx_xform xb,
                                sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_collide_polygon_segment_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+    return sx_collide_polygon_segment_xf(a, sx_xf_pass(&xa), b, sx_xf_pass(&xb), margin,
                                          SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
@@ -812,7 +813,7 @@ bool sx_mtv_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *
 int sx_collide_polygon_capsule(const sx_polygon *a, sx_xform xa, const sx_capsule *b, sx_xform xb,
                                sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_collide_polygon_capsule_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+    return sx_collide_polygon_capsule_xf(a, sx_xf_pass(&xa), b, sx_xf_pass(&xb), margin,
                                          SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
@@ -963,7 +964,7 @@ SX_NOINLINE int sx_collide_polygons_gated(const sx_polygon *a, sx_xf ta, const s
 int sx_collide_polygons(const sx_polygon *a, sx_xform xa, const sx_polygon *b, sx_xform xb,
                         sx_real margin, sx_manifold *out) {
     sx_manifold scratch;
-    return sx_collide_polygons_xf(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin,
+    return sx_collide_polygons_xf(a, sx_xf_pass(&xa), b, sx_xf_pass(&xb), margin,
                                   SX_REFERENCE_HYSTERESIS, out ? out : &scratch);
 }
 
@@ -978,7 +979,7 @@ static bool mtv_circles_shapes(const sx_shape *a, sx_xform xa, const sx_shape *b
                                sx_vec2 *mtv) {
     return sx_mtv_circles(&a->u.circle, xa, &b->u.circle, xb, mtv);
 }
-int sx_collide_circles_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
+int sx_collide_circles_shapes(const sx_shape *a, sx_xf_arg xa, const sx_shape *b, sx_xf_arg xb,
                               sx_real margin, sx_real hyst, sx_manifold *out) {
     return sx_collide_circles_xf(&a->u.circle, xa, &b->u.circle, xb, margin, hyst, out);
 }
@@ -1067,9 +1068,9 @@ static bool mtv_polygons_shapes(const sx_shape *a, sx_xform xa, const sx_shape *
 typedef bool sx_overlap_entry(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb);
 typedef bool sx_mtv_entry(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb,
                           sx_vec2 *mtv);
-/* Manifold entries take the transforms in registers (sx_xf) and an out
- * that is not NULL. */
-typedef int sx_collide_entry(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
+/* Manifold entries take the transforms as sx_xf_arg (in registers where
+ * they fit) and an out that is not NULL. */
+typedef int sx_collide_entry(const sx_shape *a, sx_xf_arg xa, const sx_shape *b, sx_xf_arg xb,
                              sx_real margin, sx_real hyst, sx_manifold *out);
 
 /* The entries of one ordered pair of types. `swapped`: the pair's
@@ -1122,9 +1123,9 @@ SX_NOINLINE static bool mtv_swapped(const sx_pair_entry *e, const sx_shape *a, s
     if (mtv) *mtv = hit ? sx_neg(v) : sx_v2_zero();
     return hit;
 }
-SX_NOINLINE static int collide_swapped(const sx_pair_entry *e, const sx_shape *a, sx_xf xa,
-                                       const sx_shape *b, sx_xf xb, sx_real margin, sx_real hyst,
-                                       sx_manifold *out) {
+SX_NOINLINE static int collide_swapped(const sx_pair_entry *e, const sx_shape *a, sx_xf_arg xa,
+                                       const sx_shape *b, sx_xf_arg xb, sx_real margin,
+                                       sx_real hyst, sx_manifold *out) {
     e->collide(b, xb, a, xa, margin, hyst, out);
     sx_mirror_manifold(out);
     return out->count;
@@ -1152,8 +1153,8 @@ static inline int collide_dispatch(const sx_shape *a, sx_xform xa, const sx_shap
     }
     if (out == NULL) out = &scratch;
     if (e->swapped)
-        return collide_swapped(e, a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, hyst, out);
-    return e->collide(a, sx_xf_of(&xa), b, sx_xf_of(&xb), margin, hyst, out);
+        return collide_swapped(e, a, sx_xf_pass(&xa), b, sx_xf_pass(&xb), margin, hyst, out);
+    return e->collide(a, sx_xf_pass(&xa), b, sx_xf_pass(&xb), margin, hyst, out);
 }
 
 int sx_collide_ex(const sx_shape *a, sx_xform xa, const sx_shape *b, sx_xform xb, sx_real margin,

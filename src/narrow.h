@@ -11,6 +11,7 @@
 #ifndef SEPAX_NARROW_H
 #define SEPAX_NARROW_H
 
+#include <stddef.h>
 #include <string.h>
 
 #include "collide_world.h"
@@ -152,15 +153,28 @@ int sx_core_polygon_point_manifold(const sx_polygon *a, sx_vec2 c, sx_real rb, s
  * [p.x, p.y, q.c, q.s]. In the float build it travels in one register, not
  * by address: where a function took the address of its by-value transform,
  * GCC 12 copied it through a 16-byte reload of its two stored 8-byte
- * halves, a failed store forward on every call (the double build's two
- * registers and the portable lanes pass it as a struct, in memory). Made
- * with sx_xf_of in the function that holds the transform by value; loaded
- * 8 bytes at a time, as a by-value transform is stored (a 16-byte load of
- * two 8-byte stores cannot be forwarded). */
+ * halves, a failed store forward on every call (calls that are not inlined
+ * take an sx_xf_arg). Made with sx_xf_of in the function that holds the
+ * transform by value; loaded 8 bytes at a time, as a by-value transform is
+ * stored (a 16-byte load of two 8-byte stores cannot be forwarded). */
 typedef sx_r4 sx_xf;
 static SX_ALWAYS_INLINE sx_xf sx_xf_of(const sx_xform *x) {
     return sx_r4_load2x2(&x->p.x, &x->q.c);
 }
+/* How a transform crosses a call that is not inlined (the dispatch table's
+ * entries): sx_xf_pass of the caller's sx_xform, read back with sx_xf_in.
+ * Four floats travel by value in registers; four doubles would be a 32-byte
+ * struct, which the x86-64 ABI passes in memory, copied at every call, so
+ * the double build passes the caller's transform by address. */
+#ifdef SX_DOUBLE
+typedef const sx_xform *sx_xf_arg;
+static SX_ALWAYS_INLINE sx_xf_arg sx_xf_pass(const sx_xform *x) { return x; }
+static SX_ALWAYS_INLINE sx_xf sx_xf_in(sx_xf_arg x) { return sx_xf_of(x); }
+#else
+typedef sx_xf sx_xf_arg;
+static SX_ALWAYS_INLINE sx_xf_arg sx_xf_pass(const sx_xform *x) { return sx_xf_of(x); }
+static SX_ALWAYS_INLINE sx_xf sx_xf_in(sx_xf_arg x) { return x; }
+#endif
 /* The transform back as a value, for the calls into code that takes
  * transforms by value. */
 static SX_ALWAYS_INLINE sx_xform sx_xform_of_xf(sx_xf x) {
@@ -218,6 +232,14 @@ static SX_ALWAYS_INLINE bool sx_circle_valid(const sx_circle *b, sx_xf xb, sx_ve
            !sx_r4_any_nan(sx_r4_add(sx_r4_sub(xb, xb), sx_r4_sub(v, v)));
 }
 
+/* The empty manifold, in two parts: one memset of the double build's
+ * 88-byte manifold compiles to `rep stos`, slow to start for so few bytes,
+ * on the path of every pair that is apart; each part stays a few stores. */
+static SX_ALWAYS_INLINE void sx_manifold_clear(sx_manifold *m) {
+    memset(m, 0, offsetof(sx_manifold, points[1]));
+    memset(&m->points[1], 0, sizeof(*m) - offsetof(sx_manifold, points[1]));
+}
+
 /* Moves a local manifold of `count` points (A's frame) to world space in
  * place and completes it (count set, unused points zeroed); a non-finite
  * result (overflow of huge inputs) becomes 0 points with a zero normal.
@@ -254,7 +276,7 @@ static SX_ALWAYS_INLINE int sx_world_manifold(sx_manifold *m, int count, sx_xf x
             return count;
         }
     }
-    memset(m, 0, sizeof(*m));
+    sx_manifold_clear(m);
     return 0;
 }
 
@@ -322,15 +344,15 @@ bool sx_cores_mtv(int ka, const void *a, sx_xf xa, int kb, const void *b, sx_xf 
     X(polygons, sx_polygon, SX_SHAPE_POLYGON, polygon, sx_polygon, SX_SHAPE_POLYGON, polygon)
 
 /* The manifold entries of each pair: sx_collide_NAME_xf takes the pair's
- * own structs with the transforms in registers (what the typed pair
+ * own structs with the transforms as sx_xf_arg (what the typed pair
  * functions call), sx_collide_NAME_shapes the two sx_shape of the dispatch
  * table; hyst is the reference-face hysteresis, out is not NULL. Both
  * answer as sx_collide_NAME. */
 #define SX_DECLARE_MANIFOLD_ENTRIES(NAME, TA, KA, MA, TB, KB, MB)                                  \
-    int sx_collide_##NAME##_xf(const TA *a, sx_xf xa, const TB *b, sx_xf xb, sx_real margin,       \
-                               sx_real hyst, sx_manifold *out);                                    \
-    int sx_collide_##NAME##_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,       \
-                                   sx_real margin, sx_real hyst, sx_manifold *out);
+    int sx_collide_##NAME##_xf(const TA *a, sx_xf_arg xa, const TB *b, sx_xf_arg xb,               \
+                               sx_real margin, sx_real hyst, sx_manifold *out);                    \
+    int sx_collide_##NAME##_shapes(const sx_shape *a, sx_xf_arg xa, const sx_shape *b,             \
+                                   sx_xf_arg xb, sx_real margin, sx_real hyst, sx_manifold *out);
 SX_PAIRS_OF_TWO_TYPES(SX_DECLARE_MANIFOLD_ENTRIES)
 SX_PAIRS_OF_ONE_TYPE(SX_DECLARE_MANIFOLD_ENTRIES)
 #undef SX_DECLARE_MANIFOLD_ENTRIES

@@ -510,7 +510,7 @@ static SX_ALWAYS_INLINE int cores_collide(int ka, const void *a, sx_xf xa, int k
     int local, count;
     if (clear_cut) *clear_cut = false;
     if (!cores_build(ka, a, xa, kb, b, xb, &ca, &cb)) {
-        memset(out, 0, sizeof(*out));
+        sx_manifold_clear(out);
         return 0;
     }
     if (!(sx_is_finite(margin) && margin > SX_R(0.0))) margin = SX_R(0.0);
@@ -583,65 +583,71 @@ static SX_ALWAYS_INLINE int collide_same_type(int kind, bool inline_cores, const
     }
 }
 
-int sx_collide_capsule_segment_xf(const sx_capsule *a, sx_xf xa, const sx_segment *b, sx_xf xb,
-                                  sx_real margin, sx_real hyst, sx_manifold *out) {
-    return sx_cores_collide(SX_SHAPE_CAPSULE, a, xa, SX_SHAPE_SEGMENT, b, xb, margin, hyst, out,
-                            NULL);
+int sx_collide_capsule_segment_xf(const sx_capsule *a, sx_xf_arg xa, const sx_segment *b,
+                                  sx_xf_arg xb, sx_real margin, sx_real hyst, sx_manifold *out) {
+    return sx_cores_collide(SX_SHAPE_CAPSULE, a, sx_xf_in(xa), SX_SHAPE_SEGMENT, b, sx_xf_in(xb),
+                            margin, hyst, out, NULL);
 }
-int sx_collide_capsule_segment_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
-                                      sx_real margin, sx_real hyst, sx_manifold *out) {
-    return cores_collide(SX_SHAPE_CAPSULE, &a->u.capsule, xa, SX_SHAPE_SEGMENT, &b->u.segment, xb,
-                         margin, hyst, out, NULL);
-}
-
-int sx_collide_polygon_segment_xf(const sx_polygon *a, sx_xf xa, const sx_segment *b, sx_xf xb,
-                                  sx_real margin, sx_real hyst, sx_manifold *out) {
-    return sx_cores_collide(SX_SHAPE_POLYGON, a, xa, SX_SHAPE_SEGMENT, b, xb, margin, hyst, out,
-                            NULL);
-}
-int sx_collide_polygon_segment_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
-                                      sx_real margin, sx_real hyst, sx_manifold *out) {
-    return cores_collide(SX_SHAPE_POLYGON, &a->u.polygon, xa, SX_SHAPE_SEGMENT, &b->u.segment, xb,
-                         margin, hyst, out, NULL);
+int sx_collide_capsule_segment_shapes(const sx_shape *a, sx_xf_arg xa, const sx_shape *b,
+                                      sx_xf_arg xb, sx_real margin, sx_real hyst,
+                                      sx_manifold *out) {
+    return cores_collide(SX_SHAPE_CAPSULE, &a->u.capsule, sx_xf_in(xa), SX_SHAPE_SEGMENT,
+                         &b->u.segment, sx_xf_in(xb), margin, hyst, out, NULL);
 }
 
-int sx_collide_polygon_capsule_xf(const sx_polygon *a, sx_xf xa, const sx_capsule *b, sx_xf xb,
-                                  sx_real margin, sx_real hyst, sx_manifold *out) {
-    return sx_cores_collide(SX_SHAPE_POLYGON, a, xa, SX_SHAPE_CAPSULE, b, xb, margin, hyst, out,
-                            NULL);
+int sx_collide_polygon_segment_xf(const sx_polygon *a, sx_xf_arg xa, const sx_segment *b,
+                                  sx_xf_arg xb, sx_real margin, sx_real hyst, sx_manifold *out) {
+    return sx_cores_collide(SX_SHAPE_POLYGON, a, sx_xf_in(xa), SX_SHAPE_SEGMENT, b, sx_xf_in(xb),
+                            margin, hyst, out, NULL);
 }
-int sx_collide_polygon_capsule_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
-                                      sx_real margin, sx_real hyst, sx_manifold *out) {
-    return cores_collide(SX_SHAPE_POLYGON, &a->u.polygon, xa, SX_SHAPE_CAPSULE, &b->u.capsule, xb,
-                         margin, hyst, out, NULL);
+int sx_collide_polygon_segment_shapes(const sx_shape *a, sx_xf_arg xa, const sx_shape *b,
+                                      sx_xf_arg xb, sx_real margin, sx_real hyst,
+                                      sx_manifold *out) {
+    return cores_collide(SX_SHAPE_POLYGON, &a->u.polygon, sx_xf_in(xa), SX_SHAPE_SEGMENT,
+                         &b->u.segment, sx_xf_in(xb), margin, hyst, out, NULL);
 }
 
-int sx_collide_segments_xf(const sx_segment *a, sx_xf xa, const sx_segment *b, sx_xf xb,
+int sx_collide_polygon_capsule_xf(const sx_polygon *a, sx_xf_arg xa, const sx_capsule *b,
+                                  sx_xf_arg xb, sx_real margin, sx_real hyst, sx_manifold *out) {
+    return sx_cores_collide(SX_SHAPE_POLYGON, a, sx_xf_in(xa), SX_SHAPE_CAPSULE, b, sx_xf_in(xb),
+                            margin, hyst, out, NULL);
+}
+int sx_collide_polygon_capsule_shapes(const sx_shape *a, sx_xf_arg xa, const sx_shape *b,
+                                      sx_xf_arg xb, sx_real margin, sx_real hyst,
+                                      sx_manifold *out) {
+    return cores_collide(SX_SHAPE_POLYGON, &a->u.polygon, sx_xf_in(xa), SX_SHAPE_CAPSULE,
+                         &b->u.capsule, sx_xf_in(xb), margin, hyst, out, NULL);
+}
+
+int sx_collide_segments_xf(const sx_segment *a, sx_xf_arg xa, const sx_segment *b, sx_xf_arg xb,
                            sx_real margin, sx_real hyst, sx_manifold *out) {
-    return collide_same_type(SX_SHAPE_SEGMENT, false, a, xa, b, xb, margin, hyst, out);
-}
-int sx_collide_segments_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
-                               sx_real margin, sx_real hyst, sx_manifold *out) {
-    return collide_same_type(SX_SHAPE_SEGMENT, true, &a->u.segment, xa, &b->u.segment, xb, margin,
+    return collide_same_type(SX_SHAPE_SEGMENT, false, a, sx_xf_in(xa), b, sx_xf_in(xb), margin,
                              hyst, out);
 }
-
-int sx_collide_capsules_xf(const sx_capsule *a, sx_xf xa, const sx_capsule *b, sx_xf xb,
-                           sx_real margin, sx_real hyst, sx_manifold *out) {
-    return collide_same_type(SX_SHAPE_CAPSULE, false, a, xa, b, xb, margin, hyst, out);
-}
-int sx_collide_capsules_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
+int sx_collide_segments_shapes(const sx_shape *a, sx_xf_arg xa, const sx_shape *b, sx_xf_arg xb,
                                sx_real margin, sx_real hyst, sx_manifold *out) {
-    return collide_same_type(SX_SHAPE_CAPSULE, true, &a->u.capsule, xa, &b->u.capsule, xb, margin,
-                             hyst, out);
+    return collide_same_type(SX_SHAPE_SEGMENT, true, &a->u.segment, sx_xf_in(xa), &b->u.segment,
+                             sx_xf_in(xb), margin, hyst, out);
 }
 
-int sx_collide_polygons_xf(const sx_polygon *a, sx_xf xa, const sx_polygon *b, sx_xf xb,
+int sx_collide_capsules_xf(const sx_capsule *a, sx_xf_arg xa, const sx_capsule *b, sx_xf_arg xb,
                            sx_real margin, sx_real hyst, sx_manifold *out) {
-    return collide_same_type(SX_SHAPE_POLYGON, false, a, xa, b, xb, margin, hyst, out);
-}
-int sx_collide_polygons_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
-                               sx_real margin, sx_real hyst, sx_manifold *out) {
-    return collide_same_type(SX_SHAPE_POLYGON, true, &a->u.polygon, xa, &b->u.polygon, xb, margin,
+    return collide_same_type(SX_SHAPE_CAPSULE, false, a, sx_xf_in(xa), b, sx_xf_in(xb), margin,
                              hyst, out);
+}
+int sx_collide_capsules_shapes(const sx_shape *a, sx_xf_arg xa, const sx_shape *b, sx_xf_arg xb,
+                               sx_real margin, sx_real hyst, sx_manifold *out) {
+    return collide_same_type(SX_SHAPE_CAPSULE, true, &a->u.capsule, sx_xf_in(xa), &b->u.capsule,
+                             sx_xf_in(xb), margin, hyst, out);
+}
+
+int sx_collide_polygons_xf(const sx_polygon *a, sx_xf_arg xa, const sx_polygon *b, sx_xf_arg xb,
+                           sx_real margin, sx_real hyst, sx_manifold *out) {
+    return collide_same_type(SX_SHAPE_POLYGON, false, a, sx_xf_in(xa), b, sx_xf_in(xb), margin,
+                             hyst, out);
+}
+int sx_collide_polygons_shapes(const sx_shape *a, sx_xf_arg xa, const sx_shape *b, sx_xf_arg xb,
+                               sx_real margin, sx_real hyst, sx_manifold *out) {
+    return collide_same_type(SX_SHAPE_POLYGON, true, &a->u.polygon, sx_xf_in(xa), &b->u.polygon,
+                             sx_xf_in(xb), margin, hyst, out);
 }

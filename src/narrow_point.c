@@ -482,7 +482,7 @@ static SX_ALWAYS_INLINE int collide_polygon_circle_fused(const sx_polygon *a, sx
     bool finite = false;
     if (a == NULL || !sx_core_radius_ok(a->radius) || a->count < 3 ||
         a->count > SX_MAX_POLYGON_VERTICES || b == NULL) {
-        memset(out, 0, sizeof(*out));
+        sx_manifold_clear(out);
         return 0;
     }
     c = sx_circle_in_frame(b, xa, xb);
@@ -499,7 +499,7 @@ static SX_ALWAYS_INLINE int collide_segment_circle_fused(sx_vec2 a0, sx_vec2 a1,
     sx_vec2 c;
     int local;
     if (b == NULL) {
-        memset(out, 0, sizeof(*out));
+        sx_manifold_clear(out);
         return 0;
     }
     c = sx_circle_in_frame(b, xa, xb);
@@ -552,29 +552,32 @@ static SX_ALWAYS_INLINE int collide_polygon_circle(const sx_polygon *a, sx_xf xa
     return count;
 }
 
-int sx_collide_segment_circle_xf(const sx_segment *a, sx_xf xa, const sx_circle *b, sx_xf xb,
-                                 sx_real margin, sx_real hyst, sx_manifold *out) {
-    return collide_segment_circle(a, xa, b, xb, margin, hyst, out);
+int sx_collide_segment_circle_xf(const sx_segment *a, sx_xf_arg xa, const sx_circle *b,
+                                 sx_xf_arg xb, sx_real margin, sx_real hyst, sx_manifold *out) {
+    return collide_segment_circle(a, sx_xf_in(xa), b, sx_xf_in(xb), margin, hyst, out);
 }
-int sx_collide_segment_circle_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
-                                     sx_real margin, sx_real hyst, sx_manifold *out) {
-    return collide_segment_circle(&a->u.segment, xa, &b->u.circle, xb, margin, hyst, out);
-}
-
-int sx_collide_capsule_circle_xf(const sx_capsule *a, sx_xf xa, const sx_circle *b, sx_xf xb,
-                                 sx_real margin, sx_real hyst, sx_manifold *out) {
-    return collide_capsule_circle(a, xa, b, xb, margin, hyst, out);
-}
-int sx_collide_capsule_circle_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
-                                     sx_real margin, sx_real hyst, sx_manifold *out) {
-    return collide_capsule_circle(&a->u.capsule, xa, &b->u.circle, xb, margin, hyst, out);
+int sx_collide_segment_circle_shapes(const sx_shape *a, sx_xf_arg xa, const sx_shape *b,
+                                     sx_xf_arg xb, sx_real margin, sx_real hyst, sx_manifold *out) {
+    return collide_segment_circle(&a->u.segment, sx_xf_in(xa), &b->u.circle, sx_xf_in(xb), margin,
+                                  hyst, out);
 }
 
-int sx_collide_polygon_circle_xf(const sx_polygon *a, sx_xf xa, const sx_circle *b, sx_xf xb,
-                                 sx_real margin, sx_real hyst, sx_manifold *out) {
-    return collide_polygon_circle(a, xa, b, xb, margin, hyst, out);
+int sx_collide_capsule_circle_xf(const sx_capsule *a, sx_xf_arg xa, const sx_circle *b,
+                                 sx_xf_arg xb, sx_real margin, sx_real hyst, sx_manifold *out) {
+    return collide_capsule_circle(a, sx_xf_in(xa), b, sx_xf_in(xb), margin, hyst, out);
 }
-int sx_collide_polygon_circle_shapes(const sx_shape *a, sx_xf xa, const sx_shape *b, sx_xf xb,
-                                     sx_real margin, sx_real hyst, sx_manifold *out) {
-    return collide_polygon_circle(&a->u.polygon, xa, &b->u.circle, xb, margin, hyst, out);
+int sx_collide_capsule_circle_shapes(const sx_shape *a, sx_xf_arg xa, const sx_shape *b,
+                                     sx_xf_arg xb, sx_real margin, sx_real hyst, sx_manifold *out) {
+    return collide_capsule_circle(&a->u.capsule, sx_xf_in(xa), &b->u.circle, sx_xf_in(xb), margin,
+                                  hyst, out);
+}
+
+int sx_collide_polygon_circle_xf(const sx_polygon *a, sx_xf_arg xa, const sx_circle *b,
+                                 sx_xf_arg xb, sx_real margin, sx_real hyst, sx_manifold *out) {
+    return collide_polygon_circle(a, sx_xf_in(xa), b, sx_xf_in(xb), margin, hyst, out);
+}
+int sx_collide_polygon_circle_shapes(const sx_shape *a, sx_xf_arg xa, const sx_shape *b,
+                                     sx_xf_arg xb, sx_real margin, sx_real hyst, sx_manifold *out) {
+    return collide_polygon_circle(&a->u.polygon, sx_xf_in(xa), &b->u.circle, sx_xf_in(xb), margin,
+                                  hyst, out);
 }
