@@ -22,7 +22,7 @@ layers='
 3 src/body.c src/body_contacts.c src/body_props.c src/broadphase.c src/contact_solver.c
 3 src/island.c src/sensor.c src/world_ccd.c src/aabb_tree.h src/aabb_tree.c
 3 src/world_array.h src/world_array.c src/world_body.h src/world_contact.h src/world_broadphase.h
-3 src/world_island.h src/world_ccd.h src/world_sensor.h
+3 src/world_island.h src/world_ccd.h src/world_sensor.h src/contact_math.h src/contact_impact.c
 4 ecs/sepax_flecs.h ecs/sepax_flecs.c
 '
 names='base shape collide world ecs'
