@@ -1136,51 +1136,41 @@ static void sx_solver_unname(sx_world *world) {
     world->fill_valid = false;
 }
 
-/* Copies the active contacts and their bodies' velocities into the solver's
- * arrays; false when they could not grow (nothing copied). `warm`: the
- * start of a solve: each point's gap from the current positions, the
- * impact impulses zeroed, the constraints coloured for the wide passes
- * (rigid contacts), and the warm start on the solver bodies only (the
- * bodies keep their own velocities for the impact pass). */
-static bool sx_solver_gather(sx_world *world, bool warm) {
-    sx_colour_item *items;
-    int i, k, n = 0, colours = 0, sink, min_colour;
-    bool same;
-    void *p;
-    if (!sx_solver_reserve(world)) return false;
-    world->solver_bodies[0].v = sx_v2_zero();
-    world->solver_bodies[0].w = SX_R(0.0);
-    world->solver_bodies[0].pad = SX_R(0.0);
-    world->solver_body_count = 1;
-    if (!warm || world->def.contact_hertz > SX_R(0.0)) {
-        if (warm) sx_groups_build(world);
-        world->constraint_count = 0;
-        /* one span in contact order, solved one at a time */
-        for (i = 0; i < world->contact_count; ++i) {
-            sx_contact *ct = &world->contacts[i];
-            sx_constraint *c;
-            int a, b;
-            if (!sx_contact_is_active(world, ct)) continue;
-            if (warm) sx_update_gaps(world, ct);
-            c = &world->constraints[world->constraint_count++];
-            a = sx_solver_body_of(world, ct->body_a);
-            b = sx_solver_body_of(world, ct->body_b);
-            sx_constraint_fill(world, i, a, b, c, warm);
-            if (warm) sx_warm_start(world, c);
-        }
-        world->spans[0].first = 0;
-        world->spans[0].count = world->constraint_count;
-        world->spans[0].wide = false;
-        world->span_count = 1;
-        world->fill_valid = false;
-        world->solver_gathered = true;
-        return true;
+/* The gather of a pass that does not start a solve (the relax passes) and
+ * of soft contacts: one span in contact order, solved one at a time.
+ * `warm`: the start of a solve (see sx_solver_gather). */
+static void sx_gather_sequential(sx_world *world, bool warm) {
+    int i;
+    if (warm) sx_groups_build(world);
+    world->constraint_count = 0;
+    /* one span in contact order, solved one at a time */
+    for (i = 0; i < world->contact_count; ++i) {
+        sx_contact *ct = &world->contacts[i];
+        sx_constraint *c;
+        int a, b;
+        if (!sx_contact_is_active(world, ct)) continue;
+        if (warm) sx_update_gaps(world, ct);
+        c = &world->constraints[world->constraint_count++];
+        a = sx_solver_body_of(world, ct->body_a);
+        b = sx_solver_body_of(world, ct->body_b);
+        sx_constraint_fill(world, i, a, b, c, warm);
+        if (warm) sx_warm_start(world, c);
     }
+    world->spans[0].first = 0;
+    world->spans[0].count = world->constraint_count;
+    world->spans[0].wide = false;
+    world->span_count = 1;
+    world->fill_valid = false;
+}
 
-    /* the colours, in contact order (the wide passes above say why); the
-     * fill of the last gather is kept while every item is unchanged */
-    items = world->colour_items;
-    same = world->fill_valid && world->fill_serial == world->contact_serial;
+/* Walks the active contacts into the colour items: each point's gap from the
+ * current positions, the bodies named in the solver. Returns the item count
+ * and sets *same when every item is the one the kept fill was made from
+ * (its new gaps then go straight into the fill). */
+static int sx_gather_items(sx_world *world, bool *same_out) {
+    sx_colour_item *items = world->colour_items;
+    int i, k, n = 0;
+    bool same = world->fill_valid && world->fill_serial == world->contact_serial;
     for (i = 0; i < world->contact_count; ++i) {
         sx_contact *ct = &world->contacts[i];
         const sx_body_sim *sa = &world->sims[ct->body_a], *sb = &world->sims[ct->body_b];
@@ -1222,20 +1212,18 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
         it->dynamic_a = sa->dynamic;
         it->dynamic_b = sb->dynamic;
     }
-    min_colour = world->wide_min_colour > 0 ? world->wide_min_colour : SX_WIDE_MIN_COLOUR;
-    if (same && n == world->fill_count) {
-        /* the energy guard's groups follow from the items too: kept, unless
-         * the last build found no room */
-        if (!world->groups_ready) sx_groups_build(world);
-        if (!world->fill_fresh || !world->groups_ready) sx_solver_refresh(world);
-        sx_solver_warm_start(world, false);
-        world->solver_gathered = true;
-        return true;
-    }
-    world->fill_valid = false;
-    world->constraint_count = 0;
-    world->bundle_count = 0;
-    sx_groups_build(world);
+    *same_out = same;
+    return n;
+}
+
+/* Colours the n items in contact order (one past the last colour either
+ * moved body has had: the wide passes above say why) and places each colour:
+ * as bundles of four lanes when it has enough constraints to fill them, else
+ * as constraints solved one at a time. Returns the colour count. */
+static int sx_colour_items(sx_world *world, int n) {
+    sx_colour_item *items = world->colour_items;
+    int i, colours = 0;
+    int min_colour = world->wide_min_colour > 0 ? world->wide_min_colour : SX_WIDE_MIN_COLOUR;
     for (i = 0; i < n; ++i) {
         sx_colour_item *it = &items[i];
         int ca = it->body_a != 0 ? world->body_colour[it->body_a] : -1;
@@ -1266,11 +1254,19 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
         }
     }
     world->span_count = colours;
+    return colours;
+}
+
+/* Fills the placed colours' constraints and lanes (padding lanes write to
+ * a sink body), then makes neighbouring colours of the same kind one span;
+ * false when the bundles could not grow. */
+static bool sx_fill_colours(sx_world *world, int n, int colours) {
+    sx_colour_item *items = world->colour_items;
+    int i, k, sink;
+    void *p;
     p = world->bundles;
-    if (!sx_grow_array(&p, &world->bundle_capacity, world->bundle_count, sizeof(sx_bundle))) {
-        sx_solver_unname(world);
+    if (!sx_grow_array(&p, &world->bundle_capacity, world->bundle_count, sizeof(sx_bundle)))
         return false;
-    }
     world->bundles = (sx_bundle *)p;
     sink = world->solver_body_count;
     world->solver_bodies[sink].v = sx_v2_zero();
@@ -1307,6 +1303,47 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
             world->spans[k++] = *span;
     }
     world->span_count = k;
+    return true;
+}
+
+/* Copies the active contacts and their bodies' velocities into the solver's
+ * arrays; false when they could not grow (nothing copied). `warm`: the
+ * start of a solve: each point's gap from the current positions, the
+ * impact impulses zeroed, the constraints coloured for the wide passes
+ * (rigid contacts), and the warm start on the solver bodies only (the
+ * bodies keep their own velocities for the impact pass). The colours and
+ * lanes of the last gather are kept while every item is unchanged. */
+static bool sx_solver_gather(sx_world *world, bool warm) {
+    int n;
+    bool same;
+    if (!sx_solver_reserve(world)) return false;
+    world->solver_bodies[0].v = sx_v2_zero();
+    world->solver_bodies[0].w = SX_R(0.0);
+    world->solver_bodies[0].pad = SX_R(0.0);
+    world->solver_body_count = 1;
+    if (!warm || world->def.contact_hertz > SX_R(0.0)) {
+        sx_gather_sequential(world, warm);
+        world->solver_gathered = true;
+        return true;
+    }
+    n = sx_gather_items(world, &same);
+    if (same && n == world->fill_count) {
+        /* the energy guard's groups follow from the items too: kept, unless
+         * the last build found no room */
+        if (!world->groups_ready) sx_groups_build(world);
+        if (!world->fill_fresh || !world->groups_ready) sx_solver_refresh(world);
+        sx_solver_warm_start(world, false);
+        world->solver_gathered = true;
+        return true;
+    }
+    world->fill_valid = false;
+    world->constraint_count = 0;
+    world->bundle_count = 0;
+    sx_groups_build(world);
+    if (!sx_fill_colours(world, n, sx_colour_items(world, n))) {
+        sx_solver_unname(world);
+        return false;
+    }
     world->fill_serial = world->contact_serial;
     world->fill_count = n;
     world->fill_valid = true;
