@@ -702,6 +702,54 @@ static void sx_bundle_warm_start(sx_solver_body *bodies, const sx_bundle *u) {
     sx_lanes_store(bodies, u->body_b, v.vbx, v.vby, v.wb, v.pb);
 }
 
+/* sx_solve_lcp2 for the lanes in `solved`: the first of its four cases that
+ * fits, in *x1 and *x2; returns the lanes where one fits. */
+static SX_ALWAYS_INLINE sx_m4 sx_lanes_lcp2(const sx_bundle *u, sx_m4 solved, sx_r4 b1, sx_r4 b2,
+                                            sx_r4 *x1, sx_r4 *x2) {
+    sx_r4 zero = sx_r4_zero();
+    sx_r4 inv11 = sx_r4_load(u->inv11), inv12 = sx_r4_load(u->inv12);
+    sx_r4 inv22 = sx_r4_load(u->inv22);
+    sx_r4 y1 = sx_r4_neg(sx_r4_add(sx_r4_mul(inv11, b1), sx_r4_mul(inv12, b2)));
+    sx_r4 y2 = sx_r4_neg(sx_r4_add(sx_r4_mul(inv12, b1), sx_r4_mul(inv22, b2)));
+    sx_m4 c1 = sx_m4_and(sx_r4_ge(y1, zero), sx_r4_ge(y2, zero)), c2, c3, c4;
+    sx_r4 k11, k12, k22, z1, z2;
+    if (sx_m4_all(sx_m4_or(c1, sx_m4_andnot(solved, sx_m4_true())))) {
+        /* both points push in every lane that solves as a block (a resting
+         * face): the other cases and their divisions unneeded */
+        *x1 = y1;
+        *x2 = y2;
+        return sx_m4_and(solved, c1);
+    }
+    k11 = sx_r4_load(u->k11);
+    k12 = sx_r4_load(u->k12);
+    k22 = sx_r4_load(u->k22);
+    z1 = sx_r4_div(sx_r4_neg(b1), k11);
+    c2 = sx_m4_and(sx_r4_ge(z1, zero), sx_r4_ge(sx_r4_add(sx_r4_mul(k12, z1), b2), zero));
+    z2 = sx_r4_div(sx_r4_neg(b2), k22);
+    c3 = sx_m4_and(sx_r4_ge(z2, zero), sx_r4_ge(sx_r4_add(sx_r4_mul(k12, z2), b1), zero));
+    c4 = sx_m4_and(sx_r4_ge(b1, zero), sx_r4_ge(b2, zero));
+    *x1 = sx_r4_select(c1, y1, sx_r4_select(c2, z1, zero));
+    *x2 = sx_r4_select(c1, y2, sx_r4_select(c2, zero, sx_r4_select(c3, z2, zero)));
+    return sx_m4_and(solved, sx_m4_or(sx_m4_or(c1, c2), sx_m4_or(c3, c4)));
+}
+
+/* The last pass hands a bundle's accumulated impulses back to its contacts
+ * (the next sub-step's warm start, the contact reports). */
+static void sx_bundle_hand_back(sx_world *world, const sx_bundle *u) {
+    int i;
+    for (i = 0; i < 4; ++i) {
+        sx_contact_point *out;
+        if (u->contact[i] < 0) continue;
+        out = world->contacts[u->contact[i]].points;
+        out[0].normal_impulse = u->normal_impulse[0][i];
+        out[0].tangent_impulse = u->tangent_impulse[0][i];
+        if (u->two[i] > SX_R(0.0)) {
+            out[1].normal_impulse = u->normal_impulse[1][i];
+            out[1].tangent_impulse = u->tangent_impulse[1][i];
+        }
+    }
+}
+
 /* One rigid pass over a bundle: sx_constraint_solve's rigid branches for
  * four constraints at once. */
 static void sx_bundle_solve(sx_world *world, sx_bundle *u, sx_r4 inv_h, bool last) {
@@ -721,7 +769,6 @@ static void sx_bundle_solve(sx_world *world, sx_bundle *u, sx_r4 inv_h, bool las
     sx_m4 all = sx_m4_true(), two = sx_r4_gt(sx_r4_load(u->two), zero);
     sx_m4 rubs = sx_r4_gt(friction, zero), solved, rest;
     sx_m4 row = sx_m4_and(rubs, two), single = sx_m4_andnot(two, rubs);
-    int i;
     sx_lanes_load(bodies, u->body_a, &v.vax, &v.vay, &v.wa, &v.pa);
     sx_lanes_load(bodies, u->body_b, &v.vbx, &v.vby, &v.wb, &v.pb);
 
@@ -762,36 +809,13 @@ static void sx_bundle_solve(sx_world *world, sx_bundle *u, sx_r4 inv_h, bool las
     solved = sx_r4_gt(sx_r4_load(u->block_solve), zero);
     if (sx_m4_any(solved)) {
         sx_r4 k11 = sx_r4_load(u->k11), k12 = sx_r4_load(u->k12), k22 = sx_r4_load(u->k22);
-        sx_r4 inv11 = sx_r4_load(u->inv11), inv12 = sx_r4_load(u->inv12);
-        sx_r4 inv22 = sx_r4_load(u->inv22), bound = sx_r4_set1(SX_IMPULSE_LIMIT);
-        sx_r4 b1, b2, y1, y2, z1, z2, x1, x2;
-        sx_m4 c1, c2, c3, c4;
+        sx_r4 bound = sx_r4_set1(SX_IMPULSE_LIMIT);
+        sx_r4 b1, b2, x1, x2;
         vn2 = sx_lanes_speed(&v, nx, ny, rna2, rnb2);
         b1 = sx_r4_sub(err1, sx_r4_add(sx_r4_mul(k11, n1), sx_r4_mul(k12, n2)));
         b2 = sx_r4_sub(sx_lanes_error(vn2, g2, inv_h),
                        sx_r4_add(sx_r4_mul(k12, n1), sx_r4_mul(k22, n2)));
-        /* sx_solve_lcp2's four cases, the first that fits */
-        y1 = sx_r4_neg(sx_r4_add(sx_r4_mul(inv11, b1), sx_r4_mul(inv12, b2)));
-        y2 = sx_r4_neg(sx_r4_add(sx_r4_mul(inv12, b1), sx_r4_mul(inv22, b2)));
-        c1 = sx_m4_and(sx_r4_ge(y1, zero), sx_r4_ge(y2, zero));
-        if (sx_m4_all(sx_m4_or(c1, sx_m4_andnot(solved, all)))) {
-            /* both points push in every lane that solves as a block (a
-             * resting face): the other cases and their divisions unneeded */
-            x1 = y1;
-            x2 = y2;
-            solved = sx_m4_and(solved, c1);
-        } else {
-            z1 = sx_r4_div(sx_r4_neg(b1), k11);
-            c2 = sx_m4_and(sx_r4_ge(z1, zero),
-                           sx_r4_ge(sx_r4_add(sx_r4_mul(k12, z1), b2), zero));
-            z2 = sx_r4_div(sx_r4_neg(b2), k22);
-            c3 = sx_m4_and(sx_r4_ge(z2, zero),
-                           sx_r4_ge(sx_r4_add(sx_r4_mul(k12, z2), b1), zero));
-            c4 = sx_m4_and(sx_r4_ge(b1, zero), sx_r4_ge(b2, zero));
-            x1 = sx_r4_select(c1, y1, sx_r4_select(c2, z1, zero));
-            x2 = sx_r4_select(c1, y2, sx_r4_select(c2, zero, sx_r4_select(c3, z2, zero)));
-            solved = sx_m4_and(solved, sx_m4_or(sx_m4_or(c1, c2), sx_m4_or(c3, c4)));
-        }
+        solved = sx_lanes_lcp2(u, solved, b1, b2, &x1, &x2);
         solved = sx_m4_and(solved, sx_m4_and(sx_r4_le(x1, bound), sx_r4_le(x2, bound)));
         sx_lanes_apply(&v, solved, ma, ia, mb, ib, nx, ny, rna1, rnb1, sx_r4_sub(x1, n1));
         sx_lanes_apply(&v, solved, ma, ia, mb, ib, nx, ny, rna2, rnb2, sx_r4_sub(x2, n2));
@@ -823,18 +847,7 @@ static void sx_bundle_solve(sx_world *world, sx_bundle *u, sx_r4 inv_h, bool las
     sx_r4_store(u->normal_impulse[1], n2);
     sx_r4_store(u->tangent_impulse[0], t1);
     sx_r4_store(u->tangent_impulse[1], t2);
-    if (!last) return;
-    for (i = 0; i < 4; ++i) {
-        sx_contact_point *out;
-        if (u->contact[i] < 0) continue;
-        out = world->contacts[u->contact[i]].points;
-        out[0].normal_impulse = u->normal_impulse[0][i];
-        out[0].tangent_impulse = u->tangent_impulse[0][i];
-        if (u->two[i] > SX_R(0.0)) {
-            out[1].normal_impulse = u->normal_impulse[1][i];
-            out[1].tangent_impulse = u->tangent_impulse[1][i];
-        }
-    }
+    if (last) sx_bundle_hand_back(world, u);
 }
 
 /* One pass over the constraints, colour by colour: sx_world_solve's (soft
