@@ -287,32 +287,16 @@ static bool sx_impact_reserve(sx_world *world) {
     return ok;
 }
 
-bool sx_contacts_impacts(sx_world *world, sx_real h) {
-    int first = -1, i, k, queued = 0;
-    sx_real now = SX_R(0.0), t;
-    if (world->impact_shifts_pending) {
-        /* a solve without an integrate since: its corrections are void */
-        memset(world->impact_bodies, 0,
-               (size_t)world->impact_body_capacity * sizeof(sx_impact_body));
-        world->impact_shifts_pending = false;
-    }
-    /* the common case, no impact in this sub-step, costs this scan only */
-    for (i = 0; i < world->contact_count && first < 0; ++i) {
-        const sx_contact *c = &world->contacts[i];
-        if (sx_impact_candidate(world, c) && sx_impact_time(world, c, h, false, &t)) first = i;
-    }
-    if (first < 0) return true;
-    if (!sx_impact_reserve(world)) return false;
-    world->impact_shifts_pending = true;
-
-    /* contact lists per movable body (contacts with restitution only: the
-     * others never take part in the pass). The active bodies are reset for
-     * the shifts integrate applies to them; the bodies of the contacts too,
-     * which are not always active ones: a body put to sleep between the
-     * step's collide and a solve called on its own keeps its contacts, and
-     * its entry from an earlier pass would index past the adjacency array.
-     * Each body's list is
-     * placed at the first contact that names it. */
+/* The contact lists per movable body that the pass walks after each impact
+ * (contacts with restitution only: the others never take part in the pass).
+ * The active bodies are reset for the shifts integrate applies to them; the
+ * bodies of the contacts too, which are not always active ones: a body put
+ * to sleep between the step's collide and a solve called on its own keeps
+ * its contacts, and its entry from an earlier pass would index past the
+ * adjacency array. Each body's list is placed at the first contact that
+ * names it. */
+static void sx_impact_lists(sx_world *world) {
+    int i, k;
     for (i = 0; i < world->active_body_count; ++i)
         memset(&world->impact_bodies[world->active_bodies[i]], 0, sizeof(sx_impact_body));
     for (i = 0; i < world->contact_count; ++i) {
@@ -350,41 +334,36 @@ bool sx_contacts_impacts(sx_world *world, sx_real h) {
         if (sx_movable(&world->sims[c->body_a])) world->impact_adjacency[a->start + a->count++] = i;
         if (sx_movable(&world->sims[c->body_b])) world->impact_adjacency[b->start + b->count++] = i;
     }
+}
 
-    for (i = first; i < world->contact_count; ++i) {
-        const sx_contact *c = &world->contacts[i];
-        if (sx_impact_candidate(world, c) && sx_impact_time(world, c, h, false, &t)) {
-            sx_heap_set(world, i, t, &queued);
-        }
-    }
-    while (queued > 0) {
-        int current = world->impact_heap[0], side;
-        sx_contact *c = &world->contacts[current];
-        sx_heap_remove(world, 0, &queued);
-        world->impact_contacts[current].where = -1;
-        world->impact_contacts[current].count++;
-        if (world->impact_contacts[current].time > now) now = world->impact_contacts[current].time;
-        sx_resolve_impact(world, c, h, now);
-        /* the velocities of both bodies changed: look at their other contacts again */
-        for (side = 0; side < 2; ++side) {
-            const sx_impact_body *body = &world->impact_bodies[side ? c->body_b : c->body_a];
-            if (!sx_movable(&world->sims[side ? c->body_b : c->body_a])) continue;
-            for (k = 0; k < body->count; ++k) {
-                int j = world->impact_adjacency[body->start + k];
-                int where = world->impact_contacts[j].where;
-                if (world->impact_contacts[j].count >= SX_IMPACTS_PER_CONTACT) continue;
-                if (sx_impact_time(world, &world->contacts[j], h, true, &t)) {
-                    /* an impact cannot come before the one that caused it */
-                    sx_heap_set(world, j, t > now ? t : now, &queued);
-                } else if (where >= 0) {
-                    sx_heap_remove(world, where, &queued);
-                    world->impact_contacts[j].where = -1;
-                }
+/* After an impact of contact c at time `now`: the velocities of both its
+ * bodies changed, so their other contacts are looked at again (queued,
+ * moved, or taken off the heap). */
+static void sx_impact_requeue(sx_world *world, const sx_contact *c, sx_real h, sx_real now,
+                              int *queued) {
+    int side, k;
+    sx_real t;
+    for (side = 0; side < 2; ++side) {
+        const sx_impact_body *body = &world->impact_bodies[side ? c->body_b : c->body_a];
+        if (!sx_movable(&world->sims[side ? c->body_b : c->body_a])) continue;
+        for (k = 0; k < body->count; ++k) {
+            int j = world->impact_adjacency[body->start + k];
+            int where = world->impact_contacts[j].where;
+            if (world->impact_contacts[j].count >= SX_IMPACTS_PER_CONTACT) continue;
+            if (sx_impact_time(world, &world->contacts[j], h, true, &t)) {
+                /* an impact cannot come before the one that caused it */
+                sx_heap_set(world, j, t > now ? t : now, queued);
+            } else if (where >= 0) {
+                sx_heap_remove(world, where, queued);
+                world->impact_contacts[j].where = -1;
             }
         }
     }
+}
 
-    /* the iterations aim at the gaps between the shifted start positions */
+/* The iterations aim at the gaps between the shifted start positions. */
+static void sx_impact_shift_gaps(sx_world *world) {
+    int i, k;
     for (i = 0; i < world->contact_count; ++i) {
         sx_contact *c = &world->contacts[i];
         const sx_impact_body *a = &world->impact_bodies[c->body_a];
@@ -397,6 +376,46 @@ bool sx_contacts_impacts(sx_world *world, sx_real h) {
         for (k = 0; k < c->count; ++k)
             c->points[k].gap = sx_shifted_gap(world, c, &c->points[k]);
     }
+}
+
+bool sx_contacts_impacts(sx_world *world, sx_real h) {
+    int first = -1, i, queued = 0;
+    sx_real now = SX_R(0.0), t;
+    if (world->impact_shifts_pending) {
+        /* a solve without an integrate since: its corrections are void */
+        memset(world->impact_bodies, 0,
+               (size_t)world->impact_body_capacity * sizeof(sx_impact_body));
+        world->impact_shifts_pending = false;
+    }
+    /* the common case, no impact in this sub-step, costs this scan only */
+    for (i = 0; i < world->contact_count && first < 0; ++i) {
+        const sx_contact *c = &world->contacts[i];
+        if (sx_impact_candidate(world, c) && sx_impact_time(world, c, h, false, &t)) first = i;
+    }
+    if (first < 0) return true;
+    if (!sx_impact_reserve(world)) return false;
+    world->impact_shifts_pending = true;
+
+    sx_impact_lists(world);
+
+    for (i = first; i < world->contact_count; ++i) {
+        const sx_contact *c = &world->contacts[i];
+        if (sx_impact_candidate(world, c) && sx_impact_time(world, c, h, false, &t)) {
+            sx_heap_set(world, i, t, &queued);
+        }
+    }
+    while (queued > 0) {
+        int current = world->impact_heap[0];
+        sx_contact *c = &world->contacts[current];
+        sx_heap_remove(world, 0, &queued);
+        world->impact_contacts[current].where = -1;
+        world->impact_contacts[current].count++;
+        if (world->impact_contacts[current].time > now) now = world->impact_contacts[current].time;
+        sx_resolve_impact(world, c, h, now);
+        sx_impact_requeue(world, c, h, now, &queued);
+    }
+
+    sx_impact_shift_gaps(world);
     return true;
 }
 
