@@ -138,6 +138,7 @@ void sx_body_sync_origin(sx_body_sim *sim) {
 static void sx_body_refresh_sim(sx_world *world, int slot) {
     sx_body_sim *sim = &world->sims[slot];
     const sx_body_info *info = &world->infos[slot];
+    sx_real old_inv_mass = sim->inv_mass, old_inv_inertia = sim->inv_inertia;
     world->sets_dirty = true;
     sim->dynamic = info->enabled && info->type == SX_BODY_DYNAMIC;
     sim->moving = info->enabled && info->type != SX_BODY_STATIC;
@@ -148,6 +149,8 @@ static void sx_body_refresh_sim(sx_world *world, int slot) {
         sim->inv_mass = SX_R(0.0);
         sim->inv_inertia = SX_R(0.0);
     }
+    if (sim->inv_mass != old_inv_mass || sim->inv_inertia != old_inv_inertia)
+        world->masses_changed = true;
     if (!sim->moving) {
         sim->v = sx_v2_zero();
         sim->w = SX_R(0.0);

@@ -347,6 +347,7 @@ static void sx_normal_masses(const sx_world *world, sx_contact *c) {
 void sx_contacts_prepare(sx_world *world) {
     int i, k;
     world->contact_serial++;
+    world->masses_changed = false;
     for (i = 0; i < world->contact_count; ++i) {
         sx_contact *c = &world->contacts[i];
         const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];

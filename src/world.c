@@ -566,6 +566,16 @@ static void sx_limit_speeds(sx_world *world, sx_real h) {
     }
 }
 
+/* The contacts' effective masses are prepared by the collide; a caller
+ * running the stages may change a body's mass in between (a collider
+ * destroyed, a type set). A stale effective mass, prepared for a body made
+ * far lighter since, moves it by the correction x old mass / new mass, an
+ * overflow to Inf and then NaN: solve and separate prepare them again. Only
+ * after such a change, so a step's sub-steps are untouched. */
+static void sx_refresh_effective_masses(sx_world *world) {
+    if (world->masses_changed) sx_contacts_prepare(world);
+}
+
 /* ---- stage 1: forces ---------------------------------------------------- */
 
 sx_status sx_world_apply_forces(sx_world *world, sx_real h) {
@@ -1163,6 +1173,7 @@ sx_status sx_world_solve(sx_world *world, sx_real h) {
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
     sx_world_purge_contacts(world);
+    sx_refresh_effective_masses(world);
     sx_limit_speeds(world, h);
     /* the gather warm-starts the solver's copies only: restitution first,
      * impact by impact in time order, on the bodies' own velocities
@@ -1208,6 +1219,7 @@ sx_status sx_world_separate(sx_world *world, sx_real h) {
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
     sx_world_purge_contacts(world);
+    sx_refresh_effective_masses(world);
     relaxed = sx_contacts_relax(world, h, world->def.position_iterations);
     sx_limit_speeds(world, h);
     return relaxed ? SX_OK : SX_ERR_NO_MEMORY;

@@ -167,6 +167,10 @@ struct sx_world {
      * are the contacts' (the last pass handed them back, and the energy
      * guard scaled none since). */
     unsigned contact_serial, fill_serial;
+    /* a body's inverse mass or inertia changed since the contacts' effective
+     * masses were prepared (by the caller, between stages): solve and
+     * separate prepare them again before using them */
+    bool masses_changed;
     /* colours of fewer constraints than this are solved one at a time (0:
      * the solver's own threshold; tests set it to compare the paths) */
     int wide_min_colour;

@@ -1415,6 +1415,53 @@ static void separating_a_body_of_the_largest_mass_gives_no_nan(void **state) {
     }
 }
 
+/* Found by the world fuzz harness (fuzz/corpus/world/world-stale-effective-mass-nan):
+ * collide, then a collider destroyed, then one stage. The contacts' effective
+ * masses were those of the collide, when the body was 100 times heavier:
+ * the separation moved it by 100 x its correction (and a body made 10^32
+ * times lighter to Inf, then NaN), the solve gave it 100 x the impulse that
+ * stops it. Run 0 separates (at most max_correction_speed x h, upwards),
+ * run 1 solves (the approach stopped, no rebound). */
+static void a_mass_changed_between_collide_and_a_stage_is_seen_by_the_stage(void **state) {
+    int run;
+    (void)state;
+    for (run = 0; run < 2; ++run) {
+        sx_world *w = make_world(sx_v2_zero());
+        sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(0.5));
+        sx_collider_def small = sx_default_collider_def(), big = sx_default_collider_def();
+        sx_collider_id big_id;
+        sx_real h = DT / SX_R(4.0);
+        /* the small circle 3 cm into the ground's top (y = 0.5) */
+        sx_body_id a = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.52)), NULL);
+        sx_vec2 p0, v;
+        (void)make_body(w, SX_BODY_STATIC, sx_v2_zero(), &ground);
+        small.shape = sx_circle_shape(sx_v2_zero(), SX_R(0.05));
+        big.shape = sx_circle_shape(sx_v2_zero(), SX_R(0.5));
+        assert_int_equal(sx_body_add_collider(w, a, &small, NULL), SX_OK);
+        assert_int_equal(sx_body_add_collider(w, a, &big, &big_id), SX_OK);
+        assert_int_equal(sx_body_set_linear_velocity(w, a, sx_v2(SX_R(0.0), SX_R(-0.5))), SX_OK);
+        p0 = sx_body_get_position(w, a);
+        assert_int_equal(sx_world_collide(w), SX_OK);
+        assert_int_equal(sx_world_contact_count(w), 2);
+        assert_int_equal(sx_destroy_collider(w, big_id), SX_OK);
+        assert_near(sx_body_get_mass(w, a), 3.14159265 * 0.0025, 1e-6);
+        if (run == 0) {
+            sx_real dy;
+            assert_int_equal(sx_world_separate(w, h), SX_OK);
+            dy = sx_body_get_position(w, a).y - p0.y;
+            /* beta x (overlap - slop) = 0.2 x 2.5 cm, within 3 m/s x h */
+            assert_near(dy, SX_R(0.005), 1e-5);
+            assert_true(dy <= SX_R(3.0) * h);
+        } else {
+            assert_int_equal(sx_world_solve(w, h), SX_OK);
+            v = sx_body_get_linear_velocity(w, a);
+            assert_near(v.y, SX_R(0.0), 1e-4);
+            assert_near(v.x, SX_R(0.0), 1e-4);
+        }
+        sx_world_destroy(w);
+    }
+}
+
 /* Found by the 10M fuzz campaign (harness world, input
  * world-denormal-dt-substep-zero): dt = the smallest denormal is a valid
  * time step, but dt / 4 sub-steps rounds to 0, which the stages refuse, and
@@ -1654,6 +1701,7 @@ int main(void) {
         cmocka_unit_test(a_kinematic_body_spinning_at_flt_max_gives_finite_contacts),
         cmocka_unit_test(an_overflowing_contact_impulse_gives_no_nan),
         cmocka_unit_test(separating_a_body_of_the_largest_mass_gives_no_nan),
+        cmocka_unit_test(a_mass_changed_between_collide_and_a_stage_is_seen_by_the_stage),
         cmocka_unit_test(a_denormal_time_step_is_one_sub_step),
         cmocka_unit_test(solve_without_memory_for_its_arrays_refuses_and_changes_nothing),
         cmocka_unit_test(a_needle_small_collider_gives_no_nan),

@@ -29,7 +29,9 @@
  * narrowphase again. This is
  * symplectic Euler (velocities first, then positions with the new
  * velocities). Callers such as the flecs systems may run the stages
- * themselves, in this order, with their own code in between.
+ * themselves, in this order, with their own code in between; a mass that
+ * code changes (a collider added or destroyed, a type or density set) is
+ * seen by the next sx_world_solve and sx_world_separate.
  *
  * Speed limit: in one sub-step a body turns at most SX_MAX_ROTATION and
  * moves at most SX_HUGE (in length units: see SX_HUGE in base.h for worlds
