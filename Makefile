@@ -7,6 +7,7 @@
 #   make test SAN=thread      the tests under ThreadSanitizer (test_threads
 #                             runs worlds on two threads)
 #   make test SIMD=0          the float build without its SSE loops (portable C)
+#   make test SIMD=avx2       the solver's lanes eight wide with AVX2 (CPUs with avx2)
 #   make stress               the hostile scenes with the 100,000-step long run
 #   make determinism          the determinism hash at -O0, -O2 and -O3 must agree
 #   make mutate               the mutation check: the tests must catch each bug of a list
@@ -40,7 +41,20 @@ endif
 ifeq ($(SIMD),0)
   VARIANT := $(if $(VARIANT),$(VARIANT)-nosimd,nosimd)
   DEFS += -DSX_NO_SIMD
+else ifeq ($(SIMD),avx2)
+  # The solver's lanes eight wide in the float build (src/simd.h). -mavx2
+  # without -mfma: no fused multiply-add, each lane computes what SSE2 does.
+  # Built only where the CPU runs it: no fallback that would hide the choice.
+  ifeq ($(shell grep -qw avx2 /proc/cpuinfo 2>/dev/null && echo yes),)
+    $(error SIMD=avx2: this CPU has no AVX2 (no avx2 flag in /proc/cpuinfo); build with SIMD=1)
+  endif
+  VARIANT := $(if $(VARIANT),$(VARIANT)-avx2,avx2)
+  DEFS += -mavx2
+else ifneq ($(SIMD),1)
+  $(error SIMD must be 1, 0 or avx2)
 endif
+# The SIMD variant as the summaries print it.
+SIMD_TAG := $(if $(filter 0,$(SIMD)), SIMD=0)$(if $(filter avx2,$(SIMD)), SIMD=avx2)
 SANFLAGS :=
 ifeq ($(SAN),1)
   VARIANT := $(if $(VARIANT),$(VARIANT)-san,san)
@@ -234,7 +248,7 @@ test: lib check-exports check-layers check-headers doc-examples sample-pyramid $
 	  echo "== $$t"; \
 	  if ! ./$$t; then failed=$$((failed + 1)); echo "FAILED: $$t"; fi; \
 	done; \
-	echo "sepax [$(SX_REAL)$(if $(filter 1,$(SAN)), san)$(if $(filter thread,$(SAN)), tsan)$(if $(filter 0,$(SIMD)), SIMD=0)]: $$((total - failed)) of $$total test programs passed"; \
+	echo "sepax [$(SX_REAL)$(if $(filter 1,$(SAN)), san)$(if $(filter thread,$(SAN)), tsan)$(SIMD_TAG)]: $$((total - failed)) of $$total test programs passed"; \
 	test $$failed -eq 0
 
 # make stress: the hostile scenes (tests/test_hostile.c) with the long run of
@@ -256,7 +270,7 @@ stress: $(OUT)/tests/test_hostile
 # also equal the values pinned per build in tests/test_determinism.c
 # (det_pins): a failure prints the line to pin when a change is intended.
 DET_LEVELS := O0 O2 O3
-DET_OUT := build/determinism$(if $(filter double,$(SX_REAL)),-double)$(if $(filter 0,$(SIMD)),-nosimd)
+DET_OUT := build/determinism$(if $(filter double,$(SX_REAL)),-double)$(if $(filter 0,$(SIMD)),-nosimd)$(if $(filter avx2,$(SIMD)),-avx2)
 DET_SRCS := $(SRCS) tests/test_determinism.c $(TEST_SUPPORT)
 .PHONY: determinism
 $(DET_OUT)/%/test_determinism: $(DET_SRCS) $(wildcard include/sepax/*.h src/*.h tests/support/*.h) | deps-test
@@ -269,11 +283,11 @@ determinism: $(DET_LEVELS:%=$(DET_OUT)/%/test_determinism)
 	  ./$(DET_OUT)/$$o/test_determinism > $(DET_OUT)/$$o/out.txt 2>&1 || { cat $(DET_OUT)/$$o/out.txt; exit 1; }; \
 	  h=$$(sed -n 's/^sepax determinism hash: //p' $(DET_OUT)/$$o/out.txt); \
 	  h="$$h narrowphase $$(sed -n 's/^sepax narrowphase hash: //p' $(DET_OUT)/$$o/out.txt)"; \
-	  echo "sepax determinism [$(SX_REAL)$(if $(filter 0,$(SIMD)), SIMD=0)] -$$o: $$h"; echo "$$h" >> $(DET_OUT)/hashes.tmp; \
+	  echo "sepax determinism [$(SX_REAL)$(SIMD_TAG)] -$$o: $$h"; echo "$$h" >> $(DET_OUT)/hashes.tmp; \
 	done; \
 	n=$$(sort -u $(DET_OUT)/hashes.tmp | wc -l); rm -f $(DET_OUT)/hashes.tmp; \
 	if [ "$$n" -ne 1 ]; then echo "sepax determinism: the hashes differ between optimisation levels"; exit 1; fi; \
-	echo "sepax determinism [$(SX_REAL)$(if $(filter 0,$(SIMD)), SIMD=0)]: -O0, -O2 and -O3 agree"
+	echo "sepax determinism [$(SX_REAL)$(SIMD_TAG)]: -O0, -O2 and -O3 agree"
 
 # make mutate [MUTATIONS=name,name]: the mutation check (scripts/mutate.py):
 # each small deliberate bug of tests/mutations.txt (solver, narrowphase,
@@ -590,7 +604,7 @@ clean:
 
 # One line per target; .ci/run checks that every .PHONY target is listed.
 help:
-	@echo "sepax make targets (variables: SX_REAL=double, SAN=1, SIMD=0, V=1, PREFIX=..., FLECS_DIR=...)"
+	@echo "sepax make targets (variables: SX_REAL=double, SAN=1, SIMD=0 or avx2, V=1, PREFIX=..., FLECS_DIR=...)"
 	@echo "  all, lib          build/libsepax.a and the versioned build/libsepax.so (the default)"
 	@echo "  test              build the library and run every cmocka test, the documentation's examples and the sample"
 	@echo "  check-exports     libsepax.so must export exactly the SX_API declarations of include/sepax/*.h"

@@ -16,15 +16,16 @@
  * impulse waits on the velocities the last one left), so what pays is
  * fewer operations on that chain, not fewer bytes, and more chains at once.
  *
- * Wide: the rigid passes solve independent constraints side by side, four
- * per sx_r4 (SSE2 in the float build). The gather colours the constraints
+ * Wide: the rigid passes solve independent constraints side by side,
+ * SX_LANES per sx_rw (four in SSE2 lanes, eight in the float build with
+ * AVX2: make SIMD=avx2). The gather colours the constraints
  * so that no two of a colour share a body the solver moves, in a way that
  * keeps each body's impulses in contact order (see "the wide passes"), so
  * the wide solver answers bit for bit what the one-at-a-time pass answers,
  * in every build, and the scalar path stays the reference. The lanes are
  * filled at the first gather after a collide (levers, masses, normals: all
  * fixed for the step) and kept through the step's sub-steps, which only
- * refresh the gaps; colours too small to fill a bundle stay one at a time.
+ * refresh the gaps; colours too small for a bundle stay one at a time.
  *
  * Velocities: each contact point is a constraint on the relative normal
  * velocity vn of the two bodies at the point. The solver visits the points in
@@ -565,8 +566,8 @@ static SX_ALWAYS_INLINE void sx_constraint_solve(sx_world *world, sx_constraint 
 
 /* ---- the wide passes -----------------------------------------------------
  *
- * The rigid velocity pass, four constraints at a time (sx_r4 lanes, SSE2
- * in the float build). The gather colours the constraints: each takes
+ * The rigid velocity pass, SX_LANES constraints at a time (sx_rw lanes:
+ * four in SSE2, eight in AVX2). The gather colours the constraints: each takes
  * colour 1 + the largest colour given so far to either of its bodies that
  * the solver moves, walking them in contact order. No two constraints of a
  * colour share such a body, and the constraints of every body have rising
@@ -578,126 +579,125 @@ static SX_ALWAYS_INLINE void sx_constraint_solve(sx_world *world, sx_constraint 
  * lost accuracy with it.) Entry 0, the bodies the solver does not move, is
  * read by every lane and stays exactly zero.
  *
- * Within a bundle of four, each lane runs the scalar pass's operations in
+ * Within a bundle, each lane runs the scalar pass's operations in
  * their order (no fused multiply-add); its branches (two-point friction
  * row or a single point, the block solve's four cases and its fallback to
  * point by point, speculative or overlapping points) are computed for the
  * lanes that need any and chosen per lane with masks, so a lane that does
  * not take a branch keeps its values bit for bit. Padding lanes have zero
  * masses and write to a sink entry past the solver bodies. Colours of
- * fewer constraints than a bundle holds (a stack: one per colour) stay on
- * the scalar path, where a bundle would be mostly padding. The soft
+ * fewer than SX_WIDE_MIN_COLOUR constraints (a stack: one per colour) stay
+ * on the scalar path, where a bundle would be mostly padding. The lane
+ * width changes which lanes share a register, never a lane's operations,
+ * so every width answers alike too. The soft
  * passes, the relax passes, the energy guard, the impact pass and the
  * positional pass stay scalar. */
 
-/* Colours of fewer constraints than this are solved one at a time (a full
- * bundle: below it the pyramids gained nothing and a stack lost). */
+/* Colours of fewer constraints than this are solved one at a time (four
+ * lanes: below it the pyramids gained nothing and a stack lost; with eight
+ * lanes a half-filled bundle still beats the scalar pass, and eight
+ * measured slower than four). */
 #define SX_WIDE_MIN_COLOUR 4
 
-/* Four solver bodies' velocities into lanes (vx, vy, w; pad kept). */
-static SX_ALWAYS_INLINE void sx_lanes_load(const sx_solver_body *bodies, const int *idx, sx_r4 *vx,
-                                           sx_r4 *vy, sx_r4 *w, sx_r4 *pad) {
-    *vx = sx_r4_load((const sx_real *)(const void *)&bodies[idx[0]]);
-    *vy = sx_r4_load((const sx_real *)(const void *)&bodies[idx[1]]);
-    *w = sx_r4_load((const sx_real *)(const void *)&bodies[idx[2]]);
-    *pad = sx_r4_load((const sx_real *)(const void *)&bodies[idx[3]]);
-    sx_r4_transpose(vx, vy, w, pad);
+/* sx_rw_gather4 moves records of four reals: a solver body is one. */
+typedef char sx_solver_body_is_four_reals[sizeof(sx_solver_body) == 4 * sizeof(sx_real) ? 1 : -1];
+
+/* SX_LANES solver bodies' velocities into lanes (vx, vy, w; pad kept). */
+static SX_ALWAYS_INLINE void sx_lanes_load(const sx_solver_body *bodies, const int *idx, sx_rw *vx,
+                                           sx_rw *vy, sx_rw *w, sx_rw *pad) {
+    sx_rw_gather4((const sx_real *)(const void *)bodies, idx, vx, vy, w, pad);
 }
 
-static SX_ALWAYS_INLINE void sx_lanes_store(sx_solver_body *bodies, const int *idx, sx_r4 vx,
-                                            sx_r4 vy, sx_r4 w, sx_r4 pad) {
-    sx_r4_transpose(&vx, &vy, &w, &pad);
-    sx_r4_store((sx_real *)(void *)&bodies[idx[0]], vx);
-    sx_r4_store((sx_real *)(void *)&bodies[idx[1]], vy);
-    sx_r4_store((sx_real *)(void *)&bodies[idx[2]], w);
-    sx_r4_store((sx_real *)(void *)&bodies[idx[3]], pad);
+static SX_ALWAYS_INLINE void sx_lanes_store(sx_solver_body *bodies, const int *idx, sx_rw vx,
+                                            sx_rw vy, sx_rw w, sx_rw pad) {
+    sx_rw_scatter4((sx_real *)(void *)bodies, idx, vx, vy, w, pad);
 }
 
-/* The two bodies of four constraints, lane-wise. */
+/* The two bodies of SX_LANES constraints, lane-wise. */
 typedef struct sx_lanes_pair {
-    sx_r4 vax, vay, wa, pa, vbx, vby, wb, pb;
+    sx_rw vax, vay, wa, pa, vbx, vby, wb, pb;
 } sx_lanes_pair;
 
 /* sx_lever_speed, lane-wise. */
-static SX_ALWAYS_INLINE sx_r4 sx_lanes_speed(const sx_lanes_pair *v, sx_r4 dx, sx_r4 dy,
-                                             sx_r4 r_a, sx_r4 r_b) {
-    sx_r4 ex = sx_r4_sub(v->vbx, v->vax), ey = sx_r4_sub(v->vby, v->vay);
-    sx_r4 s = sx_r4_add(sx_r4_mul(ex, dx), sx_r4_mul(ey, dy));
-    return sx_r4_sub(sx_r4_add(s, sx_r4_mul(v->wb, r_b)), sx_r4_mul(v->wa, r_a));
+static SX_ALWAYS_INLINE sx_rw sx_lanes_speed(const sx_lanes_pair *v, sx_rw dx, sx_rw dy, sx_rw r_a,
+                                             sx_rw r_b) {
+    sx_rw ex = sx_rw_sub(v->vbx, v->vax), ey = sx_rw_sub(v->vby, v->vay);
+    sx_rw s = sx_rw_add(sx_rw_mul(ex, dx), sx_rw_mul(ey, dy));
+    return sx_rw_sub(sx_rw_add(s, sx_rw_mul(v->wb, r_b)), sx_rw_mul(v->wa, r_a));
 }
 
 /* sx_lever_apply, lane-wise, in the lanes of mask m only (the selects
  * skipped when m holds every lane, the common case). */
-static SX_ALWAYS_INLINE void sx_lanes_apply(sx_lanes_pair *v, sx_m4 m, sx_r4 ma, sx_r4 ia,
-                                            sx_r4 mb, sx_r4 ib, sx_r4 dx, sx_r4 dy, sx_r4 r_a,
-                                            sx_r4 r_b, sx_r4 lambda) {
-    sx_r4 ix = sx_r4_mul(lambda, dx), iy = sx_r4_mul(lambda, dy);
-    if (sx_m4_all(m)) {
-        v->vax = sx_r4_sub(v->vax, sx_r4_mul(ma, ix));
-        v->vay = sx_r4_sub(v->vay, sx_r4_mul(ma, iy));
-        v->wa = sx_r4_sub(v->wa, sx_r4_mul(ia, sx_r4_mul(lambda, r_a)));
-        v->vbx = sx_r4_add(v->vbx, sx_r4_mul(mb, ix));
-        v->vby = sx_r4_add(v->vby, sx_r4_mul(mb, iy));
-        v->wb = sx_r4_add(v->wb, sx_r4_mul(ib, sx_r4_mul(lambda, r_b)));
+static SX_ALWAYS_INLINE void sx_lanes_apply(sx_lanes_pair *v, sx_mw m, sx_rw ma, sx_rw ia, sx_rw mb,
+                                            sx_rw ib, sx_rw dx, sx_rw dy, sx_rw r_a, sx_rw r_b,
+                                            sx_rw lambda) {
+    sx_rw ix = sx_rw_mul(lambda, dx), iy = sx_rw_mul(lambda, dy);
+    if (sx_mw_all(m)) {
+        v->vax = sx_rw_sub(v->vax, sx_rw_mul(ma, ix));
+        v->vay = sx_rw_sub(v->vay, sx_rw_mul(ma, iy));
+        v->wa = sx_rw_sub(v->wa, sx_rw_mul(ia, sx_rw_mul(lambda, r_a)));
+        v->vbx = sx_rw_add(v->vbx, sx_rw_mul(mb, ix));
+        v->vby = sx_rw_add(v->vby, sx_rw_mul(mb, iy));
+        v->wb = sx_rw_add(v->wb, sx_rw_mul(ib, sx_rw_mul(lambda, r_b)));
         return;
     }
-    v->vax = sx_r4_select(m, sx_r4_sub(v->vax, sx_r4_mul(ma, ix)), v->vax);
-    v->vay = sx_r4_select(m, sx_r4_sub(v->vay, sx_r4_mul(ma, iy)), v->vay);
-    v->wa = sx_r4_select(m, sx_r4_sub(v->wa, sx_r4_mul(ia, sx_r4_mul(lambda, r_a))), v->wa);
-    v->vbx = sx_r4_select(m, sx_r4_add(v->vbx, sx_r4_mul(mb, ix)), v->vbx);
-    v->vby = sx_r4_select(m, sx_r4_add(v->vby, sx_r4_mul(mb, iy)), v->vby);
-    v->wb = sx_r4_select(m, sx_r4_add(v->wb, sx_r4_mul(ib, sx_r4_mul(lambda, r_b))), v->wb);
+    v->vax = sx_rw_select(m, sx_rw_sub(v->vax, sx_rw_mul(ma, ix)), v->vax);
+    v->vay = sx_rw_select(m, sx_rw_sub(v->vay, sx_rw_mul(ma, iy)), v->vay);
+    v->wa = sx_rw_select(m, sx_rw_sub(v->wa, sx_rw_mul(ia, sx_rw_mul(lambda, r_a))), v->wa);
+    v->vbx = sx_rw_select(m, sx_rw_add(v->vbx, sx_rw_mul(mb, ix)), v->vbx);
+    v->vby = sx_rw_select(m, sx_rw_add(v->vby, sx_rw_mul(mb, iy)), v->vby);
+    v->wb = sx_rw_select(m, sx_rw_add(v->wb, sx_rw_mul(ib, sx_rw_mul(lambda, r_b))), v->wb);
 }
 
 /* sx_bounded_impulse, lane-wise. */
-static SX_ALWAYS_INLINE sx_r4 sx_lanes_bounded(sx_r4 x) {
-    sx_r4 hi = sx_r4_set1(SX_IMPULSE_LIMIT), lo = sx_r4_set1(-SX_IMPULSE_LIMIT);
-    sx_m4 in = sx_r4_le(x, hi);
-    sx_r4 inside;
-    if (sx_m4_all(sx_m4_and(in, sx_r4_ge(x, lo)))) return x; /* the common case */
-    inside = sx_r4_select(in, x, hi);
-    sx_r4 below = sx_r4_select(sx_r4_lt(x, lo), lo, sx_r4_zero());
-    return sx_r4_select(sx_r4_ge(x, lo), inside, below);
+static SX_ALWAYS_INLINE sx_rw sx_lanes_bounded(sx_rw x) {
+    sx_rw hi = sx_rw_set1(SX_IMPULSE_LIMIT), lo = sx_rw_set1(-SX_IMPULSE_LIMIT);
+    sx_mw in = sx_rw_le(x, hi);
+    sx_rw inside;
+    if (sx_mw_all(sx_mw_and(in, sx_rw_ge(x, lo)))) return x; /* the common case */
+    inside = sx_rw_select(in, x, hi);
+    sx_rw below = sx_rw_select(sx_rw_lt(x, lo), lo, sx_rw_zero());
+    return sx_rw_select(sx_rw_ge(x, lo), inside, below);
 }
 
 /* sx_clampr(a, -limit, limit), lane-wise. */
-static SX_ALWAYS_INLINE sx_r4 sx_lanes_clamp(sx_r4 a, sx_r4 limit) {
-    sx_r4 lo = sx_r4_neg(limit);
-    sx_r4 above = sx_r4_select(sx_r4_gt(a, limit), sx_r4_max(lo, limit), a);
-    return sx_r4_select(sx_r4_lt(a, lo), lo, above);
+static SX_ALWAYS_INLINE sx_rw sx_lanes_clamp(sx_rw a, sx_rw limit) {
+    sx_rw lo = sx_rw_neg(limit);
+    sx_rw above = sx_rw_select(sx_rw_gt(a, limit), sx_rw_max(lo, limit), a);
+    return sx_rw_select(sx_rw_lt(a, lo), lo, above);
 }
 
 /* sx_normal_error, lane-wise. */
-static SX_ALWAYS_INLINE sx_r4 sx_lanes_error(sx_r4 vn, sx_r4 gap, sx_r4 inv_h) {
-    return sx_r4_select(sx_r4_gt(gap, sx_r4_zero()), sx_r4_add(vn, sx_r4_mul(gap, inv_h)), vn);
+static SX_ALWAYS_INLINE sx_rw sx_lanes_error(sx_rw vn, sx_rw gap, sx_rw inv_h) {
+    return sx_rw_select(sx_rw_gt(gap, sx_rw_zero()), sx_rw_add(vn, sx_rw_mul(gap, inv_h)), vn);
 }
 
 /* The warm start of a bundle (sx_warm_start lane-wise). */
 static void sx_bundle_warm_start(sx_solver_body *bodies, const sx_bundle *u) {
     sx_lanes_pair v;
     /* the tangent (n.y, -n.x): sx_cross_vs(n, 1), exactly */
-    sx_r4 nx = sx_r4_load(u->nx), ny = sx_r4_load(u->ny), tx = ny, ty = sx_r4_neg(nx);
-    sx_r4 ma = sx_r4_load(u->inv_mass_a), ia = sx_r4_load(u->inv_inertia_a);
-    sx_r4 mb = sx_r4_load(u->inv_mass_b), ib = sx_r4_load(u->inv_inertia_b);
-    sx_m4 all = sx_m4_true(), two = sx_r4_gt(sx_r4_load(u->two), sx_r4_zero());
+    sx_rw nx = sx_rw_load(u->nx), ny = sx_rw_load(u->ny), tx = ny, ty = sx_rw_neg(nx);
+    sx_rw ma = sx_rw_load(u->inv_mass_a), ia = sx_rw_load(u->inv_inertia_a);
+    sx_rw mb = sx_rw_load(u->inv_mass_b), ib = sx_rw_load(u->inv_inertia_b);
+    sx_mw all = sx_mw_true(), two = sx_rw_gt(sx_rw_load(u->two), sx_rw_zero());
     int k;
     sx_lanes_load(bodies, u->body_a, &v.vax, &v.vay, &v.wa, &v.pa);
     sx_lanes_load(bodies, u->body_b, &v.vbx, &v.vby, &v.wb, &v.pb);
     for (k = 0; k < 2; ++k) {
-        sx_m4 m = k == 0 ? all : two;
-        sx_r4 ni = sx_r4_load(u->normal_impulse[k]), ti = sx_r4_load(u->tangent_impulse[k]);
-        sx_r4 ix = sx_r4_add(sx_r4_mul(ni, nx), sx_r4_mul(ti, tx));
-        sx_r4 iy = sx_r4_add(sx_r4_mul(ni, ny), sx_r4_mul(ti, ty));
-        sx_r4 ma_ = sx_r4_add(sx_r4_mul(ni, sx_r4_load(u->rn_a[k])),
-                              sx_r4_mul(ti, sx_r4_load(u->rt_a[k])));
-        sx_r4 mb_ = sx_r4_add(sx_r4_mul(ni, sx_r4_load(u->rn_b[k])),
-                              sx_r4_mul(ti, sx_r4_load(u->rt_b[k])));
-        v.vax = sx_r4_select(m, sx_r4_sub(v.vax, sx_r4_mul(ma, ix)), v.vax);
-        v.vay = sx_r4_select(m, sx_r4_sub(v.vay, sx_r4_mul(ma, iy)), v.vay);
-        v.wa = sx_r4_select(m, sx_r4_sub(v.wa, sx_r4_mul(ia, ma_)), v.wa);
-        v.vbx = sx_r4_select(m, sx_r4_add(v.vbx, sx_r4_mul(mb, ix)), v.vbx);
-        v.vby = sx_r4_select(m, sx_r4_add(v.vby, sx_r4_mul(mb, iy)), v.vby);
-        v.wb = sx_r4_select(m, sx_r4_add(v.wb, sx_r4_mul(ib, mb_)), v.wb);
+        sx_mw m = k == 0 ? all : two;
+        sx_rw ni = sx_rw_load(u->normal_impulse[k]), ti = sx_rw_load(u->tangent_impulse[k]);
+        sx_rw ix = sx_rw_add(sx_rw_mul(ni, nx), sx_rw_mul(ti, tx));
+        sx_rw iy = sx_rw_add(sx_rw_mul(ni, ny), sx_rw_mul(ti, ty));
+        sx_rw ma_ =
+            sx_rw_add(sx_rw_mul(ni, sx_rw_load(u->rn_a[k])), sx_rw_mul(ti, sx_rw_load(u->rt_a[k])));
+        sx_rw mb_ =
+            sx_rw_add(sx_rw_mul(ni, sx_rw_load(u->rn_b[k])), sx_rw_mul(ti, sx_rw_load(u->rt_b[k])));
+        v.vax = sx_rw_select(m, sx_rw_sub(v.vax, sx_rw_mul(ma, ix)), v.vax);
+        v.vay = sx_rw_select(m, sx_rw_sub(v.vay, sx_rw_mul(ma, iy)), v.vay);
+        v.wa = sx_rw_select(m, sx_rw_sub(v.wa, sx_rw_mul(ia, ma_)), v.wa);
+        v.vbx = sx_rw_select(m, sx_rw_add(v.vbx, sx_rw_mul(mb, ix)), v.vbx);
+        v.vby = sx_rw_select(m, sx_rw_add(v.vby, sx_rw_mul(mb, iy)), v.vby);
+        v.wb = sx_rw_select(m, sx_rw_add(v.wb, sx_rw_mul(ib, mb_)), v.wb);
     }
     sx_lanes_store(bodies, u->body_a, v.vax, v.vay, v.wa, v.pa);
     sx_lanes_store(bodies, u->body_b, v.vbx, v.vby, v.wb, v.pb);
@@ -705,40 +705,40 @@ static void sx_bundle_warm_start(sx_solver_body *bodies, const sx_bundle *u) {
 
 /* sx_solve_lcp2 for the lanes in `solved`: the first of its four cases that
  * fits, in *x1 and *x2; returns the lanes where one fits. */
-static SX_ALWAYS_INLINE sx_m4 sx_lanes_lcp2(const sx_bundle *u, sx_m4 solved, sx_r4 b1, sx_r4 b2,
-                                            sx_r4 *x1, sx_r4 *x2) {
-    sx_r4 zero = sx_r4_zero();
-    sx_r4 inv11 = sx_r4_load(u->inv11), inv12 = sx_r4_load(u->inv12);
-    sx_r4 inv22 = sx_r4_load(u->inv22);
-    sx_r4 y1 = sx_r4_neg(sx_r4_add(sx_r4_mul(inv11, b1), sx_r4_mul(inv12, b2)));
-    sx_r4 y2 = sx_r4_neg(sx_r4_add(sx_r4_mul(inv12, b1), sx_r4_mul(inv22, b2)));
-    sx_m4 c1 = sx_m4_and(sx_r4_ge(y1, zero), sx_r4_ge(y2, zero)), c2, c3, c4;
-    sx_r4 k11, k12, k22, z1, z2;
-    if (sx_m4_all(sx_m4_or(c1, sx_m4_andnot(solved, sx_m4_true())))) {
+static SX_ALWAYS_INLINE sx_mw sx_lanes_lcp2(const sx_bundle *u, sx_mw solved, sx_rw b1, sx_rw b2,
+                                            sx_rw *x1, sx_rw *x2) {
+    sx_rw zero = sx_rw_zero();
+    sx_rw inv11 = sx_rw_load(u->inv11), inv12 = sx_rw_load(u->inv12);
+    sx_rw inv22 = sx_rw_load(u->inv22);
+    sx_rw y1 = sx_rw_neg(sx_rw_add(sx_rw_mul(inv11, b1), sx_rw_mul(inv12, b2)));
+    sx_rw y2 = sx_rw_neg(sx_rw_add(sx_rw_mul(inv12, b1), sx_rw_mul(inv22, b2)));
+    sx_mw c1 = sx_mw_and(sx_rw_ge(y1, zero), sx_rw_ge(y2, zero)), c2, c3, c4;
+    sx_rw k11, k12, k22, z1, z2;
+    if (sx_mw_all(sx_mw_or(c1, sx_mw_andnot(solved, sx_mw_true())))) {
         /* both points push in every lane that solves as a block (a resting
          * face): the other cases and their divisions unneeded */
         *x1 = y1;
         *x2 = y2;
-        return sx_m4_and(solved, c1);
+        return sx_mw_and(solved, c1);
     }
-    k11 = sx_r4_load(u->k11);
-    k12 = sx_r4_load(u->k12);
-    k22 = sx_r4_load(u->k22);
-    z1 = sx_r4_div(sx_r4_neg(b1), k11);
-    c2 = sx_m4_and(sx_r4_ge(z1, zero), sx_r4_ge(sx_r4_add(sx_r4_mul(k12, z1), b2), zero));
-    z2 = sx_r4_div(sx_r4_neg(b2), k22);
-    c3 = sx_m4_and(sx_r4_ge(z2, zero), sx_r4_ge(sx_r4_add(sx_r4_mul(k12, z2), b1), zero));
-    c4 = sx_m4_and(sx_r4_ge(b1, zero), sx_r4_ge(b2, zero));
-    *x1 = sx_r4_select(c1, y1, sx_r4_select(c2, z1, zero));
-    *x2 = sx_r4_select(c1, y2, sx_r4_select(c2, zero, sx_r4_select(c3, z2, zero)));
-    return sx_m4_and(solved, sx_m4_or(sx_m4_or(c1, c2), sx_m4_or(c3, c4)));
+    k11 = sx_rw_load(u->k11);
+    k12 = sx_rw_load(u->k12);
+    k22 = sx_rw_load(u->k22);
+    z1 = sx_rw_div(sx_rw_neg(b1), k11);
+    c2 = sx_mw_and(sx_rw_ge(z1, zero), sx_rw_ge(sx_rw_add(sx_rw_mul(k12, z1), b2), zero));
+    z2 = sx_rw_div(sx_rw_neg(b2), k22);
+    c3 = sx_mw_and(sx_rw_ge(z2, zero), sx_rw_ge(sx_rw_add(sx_rw_mul(k12, z2), b1), zero));
+    c4 = sx_mw_and(sx_rw_ge(b1, zero), sx_rw_ge(b2, zero));
+    *x1 = sx_rw_select(c1, y1, sx_rw_select(c2, z1, zero));
+    *x2 = sx_rw_select(c1, y2, sx_rw_select(c2, zero, sx_rw_select(c3, z2, zero)));
+    return sx_mw_and(solved, sx_mw_or(sx_mw_or(c1, c2), sx_mw_or(c3, c4)));
 }
 
 /* The last pass hands a bundle's accumulated impulses back to its contacts
  * (the next sub-step's warm start, the contact reports). */
 static void sx_bundle_hand_back(sx_world *world, const sx_bundle *u) {
     int i;
-    for (i = 0; i < 4; ++i) {
+    for (i = 0; i < SX_LANES; ++i) {
         sx_contact_point *out;
         if (u->contact[i] < 0) continue;
         out = world->contacts[u->contact[i]].points;
@@ -752,102 +752,102 @@ static void sx_bundle_hand_back(sx_world *world, const sx_bundle *u) {
 }
 
 /* One rigid pass over a bundle: sx_constraint_solve's rigid branches for
- * four constraints at once. */
-static void sx_bundle_solve(sx_world *world, sx_bundle *u, sx_r4 inv_h, bool last) {
+ * SX_LANES constraints at once. */
+static void sx_bundle_solve(sx_world *world, sx_bundle *u, sx_rw inv_h, bool last) {
     sx_solver_body *bodies = world->solver_bodies;
     sx_lanes_pair v;
-    sx_r4 zero = sx_r4_zero();
-    sx_r4 nx = sx_r4_load(u->nx), ny = sx_r4_load(u->ny);
-    sx_r4 ma = sx_r4_load(u->inv_mass_a), ia = sx_r4_load(u->inv_inertia_a);
-    sx_r4 mb = sx_r4_load(u->inv_mass_b), ib = sx_r4_load(u->inv_inertia_b);
-    sx_r4 friction = sx_r4_load(u->friction);
-    sx_r4 n1 = sx_r4_load(u->normal_impulse[0]), n2 = sx_r4_load(u->normal_impulse[1]);
-    sx_r4 t1 = sx_r4_load(u->tangent_impulse[0]), t2 = sx_r4_load(u->tangent_impulse[1]);
-    sx_r4 rna1 = sx_r4_load(u->rn_a[0]), rnb1 = sx_r4_load(u->rn_b[0]);
-    sx_r4 rna2 = sx_r4_load(u->rn_a[1]), rnb2 = sx_r4_load(u->rn_b[1]);
-    sx_r4 g1 = sx_r4_load(u->gap[0]), g2 = sx_r4_load(u->gap[1]);
-    sx_r4 vn1, vn2, err1;
-    sx_m4 all = sx_m4_true(), two = sx_r4_gt(sx_r4_load(u->two), zero);
-    sx_m4 rubs = sx_r4_gt(friction, zero), solved, rest;
-    sx_m4 row = sx_m4_and(rubs, two), single = sx_m4_andnot(two, rubs);
+    sx_rw zero = sx_rw_zero();
+    sx_rw nx = sx_rw_load(u->nx), ny = sx_rw_load(u->ny);
+    sx_rw ma = sx_rw_load(u->inv_mass_a), ia = sx_rw_load(u->inv_inertia_a);
+    sx_rw mb = sx_rw_load(u->inv_mass_b), ib = sx_rw_load(u->inv_inertia_b);
+    sx_rw friction = sx_rw_load(u->friction);
+    sx_rw n1 = sx_rw_load(u->normal_impulse[0]), n2 = sx_rw_load(u->normal_impulse[1]);
+    sx_rw t1 = sx_rw_load(u->tangent_impulse[0]), t2 = sx_rw_load(u->tangent_impulse[1]);
+    sx_rw rna1 = sx_rw_load(u->rn_a[0]), rnb1 = sx_rw_load(u->rn_b[0]);
+    sx_rw rna2 = sx_rw_load(u->rn_a[1]), rnb2 = sx_rw_load(u->rn_b[1]);
+    sx_rw g1 = sx_rw_load(u->gap[0]), g2 = sx_rw_load(u->gap[1]);
+    sx_rw vn1, vn2, err1;
+    sx_mw all = sx_mw_true(), two = sx_rw_gt(sx_rw_load(u->two), zero);
+    sx_mw rubs = sx_rw_gt(friction, zero), solved, rest;
+    sx_mw row = sx_mw_and(rubs, two), single = sx_mw_andnot(two, rubs);
     sx_lanes_load(bodies, u->body_a, &v.vax, &v.vay, &v.wa, &v.pa);
     sx_lanes_load(bodies, u->body_b, &v.vbx, &v.vby, &v.wb, &v.pb);
 
     /* friction (sx_friction_row2, or a one-point contact's point) */
-    if (sx_m4_any(row)) {
-        sx_r4 tx = ny, ty = sx_r4_neg(nx);
-        sx_r4 rta = sx_r4_load(u->row_rt_a), rtb = sx_r4_load(u->row_rt_b);
-        sx_r4 normal = sx_r4_add(n1, n2), limit = sx_r4_mul(friction, normal);
-        sx_r4 old = sx_r4_add(t1, t2);
-        sx_r4 lambda = sx_r4_mul(sx_r4_neg(sx_r4_load(u->row_mass)),
-                                 sx_lanes_speed(&v, tx, ty, rta, rtb));
-        sx_r4 total = sx_lanes_bounded(sx_lanes_clamp(sx_r4_add(old, lambda), limit));
-        sx_r4 share = sx_r4_select(sx_r4_gt(normal, zero), sx_r4_mul(total, sx_r4_div(n1, normal)),
-                                   sx_r4_mul(sx_r4_set1(SX_R(0.5)), total));
-        if (sx_m4_all(row)) {
+    if (sx_mw_any(row)) {
+        sx_rw tx = ny, ty = sx_rw_neg(nx);
+        sx_rw rta = sx_rw_load(u->row_rt_a), rtb = sx_rw_load(u->row_rt_b);
+        sx_rw normal = sx_rw_add(n1, n2), limit = sx_rw_mul(friction, normal);
+        sx_rw old = sx_rw_add(t1, t2);
+        sx_rw lambda =
+            sx_rw_mul(sx_rw_neg(sx_rw_load(u->row_mass)), sx_lanes_speed(&v, tx, ty, rta, rtb));
+        sx_rw total = sx_lanes_bounded(sx_lanes_clamp(sx_rw_add(old, lambda), limit));
+        sx_rw share = sx_rw_select(sx_rw_gt(normal, zero), sx_rw_mul(total, sx_rw_div(n1, normal)),
+                                   sx_rw_mul(sx_rw_set1(SX_R(0.5)), total));
+        if (sx_mw_all(row)) {
             t1 = share;
-            t2 = sx_r4_sub(total, share);
+            t2 = sx_rw_sub(total, share);
         } else {
-            t1 = sx_r4_select(row, share, t1);
-            t2 = sx_r4_select(row, sx_r4_sub(total, share), t2);
+            t1 = sx_rw_select(row, share, t1);
+            t2 = sx_rw_select(row, sx_rw_sub(total, share), t2);
         }
-        sx_lanes_apply(&v, row, ma, ia, mb, ib, tx, ty, rta, rtb, sx_r4_sub(total, old));
+        sx_lanes_apply(&v, row, ma, ia, mb, ib, tx, ty, rta, rtb, sx_rw_sub(total, old));
     }
-    if (sx_m4_any(single)) {
-        sx_r4 tx = ny, ty = sx_r4_neg(nx);
-        sx_r4 rta = sx_r4_load(u->rt_a[0]), rtb = sx_r4_load(u->rt_b[0]);
-        sx_r4 limit = sx_r4_mul(friction, n1);
-        sx_r4 lambda = sx_r4_mul(sx_r4_neg(sx_r4_load(u->tangent_mass[0])),
+    if (sx_mw_any(single)) {
+        sx_rw tx = ny, ty = sx_rw_neg(nx);
+        sx_rw rta = sx_rw_load(u->rt_a[0]), rtb = sx_rw_load(u->rt_b[0]);
+        sx_rw limit = sx_rw_mul(friction, n1);
+        sx_rw lambda = sx_rw_mul(sx_rw_neg(sx_rw_load(u->tangent_mass[0])),
                                  sx_lanes_speed(&v, tx, ty, rta, rtb));
-        sx_r4 total = sx_lanes_bounded(sx_lanes_clamp(sx_r4_add(t1, lambda), limit));
-        sx_lanes_apply(&v, single, ma, ia, mb, ib, tx, ty, rta, rtb, sx_r4_sub(total, t1));
-        t1 = sx_r4_select(single, total, t1);
+        sx_rw total = sx_lanes_bounded(sx_lanes_clamp(sx_rw_add(t1, lambda), limit));
+        sx_lanes_apply(&v, single, ma, ia, mb, ib, tx, ty, rta, rtb, sx_rw_sub(total, t1));
+        t1 = sx_rw_select(single, total, t1);
     }
 
     /* the normal points: the block solve where it applies and succeeds */
     vn1 = sx_lanes_speed(&v, nx, ny, rna1, rnb1);
     err1 = sx_lanes_error(vn1, g1, inv_h);
-    solved = sx_r4_gt(sx_r4_load(u->block_solve), zero);
-    if (sx_m4_any(solved)) {
-        sx_r4 k11 = sx_r4_load(u->k11), k12 = sx_r4_load(u->k12), k22 = sx_r4_load(u->k22);
-        sx_r4 bound = sx_r4_set1(SX_IMPULSE_LIMIT);
-        sx_r4 b1, b2, x1, x2;
+    solved = sx_rw_gt(sx_rw_load(u->block_solve), zero);
+    if (sx_mw_any(solved)) {
+        sx_rw k11 = sx_rw_load(u->k11), k12 = sx_rw_load(u->k12), k22 = sx_rw_load(u->k22);
+        sx_rw bound = sx_rw_set1(SX_IMPULSE_LIMIT);
+        sx_rw b1, b2, x1, x2;
         vn2 = sx_lanes_speed(&v, nx, ny, rna2, rnb2);
-        b1 = sx_r4_sub(err1, sx_r4_add(sx_r4_mul(k11, n1), sx_r4_mul(k12, n2)));
-        b2 = sx_r4_sub(sx_lanes_error(vn2, g2, inv_h),
-                       sx_r4_add(sx_r4_mul(k12, n1), sx_r4_mul(k22, n2)));
+        b1 = sx_rw_sub(err1, sx_rw_add(sx_rw_mul(k11, n1), sx_rw_mul(k12, n2)));
+        b2 = sx_rw_sub(sx_lanes_error(vn2, g2, inv_h),
+                       sx_rw_add(sx_rw_mul(k12, n1), sx_rw_mul(k22, n2)));
         solved = sx_lanes_lcp2(u, solved, b1, b2, &x1, &x2);
-        solved = sx_m4_and(solved, sx_m4_and(sx_r4_le(x1, bound), sx_r4_le(x2, bound)));
-        sx_lanes_apply(&v, solved, ma, ia, mb, ib, nx, ny, rna1, rnb1, sx_r4_sub(x1, n1));
-        sx_lanes_apply(&v, solved, ma, ia, mb, ib, nx, ny, rna2, rnb2, sx_r4_sub(x2, n2));
-        n1 = sx_r4_select(solved, x1, n1);
-        n2 = sx_r4_select(solved, x2, n2);
+        solved = sx_mw_and(solved, sx_mw_and(sx_rw_le(x1, bound), sx_rw_le(x2, bound)));
+        sx_lanes_apply(&v, solved, ma, ia, mb, ib, nx, ny, rna1, rnb1, sx_rw_sub(x1, n1));
+        sx_lanes_apply(&v, solved, ma, ia, mb, ib, nx, ny, rna2, rnb2, sx_rw_sub(x2, n2));
+        n1 = sx_rw_select(solved, x1, n1);
+        n2 = sx_rw_select(solved, x2, n2);
     }
     /* the others point by point (sx_solve_normal_point, rigid) */
-    rest = sx_m4_andnot(solved, all);
-    if (sx_m4_any(rest)) {
-        sx_r4 total, lambda;
-        sx_m4 rest2 = sx_m4_and(rest, two);
-        lambda = sx_r4_mul(sx_r4_neg(sx_r4_load(u->normal_mass[0])), err1);
-        total = sx_lanes_bounded(sx_r4_max(sx_r4_add(n1, lambda), zero));
-        sx_lanes_apply(&v, rest, ma, ia, mb, ib, nx, ny, rna1, rnb1, sx_r4_sub(total, n1));
-        n1 = sx_r4_select(rest, total, n1);
-        if (sx_m4_any(rest2)) {
+    rest = sx_mw_andnot(solved, all);
+    if (sx_mw_any(rest)) {
+        sx_rw total, lambda;
+        sx_mw rest2 = sx_mw_and(rest, two);
+        lambda = sx_rw_mul(sx_rw_neg(sx_rw_load(u->normal_mass[0])), err1);
+        total = sx_lanes_bounded(sx_rw_max(sx_rw_add(n1, lambda), zero));
+        sx_lanes_apply(&v, rest, ma, ia, mb, ib, nx, ny, rna1, rnb1, sx_rw_sub(total, n1));
+        n1 = sx_rw_select(rest, total, n1);
+        if (sx_mw_any(rest2)) {
             vn2 = sx_lanes_speed(&v, nx, ny, rna2, rnb2);
-            lambda = sx_r4_mul(sx_r4_neg(sx_r4_load(u->normal_mass[1])),
-                               sx_lanes_error(vn2, g2, inv_h));
-            total = sx_lanes_bounded(sx_r4_max(sx_r4_add(n2, lambda), zero));
-            sx_lanes_apply(&v, rest2, ma, ia, mb, ib, nx, ny, rna2, rnb2, sx_r4_sub(total, n2));
-            n2 = sx_r4_select(rest2, total, n2);
+            lambda =
+                sx_rw_mul(sx_rw_neg(sx_rw_load(u->normal_mass[1])), sx_lanes_error(vn2, g2, inv_h));
+            total = sx_lanes_bounded(sx_rw_max(sx_rw_add(n2, lambda), zero));
+            sx_lanes_apply(&v, rest2, ma, ia, mb, ib, nx, ny, rna2, rnb2, sx_rw_sub(total, n2));
+            n2 = sx_rw_select(rest2, total, n2);
         }
     }
 
     sx_lanes_store(bodies, u->body_a, v.vax, v.vay, v.wa, v.pa);
     sx_lanes_store(bodies, u->body_b, v.vbx, v.vby, v.wb, v.pb);
-    sx_r4_store(u->normal_impulse[0], n1);
-    sx_r4_store(u->normal_impulse[1], n2);
-    sx_r4_store(u->tangent_impulse[0], t1);
-    sx_r4_store(u->tangent_impulse[1], t2);
+    sx_rw_store(u->normal_impulse[0], n1);
+    sx_rw_store(u->normal_impulse[1], n2);
+    sx_rw_store(u->tangent_impulse[0], t1);
+    sx_rw_store(u->tangent_impulse[1], t2);
     if (last) sx_bundle_hand_back(world, u);
 }
 
@@ -868,7 +868,7 @@ static void sx_constraints_pass(sx_world *world, sx_real h, bool relax, bool las
     sx_real max_push = world->def.max_correction_speed;
     bool soft = !relax && world->def.contact_hertz > SX_R(0.0);
     sx_solver_body *bodies = world->solver_bodies;
-    sx_r4 inv_h4 = sx_r4_set1(inv_h);
+    sx_rw inv_h4 = sx_rw_set1(inv_h);
     int s, i;
     for (s = 0; s < world->span_count; ++s) {
         const sx_colour_span *span = &world->spans[s];
@@ -1094,7 +1094,7 @@ static void sx_solver_warm_start(sx_world *world, bool gaps) {
         for (i = span->first; i < end; ++i) {
             if (span->wide) {
                 sx_bundle *u = &world->bundles[i];
-                for (l = 0; l < 4 && gaps; ++l) {
+                for (l = 0; l < SX_LANES && gaps; ++l) {
                     const sx_contact *ct;
                     if (u->contact[l] < 0) continue;
                     ct = &world->contacts[u->contact[l]];
@@ -1126,8 +1126,8 @@ static void sx_solver_refresh(sx_world *world) {
             sx_real ni = src->normal_impulse, ti = src->tangent_impulse;
             if (!world->groups_ready) ni = ti = SX_R(0.0);
             if (it->wide) {
-                sx_bundle *u = &world->bundles[it->at >> 2];
-                int l = it->at & 3;
+                sx_bundle *u = &world->bundles[it->at / SX_LANES];
+                int l = it->at % SX_LANES;
                 u->normal_impulse[k][l] = ni;
                 u->tangent_impulse[k][l] = ti;
             } else {
@@ -1205,7 +1205,7 @@ static int sx_gather_items(sx_world *world, bool *same_out) {
             for (k = 0; k < ct->count; ++k) {
                 ct->points[k].impact_impulse = SX_R(0.0);
                 if (it->wide)
-                    world->bundles[it->at >> 2].gap[k][it->at & 3] = ct->points[k].gap;
+                    world->bundles[it->at / SX_LANES].gap[k][it->at % SX_LANES] = ct->points[k].gap;
                 else
                     world->constraints[it->at].points[k].gap = ct->points[k].gap;
             }
@@ -1232,7 +1232,7 @@ static int sx_gather_items(sx_world *world, bool *same_out) {
 
 /* Colours the n items in contact order (one past the last colour either
  * moved body has had: the wide passes above say why) and places each colour:
- * as bundles of four lanes when it has enough constraints to fill them, else
+ * as bundles of SX_LANES lanes when it has at least SX_WIDE_MIN_COLOUR, else
  * as constraints solved one at a time. Returns the colour count. */
 static int sx_colour_items(sx_world *world, int n) {
     sx_colour_item *items = world->colour_items;
@@ -1257,9 +1257,9 @@ static int sx_colour_items(sx_world *world, int n) {
         span->wide = count >= min_colour;
         if (span->wide) {
             span->first = world->bundle_count;
-            span->count = (count + 3) / 4;
+            span->count = (count + SX_LANES - 1) / SX_LANES;
             world->bundle_count += span->count;
-            world->colour_cursor[i] = 4 * span->first;
+            world->colour_cursor[i] = SX_LANES * span->first;
         } else {
             span->first = world->constraint_count;
             span->count = count;
@@ -1293,7 +1293,7 @@ static bool sx_fill_colours(sx_world *world, int n, int colours) {
         if (it->wide) {
             sx_constraint c;
             sx_constraint_fill(world, it->contact, it->body_a, it->body_b, &c, true);
-            sx_bundle_fill(&world->bundles[it->at >> 2], it->at & 3, &c, sink);
+            sx_bundle_fill(&world->bundles[it->at / SX_LANES], it->at % SX_LANES, &c, sink);
         } else {
             sx_constraint_fill(world, it->contact, it->body_a, it->body_b,
                                &world->constraints[it->at], true);
@@ -1303,8 +1303,8 @@ static bool sx_fill_colours(sx_world *world, int n, int colours) {
         const sx_colour_span *span = &world->spans[i];
         int at;
         if (!span->wide) continue;
-        for (at = world->colour_cursor[i]; at < 4 * (span->first + span->count); ++at)
-            sx_bundle_fill(&world->bundles[at >> 2], at & 3, NULL, sink);
+        for (at = world->colour_cursor[i]; at < SX_LANES * (span->first + span->count); ++at)
+            sx_bundle_fill(&world->bundles[at / SX_LANES], at % SX_LANES, NULL, sink);
     }
     /* colours in a row of the same kind are one span for the passes (their
      * constraints or bundles follow each other; a stack is one constraint

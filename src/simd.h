@@ -1,10 +1,12 @@
-/* sepax — private: four lanes of sx_real, the one place SIMD lives.
+/* sepax — private: lanes of sx_real, the one place SIMD lives.
  *
- * The narrowphase's inner loops and the solver's wide passes are written
- * once against these operations. On x86-64 (every CPU there has SSE2) the
- * float build maps them to one SSE2 register of four floats and the double
- * build to two registers of two doubles; -DSX_NO_SIMD (make SIMD=0) and
- * other CPUs map them to plain C over four lanes. Each operation is an
+ * The narrowphase's inner loops (sx_r4, four lanes) and the solver's wide
+ * passes (sx_rw, SX_LANES lanes) are written once against these
+ * operations. On x86-64 (every CPU there has SSE2) the float build maps
+ * sx_r4 to one SSE2 register of four floats and the double build to two
+ * registers of two doubles; -DSX_NO_SIMD (make SIMD=0) and other CPUs map
+ * it to plain C over four lanes. sx_rw is sx_r4 except with -mavx2 (make
+ * SIMD=avx2): eight floats, or four doubles, in one AVX register. Each operation is an
  * IEEE-exact lane-wise operation (no fused multiply-add, no approximate
  * reciprocal) and the scalar fallback reproduces SSE2's rules for min, max
  * and comparisons with NaN, so every path answers bit for bit alike. */
@@ -531,5 +533,221 @@ static SX_ALWAYS_INLINE sx_r4 sx_r4_max_lanes(sx_r4 a) {
 static SX_ALWAYS_INLINE bool sx_r4_any_nan(sx_r4 a) { return sx_m4_any(sx_r4_unordered(a, a)); }
 /** True when no lane of a is NaN or infinite (a - a is 0 for those only). */
 static SX_ALWAYS_INLINE bool sx_r4_all_finite(sx_r4 a) { return !sx_r4_any_nan(sx_r4_sub(a, a)); }
+
+/* ---- the solver's lanes: SX_LANES wide ----------------------------------
+ * The wide contact solver is written once against sx_rw (SX_LANES reals)
+ * and sx_mw (their masks). Built with -mavx2 (make SIMD=avx2), the float
+ * build maps them to one AVX register of eight floats and the double build
+ * to one of four doubles (faster than sx_r4's two halves); every other
+ * build maps them to sx_r4's four lanes. The operations are those of sx_r4
+ * lane for lane (the same IEEE operations, SSE2's rules for min, max and
+ * NaN in comparisons), so a lane answers alike in every width. */
+
+#if SX_SIMD && !SX_SIMD_F64 && defined(__AVX2__)
+
+#include <immintrin.h>
+
+#define SX_LANES 8
+
+/** SX_LANES reals. */
+typedef __m256 sx_rw;
+/** SX_LANES lane masks (all bits set: true, all clear: false). */
+typedef __m256 sx_mw;
+
+static SX_ALWAYS_INLINE sx_rw sx_rw_set1(sx_real a) { return _mm256_set1_ps(a); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_zero(void) { return _mm256_setzero_ps(); }
+/** SX_LANES reals from memory, any alignment. */
+static SX_ALWAYS_INLINE sx_rw sx_rw_load(const sx_real *p) { return _mm256_loadu_ps(p); }
+static SX_ALWAYS_INLINE void sx_rw_store(sx_real *p, sx_rw a) { _mm256_storeu_ps(p, a); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_add(sx_rw a, sx_rw b) { return _mm256_add_ps(a, b); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_sub(sx_rw a, sx_rw b) { return _mm256_sub_ps(a, b); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_mul(sx_rw a, sx_rw b) { return _mm256_mul_ps(a, b); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_div(sx_rw a, sx_rw b) { return _mm256_div_ps(a, b); }
+/** sx_r4_min's rule: b when either is NaN. */
+static SX_ALWAYS_INLINE sx_rw sx_rw_min(sx_rw a, sx_rw b) { return _mm256_min_ps(a, b); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_max(sx_rw a, sx_rw b) { return _mm256_max_ps(a, b); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_neg(sx_rw a) { return _mm256_xor_ps(a, _mm256_set1_ps(-0.0f)); }
+
+/* The ordered, signalling predicates: SSE2's cmplt, cmple and their
+ * swapped forms (false when either is NaN). */
+static SX_ALWAYS_INLINE sx_mw sx_rw_lt(sx_rw a, sx_rw b) { return _mm256_cmp_ps(a, b, _CMP_LT_OS); }
+static SX_ALWAYS_INLINE sx_mw sx_rw_le(sx_rw a, sx_rw b) { return _mm256_cmp_ps(a, b, _CMP_LE_OS); }
+static SX_ALWAYS_INLINE sx_mw sx_rw_gt(sx_rw a, sx_rw b) { return _mm256_cmp_ps(a, b, _CMP_GT_OS); }
+static SX_ALWAYS_INLINE sx_mw sx_rw_ge(sx_rw a, sx_rw b) { return _mm256_cmp_ps(a, b, _CMP_GE_OS); }
+
+static SX_ALWAYS_INLINE sx_mw sx_mw_and(sx_mw a, sx_mw b) { return _mm256_and_ps(a, b); }
+static SX_ALWAYS_INLINE sx_mw sx_mw_or(sx_mw a, sx_mw b) { return _mm256_or_ps(a, b); }
+/** !a && b per lane. */
+static SX_ALWAYS_INLINE sx_mw sx_mw_andnot(sx_mw a, sx_mw b) { return _mm256_andnot_ps(a, b); }
+static SX_ALWAYS_INLINE sx_mw sx_mw_true(void) {
+    return _mm256_castsi256_ps(_mm256_set1_epi32(-1));
+}
+/** Bit i set when lane i is true. */
+static SX_ALWAYS_INLINE int sx_mw_bits(sx_mw m) { return _mm256_movemask_ps(m); }
+/** m ? a : b per lane. */
+static SX_ALWAYS_INLINE sx_rw sx_rw_select(sx_mw m, sx_rw a, sx_rw b) {
+    return _mm256_blendv_ps(b, a, m);
+}
+
+/* The 4x4 transpose of sx_r4_transpose within each 128-bit half. */
+static SX_ALWAYS_INLINE void sx_rw_transpose_halves(sx_rw *a, sx_rw *b, sx_rw *c, sx_rw *d) {
+    __m256 t0 = _mm256_unpacklo_ps(*a, *b), t1 = _mm256_unpacklo_ps(*c, *d);
+    __m256 t2 = _mm256_unpackhi_ps(*a, *b), t3 = _mm256_unpackhi_ps(*c, *d);
+    *a = _mm256_shuffle_ps(t0, t1, _MM_SHUFFLE(1, 0, 1, 0));
+    *b = _mm256_shuffle_ps(t0, t1, _MM_SHUFFLE(3, 2, 3, 2));
+    *c = _mm256_shuffle_ps(t2, t3, _MM_SHUFFLE(1, 0, 1, 0));
+    *d = _mm256_shuffle_ps(t2, t3, _MM_SHUFFLE(3, 2, 3, 2));
+}
+/** Records of four reals (base + 4 idx[l], l < SX_LANES) turned into lanes:
+ *  *a holds every record's first real, *b the second, and so on. */
+static SX_ALWAYS_INLINE void sx_rw_gather4(const sx_real *base, const int *idx, sx_rw *a, sx_rw *b,
+                                           sx_rw *c, sx_rw *d) {
+    /* records l and l + 4 share a register, one per half */
+    *a = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(base + 4 * idx[0])),
+                              _mm_loadu_ps(base + 4 * idx[4]), 1);
+    *b = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(base + 4 * idx[1])),
+                              _mm_loadu_ps(base + 4 * idx[5]), 1);
+    *c = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(base + 4 * idx[2])),
+                              _mm_loadu_ps(base + 4 * idx[6]), 1);
+    *d = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(base + 4 * idx[3])),
+                              _mm_loadu_ps(base + 4 * idx[7]), 1);
+    sx_rw_transpose_halves(a, b, c, d);
+}
+/** sx_rw_gather4 backwards: lane l of a, b, c, d to record idx[l], in lane
+ *  order (a record named twice keeps its last lane's values). */
+static SX_ALWAYS_INLINE void sx_rw_scatter4(sx_real *base, const int *idx, sx_rw a, sx_rw b,
+                                            sx_rw c, sx_rw d) {
+    sx_rw_transpose_halves(&a, &b, &c, &d);
+    _mm_storeu_ps(base + 4 * idx[0], _mm256_castps256_ps128(a));
+    _mm_storeu_ps(base + 4 * idx[1], _mm256_castps256_ps128(b));
+    _mm_storeu_ps(base + 4 * idx[2], _mm256_castps256_ps128(c));
+    _mm_storeu_ps(base + 4 * idx[3], _mm256_castps256_ps128(d));
+    _mm_storeu_ps(base + 4 * idx[4], _mm256_extractf128_ps(a, 1));
+    _mm_storeu_ps(base + 4 * idx[5], _mm256_extractf128_ps(b, 1));
+    _mm_storeu_ps(base + 4 * idx[6], _mm256_extractf128_ps(c, 1));
+    _mm_storeu_ps(base + 4 * idx[7], _mm256_extractf128_ps(d, 1));
+}
+
+#elif SX_SIMD_F64 && defined(__AVX2__)
+
+#include <immintrin.h>
+
+/* The double build with -mavx2: four lanes still, in one register of four
+ * doubles instead of sx_r4's two of two. */
+#define SX_LANES 4
+
+typedef __m256d sx_rw;
+typedef __m256d sx_mw;
+
+static SX_ALWAYS_INLINE sx_rw sx_rw_set1(sx_real a) { return _mm256_set1_pd(a); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_zero(void) { return _mm256_setzero_pd(); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_load(const sx_real *p) { return _mm256_loadu_pd(p); }
+static SX_ALWAYS_INLINE void sx_rw_store(sx_real *p, sx_rw a) { _mm256_storeu_pd(p, a); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_add(sx_rw a, sx_rw b) { return _mm256_add_pd(a, b); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_sub(sx_rw a, sx_rw b) { return _mm256_sub_pd(a, b); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_mul(sx_rw a, sx_rw b) { return _mm256_mul_pd(a, b); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_div(sx_rw a, sx_rw b) { return _mm256_div_pd(a, b); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_min(sx_rw a, sx_rw b) { return _mm256_min_pd(a, b); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_max(sx_rw a, sx_rw b) { return _mm256_max_pd(a, b); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_neg(sx_rw a) { return _mm256_xor_pd(a, _mm256_set1_pd(-0.0)); }
+static SX_ALWAYS_INLINE sx_mw sx_rw_lt(sx_rw a, sx_rw b) { return _mm256_cmp_pd(a, b, _CMP_LT_OS); }
+static SX_ALWAYS_INLINE sx_mw sx_rw_le(sx_rw a, sx_rw b) { return _mm256_cmp_pd(a, b, _CMP_LE_OS); }
+static SX_ALWAYS_INLINE sx_mw sx_rw_gt(sx_rw a, sx_rw b) { return _mm256_cmp_pd(a, b, _CMP_GT_OS); }
+static SX_ALWAYS_INLINE sx_mw sx_rw_ge(sx_rw a, sx_rw b) { return _mm256_cmp_pd(a, b, _CMP_GE_OS); }
+static SX_ALWAYS_INLINE sx_mw sx_mw_and(sx_mw a, sx_mw b) { return _mm256_and_pd(a, b); }
+static SX_ALWAYS_INLINE sx_mw sx_mw_or(sx_mw a, sx_mw b) { return _mm256_or_pd(a, b); }
+static SX_ALWAYS_INLINE sx_mw sx_mw_andnot(sx_mw a, sx_mw b) { return _mm256_andnot_pd(a, b); }
+static SX_ALWAYS_INLINE sx_mw sx_mw_true(void) {
+    return _mm256_castsi256_pd(_mm256_set1_epi32(-1));
+}
+static SX_ALWAYS_INLINE int sx_mw_bits(sx_mw m) { return _mm256_movemask_pd(m); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_select(sx_mw m, sx_rw a, sx_rw b) {
+    return _mm256_blendv_pd(b, a, m);
+}
+/* A 4x4 transpose of doubles: pairs within each half, then the halves. */
+static SX_ALWAYS_INLINE void sx_rw_transpose(sx_rw *a, sx_rw *b, sx_rw *c, sx_rw *d) {
+    __m256d t0 = _mm256_unpacklo_pd(*a, *b), t1 = _mm256_unpackhi_pd(*a, *b);
+    __m256d t2 = _mm256_unpacklo_pd(*c, *d), t3 = _mm256_unpackhi_pd(*c, *d);
+    *a = _mm256_permute2f128_pd(t0, t2, 0x20);
+    *b = _mm256_permute2f128_pd(t1, t3, 0x20);
+    *c = _mm256_permute2f128_pd(t0, t2, 0x31);
+    *d = _mm256_permute2f128_pd(t1, t3, 0x31);
+}
+static SX_ALWAYS_INLINE void sx_rw_gather4(const sx_real *base, const int *idx, sx_rw *a, sx_rw *b,
+                                           sx_rw *c, sx_rw *d) {
+    *a = _mm256_loadu_pd(base + 4 * idx[0]);
+    *b = _mm256_loadu_pd(base + 4 * idx[1]);
+    *c = _mm256_loadu_pd(base + 4 * idx[2]);
+    *d = _mm256_loadu_pd(base + 4 * idx[3]);
+    sx_rw_transpose(a, b, c, d);
+}
+static SX_ALWAYS_INLINE void sx_rw_scatter4(sx_real *base, const int *idx, sx_rw a, sx_rw b,
+                                            sx_rw c, sx_rw d) {
+    sx_rw_transpose(&a, &b, &c, &d);
+    _mm256_storeu_pd(base + 4 * idx[0], a);
+    _mm256_storeu_pd(base + 4 * idx[1], b);
+    _mm256_storeu_pd(base + 4 * idx[2], c);
+    _mm256_storeu_pd(base + 4 * idx[3], d);
+}
+
+#else /* sx_r4's four lanes */
+
+#define SX_LANES 4
+
+typedef sx_r4 sx_rw;
+typedef sx_m4 sx_mw;
+
+static SX_ALWAYS_INLINE sx_rw sx_rw_set1(sx_real a) { return sx_r4_set1(a); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_zero(void) { return sx_r4_zero(); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_load(const sx_real *p) { return sx_r4_load(p); }
+static SX_ALWAYS_INLINE void sx_rw_store(sx_real *p, sx_rw a) { sx_r4_store(p, a); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_add(sx_rw a, sx_rw b) { return sx_r4_add(a, b); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_sub(sx_rw a, sx_rw b) { return sx_r4_sub(a, b); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_mul(sx_rw a, sx_rw b) { return sx_r4_mul(a, b); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_div(sx_rw a, sx_rw b) { return sx_r4_div(a, b); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_min(sx_rw a, sx_rw b) { return sx_r4_min(a, b); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_max(sx_rw a, sx_rw b) { return sx_r4_max(a, b); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_neg(sx_rw a) { return sx_r4_neg(a); }
+static SX_ALWAYS_INLINE sx_mw sx_rw_lt(sx_rw a, sx_rw b) { return sx_r4_lt(a, b); }
+static SX_ALWAYS_INLINE sx_mw sx_rw_le(sx_rw a, sx_rw b) { return sx_r4_le(a, b); }
+static SX_ALWAYS_INLINE sx_mw sx_rw_gt(sx_rw a, sx_rw b) { return sx_r4_gt(a, b); }
+static SX_ALWAYS_INLINE sx_mw sx_rw_ge(sx_rw a, sx_rw b) { return sx_r4_ge(a, b); }
+static SX_ALWAYS_INLINE sx_mw sx_mw_and(sx_mw a, sx_mw b) { return sx_m4_and(a, b); }
+static SX_ALWAYS_INLINE sx_mw sx_mw_or(sx_mw a, sx_mw b) { return sx_m4_or(a, b); }
+static SX_ALWAYS_INLINE sx_mw sx_mw_andnot(sx_mw a, sx_mw b) { return sx_m4_andnot(a, b); }
+static SX_ALWAYS_INLINE sx_mw sx_mw_true(void) { return sx_m4_true(); }
+static SX_ALWAYS_INLINE int sx_mw_bits(sx_mw m) { return sx_m4_bits(m); }
+static SX_ALWAYS_INLINE sx_rw sx_rw_select(sx_mw m, sx_rw a, sx_rw b) {
+    return sx_r4_select(m, a, b);
+}
+static SX_ALWAYS_INLINE void sx_rw_gather4(const sx_real *base, const int *idx, sx_rw *a, sx_rw *b,
+                                           sx_rw *c, sx_rw *d) {
+    *a = sx_r4_load(base + 4 * idx[0]);
+    *b = sx_r4_load(base + 4 * idx[1]);
+    *c = sx_r4_load(base + 4 * idx[2]);
+    *d = sx_r4_load(base + 4 * idx[3]);
+    sx_r4_transpose(a, b, c, d);
+}
+static SX_ALWAYS_INLINE void sx_rw_scatter4(sx_real *base, const int *idx, sx_rw a, sx_rw b,
+                                            sx_rw c, sx_rw d) {
+    sx_r4_transpose(&a, &b, &c, &d);
+    sx_r4_store(base + 4 * idx[0], a);
+    sx_r4_store(base + 4 * idx[1], b);
+    sx_r4_store(base + 4 * idx[2], c);
+    sx_r4_store(base + 4 * idx[3], d);
+}
+
+#endif /* SX_LANES */
+
+/** True when any lane of m is. */
+static SX_ALWAYS_INLINE bool sx_mw_any(sx_mw m) { return sx_mw_bits(m) != 0; }
+/** True when every lane of m is. */
+static SX_ALWAYS_INLINE bool sx_mw_all(sx_mw m) { return sx_mw_bits(m) == (1 << SX_LANES) - 1; }
+/** Lane i of a (i < SX_LANES). */
+static SX_ALWAYS_INLINE sx_real sx_rw_lane(sx_rw a, int i) {
+    sx_real out[SX_LANES];
+    sx_rw_store(out, a);
+    return out[i & (SX_LANES - 1)];
+}
 
 #endif /* SEPAX_SIMD_H */

@@ -5,6 +5,7 @@
 #define SEPAX_WORLD_CONTACT_H
 
 #include "core.h"
+#include "simd.h"
 #include "sepax/world.h"
 
 /* A two-point manifold's 2x2 normal effective-mass matrix K (symmetric)
@@ -103,25 +104,28 @@ typedef struct sx_constraint {
     bool both_dynamic;
 } sx_constraint;
 
-/* Four constraints of one colour side by side, lane i holding constraint
- * i (contact_solver.c's wide passes): the fields of sx_constraint, one
- * array of four per field. Lanes past a colour's last constraint are
- * padding: no contact (-1), zero masses, bodies the sink entry. */
+/* SX_LANES constraints of one colour side by side, lane i holding
+ * constraint i (contact_solver.c's wide passes): the fields of
+ * sx_constraint, one array of SX_LANES per field. Lanes past a colour's
+ * last constraint are padding: no contact (-1), zero masses, bodies the
+ * sink entry. */
 typedef struct sx_bundle {
-    int body_a[4], body_b[4];
-    int contact[4];
-    sx_real nx[4], ny[4]; /* the normal (the tangent is (ny, -nx)) */
-    sx_real friction[4];
-    sx_real inv_mass_a[4], inv_inertia_a[4], inv_mass_b[4], inv_inertia_b[4];
+    int body_a[SX_LANES], body_b[SX_LANES];
+    int contact[SX_LANES];
+    sx_real nx[SX_LANES], ny[SX_LANES]; /* the normal (the tangent is (ny, -nx)) */
+    sx_real friction[SX_LANES];
+    sx_real inv_mass_a[SX_LANES], inv_inertia_a[SX_LANES], inv_mass_b[SX_LANES],
+        inv_inertia_b[SX_LANES];
     /* 1 or 0: a two-point contact; its block solve */
-    sx_real two[4], block_solve[4];
-    sx_real rn_a[2][4], rn_b[2][4], rt_a[2][4], rt_b[2][4];
-    sx_real gap[2][4];
-    sx_real normal_impulse[2][4], tangent_impulse[2][4];
-    sx_real normal_mass[2][4], tangent_mass[2][4];
+    sx_real two[SX_LANES], block_solve[SX_LANES];
+    sx_real rn_a[2][SX_LANES], rn_b[2][SX_LANES], rt_a[2][SX_LANES], rt_b[2][SX_LANES];
+    sx_real gap[2][SX_LANES];
+    sx_real normal_impulse[2][SX_LANES], tangent_impulse[2][SX_LANES];
+    sx_real normal_mass[2][SX_LANES], tangent_mass[2][SX_LANES];
     /* a two-point contact's friction row: the mean levers and mass */
-    sx_real row_rt_a[4], row_rt_b[4], row_mass[4];
-    sx_real k11[4], k12[4], k22[4], inv11[4], inv12[4], inv22[4];
+    sx_real row_rt_a[SX_LANES], row_rt_b[SX_LANES], row_mass[SX_LANES];
+    sx_real k11[SX_LANES], k12[SX_LANES], k22[SX_LANES], inv11[SX_LANES], inv12[SX_LANES],
+        inv22[SX_LANES];
 } sx_bundle;
 
 /* One colour of the solve, in the order the passes take them: `count`

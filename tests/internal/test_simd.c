@@ -1,4 +1,4 @@
-/* sepax tests — the four-lane operations of src/simd.h.
+/* sepax tests — the lane operations of src/simd.h.
  *
  * A white-box test of the one SIMD header: the same assertions run on the
  * SSE2 lanes of the float build, on the double build's pairs of SSE2
@@ -210,6 +210,105 @@ static void transpose_and_the_true_mask(void **state) {
     assert_int_equal(sx_m4_bits(sx_m4_andnot(sx_m4_true(), sx_m4_true())), 0);
 }
 
+/* The solver's SX_LANES-wide lanes (eight in the AVX2 float build, else
+ * sx_r4's four) against plain C on every lane, NaN, signed zeros and ties
+ * included: the same rules as sx_r4, so that a lane answers alike in every
+ * width. */
+/* Arithmetic on a NaN gives a NaN; which payload the compiler's folding of
+ * the plain C side keeps is not the lanes' to decide. */
+static int same_or_nan(sx_real a, sx_real b) { return (isnan(a) && isnan(b)) || same_bits(a, b); }
+
+static void wide_lanes_follow_the_scalar_rules(void **state) {
+    sx_real nan = (sx_real)NAN;
+    sx_real a_in[8] = {SX_R(0.25), nan,        SX_R(-0.0), SX_R(2.0),
+                       SX_R(0.1),  SX_R(-3.0), SX_R(7.0),  SX_R(0.0)};
+    sx_real b_in[8] = {SX_R(1.5), SX_R(1.0),  SX_R(0.0), SX_R(2.0),
+                       nan,       SX_R(-3.0), SX_R(3.0), SX_R(-0.0)};
+    sx_real out[8];
+    sx_rw a, b;
+    int i, lt = 0, le = 0, gt = 0, ge = 0;
+    (void)state;
+    /* the AVX2 float build is the eight-lane one */
+#if defined(__AVX2__) && !defined(SX_DOUBLE) && !defined(SX_NO_SIMD)
+    assert_int_equal(SX_LANES, 8);
+#else
+    assert_int_equal(SX_LANES, 4);
+#endif
+    a = sx_rw_load(a_in);
+    b = sx_rw_load(b_in);
+    sx_rw_store(out, a);
+    for (i = 0; i < SX_LANES; ++i) {
+        sx_real x = a_in[i], y = b_in[i];
+        assert_true(same_bits(out[i], x));
+        assert_true(same_bits(sx_rw_lane(a, i), x));
+        assert_true(same_or_nan(sx_rw_lane(sx_rw_add(a, b), i), x + y));
+        assert_true(same_or_nan(sx_rw_lane(sx_rw_sub(a, b), i), x - y));
+        assert_true(same_or_nan(sx_rw_lane(sx_rw_mul(a, b), i), x * y));
+        assert_true(same_or_nan(sx_rw_lane(sx_rw_div(a, b), i), x / y));
+        assert_true(same_bits(sx_rw_lane(sx_rw_min(a, b), i), x < y ? x : y));
+        assert_true(same_bits(sx_rw_lane(sx_rw_max(a, b), i), x > y ? x : y));
+        assert_true(signbit(sx_rw_lane(sx_rw_neg(a), i)) != signbit(x));
+        assert_true(same_bits(sx_rw_lane(sx_rw_set1(y), i), y));
+        assert_true(same_bits(sx_rw_lane(sx_rw_zero(), i), SX_R(0.0)));
+        assert_true(same_bits(sx_rw_lane(sx_rw_select(sx_rw_lt(a, b), a, b), i), x < y ? x : y));
+        lt |= (x < y) << i;
+        le |= (x <= y) << i;
+        gt |= (x > y) << i;
+        ge |= (x >= y) << i;
+    }
+    assert_int_equal(sx_mw_bits(sx_rw_lt(a, b)), lt);
+    assert_int_equal(sx_mw_bits(sx_rw_le(a, b)), le);
+    assert_int_equal(sx_mw_bits(sx_rw_gt(a, b)), gt);
+    assert_int_equal(sx_mw_bits(sx_rw_ge(a, b)), ge);
+    assert_int_equal(sx_mw_bits(sx_mw_and(sx_rw_le(a, b), sx_rw_ge(a, b))), le & ge);
+    assert_int_equal(sx_mw_bits(sx_mw_or(sx_rw_lt(a, b), sx_rw_gt(a, b))), lt | gt);
+    assert_int_equal(sx_mw_bits(sx_mw_andnot(sx_rw_lt(a, b), sx_rw_le(a, b))), le & ~lt);
+    assert_int_equal(sx_mw_bits(sx_mw_true()), (1 << SX_LANES) - 1);
+    assert_true(sx_mw_all(sx_mw_true()));
+    assert_false(sx_mw_all(sx_rw_le(a, b)));
+    assert_true(sx_mw_any(sx_rw_lt(a, b)));
+    assert_false(sx_mw_any(sx_mw_andnot(sx_mw_true(), sx_mw_true())));
+}
+
+/* The solver's move of bodies into lanes: records of four reals picked by
+ * index, each field into the lanes of one register, and back; a record
+ * named by several lanes (the padding lanes' sink) keeps the last lane's
+ * values, as lane-order stores leave it. */
+static void wide_gather_and_scatter_move_records(void **state) {
+    sx_real rec[10][4], back[10][4];
+    int idx[8] = {3, 0, 9, 5, 9, 1, 7, 2};
+    sx_rw f[4];
+    int i, j, k;
+    (void)state;
+    for (i = 0; i < 10; ++i)
+        for (j = 0; j < 4; ++j)
+            rec[i][j] = back[i][j] = (sx_real)(10 * i + j) + SX_R(0.5);
+    rec[5][1] = SX_R(-0.0);
+    sx_rw_gather4(&rec[0][0], idx, &f[0], &f[1], &f[2], &f[3]);
+    for (j = 0; j < 4; ++j) {
+        for (i = 0; i < SX_LANES; ++i)
+            assert_true(same_bits(sx_rw_lane(f[j], i), rec[idx[i]][j]));
+    }
+    /* lane l's fields become l + 100 * field, then go back */
+    for (j = 0; j < 4; ++j) {
+        sx_real v[8];
+        for (i = 0; i < SX_LANES; ++i)
+            v[i] = (sx_real)(i + 100 * j);
+        f[j] = sx_rw_load(v);
+    }
+    sx_rw_scatter4(&back[0][0], idx, f[0], f[1], f[2], f[3]);
+    for (k = 0; k < 10; ++k) {
+        int last = -1;
+        for (i = 0; i < SX_LANES; ++i)
+            if (idx[i] == k) last = i;
+        for (j = 0; j < 4; ++j) {
+            sx_real want =
+                last >= 0 ? (sx_real)(last + 100 * j) : (sx_real)(10 * k + j) + SX_R(0.5);
+            assert_true(same_bits(back[k][j], want));
+        }
+    }
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(lanes_load_store_and_arithmetic_are_exact),
@@ -219,6 +318,8 @@ int main(void) {
         cmocka_unit_test(lane_reductions_and_finite_tests),
         cmocka_unit_test(integer_lanes_follow_a_mask),
         cmocka_unit_test(transpose_and_the_true_mask),
+        cmocka_unit_test(wide_lanes_follow_the_scalar_rules),
+        cmocka_unit_test(wide_gather_and_scatter_move_records),
     };
     return cmocka_run_group_tests_name("simd", tests, sx_test_group_setup, sx_test_group_teardown);
 }
