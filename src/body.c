@@ -140,6 +140,7 @@ static void sx_body_refresh_sim(sx_world *world, int slot) {
     const sx_body_info *info = &world->infos[slot];
     sx_real old_inv_mass = sim->inv_mass, old_inv_inertia = sim->inv_inertia;
     world->sets_dirty = true;
+    sx_world_solver_changed(world);
     sim->dynamic = info->enabled && info->type == SX_BODY_DYNAMIC;
     sim->moving = info->enabled && info->type != SX_BODY_STATIC;
     if (sim->dynamic) {
@@ -705,6 +706,7 @@ sx_status sx_body_set_awake(sx_world *world, sx_body_id body, bool awake) {
         sx_wake_body(world, slot);
     } else if (sim->awake) {
         sim->awake = false;
+        sx_world_solver_changed(world);
         sim->v = sx_v2_zero();
         sim->w = SX_R(0.0);
         world->infos[slot].island = -1;

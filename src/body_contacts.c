@@ -130,6 +130,7 @@ void sx_world_remove_contacts_of(sx_world *world, int collider) {
         sx_wake_body(world, c->body_a);
         sx_wake_body(world, c->body_b);
         c->count = 0;
+        sx_world_solver_changed(world);
         if (p < world->contact_count)
             world->contact_dead++;
         else
@@ -157,6 +158,7 @@ void sx_world_purge_contacts(sx_world *world) {
     }
     world->contact_count = n;
     world->contact_dead = 0;
+    sx_world_solver_changed(world);
     world->by_body_valid = false;
 }
 

@@ -1177,14 +1177,22 @@ static void sx_gather_sequential(sx_world *world, bool warm) {
     world->fill_valid = false;
 }
 
+/* The colour threshold of the wide passes (see wide_min_colour). */
+static int sx_min_colour(const sx_world *world) {
+    return world->wide_min_colour > 0 ? world->wide_min_colour : SX_WIDE_MIN_COLOUR;
+}
+
 /* Walks the active contacts into the colour items: each point's gap from the
  * current positions, the bodies named in the solver. Returns the item count
  * and sets *same when every item is the one the kept fill was made from
- * (its new gaps then go straight into the fill). */
-static int sx_gather_items(sx_world *world, bool *same_out) {
+ * (its new gaps then go straight into the fill), *pattern when the items
+ * name the solver bodies the fill's did, in the same order (its colours and
+ * lane slots still hold). */
+static int sx_gather_items(sx_world *world, bool *same_out, bool *pattern_out) {
     sx_colour_item *items = world->colour_items;
     int i, k, n = 0;
     bool same = world->fill_valid && world->fill_serial == world->contact_serial;
+    bool pattern = world->fill_valid && world->fill_min_colour == sx_min_colour(world);
     for (i = 0; i < world->contact_count; ++i) {
         sx_contact *ct = &world->contacts[i];
         const sx_body_sim *sa = &world->sims[ct->body_a], *sb = &world->sims[ct->body_b];
@@ -1212,6 +1220,8 @@ static int sx_gather_items(sx_world *world, bool *same_out) {
             continue;
         }
         same = false;
+        /* the colours follow from the solver bodies alone */
+        pattern = pattern && n <= world->fill_count && it->body_a == a && it->body_b == b;
         it->key = ct->key;
         it->contact = i;
         it->part_a = ct->part_a;
@@ -1227,6 +1237,7 @@ static int sx_gather_items(sx_world *world, bool *same_out) {
         it->dynamic_b = sb->dynamic;
     }
     *same_out = same;
+    *pattern_out = pattern && n == world->fill_count;
     return n;
 }
 
@@ -1237,7 +1248,7 @@ static int sx_gather_items(sx_world *world, bool *same_out) {
 static int sx_colour_items(sx_world *world, int n) {
     sx_colour_item *items = world->colour_items;
     int i, colours = 0;
-    int min_colour = world->wide_min_colour > 0 ? world->wide_min_colour : SX_WIDE_MIN_COLOUR;
+    int min_colour = sx_min_colour(world);
     for (i = 0; i < n; ++i) {
         sx_colour_item *it = &items[i];
         int ca = it->body_a != 0 ? world->body_colour[it->body_a] : -1;
@@ -1320,6 +1331,72 @@ static bool sx_fill_colours(sx_world *world, int n, int colours) {
     return true;
 }
 
+/* The gather of a sub-step after the fill's, nothing it was made from
+ * changed since (same collide, same solver_epoch): the solver bodies named
+ * as the fill's walk named them, and each item's new gaps into the fill,
+ * without the walk over every contact that checks each item. */
+static void sx_gather_kept(sx_world *world) {
+    const sx_colour_item *items = world->colour_items;
+    int i, j, k;
+    for (j = 1; j < world->fill_body_count; ++j) {
+        int slot = world->solver_slots[j];
+        world->solver_index[slot] = j;
+        world->solver_bodies[j].v = world->sims[slot].v;
+        world->solver_bodies[j].w = world->sims[slot].w;
+        world->solver_bodies[j].pad = SX_R(0.0);
+    }
+    world->solver_body_count = world->fill_body_count;
+    for (i = 0; i < world->fill_count; ++i) {
+        const sx_colour_item *it = &items[i];
+        sx_contact *ct = &world->contacts[it->contact];
+        sx_update_gaps(world, ct);
+        for (k = 0; k < ct->count; ++k) {
+            ct->points[k].impact_impulse = SX_R(0.0);
+            if (it->wide)
+                world->bundles[it->at / SX_LANES].gap[k][it->at % SX_LANES] = ct->points[k].gap;
+            else
+                world->constraints[it->at].points[k].gap = ct->points[k].gap;
+        }
+    }
+}
+
+/* Fills the n items into the colours and lane slots the last fill gave
+ * them (a new collide, the same pattern of solver bodies): what
+ * sx_fill_colours would write, without colouring and placing again. */
+static void sx_refill_colours(sx_world *world, int n) {
+    const sx_colour_item *items = world->colour_items;
+    int i, l, sink = world->solver_body_count;
+    world->solver_bodies[sink].v = sx_v2_zero();
+    world->solver_bodies[sink].w = SX_R(0.0);
+    world->solver_bodies[sink].pad = SX_R(0.0);
+    for (i = 0; i < n; ++i) {
+        const sx_colour_item *it = &items[i];
+        if (it->wide) {
+            sx_constraint c;
+            sx_constraint_fill(world, it->contact, it->body_a, it->body_b, &c, true);
+            sx_bundle_fill(&world->bundles[it->at / SX_LANES], it->at % SX_LANES, &c, sink);
+        } else {
+            sx_constraint_fill(world, it->contact, it->body_a, it->body_b,
+                               &world->constraints[it->at], true);
+        }
+    }
+    for (i = 0; i < world->bundle_count; ++i) {
+        for (l = 0; l < SX_LANES; ++l) {
+            if (world->bundles[i].contact[l] < 0) sx_bundle_fill(&world->bundles[i], l, NULL, sink);
+        }
+    }
+}
+
+/* Notes the fill the arrays now hold (n items). */
+static void sx_fill_made(sx_world *world, int n) {
+    world->fill_serial = world->contact_serial;
+    world->fill_epoch = world->solver_epoch;
+    world->fill_count = n;
+    world->fill_body_count = world->solver_body_count;
+    world->fill_min_colour = sx_min_colour(world);
+    world->fill_valid = true;
+}
+
 /* Copies the active contacts and their bodies' velocities into the solver's
  * arrays; false when they could not grow (nothing copied). `warm`: the
  * start of a solve: each point's gap from the current positions, the
@@ -1329,7 +1406,7 @@ static bool sx_fill_colours(sx_world *world, int n, int colours) {
  * lanes of the last gather are kept while every item is unchanged. */
 static bool sx_solver_gather(sx_world *world, bool warm) {
     int n;
-    bool same;
+    bool same, pattern = false;
     if (!sx_solver_reserve(world)) return false;
     world->solver_bodies[0].v = sx_v2_zero();
     world->solver_bodies[0].w = SX_R(0.0);
@@ -1340,27 +1417,37 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
         world->solver_gathered = true;
         return true;
     }
-    n = sx_gather_items(world, &same);
+    if (world->fill_valid && world->fill_serial == world->contact_serial &&
+        world->fill_epoch == world->solver_epoch) {
+        sx_gather_kept(world);
+        n = world->fill_count;
+        same = true;
+    } else {
+        n = sx_gather_items(world, &same, &pattern);
+    }
     if (same && n == world->fill_count) {
         /* the energy guard's groups follow from the items too: kept, unless
          * the last build found no room */
         if (!world->groups_ready) sx_groups_build(world);
         if (!world->fill_fresh || !world->groups_ready) sx_solver_refresh(world);
+        world->fill_epoch = world->solver_epoch;
         sx_solver_warm_start(world, false);
         world->solver_gathered = true;
         return true;
     }
-    world->fill_valid = false;
-    world->constraint_count = 0;
-    world->bundle_count = 0;
     sx_groups_build(world);
-    if (!sx_fill_colours(world, n, sx_colour_items(world, n))) {
-        sx_solver_unname(world);
-        return false;
+    if (pattern) {
+        sx_refill_colours(world, n);
+    } else {
+        world->fill_valid = false;
+        world->constraint_count = 0;
+        world->bundle_count = 0;
+        if (!sx_fill_colours(world, n, sx_colour_items(world, n))) {
+            sx_solver_unname(world);
+            return false;
+        }
     }
-    world->fill_serial = world->contact_serial;
-    world->fill_count = n;
-    world->fill_valid = true;
+    sx_fill_made(world, n);
     sx_solver_warm_start(world, false);
     world->solver_gathered = true;
     return true;

@@ -36,6 +36,7 @@ static void sx_union(int *parent, int a, int b) {
 static void sx_wake_one(sx_world *world, int slot) {
     void *p = world->thaw_mark;
     world->sims[slot].awake = true;
+    sx_world_solver_changed(world);
     /* its contacts may wait in the frozen store: the next thaw looks at the
      * contacts of the bodies listed here */
     world->thaw_pending = true;
@@ -176,6 +177,7 @@ static void sx_sleep_islands(sx_world *world) {
         r = sx_find(parent, i);
         if (rest[r] < world->def.time_to_sleep) continue;
         b->awake = false;
+        sx_world_solver_changed(world);
         b->v = sx_v2_zero();
         b->w = SX_R(0.0);
         world->infos[i].island = r;

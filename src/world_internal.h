@@ -171,10 +171,18 @@ struct sx_world {
      * masses were prepared (by the caller, between stages): solve and
      * separate prepare them again before using them */
     bool masses_changed;
+    /* Bumped by whatever changes the solver's bodies or active contacts
+     * between two collides (a body's mass, type, awake state; a contact
+     * removed): while it and contact_serial are what the fill saw
+     * (fill_epoch), a gather skips the walk that compares every item. */
+    unsigned solver_epoch, fill_epoch;
     /* colours of fewer constraints than this are solved one at a time (0:
      * the solver's own threshold; tests set it to compare the paths) */
     int wide_min_colour;
-    int fill_count;
+    /* the fill's item count, solver body count and threshold: its colours
+     * and lane slots are kept by a later collide whose items name the same
+     * solver bodies in the same order (only their data is filled again) */
+    int fill_count, fill_body_count, fill_min_colour;
     bool fill_valid, fill_fresh;
     /* the arrays hold the current solve's gather (from the warm start to
      * the scatter after the passes) */
@@ -195,6 +203,9 @@ struct sx_world {
 
 /* True while a callback of the world runs (see lock_depth). */
 static inline bool sx_world_locked(const sx_world *world) { return world->lock_depth > 0; }
+
+/* Notes a change to the solver's bodies or active contacts (solver_epoch). */
+static inline void sx_world_solver_changed(sx_world *world) { world->solver_epoch++; }
 
 /* True when the solver must work on a contact: at least one of its bodies
  * is dynamic and awake. */
