@@ -25,7 +25,10 @@
  * in every build, and the scalar path stays the reference. The lanes are
  * filled at the first gather after a collide (levers, masses, normals: all
  * fixed for the step) and kept through the step's sub-steps, which only
- * refresh the gaps; colours too small for a bundle stay one at a time.
+ * refresh the gaps (without a walk over the contacts while solver_epoch
+ * says nothing changed); the colours and lane slots outlive the collide
+ * while its contacts name the same solver bodies in the same order, as a
+ * resting pile's do. Colours too small for a bundle stay one at a time.
  *
  * Velocities: each contact point is a constraint on the relative normal
  * velocity vn of the two bodies at the point. The solver visits the points in
@@ -1015,68 +1018,87 @@ static void sx_constraint_fill(sx_world *world, int i, int body_a, int body_b, s
     }
 }
 
-/* Lane l of bundle u: constraint c, or padding (c NULL: bodies `sink`). */
-static void sx_bundle_fill(sx_bundle *u, int l, const sx_constraint *c, int sink) {
+/* Lane l of bundle u as padding: zero masses, bodies `sink`. */
+static void sx_lane_pad(sx_bundle *u, int l, int sink) {
     int k;
-    if (c == NULL) {
-        u->body_a[l] = sink;
-        u->body_b[l] = sink;
-        u->contact[l] = -1;
-        u->nx[l] = u->ny[l] = SX_R(0.0);
-        u->friction[l] = SX_R(0.0);
-        u->inv_mass_a[l] = u->inv_inertia_a[l] = u->inv_mass_b[l] = u->inv_inertia_b[l] = SX_R(0.0);
-        u->two[l] = u->block_solve[l] = SX_R(0.0);
-        for (k = 0; k < 2; ++k) {
+    u->body_a[l] = sink;
+    u->body_b[l] = sink;
+    u->contact[l] = -1;
+    u->nx[l] = u->ny[l] = SX_R(0.0);
+    u->friction[l] = SX_R(0.0);
+    u->inv_mass_a[l] = u->inv_inertia_a[l] = u->inv_mass_b[l] = u->inv_inertia_b[l] = SX_R(0.0);
+    u->two[l] = u->block_solve[l] = SX_R(0.0);
+    for (k = 0; k < 2; ++k) {
+        u->rn_a[k][l] = u->rn_b[k][l] = u->rt_a[k][l] = u->rt_b[k][l] = SX_R(0.0);
+        u->gap[k][l] = u->normal_impulse[k][l] = u->tangent_impulse[k][l] = SX_R(0.0);
+        u->normal_mass[k][l] = u->tangent_mass[k][l] = SX_R(0.0);
+    }
+    u->row_rt_a[l] = u->row_rt_b[l] = u->row_mass[l] = SX_R(0.0);
+    u->k11[l] = u->k22[l] = SX_R(1.0);
+    u->k12[l] = u->inv11[l] = u->inv12[l] = u->inv22[l] = SX_R(0.0);
+}
+
+/* Lane l of bundle u from item it's contact at the start of a solve: the
+ * values sx_constraint_fill gives a constraint, written straight into the
+ * lane (no constraint copied in between). */
+static void sx_lane_fill(sx_world *world, sx_bundle *u, int l, const sx_colour_item *it) {
+    sx_contact *ct = &world->contacts[it->contact];
+    sx_vec2 n = ct->normal, t = sx_cross_vs(ct->normal, SX_R(1.0));
+    /* no room for the energy guard: start cold (sx_constraint_fill) */
+    bool cold = !world->groups_ready;
+    sx_real rt_a[2] = {SX_R(0.0), SX_R(0.0)}, rt_b[2] = {SX_R(0.0), SX_R(0.0)};
+    sx_real tangent_mass[2] = {SX_R(0.0), SX_R(0.0)};
+    int k;
+    u->body_a[l] = it->body_a;
+    u->body_b[l] = it->body_b;
+    u->contact[l] = it->contact;
+    u->nx[l] = n.x;
+    u->ny[l] = n.y;
+    u->friction[l] = ct->friction;
+    /* the walk just copied the bodies' masses into the item */
+    u->inv_mass_a[l] = it->inv_mass_a;
+    u->inv_inertia_a[l] = it->inv_inertia_a;
+    u->inv_mass_b[l] = it->inv_mass_b;
+    u->inv_inertia_b[l] = it->inv_inertia_b;
+    u->two[l] = ct->count == 2 ? SX_R(1.0) : SX_R(0.0);
+    u->block_solve[l] = ct->count == 2 && ct->block_solve ? SX_R(1.0) : SX_R(0.0);
+    for (k = 0; k < 2; ++k) {
+        sx_contact_point *p = &ct->points[k];
+        if (k >= ct->count) {
+            /* a one-point contact's second point: zeros, never chosen */
             u->rn_a[k][l] = u->rn_b[k][l] = u->rt_a[k][l] = u->rt_b[k][l] = SX_R(0.0);
             u->gap[k][l] = u->normal_impulse[k][l] = u->tangent_impulse[k][l] = SX_R(0.0);
             u->normal_mass[k][l] = u->tangent_mass[k][l] = SX_R(0.0);
+            continue;
         }
-        u->row_rt_a[l] = u->row_rt_b[l] = u->row_mass[l] = SX_R(0.0);
-        u->k11[l] = u->k22[l] = SX_R(1.0);
-        u->k12[l] = u->inv11[l] = u->inv12[l] = u->inv22[l] = SX_R(0.0);
-        return;
-    }
-    u->body_a[l] = c->body_a;
-    u->body_b[l] = c->body_b;
-    u->contact[l] = c->contact;
-    u->nx[l] = c->normal.x;
-    u->ny[l] = c->normal.y;
-    u->friction[l] = c->friction;
-    u->inv_mass_a[l] = c->inv_mass_a;
-    u->inv_inertia_a[l] = c->inv_inertia_a;
-    u->inv_mass_b[l] = c->inv_mass_b;
-    u->inv_inertia_b[l] = c->inv_inertia_b;
-    u->two[l] = c->count == 2 ? SX_R(1.0) : SX_R(0.0);
-    u->block_solve[l] = c->count == 2 && c->block_solve ? SX_R(1.0) : SX_R(0.0);
-    for (k = 0; k < 2; ++k) {
-        /* a one-point contact's second point: zeros, never chosen */
-        static const sx_constraint_point none;
-        const sx_constraint_point *p = k < c->count ? &c->points[k] : &none;
-        u->rn_a[k][l] = p->rn_a;
-        u->rn_b[k][l] = p->rn_b;
-        u->rt_a[k][l] = p->rt_a;
-        u->rt_b[k][l] = p->rt_b;
+        rt_a[k] = sx_cross(p->anchor_a, t);
+        rt_b[k] = sx_cross(p->anchor_b, t);
+        tangent_mass[k] = p->tangent_mass;
+        u->rn_a[k][l] = sx_cross(p->anchor_a, n);
+        u->rn_b[k][l] = sx_cross(p->anchor_b, n);
+        u->rt_a[k][l] = rt_a[k];
+        u->rt_b[k][l] = rt_b[k];
         u->gap[k][l] = p->gap;
-        u->normal_impulse[k][l] = p->normal_impulse;
-        u->tangent_impulse[k][l] = p->tangent_impulse;
+        u->normal_impulse[k][l] = cold ? SX_R(0.0) : p->normal_impulse;
+        u->tangent_impulse[k][l] = cold ? SX_R(0.0) : p->tangent_impulse;
         u->normal_mass[k][l] = p->normal_mass;
         u->tangent_mass[k][l] = p->tangent_mass;
+        p->impact_impulse = SX_R(0.0);
     }
-    if (c->count == 2) {
-        const sx_constraint_point *p1 = &c->points[0], *p2 = &c->points[1];
-        u->row_rt_a[l] = SX_R(0.5) * (p1->rt_a + p2->rt_a);
-        u->row_rt_b[l] = SX_R(0.5) * (p1->rt_b + p2->rt_b);
-        u->row_mass[l] = SX_R(0.5) * (p1->tangent_mass + p2->tangent_mass);
+    if (ct->count == 2) {
+        u->row_rt_a[l] = SX_R(0.5) * (rt_a[0] + rt_a[1]);
+        u->row_rt_b[l] = SX_R(0.5) * (rt_b[0] + rt_b[1]);
+        u->row_mass[l] = SX_R(0.5) * (tangent_mass[0] + tangent_mass[1]);
     } else {
         u->row_rt_a[l] = u->row_rt_b[l] = u->row_mass[l] = SX_R(0.0);
     }
-    if (c->count == 2 && c->block_solve) {
-        u->k11[l] = c->block.k11;
-        u->k12[l] = c->block.k12;
-        u->k22[l] = c->block.k22;
-        u->inv11[l] = c->block.inv11;
-        u->inv12[l] = c->block.inv12;
-        u->inv22[l] = c->block.inv22;
+    if (ct->count == 2 && ct->block_solve) {
+        u->k11[l] = ct->block.k11;
+        u->k12[l] = ct->block.k12;
+        u->k22[l] = ct->block.k22;
+        u->inv11[l] = ct->block.inv11;
+        u->inv12[l] = ct->block.inv12;
+        u->inv22[l] = ct->block.inv22;
     } else {
         u->k11[l] = u->k22[l] = SX_R(1.0);
         u->k12[l] = u->inv11[l] = u->inv12[l] = u->inv22[l] = SX_R(0.0);
@@ -1177,6 +1199,15 @@ static void sx_gather_sequential(sx_world *world, bool warm) {
     world->fill_valid = false;
 }
 
+/* Fills item it into the slot the last fill gave it (lane or constraint). */
+static void sx_item_fill(sx_world *world, const sx_colour_item *it) {
+    if (it->wide)
+        sx_lane_fill(world, &world->bundles[it->at / SX_LANES], it->at % SX_LANES, it);
+    else
+        sx_constraint_fill(world, it->contact, it->body_a, it->body_b, &world->constraints[it->at],
+                           true);
+}
+
 /* The colour threshold of the wide passes (see wide_min_colour). */
 static int sx_min_colour(const sx_world *world) {
     return world->wide_min_colour > 0 ? world->wide_min_colour : SX_WIDE_MIN_COLOUR;
@@ -1187,8 +1218,11 @@ static int sx_min_colour(const sx_world *world) {
  * and sets *same when every item is the one the kept fill was made from
  * (its new gaps then go straight into the fill), *pattern when the items
  * name the solver bodies the fill's did, in the same order (its colours and
- * lane slots still hold). */
-static int sx_gather_items(sx_world *world, bool *same_out, bool *pattern_out) {
+ * lane slots still hold). `fill`: each item that keeps the pattern is
+ * filled into its slot at once, while its contact is at hand (the start of
+ * a solve after a collide; a later fill writes over them if the pattern
+ * breaks). */
+static int sx_gather_items(sx_world *world, bool fill, bool *same_out, bool *pattern_out) {
     sx_colour_item *items = world->colour_items;
     int i, k, n = 0;
     bool same = world->fill_valid && world->fill_serial == world->contact_serial;
@@ -1235,6 +1269,7 @@ static int sx_gather_items(sx_world *world, bool *same_out, bool *pattern_out) {
         it->inv_inertia_b = sb->inv_inertia;
         it->dynamic_a = sa->dynamic;
         it->dynamic_b = sb->dynamic;
+        if (fill && pattern) sx_item_fill(world, it);
     }
     *same_out = same;
     *pattern_out = pattern && n == world->fill_count;
@@ -1302,9 +1337,7 @@ static bool sx_fill_colours(sx_world *world, int n, int colours) {
         it->at = world->colour_cursor[it->colour]++;
         it->wide = world->spans[it->colour].wide;
         if (it->wide) {
-            sx_constraint c;
-            sx_constraint_fill(world, it->contact, it->body_a, it->body_b, &c, true);
-            sx_bundle_fill(&world->bundles[it->at / SX_LANES], it->at % SX_LANES, &c, sink);
+            sx_lane_fill(world, &world->bundles[it->at / SX_LANES], it->at % SX_LANES, it);
         } else {
             sx_constraint_fill(world, it->contact, it->body_a, it->body_b,
                                &world->constraints[it->at], true);
@@ -1315,7 +1348,7 @@ static bool sx_fill_colours(sx_world *world, int n, int colours) {
         int at;
         if (!span->wide) continue;
         for (at = world->colour_cursor[i]; at < SX_LANES * (span->first + span->count); ++at)
-            sx_bundle_fill(&world->bundles[at / SX_LANES], at % SX_LANES, NULL, sink);
+            sx_lane_pad(&world->bundles[at / SX_LANES], at % SX_LANES, sink);
     }
     /* colours in a row of the same kind are one span for the passes (their
      * constraints or bundles follow each other; a stack is one constraint
@@ -1332,15 +1365,15 @@ static bool sx_fill_colours(sx_world *world, int n, int colours) {
 }
 
 /* The gather of a sub-step after the fill's, nothing it was made from
- * changed since (same collide, same solver_epoch): the solver bodies named
- * as the fill's walk named them, and each item's new gaps into the fill,
- * without the walk over every contact that checks each item. */
+ * changed since (same collide, same solver_epoch): the solver bodies the
+ * fill's walk named, and each item's new gaps into the fill, without the
+ * walk over every contact that checks each item. */
 static void sx_gather_kept(sx_world *world) {
     const sx_colour_item *items = world->colour_items;
     int i, j, k;
+    /* solver_index stays 0: only a walk's naming reads it */
     for (j = 1; j < world->fill_body_count; ++j) {
         int slot = world->solver_slots[j];
-        world->solver_index[slot] = j;
         world->solver_bodies[j].v = world->sims[slot].v;
         world->solver_bodies[j].w = world->sims[slot].w;
         world->solver_bodies[j].pad = SX_R(0.0);
@@ -1361,28 +1394,19 @@ static void sx_gather_kept(sx_world *world) {
 }
 
 /* Fills the n items into the colours and lane slots the last fill gave
- * them (a new collide, the same pattern of solver bodies): what
- * sx_fill_colours would write, without colouring and placing again. */
-static void sx_refill_colours(sx_world *world, int n) {
-    const sx_colour_item *items = world->colour_items;
+ * them (the same pattern of solver bodies), unless the walk did (`filled`),
+ * and the padding: what sx_fill_colours would write, without colouring and
+ * placing again. */
+static void sx_refill_colours(sx_world *world, int n, bool filled) {
     int i, l, sink = world->solver_body_count;
     world->solver_bodies[sink].v = sx_v2_zero();
     world->solver_bodies[sink].w = SX_R(0.0);
     world->solver_bodies[sink].pad = SX_R(0.0);
-    for (i = 0; i < n; ++i) {
-        const sx_colour_item *it = &items[i];
-        if (it->wide) {
-            sx_constraint c;
-            sx_constraint_fill(world, it->contact, it->body_a, it->body_b, &c, true);
-            sx_bundle_fill(&world->bundles[it->at / SX_LANES], it->at % SX_LANES, &c, sink);
-        } else {
-            sx_constraint_fill(world, it->contact, it->body_a, it->body_b,
-                               &world->constraints[it->at], true);
-        }
-    }
+    for (i = 0; i < n && !filled; ++i)
+        sx_item_fill(world, &world->colour_items[i]);
     for (i = 0; i < world->bundle_count; ++i) {
         for (l = 0; l < SX_LANES; ++l) {
-            if (world->bundles[i].contact[l] < 0) sx_bundle_fill(&world->bundles[i], l, NULL, sink);
+            if (world->bundles[i].contact[l] < 0) sx_lane_pad(&world->bundles[i], l, sink);
         }
     }
 }
@@ -1406,7 +1430,7 @@ static void sx_fill_made(sx_world *world, int n) {
  * lanes of the last gather are kept while every item is unchanged. */
 static bool sx_solver_gather(sx_world *world, bool warm) {
     int n;
-    bool same, pattern = false;
+    bool same, pattern = false, collide = false;
     if (!sx_solver_reserve(world)) return false;
     world->solver_bodies[0].v = sx_v2_zero();
     world->solver_bodies[0].w = SX_R(0.0);
@@ -1423,7 +1447,11 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
         n = world->fill_count;
         same = true;
     } else {
-        n = sx_gather_items(world, &same, &pattern);
+        /* after a collide: the items are filled as the walk goes, which
+         * needs the groups (a cold start without them) */
+        collide = !(world->fill_valid && world->fill_serial == world->contact_serial);
+        if (collide) sx_groups_build(world);
+        n = sx_gather_items(world, collide, &same, &pattern);
     }
     if (same && n == world->fill_count) {
         /* the energy guard's groups follow from the items too: kept, unless
@@ -1435,9 +1463,9 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
         world->solver_gathered = true;
         return true;
     }
-    sx_groups_build(world);
+    if (!collide) sx_groups_build(world);
     if (pattern) {
-        sx_refill_colours(world, n);
+        sx_refill_colours(world, n, collide);
     } else {
         world->fill_valid = false;
         world->constraint_count = 0;

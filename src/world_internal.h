@@ -160,7 +160,8 @@ struct sx_world {
     int body_colour_capacity;
     /* The colours and the wide passes' lanes are filled once per collide
      * and kept for the sub-steps after it (each then refreshes gaps and
-     * impulses only), while every item is still what it was:
+     * impulses only), while every item is still what it was (the colours
+     * and slots past the collide too, see fill_count below):
      * fill_serial is contact_serial at the fill (bumped by every collide),
      * fill_count the number of items, fill_valid false when another
      * gather wrote over the arrays; fill_fresh: its accumulated impulses

@@ -140,7 +140,8 @@ static void change(scene *s, const int *lone, int k, int i) {
         assert_int_equal(sx_collider_set_density(w, s->cols[30], SX_R(2.5)), SX_OK);
     if (k == 26 && i == 2) /* a type, and back */
         assert_int_equal(sx_body_set_type(w, s->ids[45], SX_BODY_KINEMATIC), SX_OK);
-    if (k == 32 && i == 1) assert_int_equal(sx_body_set_type(w, s->ids[45], SX_BODY_DYNAMIC), SX_OK);
+    if (k == 32 && i == 1)
+        assert_int_equal(sx_body_set_type(w, s->ids[45], SX_BODY_DYNAMIC), SX_OK);
     if (k == 38 && i == 1) { /* a stack asleep: its contacts leave the solve */
         assert_int_equal(sx_body_set_awake(w, s->ids[lone[0]], false), SX_OK);
         assert_int_equal(sx_body_set_awake(w, s->ids[lone[4]], false), SX_OK);
