@@ -26,8 +26,8 @@
  * filled at the first gather after a collide (levers, masses, normals: all
  * fixed for the step) and kept through the step's sub-steps, which only
  * refresh the gaps; colours too small for a bundle stay one at a time.
- * The bundles of a colour are solved up to four side by side, phase by
- * phase, so that the core has several chains to work on at once.
+ * With four lanes, the bundles of a colour are solved up to four side by
+ * side, phase by phase, so that the core has several chains at once.
  *
  * Velocities: each contact point is a constraint on the relative normal
  * velocity vn of the two bodies at the point. The solver visits the points in
@@ -974,14 +974,16 @@ static void sx_constraints_pass(sx_world *world, sx_real h, bool relax, bool las
         const sx_colour_span *span = &world->spans[s];
         int end = span->first + span->count;
         if (span->wide) {
-            /* a span is one colour: its bundles share no moved body */
-            for (i = span->first; i + 4 <= end; i += 4)
+            /* a span is one colour: its bundles share no moved body (eight
+             * lanes: one at a time, the grouping measured no faster there) */
+            for (i = span->first; SX_LANES <= 4 && i + 4 <= end; i += 4)
                 sx_bundle_solve4(world, &world->bundles[i], inv_h4, last);
-            if (i + 2 <= end) {
+            if (SX_LANES <= 4 && i + 2 <= end) {
                 sx_bundle_solve2(world, &world->bundles[i], inv_h4, last);
                 i += 2;
             }
-            if (i < end) sx_bundle_solve(world, &world->bundles[i], inv_h4, last);
+            for (; i < end; ++i)
+                sx_bundle_solve(world, &world->bundles[i], inv_h4, last);
             continue;
         }
         for (i = span->first; i < end; ++i) {
