@@ -29,6 +29,8 @@
  * says nothing changed); the colours and lane slots outlive the collide
  * while its contacts name the same solver bodies in the same order, as a
  * resting pile's do. Colours too small for a bundle stay one at a time.
+ * With four lanes, the bundles of a colour are solved up to four side by
+ * side, phase by phase, so that the core has several chains at once.
  *
  * Velocities: each contact point is a constraint on the relative normal
  * velocity vn of the two bodies at the point. The solver visits the points in
@@ -592,7 +594,9 @@ static SX_ALWAYS_INLINE void sx_constraint_solve(sx_world *world, sx_constraint 
  * fewer than SX_WIDE_MIN_COLOUR constraints (a stack: one per colour) stay
  * on the scalar path, where a bundle would be mostly padding. The lane
  * width changes which lanes share a register, never a lane's operations,
- * so every width answers alike too. The soft
+ * so every width answers alike too. Nor does solving a colour's bundles
+ * side by side (they share no moved body, entry 0 and the sink stay
+ * zero), which is why a wide colour keeps a span of its own. The soft
  * passes, the relax passes, the energy guard, the impact pass and the
  * positional pass stay scalar. */
 
@@ -754,104 +758,200 @@ static void sx_bundle_hand_back(sx_world *world, const sx_bundle *u) {
     }
 }
 
-/* One rigid pass over a bundle: sx_constraint_solve's rigid branches for
- * SX_LANES constraints at once. */
-static void sx_bundle_solve(sx_world *world, sx_bundle *u, sx_rw inv_h, bool last) {
-    sx_solver_body *bodies = world->solver_bodies;
+/* A bundle's lanes through a pass: its bodies' velocities and its
+ * accumulated impulses. */
+typedef struct sx_bundle_lanes {
     sx_lanes_pair v;
+    sx_rw n1, n2, t1, t2;
+} sx_bundle_lanes;
+
+static SX_ALWAYS_INLINE void sx_bundle_begin(const sx_solver_body *bodies, const sx_bundle *u,
+                                             sx_bundle_lanes *s) {
+    sx_lanes_load(bodies, u->body_a, &s->v.vax, &s->v.vay, &s->v.wa, &s->v.pa);
+    sx_lanes_load(bodies, u->body_b, &s->v.vbx, &s->v.vby, &s->v.wb, &s->v.pb);
+    s->n1 = sx_rw_load(u->normal_impulse[0]);
+    s->n2 = sx_rw_load(u->normal_impulse[1]);
+    s->t1 = sx_rw_load(u->tangent_impulse[0]);
+    s->t2 = sx_rw_load(u->tangent_impulse[1]);
+}
+
+/* The friction (sx_friction_row2, or a one-point contact's point). */
+static SX_ALWAYS_INLINE void sx_bundle_friction(const sx_bundle *u, sx_bundle_lanes *s, sx_mw row,
+                                                sx_mw single) {
     sx_rw zero = sx_rw_zero();
     sx_rw nx = sx_rw_load(u->nx), ny = sx_rw_load(u->ny);
     sx_rw ma = sx_rw_load(u->inv_mass_a), ia = sx_rw_load(u->inv_inertia_a);
     sx_rw mb = sx_rw_load(u->inv_mass_b), ib = sx_rw_load(u->inv_inertia_b);
     sx_rw friction = sx_rw_load(u->friction);
-    sx_rw n1 = sx_rw_load(u->normal_impulse[0]), n2 = sx_rw_load(u->normal_impulse[1]);
-    sx_rw t1 = sx_rw_load(u->tangent_impulse[0]), t2 = sx_rw_load(u->tangent_impulse[1]);
+    sx_rw tx = ny, ty = sx_rw_neg(nx);
+    if (sx_mw_any(row)) {
+        sx_rw rta = sx_rw_load(u->row_rt_a), rtb = sx_rw_load(u->row_rt_b);
+        sx_rw normal = sx_rw_add(s->n1, s->n2), limit = sx_rw_mul(friction, normal);
+        sx_rw old = sx_rw_add(s->t1, s->t2);
+        sx_rw lambda =
+            sx_rw_mul(sx_rw_neg(sx_rw_load(u->row_mass)), sx_lanes_speed(&s->v, tx, ty, rta, rtb));
+        sx_rw total = sx_lanes_bounded(sx_lanes_clamp(sx_rw_add(old, lambda), limit));
+        sx_rw share =
+            sx_rw_select(sx_rw_gt(normal, zero), sx_rw_mul(total, sx_rw_div(s->n1, normal)),
+                         sx_rw_mul(sx_rw_set1(SX_R(0.5)), total));
+        if (sx_mw_all(row)) {
+            s->t1 = share;
+            s->t2 = sx_rw_sub(total, share);
+        } else {
+            s->t1 = sx_rw_select(row, share, s->t1);
+            s->t2 = sx_rw_select(row, sx_rw_sub(total, share), s->t2);
+        }
+        sx_lanes_apply(&s->v, row, ma, ia, mb, ib, tx, ty, rta, rtb, sx_rw_sub(total, old));
+    }
+    if (sx_mw_any(single)) {
+        sx_rw rta = sx_rw_load(u->rt_a[0]), rtb = sx_rw_load(u->rt_b[0]);
+        sx_rw limit = sx_rw_mul(friction, s->n1);
+        sx_rw lambda = sx_rw_mul(sx_rw_neg(sx_rw_load(u->tangent_mass[0])),
+                                 sx_lanes_speed(&s->v, tx, ty, rta, rtb));
+        sx_rw total = sx_lanes_bounded(sx_lanes_clamp(sx_rw_add(s->t1, lambda), limit));
+        sx_lanes_apply(&s->v, single, ma, ia, mb, ib, tx, ty, rta, rtb, sx_rw_sub(total, s->t1));
+        s->t1 = sx_rw_select(single, total, s->t1);
+    }
+}
+
+/* The normal points: the block solve where it applies and succeeds, the
+ * others point by point (sx_solve_normal_point, rigid). */
+static SX_ALWAYS_INLINE void sx_bundle_normals(const sx_bundle *u, sx_bundle_lanes *s,
+                                               sx_rw inv_h) {
+    sx_rw zero = sx_rw_zero();
+    sx_rw nx = sx_rw_load(u->nx), ny = sx_rw_load(u->ny);
+    sx_rw ma = sx_rw_load(u->inv_mass_a), ia = sx_rw_load(u->inv_inertia_a);
+    sx_rw mb = sx_rw_load(u->inv_mass_b), ib = sx_rw_load(u->inv_inertia_b);
     sx_rw rna1 = sx_rw_load(u->rn_a[0]), rnb1 = sx_rw_load(u->rn_b[0]);
     sx_rw rna2 = sx_rw_load(u->rn_a[1]), rnb2 = sx_rw_load(u->rn_b[1]);
     sx_rw g1 = sx_rw_load(u->gap[0]), g2 = sx_rw_load(u->gap[1]);
-    sx_rw vn1, vn2, err1;
-    sx_mw all = sx_mw_true(), two = sx_rw_gt(sx_rw_load(u->two), zero);
-    sx_mw rubs = sx_rw_gt(friction, zero), solved, rest;
-    sx_mw row = sx_mw_and(rubs, two), single = sx_mw_andnot(two, rubs);
-    sx_lanes_load(bodies, u->body_a, &v.vax, &v.vay, &v.wa, &v.pa);
-    sx_lanes_load(bodies, u->body_b, &v.vbx, &v.vby, &v.wb, &v.pb);
-
-    /* friction (sx_friction_row2, or a one-point contact's point) */
-    if (sx_mw_any(row)) {
-        sx_rw tx = ny, ty = sx_rw_neg(nx);
-        sx_rw rta = sx_rw_load(u->row_rt_a), rtb = sx_rw_load(u->row_rt_b);
-        sx_rw normal = sx_rw_add(n1, n2), limit = sx_rw_mul(friction, normal);
-        sx_rw old = sx_rw_add(t1, t2);
-        sx_rw lambda =
-            sx_rw_mul(sx_rw_neg(sx_rw_load(u->row_mass)), sx_lanes_speed(&v, tx, ty, rta, rtb));
-        sx_rw total = sx_lanes_bounded(sx_lanes_clamp(sx_rw_add(old, lambda), limit));
-        sx_rw share = sx_rw_select(sx_rw_gt(normal, zero), sx_rw_mul(total, sx_rw_div(n1, normal)),
-                                   sx_rw_mul(sx_rw_set1(SX_R(0.5)), total));
-        if (sx_mw_all(row)) {
-            t1 = share;
-            t2 = sx_rw_sub(total, share);
-        } else {
-            t1 = sx_rw_select(row, share, t1);
-            t2 = sx_rw_select(row, sx_rw_sub(total, share), t2);
-        }
-        sx_lanes_apply(&v, row, ma, ia, mb, ib, tx, ty, rta, rtb, sx_rw_sub(total, old));
-    }
-    if (sx_mw_any(single)) {
-        sx_rw tx = ny, ty = sx_rw_neg(nx);
-        sx_rw rta = sx_rw_load(u->rt_a[0]), rtb = sx_rw_load(u->rt_b[0]);
-        sx_rw limit = sx_rw_mul(friction, n1);
-        sx_rw lambda = sx_rw_mul(sx_rw_neg(sx_rw_load(u->tangent_mass[0])),
-                                 sx_lanes_speed(&v, tx, ty, rta, rtb));
-        sx_rw total = sx_lanes_bounded(sx_lanes_clamp(sx_rw_add(t1, lambda), limit));
-        sx_lanes_apply(&v, single, ma, ia, mb, ib, tx, ty, rta, rtb, sx_rw_sub(total, t1));
-        t1 = sx_rw_select(single, total, t1);
-    }
-
-    /* the normal points: the block solve where it applies and succeeds */
-    vn1 = sx_lanes_speed(&v, nx, ny, rna1, rnb1);
-    err1 = sx_lanes_error(vn1, g1, inv_h);
-    solved = sx_rw_gt(sx_rw_load(u->block_solve), zero);
+    sx_rw vn1 = sx_lanes_speed(&s->v, nx, ny, rna1, rnb1), vn2;
+    sx_rw err1 = sx_lanes_error(vn1, g1, inv_h);
+    sx_mw solved = sx_rw_gt(sx_rw_load(u->block_solve), zero), rest;
     if (sx_mw_any(solved)) {
         sx_rw k11 = sx_rw_load(u->k11), k12 = sx_rw_load(u->k12), k22 = sx_rw_load(u->k22);
         sx_rw bound = sx_rw_set1(SX_IMPULSE_LIMIT);
         sx_rw b1, b2, x1, x2;
-        vn2 = sx_lanes_speed(&v, nx, ny, rna2, rnb2);
-        b1 = sx_rw_sub(err1, sx_rw_add(sx_rw_mul(k11, n1), sx_rw_mul(k12, n2)));
+        vn2 = sx_lanes_speed(&s->v, nx, ny, rna2, rnb2);
+        b1 = sx_rw_sub(err1, sx_rw_add(sx_rw_mul(k11, s->n1), sx_rw_mul(k12, s->n2)));
         b2 = sx_rw_sub(sx_lanes_error(vn2, g2, inv_h),
-                       sx_rw_add(sx_rw_mul(k12, n1), sx_rw_mul(k22, n2)));
+                       sx_rw_add(sx_rw_mul(k12, s->n1), sx_rw_mul(k22, s->n2)));
         solved = sx_lanes_lcp2(u, solved, b1, b2, &x1, &x2);
         solved = sx_mw_and(solved, sx_mw_and(sx_rw_le(x1, bound), sx_rw_le(x2, bound)));
-        sx_lanes_apply(&v, solved, ma, ia, mb, ib, nx, ny, rna1, rnb1, sx_rw_sub(x1, n1));
-        sx_lanes_apply(&v, solved, ma, ia, mb, ib, nx, ny, rna2, rnb2, sx_rw_sub(x2, n2));
-        n1 = sx_rw_select(solved, x1, n1);
-        n2 = sx_rw_select(solved, x2, n2);
+        sx_lanes_apply(&s->v, solved, ma, ia, mb, ib, nx, ny, rna1, rnb1, sx_rw_sub(x1, s->n1));
+        sx_lanes_apply(&s->v, solved, ma, ia, mb, ib, nx, ny, rna2, rnb2, sx_rw_sub(x2, s->n2));
+        s->n1 = sx_rw_select(solved, x1, s->n1);
+        s->n2 = sx_rw_select(solved, x2, s->n2);
     }
-    /* the others point by point (sx_solve_normal_point, rigid) */
-    rest = sx_mw_andnot(solved, all);
+    rest = sx_mw_andnot(solved, sx_mw_true());
     if (sx_mw_any(rest)) {
         sx_rw total, lambda;
-        sx_mw rest2 = sx_mw_and(rest, two);
+        sx_mw rest2 = sx_mw_and(rest, sx_rw_gt(sx_rw_load(u->two), zero));
         lambda = sx_rw_mul(sx_rw_neg(sx_rw_load(u->normal_mass[0])), err1);
-        total = sx_lanes_bounded(sx_rw_max(sx_rw_add(n1, lambda), zero));
-        sx_lanes_apply(&v, rest, ma, ia, mb, ib, nx, ny, rna1, rnb1, sx_rw_sub(total, n1));
-        n1 = sx_rw_select(rest, total, n1);
+        total = sx_lanes_bounded(sx_rw_max(sx_rw_add(s->n1, lambda), zero));
+        sx_lanes_apply(&s->v, rest, ma, ia, mb, ib, nx, ny, rna1, rnb1, sx_rw_sub(total, s->n1));
+        s->n1 = sx_rw_select(rest, total, s->n1);
         if (sx_mw_any(rest2)) {
-            vn2 = sx_lanes_speed(&v, nx, ny, rna2, rnb2);
+            vn2 = sx_lanes_speed(&s->v, nx, ny, rna2, rnb2);
             lambda =
                 sx_rw_mul(sx_rw_neg(sx_rw_load(u->normal_mass[1])), sx_lanes_error(vn2, g2, inv_h));
-            total = sx_lanes_bounded(sx_rw_max(sx_rw_add(n2, lambda), zero));
-            sx_lanes_apply(&v, rest2, ma, ia, mb, ib, nx, ny, rna2, rnb2, sx_rw_sub(total, n2));
-            n2 = sx_rw_select(rest2, total, n2);
+            total = sx_lanes_bounded(sx_rw_max(sx_rw_add(s->n2, lambda), zero));
+            sx_lanes_apply(&s->v, rest2, ma, ia, mb, ib, nx, ny, rna2, rnb2,
+                           sx_rw_sub(total, s->n2));
+            s->n2 = sx_rw_select(rest2, total, s->n2);
         }
     }
+}
 
-    sx_lanes_store(bodies, u->body_a, v.vax, v.vay, v.wa, v.pa);
-    sx_lanes_store(bodies, u->body_b, v.vbx, v.vby, v.wb, v.pb);
-    sx_rw_store(u->normal_impulse[0], n1);
-    sx_rw_store(u->normal_impulse[1], n2);
-    sx_rw_store(u->tangent_impulse[0], t1);
-    sx_rw_store(u->tangent_impulse[1], t2);
+static SX_ALWAYS_INLINE void sx_bundle_end(sx_solver_body *bodies, sx_bundle *u,
+                                           const sx_bundle_lanes *s) {
+    sx_lanes_store(bodies, u->body_a, s->v.vax, s->v.vay, s->v.wa, s->v.pa);
+    sx_lanes_store(bodies, u->body_b, s->v.vbx, s->v.vby, s->v.wb, s->v.pb);
+    sx_rw_store(u->normal_impulse[0], s->n1);
+    sx_rw_store(u->normal_impulse[1], s->n2);
+    sx_rw_store(u->tangent_impulse[0], s->t1);
+    sx_rw_store(u->tangent_impulse[1], s->t2);
+}
+
+/* The friction kinds of a bundle's lanes: a two-point contact's row, or
+ * a one-point contact's point. */
+static SX_ALWAYS_INLINE void sx_bundle_kinds(const sx_bundle *u, sx_mw *row, sx_mw *single) {
+    sx_rw zero = sx_rw_zero();
+    sx_mw two = sx_rw_gt(sx_rw_load(u->two), zero), rubs = sx_rw_gt(sx_rw_load(u->friction), zero);
+    *row = sx_mw_and(rubs, two);
+    *single = sx_mw_andnot(two, rubs);
+}
+
+/* One rigid pass over a bundle: sx_constraint_solve's rigid branches for
+ * SX_LANES constraints at once. */
+static void sx_bundle_solve(sx_world *world, sx_bundle *u, sx_rw inv_h, bool last) {
+    sx_bundle_lanes s;
+    sx_mw row, single;
+    sx_bundle_kinds(u, &row, &single);
+    sx_bundle_begin(world->solver_bodies, u, &s);
+    sx_bundle_friction(u, &s, row, single);
+    sx_bundle_normals(u, &s, inv_h);
+    sx_bundle_end(world->solver_bodies, u, &s);
     if (last) sx_bundle_hand_back(world, u);
+}
+
+/* Bundles of a colour share no body the solver moves: solved phase by
+ * phase, two or four of them (each lane's operations as sx_bundle_solve's)
+ * put their chains of dependent operations side by side in the
+ * instruction stream, where one bundle after the other left the core
+ * waiting on one chain at a time. Written out, as the bundles' lanes stay
+ * in registers that way (an array of them went through memory and lost
+ * the gain). */
+static void sx_bundle_solve2(sx_world *world, sx_bundle *u, sx_rw inv_h, bool last) {
+    sx_solver_body *bodies = world->solver_bodies;
+    sx_bundle_lanes s0, s1;
+    sx_mw row0, single0, row1, single1;
+    sx_bundle_kinds(&u[0], &row0, &single0);
+    sx_bundle_kinds(&u[1], &row1, &single1);
+    sx_bundle_begin(bodies, &u[0], &s0);
+    sx_bundle_begin(bodies, &u[1], &s1);
+    sx_bundle_friction(&u[0], &s0, row0, single0);
+    sx_bundle_friction(&u[1], &s1, row1, single1);
+    sx_bundle_normals(&u[0], &s0, inv_h);
+    sx_bundle_normals(&u[1], &s1, inv_h);
+    sx_bundle_end(bodies, &u[0], &s0);
+    sx_bundle_end(bodies, &u[1], &s1);
+    if (last) {
+        sx_bundle_hand_back(world, &u[0]);
+        sx_bundle_hand_back(world, &u[1]);
+    }
+}
+
+static void sx_bundle_solve4(sx_world *world, sx_bundle *u, sx_rw inv_h, bool last) {
+    sx_solver_body *bodies = world->solver_bodies;
+    sx_bundle_lanes s0, s1, s2, s3;
+    sx_mw row0, single0, row1, single1, row2, single2, row3, single3;
+    sx_bundle_kinds(&u[0], &row0, &single0);
+    sx_bundle_kinds(&u[1], &row1, &single1);
+    sx_bundle_kinds(&u[2], &row2, &single2);
+    sx_bundle_kinds(&u[3], &row3, &single3);
+    sx_bundle_begin(bodies, &u[0], &s0);
+    sx_bundle_begin(bodies, &u[1], &s1);
+    sx_bundle_begin(bodies, &u[2], &s2);
+    sx_bundle_begin(bodies, &u[3], &s3);
+    sx_bundle_friction(&u[0], &s0, row0, single0);
+    sx_bundle_friction(&u[1], &s1, row1, single1);
+    sx_bundle_friction(&u[2], &s2, row2, single2);
+    sx_bundle_friction(&u[3], &s3, row3, single3);
+    sx_bundle_normals(&u[0], &s0, inv_h);
+    sx_bundle_normals(&u[1], &s1, inv_h);
+    sx_bundle_normals(&u[2], &s2, inv_h);
+    sx_bundle_normals(&u[3], &s3, inv_h);
+    sx_bundle_end(bodies, &u[0], &s0);
+    sx_bundle_end(bodies, &u[1], &s1);
+    sx_bundle_end(bodies, &u[2], &s2);
+    sx_bundle_end(bodies, &u[3], &s3);
+    if (last) {
+        sx_bundle_hand_back(world, &u[0]);
+        sx_bundle_hand_back(world, &u[1]);
+        sx_bundle_hand_back(world, &u[2]);
+        sx_bundle_hand_back(world, &u[3]);
+    }
 }
 
 /* One pass over the constraints, colour by colour: sx_world_solve's (soft
@@ -877,7 +977,15 @@ static void sx_constraints_pass(sx_world *world, sx_real h, bool relax, bool las
         const sx_colour_span *span = &world->spans[s];
         int end = span->first + span->count;
         if (span->wide) {
-            for (i = span->first; i < end; ++i)
+            /* a span is one colour: its bundles share no moved body (eight
+             * lanes: one at a time, the grouping measured no faster there) */
+            for (i = span->first; SX_LANES <= 4 && i + 4 <= end; i += 4)
+                sx_bundle_solve4(world, &world->bundles[i], inv_h4, last);
+            if (SX_LANES <= 4 && i + 2 <= end) {
+                sx_bundle_solve2(world, &world->bundles[i], inv_h4, last);
+                i += 2;
+            }
+            for (; i < end; ++i)
                 sx_bundle_solve(world, &world->bundles[i], inv_h4, last);
             continue;
         }
@@ -1350,12 +1458,13 @@ static bool sx_fill_colours(sx_world *world, int n, int colours) {
         for (at = world->colour_cursor[i]; at < SX_LANES * (span->first + span->count); ++at)
             sx_lane_pad(&world->bundles[at / SX_LANES], at % SX_LANES, sink);
     }
-    /* colours in a row of the same kind are one span for the passes (their
-     * constraints or bundles follow each other; a stack is one constraint
-     * per colour) */
+    /* colours in a row solved one at a time are one span for the passes
+     * (their constraints follow each other; a stack is one constraint per
+     * colour); a wide colour stays a span of its own, as the passes solve
+     * its bundles two at a time, which only bundles of one colour allow */
     for (i = 0, k = 0; i < colours; ++i) {
         const sx_colour_span *span = &world->spans[i];
-        if (k > 0 && span->wide == world->spans[k - 1].wide)
+        if (k > 0 && !span->wide && !world->spans[k - 1].wide)
             world->spans[k - 1].count += span->count;
         else
             world->spans[k++] = *span;
