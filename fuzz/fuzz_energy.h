@@ -258,8 +258,8 @@ static inline sx_status fz_energy_step(fz_energy *e) {
     }
     {
         /* continuous collision moves bodies back along their paths and
-         * pays for any height regained from their velocities: no allowance
-         * beyond rounding */
+         * pays for any height regained from their velocities, in E (the
+         * h m acc . v / 2 term included): no allowance beyond rounding */
         double scale;
         if ((st = sx_world_continuous(e->world)) != SX_OK) return st;
         e->energy = fz_energy_measure(e, &scale);

@@ -1207,6 +1207,7 @@ sx_status sx_world_integrate(sx_world *world, sx_real h) {
     }
     /* the time-of-impact corrections of this sub-step's impacts */
     sx_contacts_apply_impact_shifts(world);
+    world->ccd_h = h; /* continuous collision pays the integrator's energy with it */
     return SX_OK;
 }
 

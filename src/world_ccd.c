@@ -59,6 +59,7 @@ sx_status sx_ccd_record(sx_world *world) {
     world->ccd_kinematic_moving = 0;
     world->ccd_sweep_count = 0;
     world->ccd_dt = world->step_dt;
+    world->ccd_h = SX_R(0.0);
     return SX_OK;
 }
 
@@ -257,19 +258,31 @@ static sx_status sx_sweep_body(sx_world *world, int slot, const sx_motion *m, sx
     }
     if (t < SX_R(1.0)) {
         sx_vec2 back = sx_lerp(m->c0, m->c1, t);
-        sx_real turn = (t - SX_R(1.0)) * (m->angle1 - m->angle0), lift, ke, k = SX_R(1.0);
+        sx_real turn = (t - SX_R(1.0)) * (m->angle1 - m->angle0);
+        sx_real lift, ke, drift, k = SX_R(1.0);
+        sx_vec2 f = sx_add(sx_scale(world->def.gravity, b->gravity_scale / b->inv_mass), b->force);
         /* the work gravity and the applied force and torque did over the
          * dropped part of the path is paid back from the velocity, so the
          * move adds no energy; a move the motion cannot pay for (a slow body
          * driven by a large force, pushed along by the position correction)
          * is not made */
-        lift =
-            -sx_dot(sx_add(sx_scale(world->def.gravity, b->gravity_scale / b->inv_mass), b->force),
-                    sx_sub(back, b->center)) -
-            b->torque * turn;
+        lift = -sx_dot(f, sx_sub(back, b->center)) - b->torque * turn;
         ke = SX_R(0.5) * sx_dot(b->v, b->v) / b->inv_mass;
         if (b->inv_inertia > SX_R(0.0)) ke += SX_R(0.5) * b->w * b->w / b->inv_inertia;
-        if (lift > SX_R(0.0)) {
+        /* The energy symplectic Euler keeps, the one that sets how high the
+         * body goes next, also holds h (f . v + torque w) / 2 (h: the last
+         * sub-step). That term is negative for a body moving against the
+         * force and slowing it raises it, so then the scale k pays it too:
+         * ke k^2 + drift k = ke + drift - lift, whose root lies in (0, 1);
+         * divided by ke (|drift| < ke there) nothing overflows. Moving with
+         * the force the term only drops. */
+        drift = SX_R(0.5) * world->ccd_h * (sx_dot(f, b->v) + b->torque * b->w);
+        if (lift > SX_R(0.0) && drift < SX_R(0.0)) {
+            sx_real rest = ke + drift - lift, d = drift / ke;
+            if (!(rest > SX_R(0.0))) return SX_OK;
+            k = SX_R(0.5) * (sx_sqrt(d * d + SX_R(4.0) * (rest / ke)) - d);
+            if (!(k <= SX_R(1.0))) k = SX_R(1.0); /* an infinite ke: nothing to pay */
+        } else if (lift > SX_R(0.0)) {
             if (!(lift < ke)) return SX_OK;
             k = sx_sqrt(SX_R(1.0) - lift / ke);
         }

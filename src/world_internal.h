@@ -98,6 +98,7 @@ struct sx_world {
     int ccd_pose_capacity;
     uint32_t ccd_stamp;
     sx_real ccd_dt;           /* the step the records start (0: none) */
+    sx_real ccd_h;            /* the sub-step of the last integrate since then (0: none) */
     int ccd_kinematic_moving; /* a kinematic body moves this step (sx_ccd_record) */
     int *ccd_sweep;           /* the bodies that may need the sweep this step */
     int ccd_sweep_count, ccd_sweep_capacity;
