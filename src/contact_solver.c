@@ -1126,6 +1126,19 @@ static void sx_constraint_fill(sx_world *world, int i, int body_a, int body_b, s
     }
 }
 
+/* Contact ct's new gaps into item it's kept constraint or lane (the fill
+ * stays otherwise); its impacts start again. */
+static void sx_item_put_gaps(sx_world *world, const sx_colour_item *it, sx_contact *ct) {
+    int k;
+    for (k = 0; k < ct->count; ++k) {
+        ct->points[k].impact_impulse = SX_R(0.0);
+        if (it->wide)
+            world->bundles[it->at / SX_LANES].gap[k][it->at % SX_LANES] = ct->points[k].gap;
+        else
+            world->constraints[it->at].points[k].gap = ct->points[k].gap;
+    }
+}
+
 /* Lane l of bundle u as padding: zero masses, bodies `sink`. */
 static void sx_lane_pad(sx_bundle *u, int l, int sink) {
     int k;
@@ -1332,7 +1345,7 @@ static int sx_min_colour(const sx_world *world) {
  * breaks). */
 static int sx_gather_items(sx_world *world, bool fill, bool *same_out, bool *pattern_out) {
     sx_colour_item *items = world->colour_items;
-    int i, k, n = 0;
+    int i, n = 0;
     bool same = world->fill_valid && world->fill_serial == world->contact_serial;
     bool pattern = world->fill_valid && world->fill_min_colour == sx_min_colour(world);
     for (i = 0; i < world->contact_count; ++i) {
@@ -1352,13 +1365,7 @@ static int sx_gather_items(sx_world *world, bool fill, bool *same_out, bool *pat
             it->inv_inertia_b == sb->inv_inertia && it->dynamic_a == sa->dynamic &&
             it->dynamic_b == sb->dynamic) {
             /* the new gaps into the kept fill, while the contact is at hand */
-            for (k = 0; k < ct->count; ++k) {
-                ct->points[k].impact_impulse = SX_R(0.0);
-                if (it->wide)
-                    world->bundles[it->at / SX_LANES].gap[k][it->at % SX_LANES] = ct->points[k].gap;
-                else
-                    world->constraints[it->at].points[k].gap = ct->points[k].gap;
-            }
+            sx_item_put_gaps(world, it, ct);
             continue;
         }
         same = false;
@@ -1479,7 +1486,7 @@ static bool sx_fill_colours(sx_world *world, int n, int colours) {
  * walk over every contact that checks each item. */
 static void sx_gather_kept(sx_world *world) {
     const sx_colour_item *items = world->colour_items;
-    int i, j, k;
+    int i, j;
     /* solver_index stays 0: only a walk's naming reads it */
     for (j = 1; j < world->fill_body_count; ++j) {
         int slot = world->solver_slots[j];
@@ -1492,13 +1499,7 @@ static void sx_gather_kept(sx_world *world) {
         const sx_colour_item *it = &items[i];
         sx_contact *ct = &world->contacts[it->contact];
         sx_update_gaps(world, ct);
-        for (k = 0; k < ct->count; ++k) {
-            ct->points[k].impact_impulse = SX_R(0.0);
-            if (it->wide)
-                world->bundles[it->at / SX_LANES].gap[k][it->at % SX_LANES] = ct->points[k].gap;
-            else
-                world->constraints[it->at].points[k].gap = ct->points[k].gap;
-        }
+        sx_item_put_gaps(world, it, ct);
     }
 }
 
