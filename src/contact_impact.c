@@ -387,8 +387,9 @@ bool sx_contacts_impacts(sx_world *world, sx_real h) {
                (size_t)world->impact_body_capacity * sizeof(sx_impact_body));
         world->impact_shifts_pending = false;
     }
-    /* the common case, no impact in this sub-step, costs this scan only */
-    for (i = 0; i < world->contact_count && first < 0; ++i) {
+    /* the common case, no impact in this sub-step, costs this scan only,
+     * and a world without restitution not even that */
+    for (i = 0; i < world->contact_count && first < 0 && world->bouncy_contacts > 0; ++i) {
         const sx_contact *c = &world->contacts[i];
         if (sx_impact_candidate(world, c) && sx_impact_time(world, c, h, false, &t)) first = i;
     }

@@ -354,11 +354,13 @@ void sx_contacts_prepare(sx_world *world) {
     int i, k;
     world->contact_serial++;
     world->masses_changed = false;
+    world->bouncy_contacts = 0;
     for (i = 0; i < world->contact_count; ++i) {
         sx_contact *c = &world->contacts[i];
         const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
         sx_real m = a->inv_mass + b->inv_mass, ia = a->inv_inertia, ib = b->inv_inertia;
         sx_vec2 t = sx_cross_vs(c->normal, SX_R(1.0));
+        if (c->restitution > SX_R(0.0)) world->bouncy_contacts++;
         for (k = 0; k < c->count; ++k) {
             sx_contact_point *p = &c->points[k];
             sx_real rta = sx_cross(p->anchor_a, t), rtb = sx_cross(p->anchor_b, t);

@@ -15,6 +15,7 @@
  * feature id, which carries the accumulated impulses over for warm
  * starting. Buffers only grow; a warmed-up world allocates nothing per
  * step. */
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -1050,6 +1051,9 @@ sx_status sx_world_collide(sx_world *world) {
     sx_world_purge_contacts(world);
     world->by_body_valid = false;
     world->contact_serial++;
+    /* unknown until the prepare at the end counts them (a collide that
+     * fails half way leaves the impact pass scanning) */
+    world->bouncy_contacts = INT_MAX;
 
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
