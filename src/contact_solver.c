@@ -350,24 +350,33 @@ static void sx_normal_masses(const sx_world *world, sx_contact *c) {
     }
 }
 
-void sx_contacts_prepare(sx_world *world) {
-    int i, k;
+void sx_contact_prepare(const sx_world *world, sx_contact *c) {
+    const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
+    sx_real m = a->inv_mass + b->inv_mass, ia = a->inv_inertia, ib = b->inv_inertia;
+    sx_vec2 t = sx_cross_vs(c->normal, SX_R(1.0));
+    int k;
+    for (k = 0; k < c->count; ++k) {
+        sx_contact_point *p = &c->points[k];
+        sx_real rta = sx_cross(p->anchor_a, t), rtb = sx_cross(p->anchor_b, t);
+        sx_real kt = m + ia * rta * rta + ib * rtb * rtb;
+        p->tangent_mass = kt > SX_R(0.0) ? SX_R(1.0) / kt : SX_R(0.0);
+    }
+    sx_normal_masses(world, c);
+}
+
+void sx_contacts_prepared(sx_world *world) {
     world->contact_serial++;
     world->masses_changed = false;
+}
+
+void sx_contacts_prepare(sx_world *world) {
+    int i;
+    sx_contacts_prepared(world);
     world->bouncy_contacts = 0;
     for (i = 0; i < world->contact_count; ++i) {
         sx_contact *c = &world->contacts[i];
-        const sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
-        sx_real m = a->inv_mass + b->inv_mass, ia = a->inv_inertia, ib = b->inv_inertia;
-        sx_vec2 t = sx_cross_vs(c->normal, SX_R(1.0));
         if (c->restitution > SX_R(0.0)) world->bouncy_contacts++;
-        for (k = 0; k < c->count; ++k) {
-            sx_contact_point *p = &c->points[k];
-            sx_real rta = sx_cross(p->anchor_a, t), rtb = sx_cross(p->anchor_b, t);
-            sx_real kt = m + ia * rta * rta + ib * rtb * rtb;
-            p->tangent_mass = kt > SX_R(0.0) ? SX_R(1.0) / kt : SX_R(0.0);
-        }
-        sx_normal_masses(world, c);
+        sx_contact_prepare(world, c);
     }
 }
 

@@ -15,7 +15,6 @@
  * feature id, which carries the accumulated impulses over for warm
  * starting. Buffers only grow; a warmed-up world allocates nothing per
  * step. */
-#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -902,6 +901,11 @@ static sx_status sx_thaw_contacts(sx_world *world, bool mark) {
     world->thaw_body_count = 0;
     k = world->thaw_count;
     if (k == 0) return SX_OK;
+    /* a mass may have changed while the contacts slept */
+    for (i = 0; i < k; ++i) {
+        sx_contact_prepare(world, &world->thaw[i]);
+        if (world->thaw[i].restitution > SX_R(0.0)) world->bouncy_contacts++;
+    }
     /* (key, part_a, part_b) is unique: the order is total, the same on every run */
     qsort(world->thaw, (size_t)k, sizeof(sx_contact), sx_contact_key_cmp);
     p = world->contacts;
@@ -981,6 +985,8 @@ static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, c
         p->id = mp->id;
         sx_match_point(p, old);
     }
+    sx_contact_prepare(world, c);
+    if (c->restitution > SX_R(0.0)) world->bouncy_contacts++;
     return SX_OK;
 }
 
@@ -1051,9 +1057,6 @@ sx_status sx_world_collide(sx_world *world) {
     sx_world_purge_contacts(world);
     world->by_body_valid = false;
     world->contact_serial++;
-    /* unknown until the prepare at the end counts them (a collide that
-     * fails half way leaves the impact pass scanning) */
-    world->bouncy_contacts = INT_MAX;
 
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
@@ -1088,6 +1091,8 @@ sx_status sx_world_collide(sx_world *world) {
     world->contact_capacity = cap;
     world->old_contact_count = world->contact_count;
     world->contact_count = 0;
+    /* counted as the contacts are made and thawed */
+    world->bouncy_contacts = 0;
     for (i = 0; i < world->bp.pair_count; ++i) {
         uint64_t key = world->bp.pairs[i];
         int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), old_begin;
@@ -1123,7 +1128,7 @@ sx_status sx_world_collide(sx_world *world) {
         s = sx_thaw_contacts(world, world->def.enable_contact_events);
         if (s != SX_OK) return s;
     }
-    sx_contacts_prepare(world);
+    sx_contacts_prepared(world);
     if (world->def.enable_contact_events) {
         s = sx_record_events(world);
         if (s != SX_OK) return s;

@@ -186,9 +186,16 @@ typedef struct sx_impact_contact {
 } sx_impact_contact;
 
 /* contact_solver.c */
-/* Once per collide: the effective masses and the block-solve matrices of
- * the new contacts, from their anchors (fixed for the step). */
+/* The effective masses and the block-solve matrix of contact c, from its
+ * anchors (fixed for the step): the collide prepares each contact as it
+ * makes or thaws it, while the contact is at hand. */
+void sx_contact_prepare(const sx_world *world, sx_contact *c);
+/* Every contact prepared again (a body's mass changed since the collide),
+ * and the count of contacts with restitution. */
 void sx_contacts_prepare(sx_world *world);
+/* The end of a collide that prepared each contact it made: the solver's
+ * kept fill and the effective masses follow the new contacts. */
+void sx_contacts_prepared(sx_world *world);
 /* Start of a sub-step's solve: gathers the solver's compact arrays, every
  * active point's gap from the current positions, and the warm start on the
  * solver's copies of the velocities only: the bodies keep their own for the
