@@ -63,6 +63,7 @@
  * the two bodies apart along the normal by a fraction of the overlap beyond
  * the slop, the move split by inverse mass and inverse inertia (a
  * pseudo-impulse that changes positions only). */
+#include <stddef.h>
 #include <string.h>
 
 #include "contact_math.h"
@@ -1150,6 +1151,96 @@ static void sx_item_put_gaps(sx_world *world, const sx_colour_item *it, sx_conta
     }
 }
 
+/* Lane l of frame f as padding: no bodies, zero anchors and bases (a gap
+ * of 0, as sx_lane_pad's). */
+static void sx_frame_pad(sx_bundle_frame *f, int l) {
+    int k;
+    f->slot_a[l] = f->slot_b[l] = -1;
+    for (k = 0; k < 2; ++k) {
+        f->rel_ax[k][l] = f->rel_ay[k][l] = f->rel_bx[k][l] = f->rel_by[k][l] = SX_R(0.0);
+        f->base[k][l] = SX_R(0.0);
+    }
+}
+
+/* Lane l of frame f from contact ct (a one-point contact's second point as
+ * padding). */
+static void sx_frame_fill(sx_bundle_frame *f, int l, const sx_contact *ct) {
+    int k;
+    sx_frame_pad(f, l);
+    f->slot_a[l] = ct->body_a;
+    f->slot_b[l] = ct->body_b;
+    for (k = 0; k < ct->count; ++k) {
+        const sx_contact_point *p = &ct->points[k];
+        f->rel_ax[k][l] = p->rel_a.x;
+        f->rel_ay[k][l] = p->rel_a.y;
+        f->rel_bx[k][l] = p->rel_b.x;
+        f->rel_by[k][l] = p->rel_b.y;
+        f->base[k][l] = p->base;
+    }
+}
+
+/* A body's rotation and centre of mass, four reals in a row: one load a
+ * lane (sx_bundle_gaps). */
+typedef char sx_sim_pose_in_a_row[offsetof(sx_body_sim, center) ==
+                                          offsetof(sx_body_sim, xf) + offsetof(sx_xform, q) +
+                                              2 * sizeof(sx_real) &&
+                                      offsetof(sx_rot, s) == sizeof(sx_real)
+                                  ? 1
+                                  : -1];
+
+/* Bundle u's gaps at the bodies' current poses from its frame f:
+ * sx_current_gap's operations lane by lane, so the same bits as the
+ * contacts' gaps. A sub-step's gather reads a contact's 48 bytes of frame
+ * here instead of its 232 bytes, and writes no gap back to it. */
+static SX_ALWAYS_INLINE void sx_frame_gaps(const sx_world *world, const sx_bundle *u,
+                                           const sx_bundle_frame *f, sx_rw *gaps) {
+    static const sx_real nowhere[4] = {SX_R(0.0), SX_R(0.0), SX_R(0.0), SX_R(0.0)};
+    const sx_real *pa[SX_LANES], *pb[SX_LANES];
+    sx_rw nx = sx_rw_load(u->nx), ny = sx_rw_load(u->ny), ex, ey, ac, as, bc, bs, ax, ay, bx, by;
+    int l, k;
+    for (l = 0; l < SX_LANES; ++l) {
+        /* a padding lane: zero poses (with zero anchors and base, a gap of 0) */
+        pa[l] = f->slot_a[l] < 0 ? nowhere : &world->sims[f->slot_a[l]].xf.q.c;
+        pb[l] = f->slot_b[l] < 0 ? nowhere : &world->sims[f->slot_b[l]].xf.q.c;
+    }
+    sx_rw_gather4p(pa, &ac, &as, &ax, &ay);
+    sx_rw_gather4p(pb, &bc, &bs, &bx, &by);
+    ex = sx_rw_sub(bx, ax);
+    ey = sx_rw_sub(by, ay);
+    for (k = 0; k < 2; ++k) {
+        sx_rw rx = sx_rw_load(f->rel_ax[k]), ry = sx_rw_load(f->rel_ay[k]);
+        sx_rw tx = sx_rw_load(f->rel_bx[k]), ty = sx_rw_load(f->rel_by[k]);
+        sx_rw rax = sx_rw_sub(sx_rw_mul(ac, rx), sx_rw_mul(as, ry));
+        sx_rw ray = sx_rw_add(sx_rw_mul(as, rx), sx_rw_mul(ac, ry));
+        sx_rw rbx = sx_rw_sub(sx_rw_mul(bc, tx), sx_rw_mul(bs, ty));
+        sx_rw rby = sx_rw_add(sx_rw_mul(bs, tx), sx_rw_mul(bc, ty));
+        sx_rw dx = sx_rw_add(ex, sx_rw_sub(rbx, rax)), dy = sx_rw_add(ey, sx_rw_sub(rby, ray));
+        sx_rw g = sx_rw_add(sx_rw_load(f->base[k]), sx_rw_add(sx_rw_mul(dx, nx), sx_rw_mul(dy, ny)));
+        /* a one-point contact's second point keeps its gap of 0 */
+        if (k == 1) g = sx_rw_select(sx_rw_gt(sx_rw_load(u->two), sx_rw_zero()), g, sx_rw_zero());
+        gaps[k] = g;
+    }
+}
+
+static void sx_bundle_gaps(const sx_world *world, sx_bundle *u, const sx_bundle_frame *f) {
+    sx_rw gaps[2];
+    sx_frame_gaps(world, u, f, gaps);
+    sx_rw_store(u->gap[0], gaps[0]);
+    sx_rw_store(u->gap[1], gaps[1]);
+}
+
+/* The lanes of bundle u (bits, lane l as 1 << l) with a point the position
+ * pass may move: a separation not clearly above -slop (the pass looks at
+ * each such point itself; the others it would skip). */
+static int sx_bundle_overlaps(const sx_world *world, const sx_bundle *u, const sx_bundle_frame *f,
+                              sx_real slop) {
+    sx_rw gaps[2], lo = sx_rw_set1(-slop);
+    sx_frame_gaps(world, u, f, gaps);
+    /* a one-point contact's second gap is 0, clear of -slop */
+    return (1 << SX_LANES) - 1 -
+           sx_mw_bits(sx_mw_and(sx_rw_ge(gaps[0], lo), sx_rw_ge(gaps[1], lo)));
+}
+
 /* Lane l of bundle u as padding: zero masses, bodies `sink`. */
 static void sx_lane_pad(sx_bundle *u, int l, int sink) {
     int k;
@@ -1181,6 +1272,7 @@ static void sx_lane_fill(sx_world *world, sx_bundle *u, int l, const sx_colour_i
     sx_real rt_a[2] = {SX_R(0.0), SX_R(0.0)}, rt_b[2] = {SX_R(0.0), SX_R(0.0)};
     sx_real tangent_mass[2] = {SX_R(0.0), SX_R(0.0)};
     int k;
+    sx_frame_fill(&world->bundle_frames[u - world->bundles], l, ct);
     u->body_a[l] = it->body_a;
     u->body_b[l] = it->body_b;
     u->contact[l] = it->contact;
@@ -1454,6 +1546,11 @@ static bool sx_fill_colours(sx_world *world, int n, int colours) {
     if (!sx_grow_array(&p, &world->bundle_capacity, world->bundle_count, sizeof(sx_bundle)))
         return false;
     world->bundles = (sx_bundle *)p;
+    p = world->bundle_frames;
+    if (!sx_grow_array(&p, &world->bundle_frame_capacity, world->bundle_count,
+                       sizeof(sx_bundle_frame)))
+        return false;
+    world->bundle_frames = (sx_bundle_frame *)p;
     sink = world->solver_body_count;
     world->solver_bodies[sink].v = sx_v2_zero();
     world->solver_bodies[sink].w = SX_R(0.0);
@@ -1473,8 +1570,10 @@ static bool sx_fill_colours(sx_world *world, int n, int colours) {
         const sx_colour_span *span = &world->spans[i];
         int at;
         if (!span->wide) continue;
-        for (at = world->colour_cursor[i]; at < SX_LANES * (span->first + span->count); ++at)
+        for (at = world->colour_cursor[i]; at < SX_LANES * (span->first + span->count); ++at) {
             sx_lane_pad(&world->bundles[at / SX_LANES], at % SX_LANES, sink);
+            sx_frame_pad(&world->bundle_frames[at / SX_LANES], at % SX_LANES);
+        }
     }
     /* colours in a row solved one at a time are one span for the passes
      * (their constraints follow each other; a stack is one constraint per
@@ -1497,6 +1596,11 @@ static bool sx_fill_colours(sx_world *world, int n, int colours) {
  * walk over every contact that checks each item. */
 static void sx_gather_kept(sx_world *world) {
     const sx_colour_item *items = world->colour_items;
+    /* Without restitution the contacts' own gaps and impact impulses are
+     * not read before the next walk refreshes them (the impact pass skips
+     * its work, and the impulses stay 0): the lanes' gaps come from their
+     * frames, the one-at-a-time constraints' from their contacts. */
+    bool frames = world->bouncy_contacts == 0;
     int i, j;
     /* solver_index stays 0: only a walk's naming reads it */
     for (j = 1; j < world->fill_body_count; ++j) {
@@ -1506,6 +1610,18 @@ static void sx_gather_kept(sx_world *world) {
         world->solver_bodies[j].pad = SX_R(0.0);
     }
     world->solver_body_count = world->fill_body_count;
+    if (frames) {
+        for (i = 0; i < world->constraint_count; ++i) {
+            sx_constraint *c = &world->constraints[i];
+            sx_contact *ct = &world->contacts[c->contact];
+            sx_update_gaps(world, ct);
+            for (j = 0; j < ct->count; ++j)
+                c->points[j].gap = ct->points[j].gap;
+        }
+        for (i = 0; i < world->bundle_count; ++i)
+            sx_bundle_gaps(world, &world->bundles[i], &world->bundle_frames[i]);
+        return;
+    }
     for (i = 0; i < world->fill_count; ++i) {
         const sx_colour_item *it = &items[i];
         sx_contact *ct = &world->contacts[it->contact];
@@ -1527,7 +1643,10 @@ static void sx_refill_colours(sx_world *world, int n, bool filled) {
         sx_item_fill(world, &world->colour_items[i]);
     for (i = 0; i < world->bundle_count; ++i) {
         for (l = 0; l < SX_LANES; ++l) {
-            if (world->bundles[i].contact[l] < 0) sx_lane_pad(&world->bundles[i], l, sink);
+            if (world->bundles[i].contact[l] < 0) {
+                sx_lane_pad(&world->bundles[i], l, sink);
+                sx_frame_pad(&world->bundle_frames[i], l);
+            }
         }
     }
 }
@@ -1657,6 +1776,69 @@ static void sx_move_body(sx_body_sim *b, sx_vec2 dp, sx_real angle) {
     sx_body_sync_origin(b);
 }
 
+/* The positional correction of contact c's points, one after the other
+ * (each sees the moves of the one before). */
+static void sx_push_contact(sx_world *world, sx_contact *c, sx_real slop, sx_real beta,
+                            sx_real max_move) {
+    sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
+    sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;
+    sx_vec2 n = c->normal;
+    int k;
+    for (k = 0; k < c->count; ++k) {
+        const sx_contact_point *p = &c->points[k];
+        sx_real s = sx_current_gap(a, b, n, p), correction, lambda, rna, rnb;
+        if (s >= -slop || !(p->normal_mass > SX_R(0.0))) continue;
+        correction = sx_maxr(beta * (s + slop), -max_move);
+        rna = sx_cross(p->anchor_a, n);
+        rnb = sx_cross(p->anchor_b, n);
+        lambda = -correction * p->normal_mass;
+        if (!sx_is_finite(lambda)) {
+            /* an effective mass near SX_REAL_MAX (a body of that mass
+             * against a static one): the pseudo-impulse overflows, and
+             * inf x 1 / mass made the position -inf. The same moves, as
+             * fractions of 1 / mass. */
+            sx_real kn = ma + mb + ia * rna * rna + ib * rnb * rnb;
+            if (!(kn > SX_R(0.0))) continue;
+            if (ma > SX_R(0.0) || ia > SX_R(0.0))
+                sx_move_body(a, sx_scale(n, correction * (ma / kn)), correction * (ia * rna / kn));
+            if (mb > SX_R(0.0) || ib > SX_R(0.0))
+                sx_move_body(b, sx_scale(n, -correction * (mb / kn)), -correction * (ib * rnb / kn));
+            continue;
+        }
+        if (ma > SX_R(0.0) || ia > SX_R(0.0))
+            sx_move_body(a, sx_scale(n, -lambda * ma), -ia * lambda * rna);
+        if (mb > SX_R(0.0) || ib > SX_R(0.0))
+            sx_move_body(b, sx_scale(n, lambda * mb), ib * lambda * rnb);
+    }
+}
+
+/* One position pass in the order of the solve's colours, while its fill
+ * still holds the active contacts: the same moves as in contact order (a
+ * colour comes after every colour whose contacts share a moved body with
+ * it, and the contacts of a colour share none), and the wide colours'
+ * lanes find their separations four or eight at a time from their frames,
+ * so only contacts with a point near overlap are looked at one by one. */
+static void sx_push_by_colour(sx_world *world, sx_real slop, sx_real beta, sx_real max_move) {
+    int s, i, l;
+    for (s = 0; s < world->span_count; ++s) {
+        const sx_colour_span *span = &world->spans[s];
+        int end = span->first + span->count;
+        for (i = span->first; i < end; ++i) {
+            if (span->wide) {
+                const sx_bundle *u = &world->bundles[i];
+                int lanes = sx_bundle_overlaps(world, u, &world->bundle_frames[i], slop);
+                for (l = 0; lanes != 0; ++l, lanes >>= 1) {
+                    if (lanes & 1)
+                        sx_push_contact(world, &world->contacts[u->contact[l]], slop, beta, max_move);
+                }
+            } else {
+                sx_push_contact(world, &world->contacts[world->constraints[i].contact], slop, beta,
+                                max_move);
+            }
+        }
+    }
+}
+
 /* The rigid contacts' positional correction: each overlap beyond the slop
  * is reduced by correction_factor of it (at most max_correction_speed h per
  * sub-step) by moving the two bodies along the normal, split by inverse
@@ -1664,42 +1846,21 @@ static void sx_move_body(sx_body_sim *b, sx_vec2 dp, sx_real angle) {
  * energy, untouched). */
 static void sx_contacts_push_out(sx_world *world, sx_real h, int passes) {
     sx_real slop = world->linear_slop, beta = world->def.correction_factor, max_move;
-    int it, i, k;
+    /* the fill of this sub-step's solve, unchanged since (the colours name
+     * exactly the active contacts) */
+    bool by_colour = world->fill_valid && world->fill_serial == world->contact_serial &&
+                     world->fill_epoch == world->solver_epoch;
+    int it, i;
     if (passes <= 0) return;
     max_move = world->def.max_correction_speed * h / (sx_real)passes;
     for (it = 0; it < passes; ++it) {
+        if (by_colour) {
+            sx_push_by_colour(world, slop, beta, max_move);
+            continue;
+        }
         for (i = 0; i < world->contact_count; ++i) {
             sx_contact *c = &world->contacts[i];
-            sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
-            sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;
-            sx_vec2 n = c->normal;
-            if (!sx_contact_is_active(world, c)) continue;
-            for (k = 0; k < c->count; ++k) {
-                const sx_contact_point *p = &c->points[k];
-                sx_real s = sx_current_gap(a, b, n, p), correction, lambda, rna, rnb;
-                if (s >= -slop || !(p->normal_mass > SX_R(0.0))) continue;
-                correction = sx_maxr(beta * (s + slop), -max_move);
-                rna = sx_cross(p->anchor_a, n);
-                rnb = sx_cross(p->anchor_b, n);
-                lambda = -correction * p->normal_mass;
-                if (!sx_is_finite(lambda)) {
-                    /* an effective mass near SX_REAL_MAX (a body of that
-                     * mass against a static one): the pseudo-impulse
-                     * overflows, and inf x 1 / mass made the position
-                     * -inf. The same moves, as fractions of 1 / mass. */
-                    sx_real kn = ma + mb + ia * rna * rna + ib * rnb * rnb;
-                    if (!(kn > SX_R(0.0))) continue;
-                    if (ma > SX_R(0.0) || ia > SX_R(0.0))
-                        sx_move_body(a, sx_scale(n, correction * (ma / kn)), correction * (ia * rna / kn));
-                    if (mb > SX_R(0.0) || ib > SX_R(0.0))
-                        sx_move_body(b, sx_scale(n, -correction * (mb / kn)), -correction * (ib * rnb / kn));
-                    continue;
-                }
-                if (ma > SX_R(0.0) || ia > SX_R(0.0))
-                    sx_move_body(a, sx_scale(n, -lambda * ma), -ia * lambda * rna);
-                if (mb > SX_R(0.0) || ib > SX_R(0.0))
-                    sx_move_body(b, sx_scale(n, lambda * mb), ib * lambda * rnb);
-            }
+            if (sx_contact_is_active(world, c)) sx_push_contact(world, c, slop, beta, max_move);
         }
     }
 }
@@ -1746,6 +1907,7 @@ void sx_contacts_free(sx_world *world) {
     sx_free(world->constraints, (size_t)world->constraint_capacity * sizeof(sx_constraint));
     sx_free(world->spans, (size_t)world->span_capacity * sizeof(sx_colour_span));
     sx_free(world->bundles, (size_t)world->bundle_capacity * sizeof(sx_bundle));
+    sx_free(world->bundle_frames, (size_t)world->bundle_frame_capacity * sizeof(sx_bundle_frame));
     sx_free(world->colour_items, (size_t)world->colour_item_capacity * sizeof(sx_colour_item));
     sx_free(world->colour_cursor, (size_t)world->colour_cursor_capacity * sizeof(int));
     sx_free(world->body_colour, (size_t)world->body_colour_capacity * sizeof(int));

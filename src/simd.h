@@ -613,6 +613,15 @@ static SX_ALWAYS_INLINE void sx_rw_gather4(const sx_real *base, const int *idx, 
                               _mm_loadu_ps(base + 4 * idx[7]), 1);
     sx_rw_transpose_halves(a, b, c, d);
 }
+/** sx_rw_gather4 from records anywhere: lane l's four reals at rec[l]. */
+static SX_ALWAYS_INLINE void sx_rw_gather4p(const sx_real *const *rec, sx_rw *a, sx_rw *b,
+                                            sx_rw *c, sx_rw *d) {
+    *a = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(rec[0])), _mm_loadu_ps(rec[4]), 1);
+    *b = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(rec[1])), _mm_loadu_ps(rec[5]), 1);
+    *c = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(rec[2])), _mm_loadu_ps(rec[6]), 1);
+    *d = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(rec[3])), _mm_loadu_ps(rec[7]), 1);
+    sx_rw_transpose_halves(a, b, c, d);
+}
 /** sx_rw_gather4 backwards: lane l of a, b, c, d to record idx[l], in lane
  *  order (a record named twice keeps its last lane's values). */
 static SX_ALWAYS_INLINE void sx_rw_scatter4(sx_real *base, const int *idx, sx_rw a, sx_rw b,
@@ -681,6 +690,14 @@ static SX_ALWAYS_INLINE void sx_rw_gather4(const sx_real *base, const int *idx, 
     *d = _mm256_loadu_pd(base + 4 * idx[3]);
     sx_rw_transpose(a, b, c, d);
 }
+static SX_ALWAYS_INLINE void sx_rw_gather4p(const sx_real *const *rec, sx_rw *a, sx_rw *b,
+                                            sx_rw *c, sx_rw *d) {
+    *a = _mm256_loadu_pd(rec[0]);
+    *b = _mm256_loadu_pd(rec[1]);
+    *c = _mm256_loadu_pd(rec[2]);
+    *d = _mm256_loadu_pd(rec[3]);
+    sx_rw_transpose(a, b, c, d);
+}
 static SX_ALWAYS_INLINE void sx_rw_scatter4(sx_real *base, const int *idx, sx_rw a, sx_rw b,
                                             sx_rw c, sx_rw d) {
     sx_rw_transpose(&a, &b, &c, &d);
@@ -726,6 +743,14 @@ static SX_ALWAYS_INLINE void sx_rw_gather4(const sx_real *base, const int *idx, 
     *b = sx_r4_load(base + 4 * idx[1]);
     *c = sx_r4_load(base + 4 * idx[2]);
     *d = sx_r4_load(base + 4 * idx[3]);
+    sx_r4_transpose(a, b, c, d);
+}
+static SX_ALWAYS_INLINE void sx_rw_gather4p(const sx_real *const *rec, sx_rw *a, sx_rw *b,
+                                            sx_rw *c, sx_rw *d) {
+    *a = sx_r4_load(rec[0]);
+    *b = sx_r4_load(rec[1]);
+    *c = sx_r4_load(rec[2]);
+    *d = sx_r4_load(rec[3]);
     sx_r4_transpose(a, b, c, d);
 }
 static SX_ALWAYS_INLINE void sx_rw_scatter4(sx_real *base, const int *idx, sx_rw a, sx_rw b,

@@ -128,6 +128,16 @@ typedef struct sx_bundle {
         inv22[SX_LANES];
 } sx_bundle;
 
+/* What the sub-steps after a bundle's fill need to find its lanes' gaps
+ * again from the bodies' poses (sx_current_gap, lane-wise): the contacts'
+ * body slots (-1: a padding lane), anchors in their body frames and bases.
+ * Apart from sx_bundle, which the passes stream through. */
+typedef struct sx_bundle_frame {
+    int slot_a[SX_LANES], slot_b[SX_LANES];
+    sx_real rel_ax[2][SX_LANES], rel_ay[2][SX_LANES], rel_bx[2][SX_LANES], rel_by[2][SX_LANES];
+    sx_real base[2][SX_LANES];
+} sx_bundle_frame;
+
 /* One colour of the solve, in the order the passes take them: `count`
  * constraints from world->constraints[first] (solved one at a time) or
  * `count` bundles from world->bundles[first] (wide). */

@@ -158,10 +158,11 @@ struct sx_world {
      * contact, per colour, per solver body) */
     sx_colour_span *spans;
     sx_bundle *bundles;
+    sx_bundle_frame *bundle_frames; /* one per bundle */
     sx_colour_item *colour_items;
     int *colour_cursor;
     int *body_colour;
-    int span_count, bundle_count;
+    int span_count, bundle_count, bundle_frame_capacity;
     int span_capacity, bundle_capacity, colour_item_capacity, colour_cursor_capacity;
     int body_colour_capacity;
     /* The colours and the wide passes' lanes are filled once per collide

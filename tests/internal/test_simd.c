@@ -289,6 +289,19 @@ static void wide_gather_and_scatter_move_records(void **state) {
         for (i = 0; i < SX_LANES; ++i)
             assert_true(same_bits(sx_rw_lane(f[j], i), rec[idx[i]][j]));
     }
+    /* the same records named by address */
+    {
+        const sx_real *at[8];
+        for (i = 0; i < SX_LANES; ++i)
+            at[i] = rec[idx[i]];
+        for (j = 0; j < 4; ++j)
+            f[j] = sx_rw_zero();
+        sx_rw_gather4p(at, &f[0], &f[1], &f[2], &f[3]);
+        for (j = 0; j < 4; ++j) {
+            for (i = 0; i < SX_LANES; ++i)
+                assert_true(same_bits(sx_rw_lane(f[j], i), rec[idx[i]][j]));
+        }
+    }
     /* lane l's fields become l + 100 * field, then go back */
     for (j = 0; j < 4; ++j) {
         sx_real v[8];

@@ -8,8 +8,11 @@
  * mixes what the lanes must choose between: two-point faces (block solve),
  * one-point contacts (circles), frictionless bodies, a kinematic body, and
  * between sub-steps a density change and a destroyed body (which must make
- * a kept fill refill). Every body's state must be the same bits in all
- * four worlds. */
+ * a kept fill refill), and a column made overlapping for the position
+ * pass, which takes the solve's colours in all but the last world (that
+ * one walks the contacts in their order). Every body's state must be the
+ * same bits in all four worlds, with and without restitution (which
+ * decides where a kept fill's lanes find their gaps). */
 #include <limits.h>
 #include <string.h>
 
@@ -29,6 +32,11 @@ typedef struct scene {
     int count;
 } scene;
 
+/* The circles' restitution: with none in the world, a kept fill finds its
+ * lanes' gaps from its frames; with some, from the contacts (which the
+ * impact pass reads and shifts). */
+static sx_real circle_restitution;
+
 static void add(scene *s, sx_body_type type, sx_real x, sx_real y, sx_shape shape, sx_real friction) {
     sx_body_def bd = sx_default_body_def();
     sx_collider_def cd = sx_default_collider_def();
@@ -37,6 +45,7 @@ static void add(scene *s, sx_body_type type, sx_real x, sx_real y, sx_shape shap
     if (type == SX_BODY_KINEMATIC) bd.linear_velocity = sx_v2(SX_R(0.5), SX_R(0.0));
     cd.shape = shape;
     cd.friction = friction;
+    if (shape.type == SX_SHAPE_CIRCLE) cd.restitution = circle_restitution;
     assert_int_equal(sx_create_body(s->w, &bd, &s->ids[s->count]), SX_OK);
     assert_int_equal(sx_body_add_collider(s->w, s->ids[s->count], &cd, &s->cols[s->count]), SX_OK);
     s->count++;
@@ -64,7 +73,46 @@ static void build(scene *s) {
             sx_circle_shape(sx_v2_zero(), SX_R(0.3)), SX_R(0.4));
     }
     add(s, SX_BODY_KINEMATIC, SX_R(-12.0), SX_R(0.5), sx_box_shape(SX_R(1.0), SX_R(0.5)), SX_R(0.6));
+    /* a column made overlapping (10 cm into the ground and each other):
+     * work for the position pass */
+    for (i = 0; i < 4; ++i) {
+        add(s, SX_BODY_DYNAMIC, SX_R(30.0), SX_R(0.4) + SX_R(0.9) * (sx_real)i,
+            sx_box_shape(SX_R(0.5), SX_R(0.5)), SX_R(0.6));
+    }
+    /* two boxes tilted either way, one corner 3.5 cm into the ground and
+     * the other just above it: a face's first point or its second alone
+     * needs the position pass */
+    for (i = 0; i < 2; ++i) {
+        sx_real angle = i == 0 ? SX_R(0.04) : SX_R(-0.04);
+        add(s, SX_BODY_DYNAMIC, SX_R(33.0) + SX_R(3.0) * (sx_real)i, SX_R(0.4846),
+            sx_box_shape(SX_R(0.5), SX_R(0.5)), SX_R(0.6));
+        assert_int_equal(sx_body_set_transform(s->w, s->ids[s->count - 1],
+                                               sx_v2(SX_R(33.0) + SX_R(3.0) * (sx_real)i, SX_R(0.4846)),
+                                               angle),
+                         SX_OK);
+    }
 }
+
+/* Points of active contacts overlapping beyond the slop at the bodies'
+ * current poses: the ones the position pass moves. */
+static int overlapping_points(const sx_world *w) {
+    int i, k, n = 0;
+    for (i = 0; i < w->contact_count; ++i) {
+        const sx_contact *c = &w->contacts[i];
+        const sx_body_sim *a = &w->sims[c->body_a], *b = &w->sims[c->body_b];
+        if (!sx_contact_is_active(w, c)) continue;
+        for (k = 0; k < c->count; ++k) {
+            const sx_contact_point *p = &c->points[k];
+            sx_vec2 d = sx_add(sx_sub(b->center, a->center),
+                               sx_sub(sx_rotate(b->xf.q, p->rel_b), sx_rotate(a->xf.q, p->rel_a)));
+            n += p->base + sx_dot(d, c->normal) < -w->linear_slop;
+        }
+    }
+    return n;
+}
+
+/* Points the position pass had to move, over the run (world 0). */
+static int pushed_points;
 
 static void step(scene *s, int k, bool fresh) {
     int i;
@@ -79,6 +127,10 @@ static void step(scene *s, int k, bool fresh) {
         if (fresh) s->w->fill_valid = false;
         assert_int_equal(sx_world_solve(s->w, h), SX_OK);
         assert_int_equal(sx_world_integrate(s->w, h), SX_OK);
+        if (s->w->wide_min_colour == INT_MAX) pushed_points += overlapping_points(s->w);
+        /* the fresh world's position pass walks the contacts in their
+         * order; the others take the solve's colours */
+        if (fresh) s->w->fill_valid = false;
         assert_int_equal(sx_world_separate(s->w, h), SX_OK);
     }
     assert_int_equal(sx_world_continuous(s->w), SX_OK);
@@ -97,10 +149,11 @@ static void same_state(const scene *a, const scene *b) {
     }
 }
 
-static void wide_and_scalar_passes_agree_bit_for_bit(void **state) {
+static void passes_agree(sx_real restitution) {
     scene s[WORLDS];
     int k, i, wide_seen = 0, kept_seen = 0;
-    (void)state;
+    circle_restitution = restitution;
+    pushed_points = 0;
     for (i = 0; i < WORLDS; ++i)
         build(&s[i]);
     s[0].w->wide_min_colour = INT_MAX; /* one at a time */
@@ -121,8 +174,23 @@ static void wide_and_scalar_passes_agree_bit_for_bit(void **state) {
     /* and it moved: the circles fell */
     assert_true(s[0].w->sims[sx_body_slot(s[0].w, s[0].ids[1 + BASE * (BASE + 1) / 2])].center.y <
                 SX_R(15.0));
+    /* the position pass had overlaps to remove, in both orders */
+    assert_true(pushed_points > 200);
+    /* the worlds took the path the restitution asks for */
+    assert_true((s[2].w->bouncy_contacts > 0) == (restitution > SX_R(0.0)));
     for (i = 0; i < WORLDS; ++i)
         sx_world_destroy(s[i].w);
+    circle_restitution = SX_R(0.0);
+}
+
+static void wide_and_scalar_passes_agree_bit_for_bit(void **state) {
+    (void)state;
+    passes_agree(SX_R(0.0));
+}
+
+static void wide_and_scalar_passes_agree_with_restitution(void **state) {
+    (void)state;
+    passes_agree(SX_R(0.5));
 }
 
 /* Lone boxes on the ground right of the pyramid, the last one on top of
@@ -208,6 +276,7 @@ static void kept_fill_ends_when_the_solver_bodies_change(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(wide_and_scalar_passes_agree_bit_for_bit),
+        cmocka_unit_test(wide_and_scalar_passes_agree_with_restitution),
         cmocka_unit_test(kept_fill_ends_when_the_solver_bodies_change),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
