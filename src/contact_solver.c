@@ -908,12 +908,12 @@ static void sx_bundle_solve(sx_world *world, sx_bundle *u, sx_rw inv_h, bool las
 }
 
 /* Bundles of a colour share no body the solver moves: solved phase by
- * phase, two or four of them (each lane's operations as sx_bundle_solve's)
- * put their chains of dependent operations side by side in the
- * instruction stream, where one bundle after the other left the core
- * waiting on one chain at a time. Written out, as the bundles' lanes stay
- * in registers that way (an array of them went through memory and lost
- * the gain). */
+ * phase, two of them (each lane's operations as sx_bundle_solve's) put
+ * their chains of dependent operations side by side in the instruction
+ * stream, where one bundle after the other left the core waiting on one
+ * chain at a time. Written out, as the bundles' lanes stay in registers
+ * that way (an array of them went through memory and lost the gain; four
+ * side by side spilled to the stack). */
 static void sx_bundle_solve2(sx_world *world, sx_bundle *u, sx_rw inv_h, bool last) {
     sx_solver_body *bodies = world->solver_bodies;
     sx_bundle_lanes s0, s1;
@@ -931,38 +931,6 @@ static void sx_bundle_solve2(sx_world *world, sx_bundle *u, sx_rw inv_h, bool la
     if (last) {
         sx_bundle_hand_back(world, &u[0]);
         sx_bundle_hand_back(world, &u[1]);
-    }
-}
-
-static void sx_bundle_solve4(sx_world *world, sx_bundle *u, sx_rw inv_h, bool last) {
-    sx_solver_body *bodies = world->solver_bodies;
-    sx_bundle_lanes s0, s1, s2, s3;
-    sx_mw row0, single0, row1, single1, row2, single2, row3, single3;
-    sx_bundle_kinds(&u[0], &row0, &single0);
-    sx_bundle_kinds(&u[1], &row1, &single1);
-    sx_bundle_kinds(&u[2], &row2, &single2);
-    sx_bundle_kinds(&u[3], &row3, &single3);
-    sx_bundle_begin(bodies, &u[0], &s0);
-    sx_bundle_begin(bodies, &u[1], &s1);
-    sx_bundle_begin(bodies, &u[2], &s2);
-    sx_bundle_begin(bodies, &u[3], &s3);
-    sx_bundle_friction(&u[0], &s0, row0, single0);
-    sx_bundle_friction(&u[1], &s1, row1, single1);
-    sx_bundle_friction(&u[2], &s2, row2, single2);
-    sx_bundle_friction(&u[3], &s3, row3, single3);
-    sx_bundle_normals(&u[0], &s0, inv_h);
-    sx_bundle_normals(&u[1], &s1, inv_h);
-    sx_bundle_normals(&u[2], &s2, inv_h);
-    sx_bundle_normals(&u[3], &s3, inv_h);
-    sx_bundle_end(bodies, &u[0], &s0);
-    sx_bundle_end(bodies, &u[1], &s1);
-    sx_bundle_end(bodies, &u[2], &s2);
-    sx_bundle_end(bodies, &u[3], &s3);
-    if (last) {
-        sx_bundle_hand_back(world, &u[0]);
-        sx_bundle_hand_back(world, &u[1]);
-        sx_bundle_hand_back(world, &u[2]);
-        sx_bundle_hand_back(world, &u[3]);
     }
 }
 
@@ -989,14 +957,12 @@ static void sx_constraints_pass(sx_world *world, sx_real h, bool relax, bool las
         const sx_colour_span *span = &world->spans[s];
         int end = span->first + span->count;
         if (span->wide) {
-            /* a span is one colour: its bundles share no moved body (eight
-             * lanes: one at a time, the grouping measured no faster there) */
-            for (i = span->first; SX_LANES <= 4 && i + 4 <= end; i += 4)
-                sx_bundle_solve4(world, &world->bundles[i], inv_h4, last);
-            if (SX_LANES <= 4 && i + 2 <= end) {
+            /* a span is one colour: its bundles share no moved body, and
+             * are solved two at a time (four at a time spilled the lanes
+             * to the stack and measured slower; eight lanes: one at a
+             * time, the pairing measured no faster there) */
+            for (i = span->first; SX_LANES <= 4 && i + 2 <= end; i += 2)
                 sx_bundle_solve2(world, &world->bundles[i], inv_h4, last);
-                i += 2;
-            }
             for (; i < end; ++i)
                 sx_bundle_solve(world, &world->bundles[i], inv_h4, last);
             continue;
@@ -1166,16 +1132,16 @@ static void sx_frame_pad(sx_bundle_frame *f, int l) {
  * padding). */
 static void sx_frame_fill(sx_bundle_frame *f, int l, const sx_contact *ct) {
     int k;
-    sx_frame_pad(f, l);
     f->slot_a[l] = ct->body_a;
     f->slot_b[l] = ct->body_b;
-    for (k = 0; k < ct->count; ++k) {
+    for (k = 0; k < 2; ++k) {
         const sx_contact_point *p = &ct->points[k];
-        f->rel_ax[k][l] = p->rel_a.x;
-        f->rel_ay[k][l] = p->rel_a.y;
-        f->rel_bx[k][l] = p->rel_b.x;
-        f->rel_by[k][l] = p->rel_b.y;
-        f->base[k][l] = p->base;
+        bool real = k < ct->count;
+        f->rel_ax[k][l] = real ? p->rel_a.x : SX_R(0.0);
+        f->rel_ay[k][l] = real ? p->rel_a.y : SX_R(0.0);
+        f->rel_bx[k][l] = real ? p->rel_b.x : SX_R(0.0);
+        f->rel_by[k][l] = real ? p->rel_b.y : SX_R(0.0);
+        f->base[k][l] = real ? p->base : SX_R(0.0);
     }
 }
 

@@ -1202,14 +1202,21 @@ sx_status sx_world_solve(sx_world *world, sx_real h) {
 
 sx_status sx_world_integrate(sx_world *world, sx_real h) {
     sx_status s = sx_check_step(world, h);
+    sx_real wmax, vhalf;
     int i;
     if (s != SX_OK) return s;
+    /* sx_limit_speeds's test: within half the limit, sx_limit_speed is a
+     * no-op (and its two divisions a body are not paid) */
+    wmax = sx_minr(SX_MAX_ROTATION / h, SX_REAL_MAX);
+    vhalf = SX_R(0.5) * sx_minr(SX_HUGE / h, SX_REAL_MAX);
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
     for (i = 0; i < world->active_body_count; ++i) {
         sx_body_sim *b = &world->sims[world->active_bodies[i]];
         if (!b->moving || !b->awake) continue;
-        sx_limit_speed(b, h); /* what the solver added, too */
+        /* what the solver added, too */
+        if (!(sx_absr(b->w) <= wmax && sx_absr(b->v.x) <= vhalf && sx_absr(b->v.y) <= vhalf))
+            sx_limit_speed(b, h);
         b->center = sx_mul_add(b->center, h, b->v);
         if (b->w != SX_R(0.0)) b->xf.q = sx_rot_integrate(b->xf.q, h * b->w);
         sx_body_sync_origin(b);
