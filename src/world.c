@@ -671,35 +671,35 @@ static int sx_skip_run(const sx_contact *contacts, int count, int i) {
     return i;
 }
 
-/* Compares the new contact list with the old one (both sorted by key):
- * collider pairs only in the new one began, pairs only in the old one ended
- * (one event per collider pair, however many part pairs touch). */
-static sx_status sx_record_events(sx_world *world) {
-    int i = 0, j = 0;
-    sx_status s;
-    while (i < world->contact_count || j < world->old_contact_count) {
-        const sx_contact *n = i < world->contact_count ? &world->contacts[i] : NULL;
-        const sx_contact *o = j < world->old_contact_count ? &world->old_contacts[j] : NULL;
-        if (n != NULL && o != NULL && n->key == o->key) {
-            i = sx_skip_run(world->contacts, world->contact_count, i);
-            j = sx_skip_run(world->old_contacts, world->old_contact_count, j);
-        } else if (o == NULL || (n != NULL && n->key < o->key)) {
-            if (world->contacts[i].thawed) {
-                world->contacts[i].thawed = false;
-            } else {
-                s = sx_push_event(world, n, &world->begin_events, &world->begin_count,
-                                  &world->begin_capacity);
-                if (s != SX_OK) return s;
-            }
-            i = sx_skip_run(world->contacts, world->contact_count, i);
-        } else {
-            s = sx_push_event(world, o, &world->end_events, &world->end_count,
-                              &world->end_capacity);
+/* Ends the old pairs with keys below `below` (all when `all`): one end
+ * event per collider pair when the world reports events, however many part
+ * pairs touched; *old_index moves past them. */
+static sx_status sx_end_old_pairs(sx_world *world, int *old_index, uint64_t below, bool all) {
+    int j = *old_index;
+    while (j < world->old_contact_count && (all || world->old_contacts[j].key < below)) {
+        if (world->def.enable_contact_events) {
+            sx_status s = sx_push_event(world, &world->old_contacts[j], &world->end_events,
+                                        &world->end_count, &world->end_capacity);
             if (s != SX_OK) return s;
-            j = sx_skip_run(world->old_contacts, world->old_contact_count, j);
         }
+        j = sx_skip_run(world->old_contacts, world->old_contact_count, j);
     }
+    *old_index = j;
     return SX_OK;
+}
+
+/* The events of the collide walk's pair `key`: it began when it made
+ * contacts (from `first` on) and had none, it ended when it had some
+ * (old_contacts[old_begin, old_end)) and made none. */
+static sx_status sx_pair_events(sx_world *world, int first, int old_begin, int old_end) {
+    bool made = world->contact_count > first, had = old_end > old_begin;
+    if (!world->def.enable_contact_events || made == had) return SX_OK;
+    if (made) {
+        return sx_push_event(world, &world->contacts[first], &world->begin_events,
+                             &world->begin_count, &world->begin_capacity);
+    }
+    return sx_push_event(world, &world->old_contacts[old_begin], &world->end_events,
+                         &world->end_count, &world->end_capacity);
 }
 
 sx_contact_events sx_world_get_contact_events(const sx_world *world) {
@@ -856,13 +856,13 @@ static bool sx_has_key(const sx_contact *list, int count, uint64_t key) {
 }
 
 /* Moves the frozen contacts that have an awake dynamic body again into the
- * current list (kept sorted by key), marked `thawed` when asked, if a body
+ * current list (kept sorted by key), if a body
  * woke since the last call; drops the contacts removed since then. A pair
  * the list already holds keeps the list's contact. Only a contact with a
  * body woken since the last call (thaw_mark) can have become active: the
  * others are passed over on their body indices alone, without reading the
  * bodies. */
-static sx_status sx_thaw_contacts(sx_world *world, bool mark) {
+static sx_status sx_thaw_contacts(sx_world *world) {
     int i, j, out, n = 0, k = 0;
     void *p;
     sx_status s;
@@ -892,7 +892,6 @@ static sx_status sx_thaw_contacts(sx_world *world, bool mark) {
         if (sx_has_key(world->contacts, world->contact_count, c->key)) continue;
         s = sx_push_contact(&world->thaw, &world->thaw_count, &world->thaw_capacity, c);
         if (s != SX_OK) return s;
-        world->thaw[world->thaw_count - 1].thawed = mark;
     }
     world->frozen_count = n;
     world->frozen_dead = 0;
@@ -953,7 +952,6 @@ static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, c
     if (s != SX_OK) return s;
     c = &world->contacts[world->contact_count++];
     c->key = key;
-    c->thawed = false;
     c->collider_a = ia;
     c->collider_b = ib;
     c->part_a = pa;
@@ -1046,6 +1044,23 @@ static bool sx_bullet_pair_may_meet(const sx_world *world, const sx_collider *ca
                          ca->bound_radius + cb->bound_radius + world->margin);
 }
 
+/* The narrowphase of broadphase pair `key`: its contacts, warm-started from
+ * its old ones old_contacts[old_begin, old_end). */
+static sx_status sx_collide_pair(sx_world *world, uint64_t key, int old_begin, int old_end) {
+    int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), n;
+    const sx_collider *ca = &world->colliders[ia], *cb = &world->colliders[ib];
+    sx_manifold m;
+    if (ca->body == cb->body || !sx_filters_collide(&ca->filter, &cb->filter) ||
+        !sx_bullet_pair_may_meet(world, ca, cb)) {
+        return SX_OK;
+    }
+    if (ca->part_count > 0 || cb->part_count > 0) return sx_collide_parts(world, key, old_begin, old_end);
+    n = sx_collide_world(&ca->shape, world->sims[ca->body].xf, &cb->shape, world->sims[cb->body].xf,
+                         world->margin + ca->reach + cb->reach, &m);
+    if (n <= 0) return SX_OK;
+    return sx_add_contact(world, key, 0, 0, &m, old_begin, old_end);
+}
+
 sx_status sx_world_collide(sx_world *world) {
     sx_contact *swap;
     int i, old_index = 0, cap;
@@ -1077,7 +1092,7 @@ sx_status sx_world_collide(sx_world *world) {
      * pile keeps its contacts, reports no end events, and warm-starts when it
      * wakes); those of bodies woken since the last collide come back. */
     if (world->thaw_pending || world->frozen_dead > 0) {
-        s = sx_thaw_contacts(world, false);
+        s = sx_thaw_contacts(world);
         if (s != SX_OK) return s;
     }
     s = sx_freeze_contacts(world);
@@ -1093,46 +1108,32 @@ sx_status sx_world_collide(sx_world *world) {
     world->contact_count = 0;
     /* counted as the contacts are made and thawed */
     world->bouncy_contacts = 0;
+    /* the pairs in key order, the old contacts (sorted by key) beside them:
+     * a pair's old contacts warm-start its new ones, and the begin and end
+     * events fall out of the comparison */
     for (i = 0; i < world->bp.pair_count; ++i) {
         uint64_t key = world->bp.pairs[i];
-        int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), old_begin;
-        const sx_collider *ca = &world->colliders[ia], *cb = &world->colliders[ib];
-        sx_manifold m;
-        int n;
+        int first = world->contact_count, old_begin;
+        s = sx_end_old_pairs(world, &old_index, key, false);
+        if (s != SX_OK) return s;
         /* the old contacts of this pair: one, or one per part pair */
-        while (old_index < world->old_contact_count && world->old_contacts[old_index].key < key)
-            ++old_index;
         old_begin = old_index;
         while (old_index < world->old_contact_count && world->old_contacts[old_index].key == key)
             ++old_index;
-        if (ca->body == cb->body || !sx_filters_collide(&ca->filter, &cb->filter) ||
-            !sx_bullet_pair_may_meet(world, ca, cb)) {
-            continue;
-        }
-        if (ca->part_count > 0 || cb->part_count > 0) {
-            s = sx_collide_parts(world, key, old_begin, old_index);
-            if (s != SX_OK) return s;
-            continue;
-        }
-        n = sx_collide_world(&ca->shape, world->sims[ca->body].xf, &cb->shape,
-                             world->sims[cb->body].xf, world->margin + ca->reach + cb->reach,
-                             &m);
-        if (n <= 0) continue;
-        s = sx_add_contact(world, key, 0, 0, &m, old_begin, old_index);
+        s = sx_collide_pair(world, key, old_begin, old_index);
+        if (s != SX_OK) return s;
+        s = sx_pair_events(world, first, old_begin, old_index);
         if (s != SX_OK) return s;
     }
+    s = sx_end_old_pairs(world, &old_index, 0u, true);
+    if (s != SX_OK) return s;
     /* an awake body touching a sleeping island woke it: its contacts join
-     * this step as they are */
+     * this step as they are (no begin event: they touched all along) */
     if (world->thaw_pending) {
-        /* marked only for the event pass, which clears the mark */
-        s = sx_thaw_contacts(world, world->def.enable_contact_events);
+        s = sx_thaw_contacts(world);
         if (s != SX_OK) return s;
     }
     sx_contacts_prepared(world);
-    if (world->def.enable_contact_events) {
-        s = sx_record_events(world);
-        if (s != SX_OK) return s;
-    }
     return sx_sensors_update(world);
 }
 

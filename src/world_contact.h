@@ -57,9 +57,6 @@ typedef struct sx_contact {
      * inverse, when K is well conditioned (block_solve) */
     sx_block2 block;
     bool block_solve;
-    /* just moved back from the frozen store by a wake during collide: it
-     * existed before, so it reports no begin event */
-    bool thawed;
 } sx_contact;
 
 /* The solver's compact view of the step (contact_solver.c), rebuilt by each

@@ -452,8 +452,62 @@ static void contact_events_are_built_only_when_asked(void **state) {
     }
 }
 
+/* A pile that falls asleep keeps its contacts and reports no end event;
+ * woken by a box falling on it (a wake in the middle of the collide) or by
+ * the caller (before the collide), its contacts come back without a begin
+ * event: only the new touch begins. */
+static void a_sleeping_pile_reports_no_end_and_no_begin_when_it_wakes(void **state) {
+    sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(0.5)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_world_def def = sx_default_world_def();
+    sx_world *w = sx_world_create(&def);
+    sx_body_id lower, upper, falling;
+    sx_contact_events e;
+    int s, begins = 0, ends = 0, steps;
+    (void)state;
+    assert_non_null(w);
+    add_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-0.5)), &ground, true);
+    lower = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.5)), &box, true);
+    upper = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(1.5)), &box, true);
+    for (s = 0; s < 5; ++s)
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_int_equal(sx_world_contact_count(w), 2);
+    /* asleep: no end events, both contacts kept */
+    for (steps = 0; steps < 600 && sx_world_awake_body_count(w) > 0; ++steps) {
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+        ends += sx_world_get_contact_events(w).end_count;
+    }
+    assert_int_equal(sx_world_awake_body_count(w), 0);
+    assert_int_equal(ends, 0);
+    assert_int_equal(sx_world_contact_count(w), 2);
+    /* the caller wakes the pile: the two contacts are back, no event */
+    assert_int_equal(sx_body_set_awake(w, upper, true), SX_OK);
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    e = sx_world_get_contact_events(w);
+    assert_int_equal(e.begin_count + e.end_count, 0);
+    assert_int_equal(sx_world_contact_count(w), 2);
+    for (steps = 0; steps < 600 && sx_world_awake_body_count(w) > 0; ++steps)
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_int_equal(sx_world_awake_body_count(w), 0);
+    /* a box falls on the sleeping pile and wakes it as the collide meets it */
+    falling = add_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.2), SX_R(3.0)), &box, true);
+    for (s = 0; s < 120; ++s) {
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+        e = sx_world_get_contact_events(w);
+        begins += e.begin_count;
+        ends += e.end_count;
+    }
+    /* one touch began (the falling box on the upper box), none ended */
+    assert_int_equal(begins, 1);
+    assert_int_equal(ends, 0);
+    assert_int_equal(sx_world_contact_count(w), 3);
+    assert_true(sx_body_get_position(w, falling).y < SX_R(2.6));
+    (void)lower;
+    sx_world_destroy(w);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(a_sleeping_pile_reports_no_end_and_no_begin_when_it_wakes),
         cmocka_unit_test(sleeping_pyramid_wakes_when_a_ball_hits_it_and_sleeps_again),
         cmocka_unit_test(a_pile_falling_asleep_keeps_every_contact_and_its_impulses),
         cmocka_unit_test(a_body_with_sleep_off_keeps_its_island_awake),
