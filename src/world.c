@@ -554,15 +554,21 @@ static void sx_limit_speed(sx_body_sim *b, sx_real h) {
  * impulse NaN), and the stages may be called on their own. A no-op for any
  * velocity within half the limit, so ordinary scenes are unchanged bit for
  * bit. */
+/* sx_limit_speed, for a body within half the limit (wmax, vhalf of h)
+ * skipped: it would leave it as it is. */
+static SX_ALWAYS_INLINE void sx_limit_speed_past_half(sx_body_sim *b, sx_real h, sx_real wmax,
+                                                     sx_real vhalf) {
+    if (!(sx_absr(b->w) <= wmax && sx_absr(b->v.x) <= vhalf && sx_absr(b->v.y) <= vhalf))
+        sx_limit_speed(b, h);
+}
+
 static void sx_limit_speeds(sx_world *world, sx_real h) {
     sx_real wmax = sx_minr(SX_MAX_ROTATION / h, SX_REAL_MAX);
     sx_real vhalf = SX_R(0.5) * sx_minr(SX_HUGE / h, SX_REAL_MAX);
     int k;
     for (k = 0; k < world->active_body_count; ++k) {
         sx_body_sim *b = &world->sims[world->active_bodies[k]];
-        if (!b->moving || !b->awake) continue;
-        if (sx_absr(b->w) <= wmax && sx_absr(b->v.x) <= vhalf && sx_absr(b->v.y) <= vhalf) continue;
-        sx_limit_speed(b, h);
+        if (b->moving && b->awake) sx_limit_speed_past_half(b, h, wmax, vhalf);
     }
 }
 
@@ -581,9 +587,12 @@ static void sx_refresh_effective_masses(sx_world *world) {
 sx_status sx_world_apply_forces(sx_world *world, sx_real h) {
     sx_status s = sx_check_step(world, h);
     sx_vec2 g;
+    sx_real wmax, vhalf;
     int k;
     if (s != SX_OK) return s;
     g = world->def.gravity;
+    wmax = sx_minr(SX_MAX_ROTATION / h, SX_REAL_MAX);
+    vhalf = SX_R(0.5) * sx_minr(SX_HUGE / h, SX_REAL_MAX);
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
     for (k = 0; k < world->active_body_count; ++k) {
@@ -600,7 +609,7 @@ sx_status sx_world_apply_forces(sx_world *world, sx_real h) {
         if (b->angular_damping > SX_R(0.0)) {
             b->w = b->w / (SX_R(1.0) + h * b->angular_damping);
         }
-        sx_limit_speed(b, h);
+        sx_limit_speed_past_half(b, h, wmax, vhalf);
         b->impulse = sx_v2_zero();
         b->angular_impulse = SX_R(0.0);
     }
@@ -1175,7 +1184,9 @@ sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data
 
 /* ---- stage 3: solve ------------------------------------------------------ */
 
-sx_status sx_world_solve(sx_world *world, sx_real h) {
+/* sx_world_solve; `limit_first`: the speed limit on what it reads (the step
+ * knows when every velocity already meets it: see sx_world_step). */
+static sx_status sx_solve_stage(sx_world *world, sx_real h, bool limit_first) {
     sx_status s = sx_check_step(world, h);
     bool warmed, impacts, solved;
     if (s != SX_OK) return s;
@@ -1184,7 +1195,7 @@ sx_status sx_world_solve(sx_world *world, sx_real h) {
     if (s != SX_OK) return s;
     sx_world_purge_contacts(world);
     sx_refresh_effective_masses(world);
-    sx_limit_speeds(world, h);
+    if (limit_first) sx_limit_speeds(world, h);
     /* the gather warm-starts the solver's copies only: restitution first,
      * impact by impact in time order, on the bodies' own velocities
      * (contact_solver.c says why); then the warm start and the passes solve
@@ -1199,6 +1210,8 @@ sx_status sx_world_solve(sx_world *world, sx_real h) {
     return warmed && impacts && solved ? SX_OK : SX_ERR_NO_MEMORY;
 }
 
+sx_status sx_world_solve(sx_world *world, sx_real h) { return sx_solve_stage(world, h, true); }
+
 /* ---- stage 4: integrate -------------------------------------------------- */
 
 sx_status sx_world_integrate(sx_world *world, sx_real h) {
@@ -1206,8 +1219,7 @@ sx_status sx_world_integrate(sx_world *world, sx_real h) {
     sx_real wmax, vhalf;
     int i;
     if (s != SX_OK) return s;
-    /* sx_limit_speeds's test: within half the limit, sx_limit_speed is a
-     * no-op (and its two divisions a body are not paid) */
+    /* the limit's two divisions paid once, not per body */
     wmax = sx_minr(SX_MAX_ROTATION / h, SX_REAL_MAX);
     vhalf = SX_R(0.5) * sx_minr(SX_HUGE / h, SX_REAL_MAX);
     s = sx_world_refresh_sets(world);
@@ -1215,9 +1227,7 @@ sx_status sx_world_integrate(sx_world *world, sx_real h) {
     for (i = 0; i < world->active_body_count; ++i) {
         sx_body_sim *b = &world->sims[world->active_bodies[i]];
         if (!b->moving || !b->awake) continue;
-        /* what the solver added, too */
-        if (!(sx_absr(b->w) <= wmax && sx_absr(b->v.x) <= vhalf && sx_absr(b->v.y) <= vhalf))
-            sx_limit_speed(b, h);
+        sx_limit_speed_past_half(b, h, wmax, vhalf); /* what the solver added, too */
         b->center = sx_mul_add(b->center, h, b->v);
         if (b->w != SX_R(0.0)) b->xf.q = sx_rot_integrate(b->xf.q, h * b->w);
         sx_body_sync_origin(b);
@@ -1230,7 +1240,9 @@ sx_status sx_world_integrate(sx_world *world, sx_real h) {
 
 /* ---- stage 5: separate --------------------------------------------------- */
 
-sx_status sx_world_separate(sx_world *world, sx_real h) {
+/* sx_world_separate; `limit_after`: the speed limit on what it leaves (the
+ * rigid position pass moves bodies and leaves their velocities). */
+static sx_status sx_separate_stage(sx_world *world, sx_real h, bool limit_after) {
     sx_status s = sx_check_step(world, h);
     bool relaxed;
     if (s != SX_OK) return s;
@@ -1239,9 +1251,11 @@ sx_status sx_world_separate(sx_world *world, sx_real h) {
     sx_world_purge_contacts(world);
     sx_refresh_effective_masses(world);
     relaxed = sx_contacts_relax(world, h, world->def.position_iterations);
-    sx_limit_speeds(world, h);
+    if (limit_after) sx_limit_speeds(world, h);
     return relaxed ? SX_OK : SX_ERR_NO_MEMORY;
 }
+
+sx_status sx_world_separate(sx_world *world, sx_real h) { return sx_separate_stage(world, h, true); }
 
 /* ---- the step ------------------------------------------------------------- */
 
@@ -1263,10 +1277,17 @@ sx_status sx_world_step(sx_world *world, sx_real dt) {
     if (s != SX_OK) return s;
     for (i = 0; i < steps; ++i) {
         sx_world_apply_forces(world, h);
-        s = sx_world_solve(world, h);
+        /* The speed limit's walks over the bodies that can find nothing:
+         * after the first sub-step every velocity the solve reads met the
+         * limit already (apply_forces limits the dynamic bodies, the
+         * solver leaves kinematic ones alone, the last solve and the
+         * integrate limited what they left), and the rigid position pass
+         * changes no velocity. The public stages keep every walk, as a
+         * caller may change velocities between them. */
+        s = sx_solve_stage(world, h, i == 0);
         if (s != SX_OK) return s;
         sx_world_integrate(world, h);
-        sx_world_separate(world, h);
+        sx_separate_stage(world, h, world->def.contact_hertz > SX_R(0.0));
     }
     s = sx_world_continuous(world);
     if (s != SX_OK) return s;
