@@ -609,8 +609,9 @@ static SX_ALWAYS_INLINE void sx_constraint_solve(sx_world *world, sx_constraint 
  * so every width answers alike too. Nor does solving a colour's bundles
  * side by side (they share no moved body, entry 0 and the sink stay
  * zero), which is why a wide colour keeps a span of its own. The soft
- * passes, the relax passes, the energy guard, the impact pass and the
- * positional pass stay scalar. */
+ * passes, the relax passes, the energy guard and the impact pass stay
+ * scalar; the positional pass takes the colours too, and finds the
+ * separations of a wide colour's lanes together (sx_push_by_colour). */
 
 /* Colours of fewer constraints than this are solved one at a time (four
  * lanes: below it the pyramids gained nothing and a stack lost; with eight
