@@ -299,6 +299,7 @@ sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *ou
     sim->local_center = sx_v2_zero();
     sim->v = def->linear_velocity;
     sim->w = def->angular_velocity;
+    world->limited_h = SX_R(0.0);
     sim->force = sx_v2_zero();
     sim->impulse = sx_v2_zero();
     sim->linear_damping = def->linear_damping;
@@ -758,7 +759,8 @@ sx_status sx_body_set_linear_velocity(sx_world *world, sx_body_id body, sx_vec2 
     if (world->infos[slot].type != SX_BODY_STATIC) {
         sx_wake_body(world, slot);
         world->sims[slot].v = v;
-        world->sets_dirty = true; /* a kinematic body may start or stop */
+        world->limited_h = SX_R(0.0); /* the speed limit looks again */
+        world->sets_dirty = true;     /* a kinematic body may start or stop */
     }
     return SX_OK;
 }
@@ -775,6 +777,7 @@ sx_status sx_body_set_angular_velocity(sx_world *world, sx_body_id body, sx_real
         (info->type == SX_BODY_DYNAMIC && world->sims[slot].inv_inertia > SX_R(0.0))) {
         sx_wake_body(world, slot);
         world->sims[slot].w = w;
+        world->limited_h = SX_R(0.0);
         world->sets_dirty = true;
     }
     return SX_OK;

@@ -570,6 +570,16 @@ static void sx_limit_speeds(sx_world *world, sx_real h) {
         sx_body_sim *b = &world->sims[world->active_bodies[k]];
         if (b->moving && b->awake) sx_limit_speed_past_half(b, h, wmax, vhalf);
     }
+    world->limited_h = h;
+}
+
+/* sx_limit_speeds, unless every velocity is known to meet the limit of h
+ * already (limited_h: the limit of a longer sub-step is the stricter). In a
+ * step, after the first sub-step's solve, the later solves and the rigid
+ * position pass read velocities that the last walk, apply_forces and
+ * integrate limited and nothing else changed: the walk finds nothing. */
+static void sx_limit_speeds_unless_met(sx_world *world, sx_real h) {
+    if (!(h <= world->limited_h)) sx_limit_speeds(world, h);
 }
 
 /* The contacts' effective masses are prepared by the collide; a caller
@@ -613,6 +623,8 @@ sx_status sx_world_apply_forces(sx_world *world, sx_real h) {
         b->impulse = sx_v2_zero();
         b->angular_impulse = SX_R(0.0);
     }
+    /* the dynamic bodies meet h's limit, the others what they met */
+    world->limited_h = sx_minr(world->limited_h, h);
     return SX_OK;
 }
 
@@ -1184,9 +1196,7 @@ sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data
 
 /* ---- stage 3: solve ------------------------------------------------------ */
 
-/* sx_world_solve; `limit_first`: the speed limit on what it reads (the step
- * knows when every velocity already meets it: see sx_world_step). */
-static sx_status sx_solve_stage(sx_world *world, sx_real h, bool limit_first) {
+sx_status sx_world_solve(sx_world *world, sx_real h) {
     sx_status s = sx_check_step(world, h);
     bool warmed, impacts, solved;
     if (s != SX_OK) return s;
@@ -1195,7 +1205,7 @@ static sx_status sx_solve_stage(sx_world *world, sx_real h, bool limit_first) {
     if (s != SX_OK) return s;
     sx_world_purge_contacts(world);
     sx_refresh_effective_masses(world);
-    if (limit_first) sx_limit_speeds(world, h);
+    sx_limit_speeds_unless_met(world, h);
     /* the gather warm-starts the solver's copies only: restitution first,
      * impact by impact in time order, on the bodies' own velocities
      * (contact_solver.c says why); then the warm start and the passes solve
@@ -1210,7 +1220,6 @@ static sx_status sx_solve_stage(sx_world *world, sx_real h, bool limit_first) {
     return warmed && impacts && solved ? SX_OK : SX_ERR_NO_MEMORY;
 }
 
-sx_status sx_world_solve(sx_world *world, sx_real h) { return sx_solve_stage(world, h, true); }
 
 /* ---- stage 4: integrate -------------------------------------------------- */
 
@@ -1240,9 +1249,7 @@ sx_status sx_world_integrate(sx_world *world, sx_real h) {
 
 /* ---- stage 5: separate --------------------------------------------------- */
 
-/* sx_world_separate; `limit_after`: the speed limit on what it leaves (the
- * rigid position pass moves bodies and leaves their velocities). */
-static sx_status sx_separate_stage(sx_world *world, sx_real h, bool limit_after) {
+sx_status sx_world_separate(sx_world *world, sx_real h) {
     sx_status s = sx_check_step(world, h);
     bool relaxed;
     if (s != SX_OK) return s;
@@ -1251,11 +1258,12 @@ static sx_status sx_separate_stage(sx_world *world, sx_real h, bool limit_after)
     sx_world_purge_contacts(world);
     sx_refresh_effective_masses(world);
     relaxed = sx_contacts_relax(world, h, world->def.position_iterations);
-    if (limit_after) sx_limit_speeds(world, h);
+    /* soft contacts relax velocities; the rigid position pass moves bodies only */
+    if (world->def.contact_hertz > SX_R(0.0)) world->limited_h = SX_R(0.0);
+    sx_limit_speeds_unless_met(world, h);
     return relaxed ? SX_OK : SX_ERR_NO_MEMORY;
 }
 
-sx_status sx_world_separate(sx_world *world, sx_real h) { return sx_separate_stage(world, h, true); }
 
 /* ---- the step ------------------------------------------------------------- */
 
@@ -1277,17 +1285,10 @@ sx_status sx_world_step(sx_world *world, sx_real dt) {
     if (s != SX_OK) return s;
     for (i = 0; i < steps; ++i) {
         sx_world_apply_forces(world, h);
-        /* The speed limit's walks over the bodies that can find nothing:
-         * after the first sub-step every velocity the solve reads met the
-         * limit already (apply_forces limits the dynamic bodies, the
-         * solver leaves kinematic ones alone, the last solve and the
-         * integrate limited what they left), and the rigid position pass
-         * changes no velocity. The public stages keep every walk, as a
-         * caller may change velocities between them. */
-        s = sx_solve_stage(world, h, i == 0);
+        s = sx_world_solve(world, h);
         if (s != SX_OK) return s;
         sx_world_integrate(world, h);
-        sx_separate_stage(world, h, world->def.contact_hertz > SX_R(0.0));
+        sx_world_separate(world, h);
     }
     s = sx_world_continuous(world);
     if (s != SX_OK) return s;

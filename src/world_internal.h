@@ -175,6 +175,11 @@ struct sx_world {
      * are the contacts' (the last pass handed them back, and the energy
      * guard scaled none since). */
     unsigned contact_serial, fill_serial;
+    /* every awake moving body's velocity meets the speed limit of a sub-step
+     * of limited_h (0: not known); the stages that set velocities keep it,
+     * the caller's velocities and new bodies clear it (world.c,
+     * sx_limit_speeds_unless_met) */
+    sx_real limited_h;
     /* a body's inverse mass or inertia changed since the contacts' effective
      * masses were prepared (by the caller, between stages): solve and
      * separate prepare them again before using them */

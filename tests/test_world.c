@@ -1263,21 +1263,40 @@ static void a_finite_torque_that_overflows_the_spin_is_limited(void **state) {
  * limit reached dynamic bodies in sx_world_apply_forces only, so the solver
  * read the kinematic spin as it was, w x r overflowed and the contact's
  * tangent impulse came out NaN. The solve stage limits every moving body
- * now, also when it is called on its own. */
+ * now, also when it is called on its own. Run 2 sets the velocities after
+ * steps that left every velocity within the limit, run 3 makes the spinning
+ * body then (the world must not go on trusting the limit it met). */
 static void a_kinematic_body_spinning_at_flt_max_gives_finite_contacts(void **state) {
     const double h = (double)DT / 4.0;
     int run;
     (void)state;
-    for (run = 0; run < 2; ++run) {
+    for (run = 0; run < 4; ++run) {
         sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
         sx_shape big = sx_circle_shape(sx_v2(SX_R(-0.125), SX_R(15.875)), SX_R(15.84));
         sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.3));
         sx_body_id ball =
             make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-14.6875), SX_R(-14.6875)), &big);
-        sx_body_id kin = make_body(w, SX_BODY_KINEMATIC, sx_v2(SX_R(-20.0), SX_R(7.0)), &box);
+        sx_body_id kin = {0, 0};
         sx_contact_data cd;
         int i, k, j, contacts = 0;
-        assert_int_equal(sx_body_set_angular_velocity(w, kin, -SX_REAL_MAX), SX_OK);
+        /* run 2: the box at rest through ordinary steps, then its spin */
+        if (run != 3) kin = make_body(w, SX_BODY_KINEMATIC, sx_v2(SX_R(-20.0), SX_R(7.0)), &box);
+        if (run >= 2) {
+            for (i = 0; i < 3; ++i)
+                assert_int_equal(sx_world_step(w, DT), SX_OK);
+        }
+        if (run == 3) {
+            sx_body_def bd = sx_default_body_def();
+            sx_collider_def cdef = sx_default_collider_def();
+            bd.type = SX_BODY_KINEMATIC;
+            bd.position = sx_v2(SX_R(-20.0), SX_R(7.0));
+            bd.angular_velocity = -SX_REAL_MAX;
+            assert_int_equal(sx_create_body(w, &bd, &kin), SX_OK);
+            cdef.shape = box;
+            assert_int_equal(sx_body_add_collider(w, kin, &cdef, NULL), SX_OK);
+        } else {
+            assert_int_equal(sx_body_set_angular_velocity(w, kin, -SX_REAL_MAX), SX_OK);
+        }
         if (run == 1) {
             /* the stages alone: collide, then solve without apply_forces */
             assert_int_equal(sx_body_set_linear_velocity(w, ball, sx_v2(SX_REAL_MAX, SX_R(0.0))),
@@ -1298,6 +1317,10 @@ static void a_kinematic_body_spinning_at_flt_max_gives_finite_contacts(void **st
         }
         for (i = 0; i < 3; ++i) {
             assert_int_equal(sx_world_step(w, DT), SX_OK);
+            /* limited before the solver read it, the spin pushes the ball
+             * at about 80 m/s; read as it was, at the speed limit */
+            if (run != 1)
+                assert_true((double)sx_length(sx_body_get_linear_velocity(w, ball)) < 1e3);
             for (k = 0; k < sx_world_contact_count(w); ++k) {
                 assert_int_equal(sx_world_get_contact(w, k, &cd), SX_OK);
                 ++contacts;
@@ -1314,9 +1337,45 @@ static void a_kinematic_body_spinning_at_flt_max_gives_finite_contacts(void **st
             assert_true(sx_vec2_is_finite(sx_body_get_position(w, ball)));
             assert_true(sx_vec2_is_finite(sx_body_get_linear_velocity(w, ball)));
         }
-        if (run == 0) assert_true(contacts > 0); /* the box does touch the circle */
+        if (run != 1) assert_true(contacts > 0); /* the box does touch the circle */
         sx_world_destroy(w);
     }
+}
+
+/* A velocity the caller sets between steps (here a kinematic box's, at
+ * -FLT_MAX) meets the speed limit before the solver reads it, as one set
+ * before the first step does: the world must not go on trusting the limit
+ * the last step's velocities met. World 1 sets a second body's spin to what
+ * it was as well, which makes the limit look again in any case: both give
+ * the same bits. */
+static void a_velocity_set_between_steps_meets_the_limit_before_the_solver(void **state) {
+    sx_world *w[2];
+    sx_body_id ball[2], kin[2], idle[2];
+    int n, i;
+    (void)state;
+    for (n = 0; n < 2; ++n) {
+        sx_shape big = sx_circle_shape(sx_v2(SX_R(-0.125), SX_R(15.875)), SX_R(15.84));
+        sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.3));
+        w[n] = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+        ball[n] = make_body(w[n], SX_BODY_DYNAMIC, sx_v2(SX_R(-14.6875), SX_R(-14.6875)), &big);
+        kin[n] = make_body(w[n], SX_BODY_KINEMATIC, sx_v2(SX_R(-20.0), SX_R(7.0)), &box);
+        idle[n] = make_body(w[n], SX_BODY_KINEMATIC, sx_v2(SX_R(40.0), SX_R(40.0)), &box);
+        for (i = 0; i < 3; ++i)
+            assert_int_equal(sx_world_step(w[n], DT), SX_OK);
+        assert_int_equal(sx_body_set_linear_velocity(w[n], kin[n], sx_v2(SX_R(0.0), -SX_REAL_MAX)),
+                         SX_OK);
+        if (n == 1) assert_int_equal(sx_body_set_angular_velocity(w[n], idle[n], SX_R(0.0)), SX_OK);
+        assert_int_equal(sx_world_step(w[n], DT), SX_OK);
+    }
+    for (n = 0; n < 2; ++n)
+        assert_true(sx_vec2_is_finite(sx_body_get_linear_velocity(w[n], ball[n])));
+    {
+        sx_vec2 v0 = sx_body_get_linear_velocity(w[0], ball[0]);
+        sx_vec2 v1 = sx_body_get_linear_velocity(w[1], ball[1]);
+        assert_memory_equal(&v0, &v1, sizeof(v0));
+    }
+    for (n = 0; n < 2; ++n)
+        sx_world_destroy(w[n]);
 }
 
 /* Gives body `a` a sensor of density 2.1e37 (the fuzz input's): its mass
@@ -1699,6 +1758,7 @@ int main(void) {
         cmocka_unit_test(the_speed_limit_keeps_direction_and_spares_ordinary_speeds),
         cmocka_unit_test(a_huge_restitution_rebounds_at_the_speed_limit),
         cmocka_unit_test(a_kinematic_body_spinning_at_flt_max_gives_finite_contacts),
+        cmocka_unit_test(a_velocity_set_between_steps_meets_the_limit_before_the_solver),
         cmocka_unit_test(an_overflowing_contact_impulse_gives_no_nan),
         cmocka_unit_test(separating_a_body_of_the_largest_mass_gives_no_nan),
         cmocka_unit_test(a_mass_changed_between_collide_and_a_stage_is_seen_by_the_stage),
