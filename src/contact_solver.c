@@ -29,8 +29,8 @@
  * says nothing changed); the colours and lane slots outlive the collide
  * while its contacts name the same solver bodies in the same order, as a
  * resting pile's do. Colours too small for a bundle stay one at a time.
- * With four lanes, the bundles of a colour are solved up to four side by
- * side, phase by phase, so that the core has several chains at once.
+ * With four lanes, the bundles of a colour are solved two side by side,
+ * phase by phase, so that the core has two chains at once.
  *
  * Velocities: each contact point is a constraint on the relative normal
  * velocity vn of the two bodies at the point. The solver visits the points in

@@ -547,6 +547,26 @@ static void sx_limit_speed(sx_body_sim *b, sx_real h) {
     }
 }
 
+/* Half the limit of a sub-step of length h: within it sx_limit_speed leaves
+ * a body as it is (its two divisions paid once per stage, not per body). */
+typedef struct sx_half_limit {
+    sx_real h, wmax, vhalf;
+} sx_half_limit;
+
+static sx_half_limit sx_half_limit_of(sx_real h) {
+    sx_half_limit l;
+    l.h = h;
+    l.wmax = sx_minr(SX_MAX_ROTATION / h, SX_REAL_MAX);
+    l.vhalf = SX_R(0.5) * sx_minr(SX_HUGE / h, SX_REAL_MAX);
+    return l;
+}
+
+/* sx_limit_speed, skipped for a body within half the limit. */
+static SX_ALWAYS_INLINE void sx_limit_speed_past_half(sx_body_sim *b, const sx_half_limit *l) {
+    if (!(sx_absr(b->w) <= l->wmax && sx_absr(b->v.x) <= l->vhalf && sx_absr(b->v.y) <= l->vhalf))
+        sx_limit_speed(b, l->h);
+}
+
 /* The speed limit for every awake moving body before the solver reads the
  * velocities: dynamic bodies meet it in sx_world_apply_forces already, but a
  * kinematic body's velocity is whatever the caller set (an angular velocity
@@ -554,21 +574,12 @@ static void sx_limit_speed(sx_body_sim *b, sx_real h) {
  * impulse NaN), and the stages may be called on their own. A no-op for any
  * velocity within half the limit, so ordinary scenes are unchanged bit for
  * bit. */
-/* sx_limit_speed, for a body within half the limit (wmax, vhalf of h)
- * skipped: it would leave it as it is. */
-static SX_ALWAYS_INLINE void sx_limit_speed_past_half(sx_body_sim *b, sx_real h, sx_real wmax,
-                                                     sx_real vhalf) {
-    if (!(sx_absr(b->w) <= wmax && sx_absr(b->v.x) <= vhalf && sx_absr(b->v.y) <= vhalf))
-        sx_limit_speed(b, h);
-}
-
 static void sx_limit_speeds(sx_world *world, sx_real h) {
-    sx_real wmax = sx_minr(SX_MAX_ROTATION / h, SX_REAL_MAX);
-    sx_real vhalf = SX_R(0.5) * sx_minr(SX_HUGE / h, SX_REAL_MAX);
+    sx_half_limit l = sx_half_limit_of(h);
     int k;
     for (k = 0; k < world->active_body_count; ++k) {
         sx_body_sim *b = &world->sims[world->active_bodies[k]];
-        if (b->moving && b->awake) sx_limit_speed_past_half(b, h, wmax, vhalf);
+        if (b->moving && b->awake) sx_limit_speed_past_half(b, &l);
     }
     world->limited_h = h;
 }
@@ -597,12 +608,11 @@ static void sx_refresh_effective_masses(sx_world *world) {
 sx_status sx_world_apply_forces(sx_world *world, sx_real h) {
     sx_status s = sx_check_step(world, h);
     sx_vec2 g;
-    sx_real wmax, vhalf;
+    sx_half_limit l;
     int k;
     if (s != SX_OK) return s;
     g = world->def.gravity;
-    wmax = sx_minr(SX_MAX_ROTATION / h, SX_REAL_MAX);
-    vhalf = SX_R(0.5) * sx_minr(SX_HUGE / h, SX_REAL_MAX);
+    l = sx_half_limit_of(h);
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
     for (k = 0; k < world->active_body_count; ++k) {
@@ -619,7 +629,7 @@ sx_status sx_world_apply_forces(sx_world *world, sx_real h) {
         if (b->angular_damping > SX_R(0.0)) {
             b->w = b->w / (SX_R(1.0) + h * b->angular_damping);
         }
-        sx_limit_speed_past_half(b, h, wmax, vhalf);
+        sx_limit_speed_past_half(b, &l);
         b->impulse = sx_v2_zero();
         b->angular_impulse = SX_R(0.0);
     }
@@ -692,12 +702,13 @@ static int sx_skip_run(const sx_contact *contacts, int count, int i) {
     return i;
 }
 
-/* Ends the old pairs with keys below `below` (all when `all`): one end
- * event per collider pair when the world reports events, however many part
- * pairs touched; *old_index moves past them. */
-static sx_status sx_end_old_pairs(sx_world *world, int *old_index, uint64_t below, bool all) {
+/* Ends the old pairs with keys below `below` (UINT64_MAX: all, as a key's
+ * collider_a < collider_b): one end event per collider pair when the world
+ * reports events, however many part pairs touched; *old_index moves past
+ * them. */
+static sx_status sx_end_old_pairs(sx_world *world, int *old_index, uint64_t below) {
     int j = *old_index;
-    while (j < world->old_contact_count && (all || world->old_contacts[j].key < below)) {
+    while (j < world->old_contact_count && world->old_contacts[j].key < below) {
         if (world->def.enable_contact_events) {
             sx_status s = sx_push_event(world, &world->old_contacts[j], &world->end_events,
                                         &world->end_count, &world->end_capacity);
@@ -877,8 +888,8 @@ static bool sx_has_key(const sx_contact *list, int count, uint64_t key) {
 }
 
 /* Moves the frozen contacts that have an awake dynamic body again into the
- * current list (kept sorted by key), if a body
- * woke since the last call; drops the contacts removed since then. A pair
+ * current list (kept sorted by key), if a body woke since the last call;
+ * drops the contacts removed since then. A pair
  * the list already holds keeps the list's contact. Only a contact with a
  * body woken since the last call (thaw_mark) can have become active: the
  * others are passed over on their body indices alone, without reading the
@@ -1135,7 +1146,7 @@ sx_status sx_world_collide(sx_world *world) {
     for (i = 0; i < world->bp.pair_count; ++i) {
         uint64_t key = world->bp.pairs[i];
         int first = world->contact_count, old_begin;
-        s = sx_end_old_pairs(world, &old_index, key, false);
+        s = sx_end_old_pairs(world, &old_index, key);
         if (s != SX_OK) return s;
         /* the old contacts of this pair: one, or one per part pair */
         old_begin = old_index;
@@ -1146,7 +1157,7 @@ sx_status sx_world_collide(sx_world *world) {
         s = sx_pair_events(world, first, old_begin, old_index);
         if (s != SX_OK) return s;
     }
-    s = sx_end_old_pairs(world, &old_index, 0u, true);
+    s = sx_end_old_pairs(world, &old_index, UINT64_MAX);
     if (s != SX_OK) return s;
     /* an awake body touching a sleeping island woke it: its contacts join
      * this step as they are (no begin event: they touched all along) */
@@ -1220,23 +1231,20 @@ sx_status sx_world_solve(sx_world *world, sx_real h) {
     return warmed && impacts && solved ? SX_OK : SX_ERR_NO_MEMORY;
 }
 
-
 /* ---- stage 4: integrate -------------------------------------------------- */
 
 sx_status sx_world_integrate(sx_world *world, sx_real h) {
     sx_status s = sx_check_step(world, h);
-    sx_real wmax, vhalf;
+    sx_half_limit l;
     int i;
     if (s != SX_OK) return s;
-    /* the limit's two divisions paid once, not per body */
-    wmax = sx_minr(SX_MAX_ROTATION / h, SX_REAL_MAX);
-    vhalf = SX_R(0.5) * sx_minr(SX_HUGE / h, SX_REAL_MAX);
+    l = sx_half_limit_of(h);
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
     for (i = 0; i < world->active_body_count; ++i) {
         sx_body_sim *b = &world->sims[world->active_bodies[i]];
         if (!b->moving || !b->awake) continue;
-        sx_limit_speed_past_half(b, h, wmax, vhalf); /* what the solver added, too */
+        sx_limit_speed_past_half(b, &l); /* what the solver added, too */
         b->center = sx_mul_add(b->center, h, b->v);
         if (b->w != SX_R(0.0)) b->xf.q = sx_rot_integrate(b->xf.q, h * b->w);
         sx_body_sync_origin(b);
@@ -1263,7 +1271,6 @@ sx_status sx_world_separate(sx_world *world, sx_real h) {
     sx_limit_speeds_unless_met(world, h);
     return relaxed ? SX_OK : SX_ERR_NO_MEMORY;
 }
-
 
 /* ---- the step ------------------------------------------------------------- */
 

@@ -138,10 +138,10 @@ struct sx_world {
     /* true between an impact pass that moved bodies and the integrate that
      * applies the moves */
     bool impact_shifts_pending;
-    /* contacts with restitution at the last prepare (a contact's restitution
-     * is set when the collide makes it): none, and the impact pass skips its
-     * scan of every contact (removals since leave the count high, which only
-     * costs the scan) */
+    /* contacts with restitution, counted as the collide makes and thaws
+     * them (where a contact's restitution is set): none, and the impact pass
+     * skips its scan of every contact (removals since leave the count high,
+     * which only costs the scan) */
     int bouncy_contacts;
 
     /* the solver's compact arrays (sx_constraint, world_contact.h); solver_index maps
