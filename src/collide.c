@@ -530,12 +530,6 @@ static bool pair_mtv_sym(sx_core_builder *f, const void *a, sx_xform xa, const v
     return hit;
 }
 
-/* A pair at margin 0 whose manifold found no point although the canonical
- * order says it touches (the two orders round differently by a few ulps) is
- * asked again with this margin and its depths clamped to 0: 1 % of the slop,
- * far above any rounding and far below anything physical. */
-#define SX_TOUCH_RESCUE_MARGIN (SX_R(0.01) * SX_LINEAR_SLOP)
-
 /* The margin-0 manifold of a pair that sx_overlap counts as touching but
  * whose exact gap is a few ulps above zero: asked again with the rescue
  * margin, its depths clamped to 0 (the pair touches). In A's frame B's faces

@@ -280,6 +280,12 @@ static SX_ALWAYS_INLINE int sx_world_manifold(sx_manifold *m, int count, sx_xf x
     return 0;
 }
 
+/* A pair at margin 0 whose manifold found no point although the canonical
+ * order says it touches (the two orders round differently by a few ulps) is
+ * asked again with this margin and its depths clamped to 0 (collide.c): 1 %
+ * of the slop, far above any rounding and far below anything physical. */
+#define SX_TOUCH_RESCUE_MARGIN (SX_R(0.01) * SX_LINEAR_SLOP)
+
 /* collide.c's general route, for what the fused routines hand back: the
  * manifold of A (kind: SX_SHAPE_SEGMENT, CAPSULE or POLYGON) against a
  * circle through a core; and for the same-type pairs, what is not a

@@ -402,7 +402,7 @@ static int clip_face(const sx_core *ref, int *face, const sx_core *inc, sx_real 
  * up to rounding, a few ulps of the coordinates: a signed gap farther from
  * zero than this (the touch rescue margin of collide.c plus a wide rounding
  * allowance) gets the same touch answer in both orders. */
-#define SX_ORDER_RESCUE (SX_R(0.01) * SX_LINEAR_SLOP)
+#define SX_ORDER_RESCUE SX_TOUCH_RESCUE_MARGIN
 #define SX_ORDER_ROUNDING (SX_R(1024.0) * SX_REAL_EPSILON)
 
 static bool gap_is_clear(const sx_core *a, const sx_core *b, const sx_sat *sat, sx_real gap) {
@@ -566,13 +566,18 @@ static SX_ALWAYS_INLINE int collide_same_type(int kind, bool inline_cores, const
                                               const void *b, sx_xf xb, sx_real margin, sx_real hyst,
                                               sx_manifold *out) {
     bool touch_test = !(sx_is_finite(margin) && margin > SX_R(0.0));
+    /* A speculative margin at or above the rescue margin: two points, or a
+     * clear-cut pair, is the gated route's answer too (collide_gated), which
+     * the world's pairs nearly all are; the route's conversions of the
+     * transforms and its calls cost more than this check. */
+    bool speculative = !touch_test && margin >= SX_TOUCH_RESCUE_MARGIN;
     int count = 0;
-    if (touch_test) {
+    if (touch_test || speculative) {
+        sx_real m = touch_test ? SX_R(0.0) : margin;
         bool clear_cut = false;
-        count = inline_cores
-                    ? cores_collide(kind, a, xa, kind, b, xb, SX_R(0.0), hyst, out, &clear_cut)
-                    : sx_cores_collide(kind, a, xa, kind, b, xb, SX_R(0.0), hyst, out, &clear_cut);
-        if (clear_cut) return count;
+        count = inline_cores ? cores_collide(kind, a, xa, kind, b, xb, m, hyst, out, &clear_cut)
+                             : sx_cores_collide(kind, a, xa, kind, b, xb, m, hyst, out, &clear_cut);
+        if (clear_cut || (speculative && count == 2)) return count;
     }
     switch (kind) {
     case SX_SHAPE_SEGMENT:
