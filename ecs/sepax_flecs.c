@@ -85,9 +85,9 @@ typedef struct sx_ecs_state {
     int32_t body_entity_cap;
     double accumulator;
     int64_t steps;
-    SxContact *contacts, *previous;
+    SxContact *contacts, *previous, *scratch;
     int32_t contact_count, previous_count;
-    int32_t contact_cap, previous_cap;
+    int32_t contact_cap, previous_cap, scratch_cap;
     /* bodies and colliders whose entity died while the world was locked (a
      * query or draw callback of it deleted the entity): destroyed at the
      * next step */
@@ -366,6 +366,7 @@ static void sx_ecs_state_free(void *ctx) {
     free(st->body_entity);
     free(st->contacts);
     free(st->previous);
+    free(st->scratch);
     free(st->doomed);
     free(st);
 }
@@ -555,6 +556,51 @@ static int sx_ecs_contact_cmp(const void *pa, const void *pb) {
     return 0;
 }
 
+static bool sx_ecs_contact_before(const SxContact *a, const SxContact *b) {
+    return a->entity_a < b->entity_a || (a->entity_a == b->entity_a && a->entity_b < b->entity_b);
+}
+
+/* Sorts items[0, n) by (entity_a, entity_b), stable, through scratch (n
+ * items). The world lists its contacts by collider pair, which follows the
+ * entities' order wherever they were made in one order, so the list comes
+ * nearly sorted: runs already in order are found and merged pairwise. qsort
+ * took a fresh buffer from malloc each step (pages the kernel zeroes, for
+ * a large list) and called the comparison through a pointer. */
+static void sx_ecs_sort_contacts(SxContact *items, int32_t n, SxContact *scratch) {
+    SxContact *src = items, *dst = scratch;
+    int32_t j = 1;
+    while (j < n && !sx_ecs_contact_before(&items[j], &items[j - 1]))
+        ++j;
+    if (j >= n) return;
+    for (;;) {
+        int32_t i = 0, runs = 0;
+        while (i < n) {
+            /* one run [i, mid), the next [mid, end), merged into dst */
+            int32_t mid = i + 1, end, a, b, k = i;
+            while (mid < n && !sx_ecs_contact_before(&src[mid], &src[mid - 1]))
+                ++mid;
+            end = mid < n ? mid + 1 : n;
+            while (end < n && !sx_ecs_contact_before(&src[end], &src[end - 1]))
+                ++end;
+            for (a = i, b = mid; a < mid && b < end;)
+                dst[k++] = sx_ecs_contact_before(&src[b], &src[a]) ? src[b++] : src[a++];
+            while (a < mid)
+                dst[k++] = src[a++];
+            while (b < end)
+                dst[k++] = src[b++];
+            ++runs;
+            i = end;
+        }
+        /* the pass's merged runs are in dst */
+        if (runs <= 1) {
+            if (dst != items) memcpy(items, dst, (size_t)n * sizeof(*items));
+            return;
+        }
+        src = dst;
+        dst = dst == scratch ? items : scratch;
+    }
+}
+
 static const SxContact *sx_ecs_find_contact(const SxContact *items, int32_t count, ecs_entity_t a,
                                             ecs_entity_t b) {
     SxContact key;
@@ -661,7 +707,13 @@ static void sx_ecs_publish_contacts(ecs_iter_t *it) {
         }
         ++kept;
     }
-    if (kept > 1) qsort(st->contacts, (size_t)kept, sizeof(SxContact), sx_ecs_contact_cmp);
+    if (kept > 1) {
+        if (sx_ecs_reserve(&st->scratch, &st->scratch_cap, kept)) {
+            sx_ecs_sort_contacts(st->contacts, kept, st->scratch);
+        } else {
+            qsort(st->contacts, (size_t)kept, sizeof(SxContact), sx_ecs_contact_cmp);
+        }
+    }
     st->contact_count = kept;
     out->items = st->contacts;
     out->count = kept;

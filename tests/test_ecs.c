@@ -410,6 +410,44 @@ static void deleting_entities_in_the_middle_of_contacts_is_safe(void **state) {
     ecs_fini(world);
 }
 
+/* The module makes bodies table by table, so when the entities' order
+ * differs from the tables' (three tags split a row of boxes), the world lists the
+ * contacts out of the entities' order: SxContacts still comes sorted by
+ * (entity_a, entity_b), one entry per collider pair, none lost. */
+static void contacts_come_sorted_when_the_tables_mix_the_entities(void **state) {
+    ecs_world_t *world = make_world();
+    ecs_entity_t tags[3], boxes[12];
+    const SxContacts *contacts;
+    ecs_entity_t ground;
+    int i, with_ground = 0;
+    (void)state;
+    ground = add_ground(world);
+    for (i = 0; i < 3; ++i)
+        tags[i] = ecs_new(world);
+    for (i = 0; i < 12; ++i) {
+        /* side by side, touching: each box meets the ground and its neighbours */
+        boxes[i] = add_dynamic(world, sx_v2((sx_real)i * SX_R(1.0) - SX_R(6.0), SX_R(0.5)),
+                               sx_box_shape(SX_R(0.5), SX_R(0.5)));
+        ecs_add_id(world, boxes[i], tags[i % 3]);
+    }
+    progress(world, 10, 1.0 / 60.0);
+    contacts = ecs_singleton_get(world, SxContacts);
+    assert_int_equal(contacts->count, sx_world_contact_count(sx_ecs_world(world)));
+    assert_true(contacts->count >= 12);
+    for (i = 0; i < contacts->count; ++i) {
+        const SxContact *c = &contacts->items[i];
+        assert_true(c->entity_a < c->entity_b);
+        if (c->entity_a == ground || c->entity_b == ground) ++with_ground;
+        if (i > 0) {
+            const SxContact *p = &contacts->items[i - 1];
+            assert_true(p->entity_a < c->entity_a ||
+                        (p->entity_a == c->entity_a && p->entity_b < c->entity_b));
+        }
+    }
+    assert_int_equal(with_ground, 12);
+    ecs_fini(world);
+}
+
 static void bodies_without_colliders_and_colliders_without_bodies_work(void **state) {
     ecs_world_t *world = make_world();
     ecs_entity_t bare = ecs_new(world), box;
@@ -1058,6 +1096,7 @@ int main(void) {
         cmocka_unit_test(settings_continuous_reaches_the_world),
         cmocka_unit_test(entities_deleted_in_a_query_callback_leave_the_world_at_the_next_step),
         cmocka_unit_test(bullet_flag_and_casts_through_the_module),
+        cmocka_unit_test(contacts_come_sorted_when_the_tables_mix_the_entities),
     };
     return cmocka_run_group_tests_name("ecs", tests, sx_test_group_setup, sx_test_group_teardown);
 }
