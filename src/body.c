@@ -72,7 +72,7 @@ int sx_collider_slot(const sx_world *world, sx_collider_id id) {
         return -1;
     }
     c = &world->colliders[id.index];
-    if (!c->alive || c->generation != id.generation) return -1;
+    if (!c->alive || world->collider_generations[id.index] != id.generation) return -1;
     return (int)id.index;
 }
 
@@ -337,7 +337,7 @@ static void sx_free_collider_slot(sx_world *world, int slot) {
     }
     c->alive = false;
     c->next_free = -1;
-    if (sx_generation_next(&c->generation)) {
+    if (sx_generation_next(&world->collider_generations[slot])) {
         c->next_free = world->collider_free;
         world->collider_free = slot;
     }
@@ -409,6 +409,7 @@ static sx_status sx_check_collider_def(const sx_collider_def *def) {
 /* Grows the three per-collider arrays, each with its own capacity. */
 static bool sx_reserve_colliders(sx_world *world, int need) {
     void *c = world->colliders, *a = world->aabbs, *k = world->bp_kind;
+    void *g = world->collider_generations;
     bool ok = sx_grow_array(&c, &world->collider_capacity, need, sizeof(sx_collider));
     world->colliders = (sx_collider *)c;
     if (!ok) return false;
@@ -417,6 +418,9 @@ static bool sx_reserve_colliders(sx_world *world, int need) {
     if (!ok) return false;
     ok = sx_grow_array(&k, &world->kind_capacity, need, sizeof(unsigned char));
     world->bp_kind = (unsigned char *)k;
+    if (!ok) return false;
+    ok = sx_grow_array(&g, &world->generation_capacity, need, sizeof(uint32_t));
+    world->collider_generations = (uint32_t *)g;
     return ok;
 }
 
@@ -439,7 +443,7 @@ static sx_status sx_attach_collider(sx_world *world, int bslot, const sx_collide
     if (world->collider_free >= 0) {
         slot = world->collider_free;
         world->collider_free = world->colliders[slot].next_free;
-        generation = world->colliders[slot].generation;
+        generation = world->collider_generations[slot];
     } else {
         sx_status fail = SX_OK;
         if (world->collider_slots >= SX_WORLD_MAX_ITEMS) {
@@ -477,7 +481,7 @@ static sx_status sx_attach_collider(sx_world *world, int bslot, const sx_collide
     c->aabb_stale = true;
     c->reach = SX_R(0.0);
     world->sets_dirty = true;
-    c->generation = generation;
+    world->collider_generations[slot] = generation;
     c->body = bslot;
     c->next = -1;
     c->next_free = -1;

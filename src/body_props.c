@@ -67,7 +67,7 @@ int sx_body_get_colliders(const sx_world *world, sx_body_id body, sx_collider_id
     for (c = world->infos[slot].first_collider; c >= 0; c = world->colliders[c].next) {
         if (out != NULL && n < capacity) {
             out[n].index = (uint32_t)c;
-            out[n].generation = world->colliders[c].generation;
+            out[n].generation = world->collider_generations[c];
         }
         ++n;
     }

@@ -50,9 +50,9 @@ static sx_status sx_push_sensor_event(sx_world *world, uint64_t key, bool begin)
     }
     e = &(*events)[(*count)++];
     e->sensor.index = (uint32_t)s;
-    e->sensor.generation = world->colliders[s].generation;
+    e->sensor.generation = world->collider_generations[s];
     e->visitor.index = (uint32_t)v;
-    e->visitor.generation = world->colliders[v].generation;
+    e->visitor.generation = world->collider_generations[v];
     e->sensor_body.index = (uint32_t)world->colliders[s].body;
     e->sensor_body.generation = world->infos[world->colliders[s].body].generation;
     e->visitor_body.index = (uint32_t)world->colliders[v].body;

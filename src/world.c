@@ -177,6 +177,7 @@ void sx_world_destroy(sx_world *world) {
     sx_free(world->colliders, (size_t)world->collider_capacity * sizeof(sx_collider));
     sx_free(world->aabbs, (size_t)world->aabb_capacity * sizeof(sx_aabb));
     sx_free(world->bp_kind, (size_t)world->kind_capacity);
+    sx_free(world->collider_generations, (size_t)world->generation_capacity * sizeof(uint32_t));
     sx_free(world->contacts, (size_t)world->contact_capacity * sizeof(sx_contact));
     sx_free(world->old_contacts, (size_t)world->old_contact_capacity * sizeof(sx_contact));
     sx_free(world->frozen, (size_t)world->frozen_capacity * sizeof(sx_contact));
@@ -683,9 +684,9 @@ static sx_status sx_push_event(const sx_world *world, const sx_contact *c,
     }
     e = &(*events)[(*count)++];
     e->collider_a.index = (uint32_t)c->collider_a;
-    e->collider_a.generation = world->colliders[c->collider_a].generation;
+    e->collider_a.generation = world->collider_generations[c->collider_a];
     e->collider_b.index = (uint32_t)c->collider_b;
-    e->collider_b.generation = world->colliders[c->collider_b].generation;
+    e->collider_b.generation = world->collider_generations[c->collider_b];
     e->body_a.index = (uint32_t)c->body_a;
     e->body_a.generation = world->infos[c->body_a].generation;
     e->body_b.index = (uint32_t)c->body_b;
@@ -1184,9 +1185,9 @@ sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data
     c = sx_world_live_contact(world, index);
     memset(out, 0, sizeof(*out));
     out->collider_a.index = (uint32_t)c->collider_a;
-    out->collider_a.generation = world->colliders[c->collider_a].generation;
+    out->collider_a.generation = world->collider_generations[c->collider_a];
     out->collider_b.index = (uint32_t)c->collider_b;
-    out->collider_b.generation = world->colliders[c->collider_b].generation;
+    out->collider_b.generation = world->collider_generations[c->collider_b];
     out->body_a.index = (uint32_t)c->body_a;
     out->body_a.generation = world->infos[c->body_a].generation;
     out->body_b.index = (uint32_t)c->body_b;

@@ -68,8 +68,7 @@ typedef struct sx_collider {
     sx_real density, friction, restitution;
     sx_filter filter;
     bool sensor;
-    bool alive;
-    uint32_t generation;
+    bool alive; /* its generation: world->collider_generations */
     int body; /* slot of the owning body */
     /* the cached bounds in world->aabbs no longer fit (teleport of a body
      * the step does not move) */

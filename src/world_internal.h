@@ -29,8 +29,13 @@ struct sx_world {
     sx_collider *colliders;
     sx_aabb *aabbs;         /* fattened bounds, per collider slot */
     unsigned char *bp_kind; /* per collider slot: 0 out, 1 fixed, 2 dynamic */
+    /* per collider slot: bumped on destroy; never 0; retired at UINT32_MAX.
+     * Beside the colliders, not in them: a contact's handles are read for
+     * every contact a step (the flecs module's publishing), and a 240-byte
+     * collider a contact was a cache miss each. */
+    uint32_t *collider_generations;
     int collider_slots, collider_free;
-    int collider_capacity, aabb_capacity, kind_capacity;
+    int collider_capacity, aabb_capacity, kind_capacity, generation_capacity;
 
     sx_contact *contacts, *old_contacts;
     int contact_count, old_contact_count, contact_capacity, old_contact_capacity;

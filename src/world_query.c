@@ -27,7 +27,7 @@
 static void sx_handles(const sx_world *world, int i, sx_collider_id *c, sx_body_id *b) {
     const sx_collider *col = &world->colliders[i];
     c->index = (uint32_t)i;
-    c->generation = col->generation;
+    c->generation = world->collider_generations[i];
     b->index = (uint32_t)col->body;
     b->generation = world->infos[col->body].generation;
 }

@@ -181,7 +181,7 @@ static void a_collider_slot_is_retired_after_its_last_generation(void **state) {
     (void)state;
     assert_int_equal(sx_body_add_collider(w, body, &cd, &first), SX_OK);
     assert_int_equal(first.index, 0);
-    w->colliders[0].generation = UINT32_MAX - 1;
+    w->collider_generations[0] = UINT32_MAX - 1;
     last.index = 0;
     last.generation = UINT32_MAX - 1;
     assert_int_equal(sx_destroy_collider(w, last), SX_OK);
