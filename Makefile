@@ -233,13 +233,15 @@ readme-example: doc-examples
 # The plain-C sample (samples/pyramid.c) is built with the strict flags and
 # run on a small pyramid, so it stays working.
 SAMPLE_PYRAMID := $(OUT)/samples/pyramid
-$(SAMPLE_PYRAMID): samples/pyramid.c $(LIB_A)
+$(SAMPLE_PYRAMID): samples/pyramid.c samples/task_pool.h $(LIB_A)
 	@mkdir -p $(dir $@)
 	$(call msg,CC,$<)
-	$(Q)$(CC) $(CFLAGS_ALL) -o $@ $< $(LIB_A) $(LDLIBS_ALL)
+	$(Q)$(CC) $(CFLAGS_ALL) -pthread -o $@ $< $(LIB_A) $(LDLIBS_ALL) -pthread
 sample-pyramid: $(SAMPLE_PYRAMID)
 	@./$(SAMPLE_PYRAMID) 5 1 > $(SAMPLE_PYRAMID).out
 	@echo "sepax: samples/pyramid ran: $$(tail -n 1 $(SAMPLE_PYRAMID).out)"
+	@./$(SAMPLE_PYRAMID) 20 1 nosleep 2 > $(SAMPLE_PYRAMID)-2.out
+	@echo "sepax: samples/pyramid ran on 2 workers: $$(tail -n 1 $(SAMPLE_PYRAMID)-2.out)"
 
 test: lib check-exports check-layers check-headers doc-examples sample-pyramid $(TEST_BINS)
 	@failed=0; total=0; \

@@ -37,7 +37,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 WORK = os.path.join(ROOT, "build", "mutate")
 TREE = os.path.join(WORK, "tree")
 LOGS = os.path.join(WORK, "logs")
-COPIED = ["Makefile", "src", "include", "tests", "scripts", "ecs", "fuzz"]
+COPIED = ["Makefile", "src", "include", "tests", "scripts", "ecs", "fuzz", "samples"]
 # The pinned hashes fail on any change of the physics (see the docstring).
 HASH_TEST = "test_determinism"
 # Per test program; the slowest program takes a few seconds unmutated, so

@@ -48,6 +48,10 @@ sx_world_def sx_default_world_def(void) {
     d.time_to_sleep = SX_R(0.5);
     d.enable_contact_events = true;
     d.enable_continuous = true;
+    d.enqueue_task = NULL;
+    d.finish_task = NULL;
+    d.worker_count = 1;
+    d.user_task_context = NULL;
     return d;
 }
 
@@ -110,6 +114,10 @@ sx_status sx_world_def_validate(const sx_world_def *d, const char **field) {
             bad = "sleep_angular_speed";
         } else if (!(d->time_to_sleep > SX_R(0.0))) {
             bad = "time_to_sleep";
+        } else if ((d->enqueue_task == NULL) != (d->finish_task == NULL)) {
+            bad = d->enqueue_task == NULL ? "enqueue_task" : "finish_task";
+        } else if (d->worker_count < 1) {
+            bad = "worker_count";
         }
     }
     /* a step costs sub_steps x iterations passes: bounded, so it returns */
@@ -123,6 +131,8 @@ sx_status sx_world_def_validate(const sx_world_def *d, const char **field) {
             bad = "position_iterations";
         } else if (d->body_capacity > SX_WORLD_MAX_ITEMS) {
             bad = "body_capacity";
+        } else if (d->worker_count > SX_MAX_WORKERS) {
+            bad = "worker_count";
         }
     }
     if (field != NULL) *field = bad;
@@ -180,6 +190,8 @@ void sx_world_destroy(sx_world *world) {
     sx_free(world->collider_generations, (size_t)world->generation_capacity * sizeof(uint32_t));
     sx_free(world->contacts, (size_t)world->contact_capacity * sizeof(sx_contact));
     sx_free(world->old_contacts, (size_t)world->old_contact_capacity * sizeof(sx_contact));
+    sx_free(world->pair_manifolds, (size_t)world->pair_manifold_capacity * sizeof(sx_manifold));
+    sx_free(world->pair_counts, (size_t)world->pair_count_capacity * sizeof(int));
     sx_free(world->frozen, (size_t)world->frozen_capacity * sizeof(sx_contact));
     sx_free(world->thaw, (size_t)world->thaw_capacity * sizeof(sx_contact));
     sx_free(world->active_bodies, (size_t)world->active_body_capacity * sizeof(int));
@@ -1077,21 +1089,75 @@ static bool sx_bullet_pair_may_meet(const sx_world *world, const sx_collider *ca
                          ca->bound_radius + cb->bound_radius + world->margin);
 }
 
-/* The narrowphase of broadphase pair `key`: its contacts, warm-started from
- * its old ones old_contacts[old_begin, old_end). */
-static sx_status sx_collide_pair(sx_world *world, uint64_t key, int old_begin, int old_end) {
-    int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), n;
+/* The manifold of broadphase pair `key` (reads the world only): its point
+ * count, 0 for a pair that gets no contact, -1 for a compound pair (one
+ * manifold per part pair: sx_collide_parts). */
+static int sx_pair_manifold(const sx_world *world, uint64_t key, sx_manifold *m) {
+    int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu);
     const sx_collider *ca = &world->colliders[ia], *cb = &world->colliders[ib];
-    sx_manifold m;
     if (ca->body == cb->body || !sx_filters_collide(&ca->filter, &cb->filter) ||
         !sx_bullet_pair_may_meet(world, ca, cb)) {
-        return SX_OK;
+        return 0;
     }
-    if (ca->part_count > 0 || cb->part_count > 0) return sx_collide_parts(world, key, old_begin, old_end);
-    n = sx_collide_world(&ca->shape, world->sims[ca->body].xf, &cb->shape, world->sims[cb->body].xf,
-                         world->margin + ca->reach + cb->reach, &m);
-    if (n <= 0) return SX_OK;
-    return sx_add_contact(world, key, 0, 0, &m, old_begin, old_end);
+    if (ca->part_count > 0 || cb->part_count > 0) return -1;
+    return sx_collide_world(&ca->shape, world->sims[ca->body].xf, &cb->shape,
+                            world->sims[cb->body].xf, world->margin + ca->reach + cb->reach, m);
+}
+
+/* The narrowphase of pair i of the broadphase (`key`): its contacts,
+ * warm-started from its old ones old_contacts[old_begin, old_end); its
+ * manifold from the parallel tasks when they found it. */
+static sx_status sx_collide_pair(sx_world *world, int i, uint64_t key, int old_begin,
+                                 int old_end) {
+    sx_manifold local;
+    const sx_manifold *m = &local;
+    int n = world->pairs_found ? world->pair_counts[i] : -2;
+    if (n == -2) {
+        n = sx_pair_manifold(world, key, &local);
+    } else if (n > 0) {
+        m = &world->pair_manifolds[i];
+    }
+    if (n < 0) return sx_collide_parts(world, key, old_begin, old_end);
+    if (n == 0) return SX_OK;
+    return sx_add_contact(world, key, 0, 0, m, old_begin, old_end);
+}
+
+/* A range of the broadphase's pairs for a worker of the job system. */
+static void sx_pairs_task(int start, int end, int worker, void *context) {
+    sx_world *world = (sx_world *)context;
+    int i;
+    (void)worker;
+    if (start < 0) start = 0;
+    if (end > world->bp.pair_count) end = world->bp.pair_count;
+    for (i = start; i < end; ++i)
+        world->pair_counts[i] = sx_pair_manifold(world, world->bp.pairs[i], &world->pair_manifolds[i]);
+}
+
+/* Pairs a task range takes at least, and the fewest pairs worth a task:
+ * below them the job system's hand-over costs more than the manifolds. */
+#define SX_PAIRS_PER_RANGE 64
+#define SX_PARALLEL_MIN_PAIRS 256
+
+/* With a job system: every pair's manifold, in parallel, before the walk.
+ * Without room for them the walk collides each pair itself, as it does a
+ * pair no range reached (pair_counts -2). */
+static void sx_find_pairs(sx_world *world) {
+    const sx_world_def *d = &world->def;
+    int n = world->bp.pair_count, i;
+    void *p, *task;
+    world->pairs_found = false;
+    if (d->enqueue_task == NULL || d->worker_count < 2 || n < SX_PARALLEL_MIN_PAIRS) return;
+    p = world->pair_manifolds;
+    if (!sx_grow_array(&p, &world->pair_manifold_capacity, n, sizeof(sx_manifold))) return;
+    world->pair_manifolds = (sx_manifold *)p;
+    p = world->pair_counts;
+    if (!sx_grow_array(&p, &world->pair_count_capacity, n, sizeof(int))) return;
+    world->pair_counts = (int *)p;
+    for (i = 0; i < n; ++i)
+        world->pair_counts[i] = -2;
+    task = d->enqueue_task(sx_pairs_task, n, SX_PAIRS_PER_RANGE, world, d->user_task_context);
+    if (task != NULL) d->finish_task(task, d->user_task_context);
+    world->pairs_found = true;
 }
 
 sx_status sx_world_collide(sx_world *world) {
@@ -1130,6 +1196,7 @@ sx_status sx_world_collide(sx_world *world) {
     }
     s = sx_freeze_contacts(world);
     if (s != SX_OK) return s;
+    sx_find_pairs(world);
 
     swap = world->old_contacts;
     world->old_contacts = world->contacts;
@@ -1153,7 +1220,7 @@ sx_status sx_world_collide(sx_world *world) {
         old_begin = old_index;
         while (old_index < world->old_contact_count && world->old_contacts[old_index].key == key)
             ++old_index;
-        s = sx_collide_pair(world, key, old_begin, old_index);
+        s = sx_collide_pair(world, i, key, old_begin, old_index);
         if (s != SX_OK) return s;
         s = sx_pair_events(world, first, old_begin, old_index);
         if (s != SX_OK) return s;

@@ -39,6 +39,14 @@ struct sx_world {
 
     sx_contact *contacts, *old_contacts;
     int contact_count, old_contact_count, contact_capacity, old_contact_capacity;
+    /* With a job system (sx_world_def.enqueue_task): each broadphase pair's
+     * manifold, found in parallel before the pair walk makes the contacts
+     * in pair order. pair_counts[i]: its point count, -1 for a compound
+     * pair (the walk collides it), -2 for a pair no task reached. */
+    sx_manifold *pair_manifolds;
+    int *pair_counts;
+    int pair_manifold_capacity, pair_count_capacity;
+    bool pairs_found; /* this collide's walk reads them */
     /* Contacts of sleeping bodies, out of the step's list so a sleeping
      * island costs nothing per step; unordered. A wake sets thaw_pending and
      * the next collide moves the contacts that have an awake body back. */

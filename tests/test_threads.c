@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "../samples/task_pool.h"
 #include "test_support.h"
 
 #define DT (SX_R(1.0) / SX_R(60.0))
@@ -183,10 +184,209 @@ static void two_threads_share_a_thread_safe_custom_allocator(void **state) {
     assert_int_equal(pthread_mutex_destroy(&c.lock), 0);
 }
 
+/* ---- a world's own steps on a job system (sx_world_def.enqueue_task) ----- */
+
+/* A pyramid of base 20 on the ground (about 600 broadphase pairs, above the
+ * fewest worth a task), an L-shaped compound dropped on it (its pairs are
+ * collided in the walk) and a box whose filter lets it pass through the
+ * boxes (pairs that make no contact). */
+static sx_world *make_job_scene(const sx_world_def *wd, sx_body_id *ids, int *count) {
+    sx_body_def bd = sx_default_body_def();
+    sx_collider_def cd = sx_default_collider_def();
+    sx_compound_part parts[2];
+    sx_compound l_shape;
+    sx_body_id ground;
+    sx_world *w = sx_world_create(wd);
+    int i, j, n = 0;
+    if (w == NULL) return NULL;
+    bd.position = sx_v2(SX_R(0.0), SX_R(-1.0));
+    cd.shape = sx_box_shape(SX_R(40.0), SX_R(1.0));
+    if (sx_create_body(w, &bd, &ground) != SX_OK ||
+        sx_body_add_collider(w, ground, &cd, NULL) != SX_OK) {
+        sx_world_destroy(w);
+        return NULL;
+    }
+    bd.type = SX_BODY_DYNAMIC;
+    cd.shape = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    for (i = 0; i < 20; ++i) {
+        for (j = i; j < 20; ++j) {
+            bd.position = sx_v2((sx_real)(i + 1) * SX_R(0.5) + (sx_real)(j - i) - SX_R(10.0),
+                                (sx_real)(2 * i + 1) * SX_R(0.5));
+            if (sx_create_body(w, &bd, &ids[n]) != SX_OK ||
+                sx_body_add_collider(w, ids[n], &cd, NULL) != SX_OK) {
+                sx_world_destroy(w);
+                return NULL;
+            }
+            ++n;
+        }
+    }
+    parts[0] = sx_compound_part_make(sx_box_shape(SX_R(1.0), SX_R(0.25)), sx_xform_identity());
+    parts[1] = sx_compound_part_make(sx_box_shape(SX_R(0.25), SX_R(1.0)),
+                                     sx_xform_make(sx_v2(SX_R(0.75), SX_R(0.75)), SX_R(0.0)));
+    l_shape.parts = parts;
+    l_shape.count = 2;
+    bd.position = sx_v2(SX_R(-3.0), SX_R(23.0));
+    if (sx_create_body(w, &bd, &ids[n]) != SX_OK ||
+        sx_body_add_compound(w, ids[n], &l_shape, &cd, NULL) != SX_OK) {
+        sx_world_destroy(w);
+        return NULL;
+    }
+    ++n;
+    bd.position = sx_v2(SX_R(2.0), SX_R(25.0));
+    cd.filter.mask = 0; /* meets nothing */
+    if (sx_create_body(w, &bd, &ids[n]) != SX_OK ||
+        sx_body_add_collider(w, ids[n], &cd, NULL) != SX_OK) {
+        sx_world_destroy(w);
+        return NULL;
+    }
+    *count = n + 1;
+    return w;
+}
+
+#define JOB_BODIES 212
+#define JOB_STEPS 150
+
+/* The digest of the job scene after JOB_STEPS steps with these settings;
+ * 0 when something failed. */
+static uint64_t run_job_scene(const sx_world_def *wd) {
+    sx_body_id ids[JOB_BODIES];
+    int n = 0, s;
+    uint64_t h;
+    sx_world *w = make_job_scene(wd, ids, &n);
+    if (w == NULL || n != JOB_BODIES) return 0;
+    for (s = 0; s < JOB_STEPS; ++s) {
+        if (sx_world_step(w, DT) != SX_OK) {
+            sx_world_destroy(w);
+            return 0;
+        }
+    }
+    h = digest(w, ids, n);
+    sx_world_destroy(w);
+    return h;
+}
+
+/* Job systems of the test's own: each counts its tasks. `ranges`: how many
+ * ranges it runs before returning NULL (the rest never run); -1 for all. */
+typedef struct serial_jobs {
+    int tasks, ranges;
+} serial_jobs;
+
+static void *serial_enqueue(sx_task_fn *task, int item_count, int min_range, void *task_context,
+                            void *user_context) {
+    serial_jobs *j = (serial_jobs *)user_context;
+    int start, run = 0;
+    j->tasks++;
+    for (start = 0; start < item_count && (j->ranges < 0 || run < j->ranges); start += min_range) {
+        int end = start + min_range < item_count ? start + min_range : item_count;
+        task(start, end, 1, task_context);
+        ++run;
+    }
+    return NULL;
+}
+
+static void never_finish(void *user_task, void *user_context) {
+    (void)user_task;
+    (void)user_context;
+    fail_msg("finish_task called for a task enqueue_task ran already");
+}
+
+/* Counts the tasks of a pool (the same pool's enqueue underneath). */
+typedef struct counted_pool {
+    sx_task_pool pool;
+    int tasks;
+} counted_pool;
+
+static void *counted_enqueue(sx_task_fn *task, int item_count, int min_range, void *task_context,
+                             void *user_context) {
+    counted_pool *c = (counted_pool *)user_context;
+    c->tasks++;
+    return sx_task_pool_enqueue(task, item_count, min_range, task_context, &c->pool);
+}
+
+static void counted_finish(void *user_task, void *user_context) {
+    sx_task_pool_finish(user_task, &((counted_pool *)user_context)->pool);
+}
+
+/* The narrowphase's manifolds found by two and by three threads of a pool,
+ * by a job system that runs each task before it returns, and by one that
+ * drops all but the first range of each (the walk collides the rest):
+ * the same bits as one thread, step after step. */
+static void a_job_system_steps_a_world_to_the_same_bits(void **state) {
+    sx_world_def wd = sx_default_world_def();
+    serial_jobs serial = {0, -1}, partial = {0, 1};
+    counted_pool pool;
+    uint64_t alone, h;
+    int workers;
+    (void)state;
+    wd.enable_sleep = false;
+    alone = run_job_scene(&wd);
+    assert_true(alone != 0);
+    for (workers = 2; workers <= 3; ++workers) {
+        sx_world_def pd = wd;
+        assert_true(sx_task_pool_start(&pool.pool, workers));
+        pool.tasks = 0;
+        sx_task_pool_use(&pool.pool, &pd);
+        pd.enqueue_task = counted_enqueue;
+        pd.finish_task = counted_finish;
+        pd.user_task_context = &pool;
+        h = run_job_scene(&pd);
+        sx_task_pool_stop(&pool.pool);
+        assert_true(h == alone);
+        /* one task a collide: every step's pairs went through the pool */
+        assert_int_equal(pool.tasks, JOB_STEPS);
+    }
+    {
+        sx_world_def sd = wd;
+        sd.enqueue_task = serial_enqueue;
+        sd.finish_task = never_finish;
+        sd.worker_count = 2;
+        sd.user_task_context = &serial;
+        assert_true(run_job_scene(&sd) == alone);
+        assert_int_equal(serial.tasks, JOB_STEPS);
+        sd.user_task_context = &partial;
+        assert_true(run_job_scene(&sd) == alone);
+        assert_int_equal(partial.tasks, JOB_STEPS);
+        /* worker_count 1: no task at all */
+        sd.worker_count = 1;
+        serial.tasks = 0;
+        sd.user_task_context = &serial;
+        assert_true(run_job_scene(&sd) == alone);
+        assert_int_equal(serial.tasks, 0);
+    }
+}
+
+static void a_world_refuses_half_a_job_system_and_bad_worker_counts(void **state) {
+    sx_world_def wd = sx_default_world_def();
+    const char *field = NULL;
+    serial_jobs serial = {0, -1};
+    (void)state;
+    wd.enqueue_task = serial_enqueue;
+    assert_int_equal(sx_world_def_validate(&wd, &field), SX_ERR_INVALID_ARG);
+    assert_string_equal(field, "finish_task");
+    assert_null(sx_world_create(&wd));
+    wd.enqueue_task = NULL;
+    wd.finish_task = never_finish;
+    assert_int_equal(sx_world_def_validate(&wd, &field), SX_ERR_INVALID_ARG);
+    assert_string_equal(field, "enqueue_task");
+    wd.enqueue_task = serial_enqueue;
+    wd.user_task_context = &serial;
+    wd.worker_count = 0;
+    assert_int_equal(sx_world_def_validate(&wd, &field), SX_ERR_INVALID_ARG);
+    assert_string_equal(field, "worker_count");
+    wd.worker_count = SX_MAX_WORKERS + 1;
+    assert_int_equal(sx_world_def_validate(&wd, &field), SX_ERR_CAPACITY);
+    assert_string_equal(field, "worker_count");
+    assert_null(sx_world_create(&wd));
+    wd.worker_count = SX_MAX_WORKERS;
+    assert_int_equal(sx_world_def_validate(&wd, &field), SX_OK);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(two_threads_create_step_and_destroy_their_own_worlds),
         cmocka_unit_test(two_threads_share_a_thread_safe_custom_allocator),
+        cmocka_unit_test(a_job_system_steps_a_world_to_the_same_bits),
+        cmocka_unit_test(a_world_refuses_half_a_job_system_and_bad_worker_counts),
     };
     int failed;
     /* An SX_ASSERT in a worker must not longjmp into cmocka from the wrong

@@ -160,6 +160,26 @@ SX_API sx_collider_id sx_collider_id_from_u64(uint64_t bits);
 
 /* ---- world -------------------------------------------------------------- */
 
+/** Most workers a world's task system may name (sx_world_def.worker_count). */
+#define SX_MAX_WORKERS 64
+
+/** A parallel loop's body: items [start, end) of a task, run by worker
+ *  `worker` (0 .. worker_count - 1; a worker runs one range at a time).
+ *  task_context is the world's, to pass back unchanged. */
+typedef void sx_task_fn(int start, int end, int worker, void *task_context);
+
+/** The game's job system runs `task` over items [0, item_count), split into
+ *  ranges of at least min_range items (the last may be shorter), on up to
+ *  worker_count workers at once, and returns a handle for finish_task; or it
+ *  runs the whole task before returning and returns NULL. user_context is
+ *  sx_world_def.user_task_context. */
+typedef void *sx_enqueue_task_fn(sx_task_fn *task, int item_count, int min_range,
+                                 void *task_context, void *user_context);
+
+/** Waits until every range of the task enqueue_task returned `user_task`
+ *  for has run (never called for NULL). */
+typedef void sx_finish_task_fn(void *user_task, void *user_context);
+
 /** World settings. Start from sx_default_world_def() and change fields. */
 typedef struct sx_world_def {
     /** Gravity in m/s^2. Default (0, -10). */
@@ -239,6 +259,21 @@ typedef struct sx_world_def {
      *  included, then has only its speculative contacts, grown by its whole
      *  step's travel (see "Fast bodies" above). Default true. */
     bool enable_continuous;
+    /** A job system for the step's parallel loops (as Box2D v3's
+     *  enqueueTask / finishTask): enqueue_task and finish_task both set, or
+     *  both NULL (the default: one thread). The loops: the narrowphase of the
+     *  collide stage, each broadphase pair's manifold on its own; the contacts
+     *  are then made from them in pair order, so a world steps to the same
+     *  bits with any job system and any worker_count. Tasks are enqueued and
+     *  finished from inside sx_world_step (and sx_world_collide), on the
+     *  thread that calls it. */
+    sx_enqueue_task_fn *enqueue_task;
+    sx_finish_task_fn *finish_task;
+    /** Workers the job system runs a task on, 1 .. SX_MAX_WORKERS. Default 1.
+     *  With 1, no task is enqueued. */
+    int worker_count;
+    /** Handed to enqueue_task and finish_task. Default NULL. */
+    void *user_task_context;
 } sx_world_def;
 
 /** The default world settings documented field by field in sx_world_def. */
