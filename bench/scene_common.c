@@ -7,6 +7,8 @@
 #define _POSIX_C_SOURCE 200809L
 #include "scene_common.h"
 
+#include "../samples/task_pool.h"
+
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -102,6 +104,12 @@ double now_ms(void) {
     struct timespec ts;
     if (cpu < 0) cpu = getenv("SX_BENCH_CPU_TIME") == NULL || atoi(getenv("SX_BENCH_CPU_TIME")) != 0;
     clock_gettime(cpu ? CLOCK_PROCESS_CPUTIME_ID : CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+}
+
+double wall_ms(void) {
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
 }
 
@@ -220,6 +228,7 @@ typedef struct sepax_world {
     sx_body_id *ids;
     int count, capacity;
     sx_real dt;
+    sx_task_pool *pool; /* scene_config.workers > 1 */
 } sepax_world;
 
 int sepax_shape(const bench_shape *s, sx_shape *o) {
@@ -239,6 +248,10 @@ static void sepax_destroy(void *w) {
     sepax_world *sw = w;
     if (!sw) return;
     if (sw->world) sx_world_destroy(sw->world);
+    if (sw->pool) {
+        sx_task_pool_stop(sw->pool);
+        free(sw->pool);
+    }
     free(sw->ids);
     free(sw);
 }
@@ -284,6 +297,14 @@ static void *sepax_create(const scene_def *def, const scene_config *cfg) {
         getenv("SX_BENCH_CONTINUOUS") == NULL || atoi(getenv("SX_BENCH_CONTINUOUS")) != 0;
     sepax_world *sw = calloc(1, sizeof *sw);
     if (!sw) return NULL;
+    if (cfg->workers > 1) {
+        sw->pool = calloc(1, sizeof *sw->pool);
+        if (!sw->pool || !sx_task_pool_start(sw->pool, cfg->workers)) {
+            sepax_destroy(sw);
+            return NULL;
+        }
+        sx_task_pool_use(sw->pool, &wd);
+    }
     sw->world = sx_world_create(&wd);
     sw->dt = (sx_real)cfg->dt;
     if (!sw->world) {
@@ -366,7 +387,7 @@ static int is_box2d3(int e) {
 }
 
 scene_config default_config(int e, double dt) {
-    scene_config c = {dt, 1, 8, 3};
+    scene_config c = {dt, 1, 8, 3, 1};
     if (e == SCENE_SEPAX) {
         sx_world_def wd = sx_default_world_def();
         c.sub_steps = wd.sub_steps;
@@ -383,11 +404,13 @@ scene_config default_config(int e, double dt) {
 
 void config_name(int e, const scene_config *c, char *buf, size_t size) {
     int hz = (int)lround(1.0 / c->dt);
+    char w[24] = "";
+    if (c->workers > 1) snprintf(w, sizeof w, " workers=%d", c->workers);
     if (e == SCENE_SEPAX)
-        snprintf(buf, size, "dt=1/%d sub=%d vel=%d pos=%d", hz, c->sub_steps, c->vel_iters,
-                 c->pos_iters);
+        snprintf(buf, size, "dt=1/%d sub=%d vel=%d pos=%d%s", hz, c->sub_steps, c->vel_iters,
+                 c->pos_iters, w);
     else if (is_box2d3(e))
-        snprintf(buf, size, "dt=1/%d sub=%d", hz, c->sub_steps);
+        snprintf(buf, size, "dt=1/%d sub=%d%s", hz, c->sub_steps, w);
     else if (e == SCENE_BOX2D)
         snprintf(buf, size, "dt=1/%d calls=%d vel=%d pos=%d", hz, c->sub_steps, c->vel_iters,
                  c->pos_iters);

@@ -35,6 +35,9 @@ void config_name(int e, const scene_config *c, char *buf, size_t size);
 /** Cost of one 1/60 s frame of simulated time. */
 double frame_ms(double ms_per_step, const scene_config *c);
 double now_ms(void);
+/* The wall clock, for runs on several threads (now_ms's process CPU time
+ * adds up the threads). */
+double wall_ms(void);
 
 /** sepax's shape for a bench shape (0 when the builder refuses it). */
 int sepax_shape(const bench_shape *s, sx_shape *o);

@@ -46,6 +46,10 @@ typedef struct scene_config {
     int sub_steps;
     int vel_iters;
     int pos_iters;
+    /* 0 or 1: one thread (the default); more: the engine's parallel loops on
+     * that many workers (sepax: samples/task_pool.h; Box2D v3: its own
+     * scheduler), timed by the wall clock */
+    int workers;
 } scene_config;
 
 typedef struct scene_state {

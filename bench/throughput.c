@@ -87,6 +87,57 @@ static int pyramid_once(const scene_def *d, int e, const scene_config *c, int st
     return 1;
 }
 
+/* sepax and Box2D v3 (SSE2) at their defaults on two workers (sepax: the
+ * job system of samples/task_pool.h; v3: its own scheduler), against one,
+ * all timed by the wall clock (CPU time adds up the threads), in
+ * alternating rounds; the least of each. */
+static int pyramid_workers(const scene_def *d, int steps) {
+    static const int engines_2w[2] = {SCENE_SEPAX, SCENE_BOX2D3};
+    double best[2][2] = {{0, 0}, {0, 0}};
+    int failures = 0;
+    out("\ntwo workers (wall clock, the least of 2 alternating rounds; single-thread figures "
+        "above are CPU time):\n");
+    md("```\n");
+    out("%-14s %-36s %9s %9s %9s\n", "engine", "configuration", "ms/step", "x 1 worker", "sag");
+    for (int round = 0; round < 2; ++round) {
+        for (int k = 0; k < 2; ++k) {
+            int e = engines_2w[k];
+            if (!engine_runs(e)) continue;
+            for (int w = 0; w < 2; ++w) {
+                scene_config c = default_config(e, 1.0 / 60.0);
+                c.workers = w + 1;
+                void *world = engines[e]->create(d, &c);
+                if (!world) {
+                    ++failures;
+                    continue;
+                }
+                engines[e]->step(world, 1);
+                double t0 = wall_ms();
+                engines[e]->step(world, steps - 1);
+                double ms = (wall_ms() - t0) / (double)(steps > 1 ? steps - 1 : 1);
+                scene_state s;
+                engines[e]->get(world, d->count - 1, &s);
+                engines[e]->destroy(world);
+                if (best[k][w] == 0 || ms < best[k][w]) best[k][w] = ms;
+                if (round == 1) {
+                    char cfg[96], det[96];
+                    config_name(e, &c, cfg, sizeof cfg);
+                    out("%-14s %-36s %9.2f %9.2f %9.3f\n", engine_names[e], cfg, best[k][w],
+                        best[k][w] / best[k][0], 99.5 - s.y);
+                    snprintf(det, sizeof det, "top_y=%.4f;workers=%d;wall_clock=1", s.y, c.workers);
+                    csv_row("large_pyramid_workers", e, &c, d->count - 1, steps, best[k][w],
+                            "top_y_drop", 99.5 - s.y, det);
+                }
+            }
+        }
+    }
+    md("```\n");
+    if (best[0][1] > 0 && best[1][1] > 0)
+        out("two workers: sepax %.2f ms against box2d3 %.2f ms (%.2fx)\n", best[0][1], best[1][1],
+            best[0][1] / best[1][1]);
+    return failures;
+}
+
 int large_pyramid(int steps, const char *out_dir) {
     scene_def d;
     if (!scene_init(&d, 5100)) return 1;
@@ -133,6 +184,7 @@ int large_pyramid(int steps, const char *out_dir) {
     md("```\n");
     out("sx/this = sepax's default ms / this row's ms (< 1: sepax's default is slower). The top "
         "box starts at y 99.5; sag = 99.5 - top y.\n");
+    failures += pyramid_workers(&d, steps);
     /* The front: for each Box2D v3 configuration, the cheapest sepax one
      * that sags no more, and whether it is also no slower. */
     out("\nfront: for each box2d3 configuration, the cheapest sepax configuration with no more "

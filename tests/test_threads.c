@@ -17,8 +17,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "../samples/task_pool.h"
 #include "test_support.h"
+/* after sepax's headers: sx_task_pool_use needs sx_world_def */
+#include "../samples/task_pool.h"
 
 #define DT (SX_R(1.0) / SX_R(60.0))
 #define WORKERS 2

@@ -1,7 +1,8 @@
 /* sepax benchmarks — the Box2D v3 world behind the scene interface of
  * bench/scenes.h: one body and one shape per scene body, stepped by
  * b2World_Step(dt, subStepCount) on one thread (workerCount 1, no task
- * system: v3 then runs its parallel loops inline).
+ * system: v3 then runs its parallel loops inline), or with
+ * scene_config.workers > 1 on that many threads of v3's own scheduler.
  *
  * Every file of bench/box2d3/ is compiled once per Box2D v3 build (scalar,
  * SSE2, AVX2) with B3_SUFFIX naming the build; the Makefile links them with
@@ -112,7 +113,8 @@ static void *b3_create(const scene_def *def, const scene_config *cfg) {
     b2WorldDef wd = b2DefaultWorldDef();
     wd.gravity = v2(def->gx, def->gy);
     wd.enableSleep = def->sleep != 0;
-    wd.workerCount = 1;
+    /* more than one: v3's own scheduler (no task callbacks given) */
+    wd.workerCount = cfg->workers > 1 ? cfg->workers : 1;
     bw->world = b2CreateWorld(&wd);
     bw->dt = (float)cfg->dt;
     bw->sub_steps = cfg->sub_steps > 0 ? cfg->sub_steps : 1;
