@@ -195,7 +195,7 @@ typedef struct SxPhysicsSettings {
      *  that already sleep asleep until something touches or moves them. */
     bool enable_sleep;
     /** Solver iterations per sub-step, as sx_world_def: velocity (>= 1,
-     *  default 4) and position (>= 0, default 2). */
+     *  default 4) and position (>= 0, default 1). */
     int32_t velocity_iterations;
     int32_t position_iterations;
     /** Continuous collision, as sx_world_def.enable_continuous (fast
