@@ -465,10 +465,12 @@ static void sx_ecs_sync_bodies(ecs_iter_t *it) {
         if (bi->angular_impulse != SX_R(0.0)) {
             sx_body_apply_angular_impulse(w, link->body, bi->angular_impulse);
         }
-        bi->force = sx_v2(SX_R(0.0), SX_R(0.0));
-        bi->torque = SX_R(0.0);
-        bi->impulse = sx_v2(SX_R(0.0), SX_R(0.0));
-        bi->angular_impulse = SX_R(0.0);
+        /* cleared only where set: a resting component's cache line is not
+         * written each step */
+        if (bi->force.x != SX_R(0.0) || bi->force.y != SX_R(0.0)) bi->force = sx_v2_zero();
+        if (bi->torque != SX_R(0.0)) bi->torque = SX_R(0.0);
+        if (bi->impulse.x != SX_R(0.0) || bi->impulse.y != SX_R(0.0)) bi->impulse = sx_v2_zero();
+        if (bi->angular_impulse != SX_R(0.0)) bi->angular_impulse = SX_R(0.0);
     }
 }
 
@@ -530,21 +532,20 @@ static void sx_ecs_copy_out(ecs_iter_t *it) {
     int32_t i;
     for (i = 0; i < it->count; ++i) {
         sx_ecs_link *link = sx_ecs_find(st, it->entities[i]);
-        sx_xform xf;
-        if (link == NULL || !sx_body_is_valid(w, link->body)) continue;
-        xf = sx_body_get_transform(w, link->body);
-        if (xf.q.c != link->rotation.c || xf.q.s != link->rotation.s) {
-            link->rotation = xf.q;
-            link->angle = sx_rot_angle(xf.q);
+        sx_body_state state;
+        if (link == NULL || sx_body_get_state(w, link->body, &state) != SX_OK) continue;
+        if (state.transform.q.c != link->rotation.c || state.transform.q.s != link->rotation.s) {
+            link->rotation = state.transform.q;
+            link->angle = sx_rot_angle(state.transform.q);
         }
-        link->position = xf.p;
-        link->velocity = sx_body_get_linear_velocity(w, link->body);
-        link->angular_velocity = sx_body_get_angular_velocity(w, link->body);
+        link->position = state.transform.p;
+        link->velocity = state.linear_velocity;
+        link->angular_velocity = state.angular_velocity;
         t[i].position = link->position;
         t[i].angle = link->angle;
         b[i].velocity = link->velocity;
         b[i].angular_velocity = link->angular_velocity;
-        b[i].awake = sx_body_is_awake(w, link->body);
+        b[i].awake = state.awake;
     }
 }
 

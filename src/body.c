@@ -699,6 +699,25 @@ bool sx_body_is_awake(const sx_world *world, sx_body_id body) {
     return slot >= 0 && world->infos[slot].type != SX_BODY_STATIC && world->sims[slot].awake;
 }
 
+sx_status sx_body_get_state(const sx_world *world, sx_body_id body, sx_body_state *out) {
+    int slot = sx_body_slot(world, body);
+    const sx_body_sim *sim;
+    if (out == NULL) return SX_ERR_INVALID_ARG;
+    if (slot < 0) {
+        out->transform = sx_xform_identity();
+        out->linear_velocity = sx_v2_zero();
+        out->angular_velocity = SX_R(0.0);
+        out->awake = false;
+        return world == NULL ? SX_ERR_INVALID_ARG : SX_ERR_STALE_HANDLE;
+    }
+    sim = &world->sims[slot];
+    out->transform = sim->xf;
+    out->linear_velocity = sim->v;
+    out->angular_velocity = sim->w;
+    out->awake = world->infos[slot].type != SX_BODY_STATIC && sim->awake;
+    return SX_OK;
+}
+
 sx_status sx_body_set_awake(sx_world *world, sx_body_id body, bool awake) {
     int slot;
     sx_body_sim *sim;

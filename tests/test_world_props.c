@@ -135,6 +135,52 @@ static void world_solver_settings_change_at_run_time_as_at_creation(void **state
 
 /* ---- bodies --------------------------------------------------------------------- */
 
+/* sx_body_get_state: the four getters' answers in one call, for a body in
+ * flight, a sleeping one and a static one; a stale handle, a NULL world and
+ * a NULL out get a status (and the stale handle the getters' zeros). */
+static void a_body_state_is_the_getters_answers_in_one_call(void **state) {
+    sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
+    sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5)), ground = sx_box_shape(SX_R(5.0), SX_R(0.5));
+    sx_body_id floor_id, spinner, resting, gone;
+    sx_body_state st;
+    sx_xform xf;
+    int k;
+    (void)state;
+    floor_id = make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-0.5)), &ground, NULL);
+    resting = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-3.0), SX_R(0.5)), &box, NULL);
+    spinner = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(3.0), SX_R(20.0)), &box, NULL);
+    assert_int_equal(sx_body_set_angular_velocity(w, spinner, SX_R(2.0)), SX_OK);
+    steps(w, 90); /* the resting box falls asleep; the spinner is still falling */
+    for (k = 0; k < 3; ++k) {
+        sx_body_id id = k == 0 ? spinner : k == 1 ? resting : floor_id;
+        assert_int_equal(sx_body_get_state(w, id, &st), SX_OK);
+        xf = sx_body_get_transform(w, id);
+        assert_memory_equal(&st.transform, &xf, sizeof xf);
+        assert_true(st.linear_velocity.x == sx_body_get_linear_velocity(w, id).x);
+        assert_true(st.linear_velocity.y == sx_body_get_linear_velocity(w, id).y);
+        assert_true(st.angular_velocity == sx_body_get_angular_velocity(w, id));
+        assert_true(st.awake == sx_body_is_awake(w, id));
+    }
+    assert_int_equal(sx_body_get_state(w, spinner, &st), SX_OK);
+    assert_true(st.awake);
+    assert_true(st.linear_velocity.y < SX_R(-10.0));
+    assert_near(st.angular_velocity, 2.0, 1e-6);
+    assert_int_equal(sx_body_get_state(w, resting, &st), SX_OK);
+    assert_false(st.awake);
+    gone = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(5.0)), &box, NULL);
+    assert_int_equal(sx_body_set_linear_velocity(w, gone, sx_v2(SX_R(1.0), SX_R(2.0))), SX_OK);
+    assert_int_equal(sx_body_destroy(w, gone), SX_OK);
+    assert_int_equal(sx_body_get_state(w, gone, &st), SX_ERR_STALE_HANDLE);
+    assert_true(st.transform.p.x == SX_R(0.0) && st.transform.p.y == SX_R(0.0));
+    assert_true(st.transform.q.c == SX_R(1.0) && st.transform.q.s == SX_R(0.0));
+    assert_true(st.linear_velocity.x == SX_R(0.0) && st.linear_velocity.y == SX_R(0.0));
+    assert_true(st.angular_velocity == SX_R(0.0));
+    assert_false(st.awake);
+    assert_int_equal(sx_body_get_state(NULL, spinner, &st), SX_ERR_INVALID_ARG);
+    assert_int_equal(sx_body_get_state(w, spinner, NULL), SX_ERR_INVALID_ARG);
+    sx_world_destroy(w);
+}
+
 static void a_body_created_disabled_can_be_enabled_and_falls(void **state) {
     sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
     sx_body_def bd = sx_default_body_def();
@@ -506,6 +552,7 @@ int main(void) {
         cmocka_unit_test(bodies_and_colliders_are_listed_in_slot_order_without_the_destroyed),
         cmocka_unit_test(bounds_cover_every_collider_at_the_current_transform),
         cmocka_unit_test(stale_handles_and_null_worlds_are_refused_by_every_setter),
+        cmocka_unit_test(a_body_state_is_the_getters_answers_in_one_call),
     };
     return cmocka_run_group_tests_name("world_props", tests, sx_test_group_setup,
                                        sx_test_group_teardown);

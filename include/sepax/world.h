@@ -665,6 +665,21 @@ SX_API void *sx_body_get_user_data(const sx_world *world, sx_body_id body);
 /** False while the body sleeps (static bodies: always false). */
 SX_API bool sx_body_is_awake(const sx_world *world, sx_body_id body);
 
+/** What a renderer or an ECS copies back after each step, in one call. */
+typedef struct sx_body_state {
+    sx_xform transform;      /**< as sx_body_get_transform */
+    sx_vec2 linear_velocity; /**< as sx_body_get_linear_velocity */
+    sx_real angular_velocity;
+    bool awake; /**< as sx_body_is_awake */
+} sx_body_state;
+
+/** The body's transform, velocities and awake flag: the four getters'
+ *  answers, with one check of the handle. Errors: SX_ERR_INVALID_ARG (NULL
+ *  world or out), SX_ERR_STALE_HANDLE; *out (when not NULL) then holds the
+ *  getters' answers for a stale handle: the identity, zero velocities, not
+ *  awake. */
+SX_API sx_status sx_body_get_state(const sx_world *world, sx_body_id body, sx_body_state *out);
+
 /** Wakes a sleeping dynamic body and its island (awake = true), or puts this
  *  body to sleep now, velocities zeroed (awake = false; it wakes as
  *  documented at sx_world_update_sleep, so a body still touching an awake
