@@ -275,7 +275,8 @@ sx_status sx_create_body(sx_world *world, const sx_body_def *def, sx_body_id *ou
     if (slot < world->impact_body_capacity) {
         memset(&world->impact_bodies[slot], 0, sizeof(world->impact_bodies[slot]));
     }
-    /* nor the energy credit of the body that had the slot */
+    /* nor the energy credit of the body that had the slot (its destroy
+     * ended the groups linked with it) */
     if (slot < world->group_body_capacity) {
         memset(&world->group_bodies[slot], 0, sizeof(world->group_bodies[slot]));
     }
@@ -362,6 +363,9 @@ sx_status sx_destroy_body(sx_world *world, sx_body_id body) {
     }
     info->first_collider = -1;
     info->alive = false;
+    /* the energy guard's groups name its slot: linked again at the next
+     * collide, whatever its contacts look like then */
+    world->groups_linked = false;
     world->bullet_count -= info->bullet ? 1 : 0;
     world->sets_dirty = true;
     info->next_free = -1;

@@ -117,13 +117,9 @@ static int sx_group_root(sx_group_body *gb, int i) {
     return i;
 }
 
-/* Makes every dynamic body of an active contact a member of a group, and
- * the two dynamic bodies of a contact members of the same one. */
-static void sx_groups_build(sx_world *world) {
-    sx_group_body *gb;
+/* Room for the groups of every body slot (groups_ready: there is). */
+static void sx_groups_reserve(sx_world *world) {
     void *p = world->group_bodies;
-    unsigned epoch;
-    int i, side;
     world->groups_ready =
         sx_grow_zeroed(&p, &world->group_body_capacity, world->body_slots, sizeof(sx_group_body));
     world->group_bodies = (sx_group_body *)p;
@@ -131,8 +127,24 @@ static void sx_groups_build(sx_world *world) {
     world->groups_ready = world->groups_ready && sx_grow_array(&p, &world->group_member_capacity,
                                                                world->body_slots, sizeof(int));
     world->group_members = (int *)p;
+    if (!world->groups_ready) {
+        world->group_member_count = 0;
+        world->groups_driven = false;
+        world->groups_linked = false;
+    }
+}
+
+/* Makes every dynamic body of an active contact a member of a group, and
+ * the two dynamic bodies of a contact members of the same one (after
+ * sx_groups_reserve). */
+static void sx_groups_link(sx_world *world) {
+    sx_group_body *gb;
+    void *p;
+    unsigned epoch;
+    int i, side;
     world->group_member_count = 0;
     world->groups_driven = false;
+    world->groups_linked = false;
     if (!world->groups_ready) return;
     gb = world->group_bodies;
     if (++world->group_epoch == 0u) {
@@ -171,6 +183,35 @@ static void sx_groups_build(sx_world *world) {
         int slot = world->group_members[i];
         gb[slot].parent = sx_group_root(gb, slot);
     }
+    /* the solver bodies they came from (named by the same walk) */
+    p = world->group_slots;
+    if (sx_grow_array(&p, &world->group_slot_capacity, world->solver_body_count, sizeof(int))) {
+        world->group_slots = (int *)p;
+        world->group_slot_count = world->solver_body_count;
+        memcpy(world->group_slots, world->solver_slots,
+               (size_t)world->solver_body_count * sizeof(int));
+        world->groups_linked = true;
+    }
+}
+
+static void sx_groups_build(sx_world *world) {
+    sx_groups_reserve(world);
+    sx_groups_link(world);
+}
+
+/* Whether the linked groups still stand for the items a collide's walk just
+ * named: the same solver bodies in the same order as the fill the groups
+ * were linked with (pattern), of the same kinds (kinds), from the same body
+ * slots. The groups are a function of those alone: the items are the
+ * active contacts in order, and the link walks them. (Key-ordered contacts
+ * name the same slots whenever the pattern holds and no body was destroyed,
+ * which ends the groups itself; the slots are compared all the same, at the
+ * cost of one pass over the solver bodies.) */
+static bool sx_groups_stand(const sx_world *world, bool pattern, bool kinds) {
+    return pattern && kinds && world->groups_linked && world->groups_ready &&
+           world->group_slot_count == world->solver_body_count &&
+           memcmp(world->group_slots, world->solver_slots,
+                  (size_t)world->solver_body_count * sizeof(int)) == 0;
 }
 
 /* A contact's group (after sx_groups_build): the root of a dynamic body of
@@ -1413,11 +1454,13 @@ static int sx_min_colour(const sx_world *world) {
  * filled into its slot at once, while its contact is at hand (the start of
  * a solve after a collide; a later fill writes over them if the pattern
  * breaks). */
-static int sx_gather_items(sx_world *world, bool fill, bool *same_out, bool *pattern_out) {
+static int sx_gather_items(sx_world *world, bool fill, bool *same_out, bool *pattern_out,
+                           bool *kinds_out) {
     sx_colour_item *items = world->colour_items;
     int i, n = 0;
     bool same = world->fill_valid && world->fill_serial == world->contact_serial;
     bool pattern = world->fill_valid && world->fill_min_colour == sx_min_colour(world);
+    bool kinds = true;
     for (i = 0; i < world->contact_count; ++i) {
         sx_contact *ct = &world->contacts[i];
         const sx_body_sim *sa = &world->sims[ct->body_a], *sb = &world->sims[ct->body_b];
@@ -1439,8 +1482,10 @@ static int sx_gather_items(sx_world *world, bool fill, bool *same_out, bool *pat
             continue;
         }
         same = false;
-        /* the colours follow from the solver bodies alone */
+        /* the colours follow from the solver bodies alone; the energy
+         * guard's groups from them and the bodies' kinds */
         pattern = pattern && n <= world->fill_count && it->body_a == a && it->body_b == b;
+        kinds = kinds && it->dynamic_a == sa->dynamic && it->dynamic_b == sb->dynamic;
         it->key = ct->key;
         it->contact = i;
         it->part_a = ct->part_a;
@@ -1458,6 +1503,7 @@ static int sx_gather_items(sx_world *world, bool fill, bool *same_out, bool *pat
     }
     *same_out = same;
     *pattern_out = pattern && n == world->fill_count;
+    *kinds_out = kinds;
     return n;
 }
 
@@ -1637,7 +1683,7 @@ static void sx_fill_made(sx_world *world, int n) {
  * lanes of the last gather are kept while every item is unchanged. */
 static bool sx_solver_gather(sx_world *world, bool warm) {
     int n;
-    bool same, pattern = false, collide = false;
+    bool same, pattern = false, collide = false, kinds = false;
     if (!sx_solver_reserve(world)) return false;
     world->solver_bodies[0].v = sx_v2_zero();
     world->solver_bodies[0].w = SX_R(0.0);
@@ -1655,10 +1701,14 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
         same = true;
     } else {
         /* after a collide: the items are filled as the walk goes, which
-         * needs the groups (a cold start without them) */
+         * needs room for the groups (a cold start without it); the groups
+         * are linked after it, unless the last link still stands (a resting
+         * pile's contacts name the same bodies step after step) */
         collide = !(world->fill_valid && world->fill_serial == world->contact_serial);
-        if (collide) sx_groups_build(world);
-        n = sx_gather_items(world, collide, &same, &pattern);
+        if (collide) sx_groups_reserve(world);
+        n = sx_gather_items(world, collide, &same, &pattern, &kinds);
+        if (collide && !sx_groups_stand(world, pattern || (same && n == world->fill_count), kinds))
+            sx_groups_link(world);
     }
     if (same && n == world->fill_count) {
         /* the energy guard's groups follow from the items too: kept, unless
@@ -1880,6 +1930,7 @@ void sx_contacts_free(sx_world *world) {
     sx_free(world->body_colour, (size_t)world->body_colour_capacity * sizeof(int));
     sx_free(world->group_bodies, (size_t)world->group_body_capacity * sizeof(sx_group_body));
     sx_free(world->group_members, (size_t)world->group_member_capacity * sizeof(int));
+    sx_free(world->group_slots, (size_t)world->group_slot_capacity * sizeof(int));
     sx_free(world->impact_bodies, (size_t)world->impact_body_capacity * sizeof(sx_impact_body));
     sx_free(world->impact_adjacency, (size_t)world->impact_adjacency_capacity * sizeof(int));
     sx_free(world->impact_heap, (size_t)world->impact_heap_capacity * sizeof(int));

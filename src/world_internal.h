@@ -142,6 +142,13 @@ struct sx_world {
     unsigned group_epoch;
     bool groups_ready;
     bool groups_driven; /* some active contact has a kinematic body */
+    /* the solver slots (solver_slots[1 ..]) the groups were last linked
+     * from, and whether those groups still stand (nothing but a collide's
+     * fill whose items name the same bodies, of the same kinds, in the same
+     * order, keeps them) */
+    int *group_slots;
+    int group_slot_count, group_slot_capacity;
+    bool groups_linked;
     sx_impact_body *impact_bodies;      /* per body slot */
     int *impact_adjacency;              /* contact indices grouped by body */
     int *impact_heap;                   /* contact indices ordered by (time, index) */

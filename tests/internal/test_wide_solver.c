@@ -273,11 +273,78 @@ static void kept_fill_ends_when_the_solver_bodies_change(void **state) {
         sx_world_destroy(s[n].w);
 }
 
+/* The energy guard's groups, kept from collide to collide while the items
+ * name the same bodies of the same kinds, against groups linked afresh at
+ * every collide: the same members, roots and credits, and the same bits,
+ * while bodies change between steps (a type and back, a body destroyed and
+ * another made in its slot, a density) and the pile rests in between. */
+static void kept_energy_groups_match_relinked_ones(void **state) {
+    scene s[2];
+    int k, n, i;
+    (void)state;
+    for (n = 0; n < 2; ++n)
+        build(&s[n]);
+    for (k = 0; k < 80; ++k) {
+        for (n = 0; n < 2; ++n) {
+            sx_world *w = s[n].w;
+            if (k == 20) {
+                assert_int_equal(sx_body_set_type(w, s[n].ids[45], SX_BODY_KINEMATIC), SX_OK);
+                assert_int_equal(sx_body_set_linear_velocity(w, s[n].ids[45],
+                                                             sx_v2(SX_R(0.2), SX_R(0.0))),
+                                 SX_OK);
+            }
+            if (k == 28) assert_int_equal(sx_body_set_type(w, s[n].ids[45], SX_BODY_DYNAMIC), SX_OK);
+            if (k == 36) {
+                sx_body_def bd = sx_default_body_def();
+                sx_collider_def cd = sx_default_collider_def();
+                sx_vec2 p = sx_body_get_position(w, s[n].ids[50]);
+                assert_int_equal(sx_destroy_body(w, s[n].ids[50]), SX_OK);
+                bd.type = SX_BODY_DYNAMIC;
+                bd.position = p;
+                cd.shape = sx_box_shape(SX_R(0.5), SX_R(0.5));
+                assert_int_equal(sx_create_body(w, &bd, &s[n].ids[50]), SX_OK);
+                assert_int_equal(sx_body_add_collider(w, s[n].ids[50], &cd, NULL), SX_OK);
+            }
+            if (k == 44) assert_int_equal(sx_collider_set_density(w, s[n].cols[30], SX_R(2.0)), SX_OK);
+            /* world 1 links its groups afresh at every collide */
+            if (n == 1) w->groups_linked = false;
+            assert_int_equal(sx_world_begin_step(w, DT), SX_OK);
+            assert_int_equal(sx_world_collide(w), SX_OK);
+            for (i = 0; i < SUB; ++i) {
+                sx_real h = DT / (sx_real)SUB;
+                assert_int_equal(sx_world_apply_forces(w, h), SX_OK);
+                assert_int_equal(sx_world_solve(w, h), SX_OK);
+                assert_int_equal(sx_world_integrate(w, h), SX_OK);
+                assert_int_equal(sx_world_separate(w, h), SX_OK);
+            }
+            assert_int_equal(sx_world_continuous(w), SX_OK);
+            assert_int_equal(sx_world_clear_forces(w), SX_OK);
+            assert_int_equal(sx_world_update_sleep(w, DT), SX_OK);
+        }
+        same_state(&s[0], &s[1]);
+        assert_int_equal(s[0].w->group_member_count, s[1].w->group_member_count);
+        assert_memory_equal(s[0].w->group_members, s[1].w->group_members,
+                            (size_t)s[0].w->group_member_count * sizeof(int));
+        for (i = 0; i < s[0].w->group_member_count; ++i) {
+            int slot = s[0].w->group_members[i];
+            const sx_group_body *a = &s[0].w->group_bodies[slot], *b = &s[1].w->group_bodies[slot];
+            assert_int_equal(a->parent, b->parent);
+            assert_memory_equal(&a->credit, &b->credit, sizeof(a->credit));
+        }
+        assert_true(s[0].w->groups_driven == s[1].w->groups_driven);
+    }
+    /* world 0 kept its groups across most collides, world 1 never did */
+    assert_true(s[1].w->group_epoch - s[0].w->group_epoch > 40u);
+    for (n = 0; n < 2; ++n)
+        sx_world_destroy(s[n].w);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(wide_and_scalar_passes_agree_bit_for_bit),
         cmocka_unit_test(wide_and_scalar_passes_agree_with_restitution),
         cmocka_unit_test(kept_fill_ends_when_the_solver_bodies_change),
+        cmocka_unit_test(kept_energy_groups_match_relinked_ones),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
