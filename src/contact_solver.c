@@ -233,8 +233,7 @@ static sx_vec2 sx_driven_velocity(const sx_world *world, int slot, sx_vec2 r) {
 /* Per group, at its root: f = the energy the warm start and the
  * iterations gave the group, a = the kinetic energy of its velocity changes
  * alone (f is s^2 a + s (f - a) for the impulses scaled by s), and the sums
- * of its bodies' credits and masses. Returns whether some group has f above
- * its credit. The energy is the one the step conserves: symplectic Euler
+ * of its bodies' credits and masses. The energy is the one the step conserves: symplectic Euler
  * (v += h acc, then x += h v) keeps E = KE - m acc.x + h m acc.v / 2 exactly
  * for a constant acceleration acc (gravity x gravity scale + force / mass;
  * likewise h torque w / 2 for a torque), not KE - m acc.x. So a velocity
@@ -243,9 +242,8 @@ static sx_vec2 sx_driven_velocity(const sx_world *world, int slot, sx_vec2 r) {
  * the solver holds at rest changes nothing (the support takes back what the
  * kick of gravity gave), as it should. The work of kinematic bodies is taken
  * off: a kinematic body that pushes is a source the guard must not stop. */
-static bool sx_groups_measure(sx_world *world, sx_real h) {
+static void sx_groups_measure(sx_world *world, sx_real h) {
     sx_group_body *gb = world->group_bodies;
-    bool any = false;
     int i, k;
     for (i = 0; i < world->group_member_count; ++i) {
         sx_group_body *g = &gb[world->group_members[i]];
@@ -290,11 +288,6 @@ static bool sx_groups_measure(sx_world *world, sx_real h) {
         }
         root->credit_sum += g->credit;
     }
-    for (i = 0; i < world->group_member_count && !any; ++i) {
-        const sx_group_body *root = &gb[gb[world->group_members[i]].parent];
-        any = root->f > root->credit_sum;
-    }
-    return any;
 }
 
 /* The factor for a group's impulses: 1 when f is within the credit C, else
@@ -310,34 +303,25 @@ static sx_real sx_group_factor(const sx_group_body *root) {
     return s >= SX_R(0.0) && s < SX_R(1.0) ? s : SX_R(0.0);
 }
 
-/* Scales the impulses of every group whose f is above its credit, and its
- * bodies' velocity changes with them, by the group's factor; then shares out
- * each group's credit left (what it had, less what it got) among its bodies
- * by mass. */
-static void sx_groups_settle(sx_world *world, bool scale) {
+/* Scales the velocity changes of every group whose f is above its credit by
+ * the group's factor and shares out each group's credit left (what it had,
+ * less what it got) among its bodies by mass; then, if some group was
+ * scaled, its contacts' impulses (the two touch different data, so the
+ * bodies' walk goes first and tells whether the contacts' is needed). */
+static void sx_groups_settle(sx_world *world) {
     sx_group_body *gb = world->group_bodies;
+    bool scaled = false;
     int i, k;
-    for (i = 0; i < world->contact_count && scale; ++i) {
-        sx_contact *c = &world->contacts[i];
-        sx_real factor;
-        if (!sx_contact_is_active(world, c)) continue;
-        factor = sx_group_factor(&gb[sx_group_of(world, c)]);
-        if (factor == SX_R(1.0)) continue;
-        world->fill_fresh = false; /* the kept fill's impulses are stale */
-        for (k = 0; k < c->count; ++k) {
-            c->points[k].normal_impulse *= factor;
-            c->points[k].tangent_impulse *= factor;
-        }
-    }
     for (i = 0; i < world->group_member_count; ++i) {
         int slot = world->group_members[i];
         sx_body_sim *b = &world->sims[slot];
         sx_group_body *g = &gb[slot];
         const sx_group_body *root = &gb[g->parent];
-        sx_real factor = scale ? sx_group_factor(root) : SX_R(1.0), left;
+        sx_real factor = sx_group_factor(root), left;
         if (factor == SX_R(1.0)) {
             left = root->credit_sum - root->f;
         } else {
+            scaled = true;
             left = SX_R(0.0);          /* all of it spent */
             if (factor == SX_R(0.0)) { /* exactly the velocities before */
                 b->v = g->v;
@@ -353,10 +337,24 @@ static void sx_groups_settle(sx_world *world, bool scale) {
                         : SX_R(0.0);
         if (!sx_is_finite(g->credit)) g->credit = SX_R(0.0);
     }
+    for (i = 0; i < world->contact_count && scaled; ++i) {
+        sx_contact *c = &world->contacts[i];
+        sx_real factor;
+        if (!sx_contact_is_active(world, c)) continue;
+        factor = sx_group_factor(&gb[sx_group_of(world, c)]);
+        if (factor == SX_R(1.0)) continue;
+        world->fill_fresh = false; /* the kept fill's impulses are stale */
+        for (k = 0; k < c->count; ++k) {
+            c->points[k].normal_impulse *= factor;
+            c->points[k].tangent_impulse *= factor;
+        }
+    }
 }
 
 void sx_contacts_energy_guard(sx_world *world, sx_real h) {
-    if (world->groups_ready) sx_groups_settle(world, sx_groups_measure(world, h));
+    if (!world->groups_ready) return;
+    sx_groups_measure(world, h);
+    sx_groups_settle(world);
 }
 
 /* The normal effective masses of contact c's points, and its block, from
