@@ -1483,7 +1483,9 @@ static int sx_gather_items(sx_world *world, bool fill, bool *same_out, bool *pat
         /* the colours follow from the solver bodies alone; the energy
          * guard's groups from them and the bodies' kinds */
         pattern = pattern && n <= world->fill_count && it->body_a == a && it->body_b == b;
-        kinds = kinds && it->dynamic_a == sa->dynamic && it->dynamic_b == sb->dynamic;
+        /* (read only where the pattern holds: past the fill's items they
+         * were never written) */
+        kinds = kinds && pattern && it->dynamic_a == sa->dynamic && it->dynamic_b == sb->dynamic;
         it->key = ct->key;
         it->contact = i;
         it->part_a = ct->part_a;
