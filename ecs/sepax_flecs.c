@@ -549,16 +549,14 @@ static void sx_ecs_copy_out(ecs_iter_t *it) {
     }
 }
 
+static bool sx_ecs_contact_before(const SxContact *a, const SxContact *b) {
+    return a->entity_a < b->entity_a || (a->entity_a == b->entity_a && a->entity_b < b->entity_b);
+}
+
 static int sx_ecs_contact_cmp(const void *pa, const void *pb) {
     const SxContact *a = (const SxContact *)pa;
     const SxContact *b = (const SxContact *)pb;
-    if (a->entity_a != b->entity_a) return a->entity_a < b->entity_a ? -1 : 1;
-    if (a->entity_b != b->entity_b) return a->entity_b < b->entity_b ? -1 : 1;
-    return 0;
-}
-
-static bool sx_ecs_contact_before(const SxContact *a, const SxContact *b) {
-    return a->entity_a < b->entity_a || (a->entity_a == b->entity_a && a->entity_b < b->entity_b);
+    return sx_ecs_contact_before(a, b) ? -1 : sx_ecs_contact_before(b, a) ? 1 : 0;
 }
 
 /* Sorts items[0, n) by (entity_a, entity_b), stable, through scratch (n

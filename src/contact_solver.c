@@ -117,7 +117,8 @@ static int sx_group_root(sx_group_body *gb, int i) {
     return i;
 }
 
-/* Room for the groups of every body slot (groups_ready: there is). */
+/* Room for the groups of every body slot (groups_ready: there is; without
+ * it, sx_groups_link leaves no groups). */
 static void sx_groups_reserve(sx_world *world) {
     void *p = world->group_bodies;
     world->groups_ready =
@@ -127,11 +128,6 @@ static void sx_groups_reserve(sx_world *world) {
     world->groups_ready = world->groups_ready && sx_grow_array(&p, &world->group_member_capacity,
                                                                world->body_slots, sizeof(int));
     world->group_members = (int *)p;
-    if (!world->groups_ready) {
-        world->group_member_count = 0;
-        world->groups_driven = false;
-        world->groups_linked = false;
-    }
 }
 
 /* Makes every dynamic body of an active contact a member of a group, and
@@ -233,10 +229,11 @@ static sx_vec2 sx_driven_velocity(const sx_world *world, int slot, sx_vec2 r) {
 /* Per group, at its root: f = the energy the warm start and the
  * iterations gave the group, a = the kinetic energy of its velocity changes
  * alone (f is s^2 a + s (f - a) for the impulses scaled by s), and the sums
- * of its bodies' credits and masses. The energy is the one the step conserves: symplectic Euler
- * (v += h acc, then x += h v) keeps E = KE - m acc.x + h m acc.v / 2 exactly
- * for a constant acceleration acc (gravity x gravity scale + force / mass;
- * likewise h torque w / 2 for a torque), not KE - m acc.x. So a velocity
+ * of its bodies' credits and masses. The energy is the one the step
+ * conserves: symplectic Euler (v += h acc, then x += h v) keeps E = KE - m
+ * acc.x + h m acc.v / 2 exactly for a constant acceleration acc (gravity x
+ * gravity scale + force / mass; likewise h torque w / 2 for a torque), not
+ * KE - m acc.x. So a velocity
  * change dv from the solver changes E by (v1 - v0).(v1 + v0) m / 2 (free of
  * the cancellation of a difference of squares) less h m acc.dv / 2: a body
  * the solver holds at rest changes nothing (the support takes back what the
@@ -1707,8 +1704,7 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
         collide = !(world->fill_valid && world->fill_serial == world->contact_serial);
         if (collide) sx_groups_reserve(world);
         n = sx_gather_items(world, collide, &same, &pattern, &kinds);
-        if (collide && !sx_groups_stand(world, pattern || (same && n == world->fill_count), kinds))
-            sx_groups_link(world);
+        if (collide && !sx_groups_stand(world, pattern, kinds)) sx_groups_link(world);
     }
     if (same && n == world->fill_count) {
         /* the energy guard's groups follow from the items too: kept, unless

@@ -400,14 +400,13 @@ static int clip_face(const sx_core *ref, int *face, const sx_core *inc, sx_real 
 
 /* The two argument orders of a same-type pair compute the same separations
  * up to rounding, a few ulps of the coordinates: a signed gap farther from
- * zero than this (the touch rescue margin of collide.c plus a wide rounding
- * allowance) gets the same touch answer in both orders. */
-#define SX_ORDER_RESCUE SX_TOUCH_RESCUE_MARGIN
+ * zero than the touch rescue margin plus this wide rounding allowance gets
+ * the same touch answer in both orders. */
 #define SX_ORDER_ROUNDING (SX_R(1024.0) * SX_REAL_EPSILON)
 
 static bool gap_is_clear(const sx_core *a, const sx_core *b, const sx_sat *sat, sx_real gap) {
     sx_real scale = sx_maxr(sat_pair_scale(a, b, sat), a->radius + b->radius);
-    return sx_magnitude(gap) > SX_ORDER_RESCUE + SX_ORDER_ROUNDING * scale;
+    return sx_magnitude(gap) > SX_TOUCH_RESCUE_MARGIN + SX_ORDER_ROUNDING * scale;
 }
 
 static SX_ALWAYS_INLINE int core_manifold(const sx_core *a, const sx_core *b, sx_real margin,

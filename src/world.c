@@ -1089,9 +1089,14 @@ static bool sx_bullet_pair_may_meet(const sx_world *world, const sx_collider *ca
                          ca->bound_radius + cb->bound_radius + world->margin);
 }
 
+/* What sx_pair_manifold answers besides a point count: a compound pair (one
+ * manifold per part pair, sx_collide_parts), and in pair_counts a pair no
+ * task range reached. */
+#define SX_PAIR_PARTS (-1)
+#define SX_PAIR_NOT_FOUND (-2)
+
 /* The manifold of broadphase pair `key` (reads the world only): its point
- * count, 0 for a pair that gets no contact, -1 for a compound pair (one
- * manifold per part pair: sx_collide_parts). */
+ * count, 0 for a pair that gets no contact, or SX_PAIR_PARTS. */
 static int sx_pair_manifold(const sx_world *world, uint64_t key, sx_manifold *m) {
     int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu);
     const sx_collider *ca = &world->colliders[ia], *cb = &world->colliders[ib];
@@ -1099,7 +1104,7 @@ static int sx_pair_manifold(const sx_world *world, uint64_t key, sx_manifold *m)
         !sx_bullet_pair_may_meet(world, ca, cb)) {
         return 0;
     }
-    if (ca->part_count > 0 || cb->part_count > 0) return -1;
+    if (ca->part_count > 0 || cb->part_count > 0) return SX_PAIR_PARTS;
     return sx_collide_world(&ca->shape, world->sims[ca->body].xf, &cb->shape,
                             world->sims[cb->body].xf, world->margin + ca->reach + cb->reach, m);
 }
@@ -1111,13 +1116,13 @@ static sx_status sx_collide_pair(sx_world *world, int i, uint64_t key, int old_b
                                  int old_end) {
     sx_manifold local;
     const sx_manifold *m = &local;
-    int n = world->pairs_found ? world->pair_counts[i] : -2;
-    if (n == -2) {
+    int n = world->pairs_found ? world->pair_counts[i] : SX_PAIR_NOT_FOUND;
+    if (n == SX_PAIR_NOT_FOUND) {
         n = sx_pair_manifold(world, key, &local);
     } else if (n > 0) {
         m = &world->pair_manifolds[i];
     }
-    if (n < 0) return sx_collide_parts(world, key, old_begin, old_end);
+    if (n == SX_PAIR_PARTS) return sx_collide_parts(world, key, old_begin, old_end);
     if (n == 0) return SX_OK;
     return sx_add_contact(world, key, 0, 0, m, old_begin, old_end);
 }
@@ -1140,7 +1145,7 @@ static void sx_pairs_task(int start, int end, int worker, void *context) {
 
 /* With a job system: every pair's manifold, in parallel, before the walk.
  * Without room for them the walk collides each pair itself, as it does a
- * pair no range reached (pair_counts -2). */
+ * pair no range reached (SX_PAIR_NOT_FOUND). */
 static void sx_find_pairs(sx_world *world) {
     const sx_world_def *d = &world->def;
     int n = world->bp.pair_count, i;
@@ -1154,7 +1159,7 @@ static void sx_find_pairs(sx_world *world) {
     if (!sx_grow_array(&p, &world->pair_count_capacity, n, sizeof(int))) return;
     world->pair_counts = (int *)p;
     for (i = 0; i < n; ++i)
-        world->pair_counts[i] = -2;
+        world->pair_counts[i] = SX_PAIR_NOT_FOUND;
     task = d->enqueue_task(sx_pairs_task, n, SX_PAIRS_PER_RANGE, world, d->user_task_context);
     if (task != NULL) d->finish_task(task, d->user_task_context);
     world->pairs_found = true;

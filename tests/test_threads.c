@@ -190,35 +190,26 @@ static void two_threads_share_a_thread_safe_custom_allocator(void **state) {
 /* A pyramid of base 20 on the ground (about 600 broadphase pairs, above the
  * fewest worth a task), an L-shaped compound dropped on it (its pairs are
  * collided in the walk) and a box whose filter lets it pass through the
- * boxes (pairs that make no contact). */
-static sx_world *make_job_scene(const sx_world_def *wd, sx_body_id *ids, int *count) {
+ * boxes (pairs that make no contact). Built and stepped on the test's own
+ * thread, so it asserts as it goes. */
+#define JOB_BODIES 212
+#define JOB_STEPS 150
+
+static sx_world *make_job_scene(const sx_world_def *wd, sx_body_id *ids) {
     sx_body_def bd = sx_default_body_def();
     sx_collider_def cd = sx_default_collider_def();
     sx_compound_part parts[2];
     sx_compound l_shape;
-    sx_body_id ground;
     sx_world *w = sx_world_create(wd);
     int i, j, n = 0;
-    if (w == NULL) return NULL;
-    bd.position = sx_v2(SX_R(0.0), SX_R(-1.0));
-    cd.shape = sx_box_shape(SX_R(40.0), SX_R(1.0));
-    if (sx_create_body(w, &bd, &ground) != SX_OK ||
-        sx_body_add_collider(w, ground, &cd, NULL) != SX_OK) {
-        sx_world_destroy(w);
-        return NULL;
-    }
-    bd.type = SX_BODY_DYNAMIC;
-    cd.shape = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    assert_non_null(w);
+    sx_test_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-1.0)),
+                 sx_box_shape(SX_R(40.0), SX_R(1.0)), NULL);
     for (i = 0; i < 20; ++i) {
         for (j = i; j < 20; ++j) {
-            bd.position = sx_v2((sx_real)(i + 1) * SX_R(0.5) + (sx_real)(j - i) - SX_R(10.0),
-                                (sx_real)(2 * i + 1) * SX_R(0.5));
-            if (sx_create_body(w, &bd, &ids[n]) != SX_OK ||
-                sx_body_add_collider(w, ids[n], &cd, NULL) != SX_OK) {
-                sx_world_destroy(w);
-                return NULL;
-            }
-            ++n;
+            sx_vec2 p = sx_v2((sx_real)(i + 1) * SX_R(0.5) + (sx_real)(j - i) - SX_R(10.0),
+                              (sx_real)(2 * i + 1) * SX_R(0.5));
+            ids[n++] = sx_test_body(w, SX_BODY_DYNAMIC, p, sx_box_shape(SX_R(0.5), SX_R(0.5)), NULL);
         }
     }
     parts[0] = sx_compound_part_make(sx_box_shape(SX_R(1.0), SX_R(0.25)), sx_xform_identity());
@@ -226,42 +217,26 @@ static sx_world *make_job_scene(const sx_world_def *wd, sx_body_id *ids, int *co
                                      sx_xform_make(sx_v2(SX_R(0.75), SX_R(0.75)), SX_R(0.0)));
     l_shape.parts = parts;
     l_shape.count = 2;
+    bd.type = SX_BODY_DYNAMIC;
     bd.position = sx_v2(SX_R(-3.0), SX_R(23.0));
-    if (sx_create_body(w, &bd, &ids[n]) != SX_OK ||
-        sx_body_add_compound(w, ids[n], &l_shape, &cd, NULL) != SX_OK) {
-        sx_world_destroy(w);
-        return NULL;
-    }
-    ++n;
-    bd.position = sx_v2(SX_R(2.0), SX_R(25.0));
+    assert_int_equal(sx_create_body(w, &bd, &ids[n]), SX_OK);
+    assert_int_equal(sx_body_add_compound(w, ids[n++], &l_shape, &cd, NULL), SX_OK);
+    cd.shape = sx_box_shape(SX_R(0.5), SX_R(0.5));
     cd.filter.mask = 0; /* meets nothing */
-    if (sx_create_body(w, &bd, &ids[n]) != SX_OK ||
-        sx_body_add_collider(w, ids[n], &cd, NULL) != SX_OK) {
-        sx_world_destroy(w);
-        return NULL;
-    }
-    *count = n + 1;
+    ids[n++] = sx_test_body_turned(w, SX_BODY_DYNAMIC, sx_v2(SX_R(2.0), SX_R(25.0)), SX_R(0.0), &cd);
+    assert_int_equal(n, JOB_BODIES);
     return w;
 }
 
-#define JOB_BODIES 212
-#define JOB_STEPS 150
-
-/* The digest of the job scene after JOB_STEPS steps with these settings;
- * 0 when something failed. */
+/* The digest of the job scene after JOB_STEPS steps with these settings. */
 static uint64_t run_job_scene(const sx_world_def *wd) {
     sx_body_id ids[JOB_BODIES];
-    int n = 0, s;
+    sx_world *w = make_job_scene(wd, ids);
     uint64_t h;
-    sx_world *w = make_job_scene(wd, ids, &n);
-    if (w == NULL || n != JOB_BODIES) return 0;
-    for (s = 0; s < JOB_STEPS; ++s) {
-        if (sx_world_step(w, DT) != SX_OK) {
-            sx_world_destroy(w);
-            return 0;
-        }
-    }
-    h = digest(w, ids, n);
+    int s;
+    for (s = 0; s < JOB_STEPS; ++s)
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+    h = digest(w, ids, JOB_BODIES);
     sx_world_destroy(w);
     return h;
 }
@@ -321,7 +296,6 @@ static void a_job_system_steps_a_world_to_the_same_bits(void **state) {
     (void)state;
     wd.enable_sleep = false;
     alone = run_job_scene(&wd);
-    assert_true(alone != 0);
     for (workers = 2; workers <= 3; ++workers) {
         sx_world_def pd = wd;
         assert_true(sx_task_pool_start(&pool.pool, workers));

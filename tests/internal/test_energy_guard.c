@@ -23,9 +23,7 @@
 
 static void a_scaled_group_scales_its_velocity_changes_and_impulses_by_one_factor(void **state) {
     sx_world_def wd = sx_default_world_def();
-    sx_body_def bd = sx_default_body_def();
-    sx_collider_def cd = sx_default_collider_def();
-    sx_body_id ground, boxes[BOXES];
+    sx_body_id boxes[BOXES];
     sx_world *w;
     sx_real h = DT / (sx_real)wd.sub_steps, impulse[MAX_POINTS], factor = SX_R(-1.0);
     sx_vec2 before[BOXES], was[BOXES];
@@ -34,16 +32,11 @@ static void a_scaled_group_scales_its_velocity_changes_and_impulses_by_one_facto
     wd.enable_sleep = false;
     w = sx_world_create(&wd);
     assert_non_null(w);
-    bd.position = sx_v2(SX_R(0.0), SX_R(-1.0));
-    cd.shape = sx_box_shape(SX_R(5.0), SX_R(1.0));
-    assert_int_equal(sx_create_body(w, &bd, &ground), SX_OK);
-    assert_int_equal(sx_body_add_collider(w, ground, &cd, NULL), SX_OK);
-    bd.type = SX_BODY_DYNAMIC;
-    cd.shape = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_test_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-1.0)),
+                 sx_box_shape(SX_R(5.0), SX_R(1.0)), NULL);
     for (i = 0; i < BOXES; ++i) {
-        bd.position = sx_v2(SX_R(0.0), SX_R(0.5) + (sx_real)i);
-        assert_int_equal(sx_create_body(w, &bd, &boxes[i]), SX_OK);
-        assert_int_equal(sx_body_add_collider(w, boxes[i], &cd, NULL), SX_OK);
+        boxes[i] = sx_test_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.5) + (sx_real)i),
+                                sx_box_shape(SX_R(0.5), SX_R(0.5)), NULL);
         slot[i] = (int)boxes[i].index;
     }
     for (i = 0; i < 30; ++i)
@@ -103,5 +96,6 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(a_scaled_group_scales_its_velocity_changes_and_impulses_by_one_factor),
     };
-    return cmocka_run_group_tests(tests, NULL, NULL);
+    return cmocka_run_group_tests_name("energy guard", tests, sx_test_group_setup,
+                                       sx_test_group_teardown);
 }

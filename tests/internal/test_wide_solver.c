@@ -295,15 +295,10 @@ static void kept_energy_groups_match_relinked_ones(void **state) {
             }
             if (k == 28) assert_int_equal(sx_body_set_type(w, s[n].ids[45], SX_BODY_DYNAMIC), SX_OK);
             if (k == 36) {
-                sx_body_def bd = sx_default_body_def();
-                sx_collider_def cd = sx_default_collider_def();
                 sx_vec2 p = sx_body_get_position(w, s[n].ids[50]);
                 assert_int_equal(sx_destroy_body(w, s[n].ids[50]), SX_OK);
-                bd.type = SX_BODY_DYNAMIC;
-                bd.position = p;
-                cd.shape = sx_box_shape(SX_R(0.5), SX_R(0.5));
-                assert_int_equal(sx_create_body(w, &bd, &s[n].ids[50]), SX_OK);
-                assert_int_equal(sx_body_add_collider(w, s[n].ids[50], &cd, NULL), SX_OK);
+                s[n].ids[50] = sx_test_body(w, SX_BODY_DYNAMIC, p,
+                                            sx_box_shape(SX_R(0.5), SX_R(0.5)), NULL);
             }
             if (k == 44) assert_int_equal(sx_collider_set_density(w, s[n].cols[30], SX_R(2.0)), SX_OK);
             /* world 1 links its groups afresh at every collide */
