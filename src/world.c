@@ -40,6 +40,7 @@ sx_world_def sx_default_world_def(void) {
     d.contact_damping_ratio = SX_R(10.0);
     d.restitution_threshold = SX_R(1.0);
     d.speculative_slops = SX_R(4.0);
+    d.manifold_keep_slops = SX_R(0.25);
     d.length_units_per_meter = SX_LENGTH_UNITS_PER_METER;
     d.body_capacity = 0;
     d.enable_sleep = true;
@@ -76,6 +77,8 @@ sx_status sx_world_def_validate(const sx_world_def *d, const char **field) {
         bad = "restitution_threshold";
     } else if (!sx_is_finite(d->speculative_slops)) {
         bad = "speculative_slops";
+    } else if (!sx_is_finite(d->manifold_keep_slops)) {
+        bad = "manifold_keep_slops";
     } else if (!sx_is_finite(d->length_units_per_meter)) {
         bad = "length_units_per_meter";
     } else if (!sx_is_finite(d->sleep_linear_speed)) {
@@ -104,6 +107,8 @@ sx_status sx_world_def_validate(const sx_world_def *d, const char **field) {
             bad = "restitution_threshold";
         } else if (d->speculative_slops < SX_R(0.0)) {
             bad = "speculative_slops";
+        } else if (!(d->manifold_keep_slops >= SX_R(0.0) && d->manifold_keep_slops <= SX_R(1.0))) {
+            bad = "manifold_keep_slops";
         } else if (!(d->length_units_per_meter > SX_R(0.0))) {
             bad = "length_units_per_meter";
         } else if (d->body_capacity < 0) {
@@ -977,7 +982,7 @@ static sx_status sx_thaw_contacts(sx_world *world) {
  * warm-starting impulses against the pair's old contacts
  * old_contacts[old_begin, old_end) with the same parts. */
 static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, const sx_manifold *m,
-                                int old_begin, int old_end) {
+                                int old_begin, int old_end, const sx_kept_manifold *kept) {
     int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), k;
     const sx_collider *ca = &world->colliders[ia], *cb = &world->colliders[ib];
     const sx_body_sim *ba = &world->sims[ca->body], *bb = &world->sims[cb->body];
@@ -1028,6 +1033,10 @@ static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, c
         p->id = mp->id;
         sx_match_point(p, old);
     }
+    if (kept != NULL)
+        c->kept = *kept;
+    else
+        c->kept.valid = false;
     sx_contact_prepare(world, c);
     if (c->restitution > SX_R(0.0)) world->bouncy_contacts++;
     return SX_OK;
@@ -1061,7 +1070,7 @@ static sx_status sx_collide_parts(sx_world *world, uint64_t key, int old_begin, 
                                  world->margin + ca->reach + cb->reach, &m) <= 0) {
                 continue;
             }
-            s = sx_add_contact(world, key, i, j, &m, old_begin, old_end);
+            s = sx_add_contact(world, key, i, j, &m, old_begin, old_end, NULL);
             if (s != SX_OK) return s;
         }
     }
@@ -1091,40 +1100,136 @@ static bool sx_bullet_pair_may_meet(const sx_world *world, const sx_collider *ca
 
 /* What sx_pair_manifold answers besides a point count: a compound pair (one
  * manifold per part pair, sx_collide_parts), and in pair_counts a pair no
- * task range reached. */
+ * task range reached; a count with SX_PAIR_KEPT set came from the pair's
+ * kept manifold. */
 #define SX_PAIR_PARTS (-1)
 #define SX_PAIR_NOT_FOUND (-2)
+#define SX_PAIR_KEPT 0x100
+
+/* Pair (xa, xb, margin)'s manifold from the kept manifold of its old
+ * contact, while B has moved less than the keep tolerance relative to A
+ * since it was found: its points follow B's half of the move, its depths
+ * B's move along the normal. False when it moved farther, or turned, or a
+ * one-point contact's margin grew past what it was found with by more than
+ * the tolerance (a second point could have come within reach; two points
+ * are all a manifold holds). */
+static bool sx_kept_manifold_now(const sx_world *world, const sx_contact *old, sx_xform xa,
+                                 sx_xform xb, sx_real margin, sx_manifold *m) {
+    const sx_kept_manifold *k = &old->kept;
+    /* a turn of B is held to the angle that moves a point a metre away as far */
+    sx_real tol = world->def.manifold_keep_slops * world->linear_slop;
+    sx_xform rel;
+    sx_rot turn;
+    int j;
+    if (!k->valid || !(tol > SX_R(0.0)) || (old->count < 2 && !(margin <= k->margin + tol)))
+        return false;
+    rel = sx_xform_inv_mul(xa, xb);
+    turn = sx_rot_inv_mul(k->rel.q, rel.q);
+    if (!(turn.c > SX_R(0.0) && sx_absr(turn.s) * world->def.length_units_per_meter <= tol))
+        return false;
+    for (j = 0; j < old->count; ++j) {
+        sx_vec2 b0 = sx_mul_sub(k->point[j], SX_R(0.5) * k->depth[j], k->normal);
+        sx_vec2 d = sx_sub(sx_xform_point(rel, k->on_b[j]), b0);
+        if (!(sx_dot(d, d) <= tol * tol)) return false;
+        m->points[j].point = sx_xform_point(xa, sx_mul_add(k->point[j], SX_R(0.5), d));
+        m->points[j].depth = k->depth[j] - sx_dot(d, k->normal);
+        m->points[j].id = old->points[j].id;
+    }
+    m->normal = sx_rotate(xa.q, k->normal);
+    m->count = old->count;
+    return true;
+}
+
+/* Manifold m of pair (xa, xb), found with margin, as kept for later collides. */
+static void sx_keep_manifold(sx_kept_manifold *k, const sx_manifold *m, sx_xform xa, sx_xform xb,
+                             sx_real margin) {
+    int j;
+    k->rel = sx_xform_inv_mul(xa, xb);
+    k->normal = sx_inv_rotate(xa.q, m->normal);
+    for (j = 0; j < m->count; ++j) {
+        const sx_manifold_point *p = &m->points[j];
+        k->point[j] = sx_xform_inv_point(xa, p->point);
+        k->depth[j] = p->depth;
+        k->on_b[j] = sx_xform_inv_point(xb, sx_mul_sub(p->point, SX_R(0.5) * p->depth, m->normal));
+    }
+    k->margin = margin;
+    k->valid = true;
+}
+
+/* The old contact whose kept manifold pair `key` may answer from: the
+ * pair's one old contact, of a plain pair (NULL: none). */
+static const sx_contact *sx_kept_candidate(const sx_world *world, int old_begin, int old_end) {
+    if (old_end - old_begin != 1) return NULL;
+    return world->old_contacts[old_begin].kept.valid ? &world->old_contacts[old_begin] : NULL;
+}
+
+/* sx_kept_candidate from the key alone (a task's range of pairs): the old
+ * contacts are sorted by key. */
+static const sx_contact *sx_kept_candidate_of(const sx_world *world, uint64_t key) {
+    int lo = 0, hi = world->old_contact_count, end;
+    while (lo < hi) {
+        int mid = lo + (hi - lo) / 2;
+        if (world->old_contacts[mid].key < key)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    for (end = lo; end < world->old_contact_count && world->old_contacts[end].key == key; ++end) {
+    }
+    return end > lo ? sx_kept_candidate(world, lo, end) : NULL;
+}
 
 /* The manifold of broadphase pair `key` (reads the world only): its point
- * count, 0 for a pair that gets no contact, or SX_PAIR_PARTS. */
-static int sx_pair_manifold(const sx_world *world, uint64_t key, sx_manifold *m) {
+ * count, 0 for a pair that gets no contact, or SX_PAIR_PARTS; with
+ * SX_PAIR_KEPT set when old's kept manifold gave it. */
+static int sx_pair_manifold(const sx_world *world, uint64_t key, const sx_contact *old,
+                            sx_manifold *m) {
     int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu);
     const sx_collider *ca = &world->colliders[ia], *cb = &world->colliders[ib];
+    sx_xform xa, xb;
+    sx_real margin;
     if (ca->body == cb->body || !sx_filters_collide(&ca->filter, &cb->filter) ||
         !sx_bullet_pair_may_meet(world, ca, cb)) {
         return 0;
     }
     if (ca->part_count > 0 || cb->part_count > 0) return SX_PAIR_PARTS;
-    return sx_collide_world(&ca->shape, world->sims[ca->body].xf, &cb->shape,
-                            world->sims[cb->body].xf, world->margin + ca->reach + cb->reach, m);
+    xa = world->sims[ca->body].xf;
+    xb = world->sims[cb->body].xf;
+    margin = world->margin + ca->reach + cb->reach;
+    if (old != NULL && old->body_a == ca->body && old->body_b == cb->body &&
+        sx_kept_manifold_now(world, old, xa, xb, margin, m)) {
+        return m->count | SX_PAIR_KEPT;
+    }
+    return sx_collide_world(&ca->shape, xa, &cb->shape, xb, margin, m);
 }
 
 /* The narrowphase of pair i of the broadphase (`key`): its contacts,
  * warm-started from its old ones old_contacts[old_begin, old_end); its
- * manifold from the parallel tasks when they found it. */
+ * manifold from the parallel tasks when they found it. A manifold the
+ * narrowphase found is kept with the contact; one from a kept manifold
+ * passes that on unchanged (the tolerance holds from where it was found). */
 static sx_status sx_collide_pair(sx_world *world, int i, uint64_t key, int old_begin,
                                  int old_end) {
     sx_manifold local;
     const sx_manifold *m = &local;
+    const sx_contact *old = sx_kept_candidate(world, old_begin, old_end);
+    sx_kept_manifold fresh;
     int n = world->pairs_found ? world->pair_counts[i] : SX_PAIR_NOT_FOUND;
     if (n == SX_PAIR_NOT_FOUND) {
-        n = sx_pair_manifold(world, key, &local);
+        n = sx_pair_manifold(world, key, old, &local);
     } else if (n > 0) {
         m = &world->pair_manifolds[i];
     }
     if (n == SX_PAIR_PARTS) return sx_collide_parts(world, key, old_begin, old_end);
     if (n == 0) return SX_OK;
-    return sx_add_contact(world, key, 0, 0, m, old_begin, old_end);
+    if ((n & SX_PAIR_KEPT) && old != NULL) return sx_add_contact(world, key, 0, 0, m, old_begin, old_end, &old->kept);
+    {
+        const sx_collider *ca = &world->colliders[key >> 32];
+        const sx_collider *cb = &world->colliders[key & 0xFFFFFFFFu];
+        sx_keep_manifold(&fresh, m, world->sims[ca->body].xf, world->sims[cb->body].xf,
+                         world->margin + ca->reach + cb->reach);
+    }
+    return sx_add_contact(world, key, 0, 0, m, old_begin, old_end, &fresh);
 }
 
 /* A range of the broadphase's pairs for a worker of the job system. */
@@ -1134,8 +1239,11 @@ static void sx_pairs_task(int start, int end, int worker, void *context) {
     (void)worker;
     if (start < 0) start = 0;
     if (end > world->bp.pair_count) end = world->bp.pair_count;
-    for (i = start; i < end; ++i)
-        world->pair_counts[i] = sx_pair_manifold(world, world->bp.pairs[i], &world->pair_manifolds[i]);
+    for (i = start; i < end; ++i) {
+        uint64_t key = world->bp.pairs[i];
+        world->pair_counts[i] = sx_pair_manifold(world, key, sx_kept_candidate_of(world, key),
+                                                 &world->pair_manifolds[i]);
+    }
 }
 
 /* Pairs a task range takes at least, and the fewest pairs worth a task:
@@ -1201,7 +1309,6 @@ sx_status sx_world_collide(sx_world *world) {
     }
     s = sx_freeze_contacts(world);
     if (s != SX_OK) return s;
-    sx_find_pairs(world);
 
     swap = world->old_contacts;
     world->old_contacts = world->contacts;
@@ -1213,6 +1320,8 @@ sx_status sx_world_collide(sx_world *world) {
     world->contact_count = 0;
     /* counted as the contacts are made and thawed */
     world->bouncy_contacts = 0;
+    /* the tasks read the old contacts' kept manifolds */
+    sx_find_pairs(world);
     /* the pairs in key order, the old contacts (sorted by key) beside them:
      * a pair's old contacts warm-start its new ones, and the begin and end
      * events fall out of the comparison */

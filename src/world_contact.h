@@ -41,6 +41,20 @@ typedef struct sx_contact_point {
     uint32_t id;
 } sx_contact_point;
 
+/* A plain pair's manifold as the narrowphase found it, in A's frame, with
+ * B's pose relative to A then: while B moves less than the keep tolerance
+ * relative to A, the next collides answer from it (sx_kept_manifold_now in
+ * world.c) instead of the narrowphase. */
+typedef struct sx_kept_manifold {
+    sx_xform rel;       /* B's frame in A's frame */
+    sx_vec2 normal;     /* A's frame */
+    sx_vec2 point[2];   /* the midway points, A's frame */
+    sx_vec2 on_b[2];    /* B's surface points, B's frame */
+    sx_real depth[2];
+    sx_real margin;     /* the speculative margin it was found with */
+    bool valid;         /* false: a compound's part pair, never kept */
+} sx_kept_manifold;
+
 typedef struct sx_contact {
     uint64_t key; /* collider_a << 32 | collider_b, collider_a < collider_b */
     int collider_a, collider_b;
@@ -57,6 +71,7 @@ typedef struct sx_contact {
      * inverse, when K is well conditioned (block_solve) */
     sx_block2 block;
     bool block_solve;
+    sx_kept_manifold kept;
 } sx_contact;
 
 /* The solver's compact view of the step (contact_solver.c), rebuilt by each

@@ -50,8 +50,8 @@ typedef struct det_pin {
 
 static const det_pin det_pins[] = {
     /* build    state hash             narrowphase hash */
-    {"float", 0x54c08b45761dc52dull, 0x4d1bf48ab77e19cbull},
-    {"double", 0x4111ecc41e66086full, 0x8963162b0ec798e3ull},
+    {"float", 0xbbd92b3d8d9c7d26ull, 0x4d1bf48ab77e19cbull},
+    {"double", 0xd486575417e6a6fcull, 0x8963162b0ec798e3ull},
 };
 
 #ifdef SX_DOUBLE

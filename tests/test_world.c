@@ -645,6 +645,158 @@ static void filtered_pairs_and_sensors_make_no_contacts(void **state) {
     sx_world_destroy(w);
 }
 
+/* ---- kept manifolds ------------------------------------------------------- */
+
+/* A world without gravity that keeps manifolds by `keep` slops; a body
+ * `under` (static ground, top at y = 0, when NULL) and a box of
+ * half-extent `h` at p turned by `angle` over it, collided once. */
+static sx_world *keep_world(sx_real keep, const sx_collider_def *under, sx_vec2 under_p,
+                            sx_real h, sx_vec2 p, sx_real angle, sx_body_id *box) {
+    sx_world_def def = sx_default_world_def();
+    sx_collider_def cd = sx_default_collider_def();
+    sx_world *w;
+    def.gravity = sx_v2_zero();
+    def.manifold_keep_slops = keep;
+    w = sx_world_create(&def);
+    assert_non_null(w);
+    if (under == NULL) {
+        sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(1.0));
+        make_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-1.0)), &ground);
+    } else {
+        sx_test_body_turned(w, SX_BODY_STATIC, under_p, SX_R(0.0), under);
+    }
+    cd.shape = sx_box_shape(h, h);
+    *box = sx_test_body_turned(w, SX_BODY_DYNAMIC, p, angle, &cd);
+    assert_int_equal(sx_world_collide(w), SX_OK);
+    return w;
+}
+
+/* The one contact of worlds a and b agree to tol. */
+static void assert_same_contact(sx_world *a, sx_world *b, double tol) {
+    sx_contact_data ca, cb;
+    int k;
+    assert_int_equal(sx_world_contact_count(a), 1);
+    assert_int_equal(sx_world_contact_count(b), 1);
+    assert_int_equal(sx_world_get_contact(a, 0, &ca), SX_OK);
+    assert_int_equal(sx_world_get_contact(b, 0, &cb), SX_OK);
+    assert_int_equal(ca.count, cb.count);
+    assert_near(ca.normal.x, cb.normal.x, tol);
+    assert_near(ca.normal.y, cb.normal.y, tol);
+    for (k = 0; k < ca.count; ++k) {
+        assert_near(ca.points[k].x, cb.points[k].x, tol);
+        assert_near(ca.points[k].y, cb.points[k].y, tol);
+        assert_near(ca.depths[k], cb.depths[k], tol);
+    }
+}
+
+/* A box resting on the ground keeps its manifold while it moves less than
+ * manifold_keep_slops (the points follow half its move, the depths all of
+ * its move along the normal: within the tolerance of a fresh search), and
+ * gets the fresh search's answer once it moves farther. */
+static void a_kept_manifold_follows_small_moves_and_is_found_again_past_the_tolerance(
+    void **state) {
+    const sx_real keep = SX_R(0.1), tol = keep * SX_R(0.005);
+    const sx_vec2 p0 = sx_v2(SX_R(0.3), SX_R(0.499));
+    sx_vec2 p1 = sx_v2(p0.x + SX_R(0.4) * tol, p0.y + SX_R(0.2) * tol);
+    sx_vec2 p2 = sx_v2(p0.x + SX_R(2.0) * tol, p0.y);
+    sx_body_id box, fresh_box;
+    sx_world *w = keep_world(keep, NULL, sx_v2_zero(), SX_R(0.5), p0, SX_R(0.0), &box), *fresh;
+    sx_contact_data c0, c1;
+    int k;
+    (void)state;
+    assert_int_equal(sx_world_get_contact(w, 0, &c0), SX_OK);
+    assert_int_equal(c0.count, 2);
+    /* within the tolerance: kept */
+    assert_int_equal(sx_body_set_transform(w, box, p1, SX_R(0.0)), SX_OK);
+    assert_int_equal(sx_world_collide(w), SX_OK);
+    assert_int_equal(sx_world_get_contact(w, 0, &c1), SX_OK);
+    assert_int_equal(c1.count, 2);
+    for (k = 0; k < 2; ++k) {
+        assert_near(c1.points[k].x, c0.points[k].x + SX_R(0.2) * tol, 1e-6);
+        assert_near(c1.points[k].y, c0.points[k].y + SX_R(0.1) * tol, 1e-6);
+        assert_near(c1.depths[k], c0.depths[k] - SX_R(0.2) * tol, 1e-6);
+    }
+    fresh = keep_world(SX_R(0.0), NULL, sx_v2_zero(), SX_R(0.5), p1, SX_R(0.0), &fresh_box);
+    assert_same_contact(w, fresh, tol);
+    sx_world_destroy(fresh);
+    /* past it: searched again */
+    assert_int_equal(sx_body_set_transform(w, box, p2, SX_R(0.0)), SX_OK);
+    assert_int_equal(sx_world_collide(w), SX_OK);
+    fresh = keep_world(SX_R(0.0), NULL, sx_v2_zero(), SX_R(0.5), p2, SX_R(0.0), &fresh_box);
+    assert_same_contact(w, fresh, 1e-6);
+    sx_world_destroy(fresh);
+    sx_world_destroy(w);
+}
+
+/* A big box resting its face on a diamond's corner: the face is the
+ * reference, so the normal turns with the box. Turned about the contact
+ * point by four times the keep angle, the box's point stays where it was,
+ * and only the turn says the manifold must be found again. */
+static void a_kept_manifold_is_found_again_when_the_box_turns_about_its_point(void **state) {
+    const sx_real keep = SX_R(0.1), turn = SX_R(4.0) * keep * SX_R(0.005);
+    sx_collider_def diamond = sx_default_collider_def();
+    sx_vec2 corner, p0 = sx_v2(SX_R(0.2), SX_R(2.0) - SX_R(0.001)), p1;
+    sx_vec2 v[4] = {{SX_R(0.0), SX_R(-1.0)}, {SX_R(1.0), SX_R(0.0)}, {SX_R(0.0), SX_R(1.0)},
+                    {SX_R(-1.0), SX_R(0.0)}};
+    sx_body_id box, fresh_box;
+    sx_world *w, *fresh;
+    sx_rot q = sx_rot_make(turn);
+    (void)state;
+    assert_int_equal(sx_polygon_shape(v, 4, SX_R(0.0), &diamond.shape), SX_OK);
+    /* the diamond's top corner at (0, 1); the box's bottom face 1 mm below it */
+    w = keep_world(keep, &diamond, sx_v2_zero(), SX_R(1.0), p0, SX_R(0.0), &box);
+    corner = sx_v2(SX_R(0.0), SX_R(1.0));
+    p1 = sx_add(corner, sx_rotate(q, sx_sub(p0, corner)));
+    assert_int_equal(sx_body_set_transform(w, box, p1, turn), SX_OK);
+    assert_int_equal(sx_world_collide(w), SX_OK);
+    fresh = keep_world(SX_R(0.0), &diamond, sx_v2_zero(), SX_R(1.0), p1, turn, &fresh_box);
+    assert_same_contact(w, fresh, 1e-6);
+    sx_world_destroy(fresh);
+    sx_world_destroy(w);
+}
+
+/* A tilted box touching the ground at one corner, its other corner beyond
+ * the speculative margin: one point. Given a speed that brings the other
+ * corner within the step's reach, the pair is searched again (a kept
+ * one-point manifold would miss the second corner). */
+static void a_kept_one_point_manifold_is_found_again_when_the_margin_grows(void **state) {
+    const sx_real angle = SX_R(0.1);
+    sx_real lift = SX_R(0.5) * (sx_cos(angle) + sx_sin(angle)) - SX_R(0.001);
+    sx_body_id box;
+    sx_world *w = keep_world(SX_R(0.1), NULL, sx_v2_zero(), SX_R(0.5),
+                             sx_v2(SX_R(0.0), lift), angle, &box);
+    sx_contact_data c;
+    (void)state;
+    assert_int_equal(sx_world_get_contact(w, 0, &c), SX_OK);
+    assert_int_equal(c.count, 1);
+    /* a step at rest sets the step's length; then 6 m/s down reaches 0.1 m */
+    assert_int_equal(sx_world_step(w, SX_R(1.0) / SX_R(60.0)), SX_OK);
+    assert_int_equal(sx_world_get_contact(w, 0, &c), SX_OK);
+    assert_int_equal(c.count, 1);
+    assert_int_equal(sx_body_set_linear_velocity(w, box, sx_v2(SX_R(0.0), SX_R(-6.0))), SX_OK);
+    assert_int_equal(sx_world_collide(w), SX_OK);
+    assert_int_equal(sx_world_get_contact(w, 0, &c), SX_OK);
+    assert_int_equal(c.count, 2);
+    sx_world_destroy(w);
+}
+
+/* manifold_keep_slops: 0 .. 1, finite. */
+static void manifold_keep_slops_is_refused_outside_zero_to_one(void **state) {
+    sx_world_def d = sx_default_world_def();
+    (void)state;
+    d.manifold_keep_slops = SX_R(-0.01);
+    assert_int_equal(sx_world_def_validate(&d, NULL), SX_ERR_INVALID_ARG);
+    d.manifold_keep_slops = SX_R(1.01);
+    assert_int_equal(sx_world_def_validate(&d, NULL), SX_ERR_INVALID_ARG);
+    d.manifold_keep_slops = SX_R(0.0) / SX_R(0.0);
+    assert_int_equal(sx_world_def_validate(&d, NULL), SX_ERR_NONFINITE);
+    assert_null(sx_world_create(&d));
+    d.manifold_keep_slops = SX_R(1.0);
+    assert_int_equal(sx_world_def_validate(&d, NULL), SX_OK);
+    d.manifold_keep_slops = SX_R(0.0);
+    assert_int_equal(sx_world_def_validate(&d, NULL), SX_OK);
+}
+
 static void contact_events_report_begin_once_and_end_once(void **state) {
     sx_world *w = make_world(sx_v2(SX_R(0.0), SX_R(-10.0)));
     sx_shape ground = sx_box_shape(SX_R(5.0), SX_R(1.0)),
@@ -1740,6 +1892,10 @@ int main(void) {
         cmocka_unit_test(resting_box_contact_carries_its_weight),
         cmocka_unit_test(filtered_pairs_and_sensors_make_no_contacts),
         cmocka_unit_test(contact_events_report_begin_once_and_end_once),
+        cmocka_unit_test(a_kept_manifold_follows_small_moves_and_is_found_again_past_the_tolerance),
+        cmocka_unit_test(a_kept_manifold_is_found_again_when_the_box_turns_about_its_point),
+        cmocka_unit_test(a_kept_one_point_manifold_is_found_again_when_the_margin_grows),
+        cmocka_unit_test(manifold_keep_slops_is_refused_outside_zero_to_one),
         cmocka_unit_test(world_queries_find_the_colliders_at_their_current_place),
         cmocka_unit_test(debug_draw_visits_every_collider_and_contact_point),
         cmocka_unit_test(angular_velocity_survives_adding_colliders_and_fixed_rotation_holds),
