@@ -1163,10 +1163,10 @@ static const sx_contact *sx_kept_candidate(const sx_world *world, int old_begin,
     return world->old_contacts[old_begin].kept.valid ? &world->old_contacts[old_begin] : NULL;
 }
 
-/* sx_kept_candidate from the key alone (a task's range of pairs): the old
- * contacts are sorted by key. */
-static const sx_contact *sx_kept_candidate_of(const sx_world *world, uint64_t key) {
-    int lo = 0, hi = world->old_contact_count, end;
+/* The first old contact with a key at or above `key` (the old contacts
+ * are sorted by key). */
+static int sx_old_lower_bound(const sx_world *world, uint64_t key) {
+    int lo = 0, hi = world->old_contact_count;
     while (lo < hi) {
         int mid = lo + (hi - lo) / 2;
         if (world->old_contacts[mid].key < key)
@@ -1174,9 +1174,7 @@ static const sx_contact *sx_kept_candidate_of(const sx_world *world, uint64_t ke
         else
             hi = mid;
     }
-    for (end = lo; end < world->old_contact_count && world->old_contacts[end].key == key; ++end) {
-    }
-    return end > lo ? sx_kept_candidate(world, lo, end) : NULL;
+    return lo;
 }
 
 /* The manifold of broadphase pair `key` (reads the world only): its point
@@ -1235,13 +1233,22 @@ static sx_status sx_collide_pair(sx_world *world, int i, uint64_t key, int old_b
 /* A range of the broadphase's pairs for a worker of the job system. */
 static void sx_pairs_task(int start, int end, int worker, void *context) {
     sx_world *world = (sx_world *)context;
-    int i;
+    int i, at;
     (void)worker;
     if (start < 0) start = 0;
     if (end > world->bp.pair_count) end = world->bp.pair_count;
+    /* the range's old contacts, walked beside its pairs as the collide's
+     * walk does (both in key order): one search for the range */
+    at = start < end ? sx_old_lower_bound(world, world->bp.pairs[start]) : 0;
     for (i = start; i < end; ++i) {
         uint64_t key = world->bp.pairs[i];
-        world->pair_counts[i] = sx_pair_manifold(world, key, sx_kept_candidate_of(world, key),
+        int from;
+        while (at < world->old_contact_count && world->old_contacts[at].key < key)
+            ++at;
+        from = at;
+        while (at < world->old_contact_count && world->old_contacts[at].key == key)
+            ++at;
+        world->pair_counts[i] = sx_pair_manifold(world, key, sx_kept_candidate(world, from, at),
                                                  &world->pair_manifolds[i]);
     }
 }
