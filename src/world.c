@@ -1116,7 +1116,6 @@ static bool sx_bullet_pair_may_meet(const sx_world *world, const sx_collider *ca
 static bool sx_kept_manifold_now(const sx_world *world, const sx_contact *old, sx_xform xa,
                                  sx_xform xb, sx_real margin, sx_manifold *m) {
     const sx_kept_manifold *k = &old->kept;
-    /* a turn of B is held to the angle that moves a point a metre away as far */
     sx_real tol = world->def.manifold_keep_slops * world->linear_slop;
     sx_xform rel;
     sx_rot turn;
@@ -1124,6 +1123,7 @@ static bool sx_kept_manifold_now(const sx_world *world, const sx_contact *old, s
     if (!k->valid || !(tol > SX_R(0.0)) || (old->count < 2 && !(margin <= k->margin + tol)))
         return false;
     rel = sx_xform_inv_mul(xa, xb);
+    /* a turn of B is held to the angle that moves a point a metre away as far */
     turn = sx_rot_inv_mul(k->rel.q, rel.q);
     if (!(turn.c > SX_R(0.0) && sx_absr(turn.s) * world->def.length_units_per_meter <= tol))
         return false;
@@ -1220,7 +1220,8 @@ static sx_status sx_collide_pair(sx_world *world, int i, uint64_t key, int old_b
     }
     if (n == SX_PAIR_PARTS) return sx_collide_parts(world, key, old_begin, old_end);
     if (n == 0) return SX_OK;
-    if ((n & SX_PAIR_KEPT) && old != NULL) return sx_add_contact(world, key, 0, 0, m, old_begin, old_end, &old->kept);
+    if ((n & SX_PAIR_KEPT) && old != NULL)
+        return sx_add_contact(world, key, 0, 0, m, old_begin, old_end, &old->kept);
     {
         const sx_collider *ca = &world->colliders[key >> 32];
         const sx_collider *cb = &world->colliders[key & 0xFFFFFFFFu];
