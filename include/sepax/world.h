@@ -26,7 +26,9 @@
  * are found once per step; inside the sub-steps each contact point's
  * separation follows the bodies' motion (its anchors turn with the bodies,
  * the normal stays), so the sub-steps stay accurate without running the
- * narrowphase again. This is
+ * narrowphase again; across steps, a touching pair whose bodies moved less
+ * than manifold_keep_slops relative to each other keeps its contact points
+ * the same way instead of searching them again. This is
  * symplectic Euler (velocities first, then positions with the new
  * velocities). Callers such as the flecs systems may run the stages
  * themselves, in this order, with their own code in between; a mass that
