@@ -892,8 +892,9 @@ static int sx_contact_key_cmp(const void *pa, const void *pb) {
     return 0;
 }
 
-/* True when the sorted list holds a contact with this key. */
-static bool sx_has_key(const sx_contact *list, int count, uint64_t key) {
+/* The first contact of the list (sorted by key) with a key at or above
+ * `key`. */
+static int sx_key_lower_bound(const sx_contact *list, int count, uint64_t key) {
     int lo = 0, hi = count;
     while (lo < hi) {
         int mid = lo + (hi - lo) / 2;
@@ -902,6 +903,12 @@ static bool sx_has_key(const sx_contact *list, int count, uint64_t key) {
         else
             hi = mid;
     }
+    return lo;
+}
+
+/* True when the sorted list holds a contact with this key. */
+static bool sx_has_key(const sx_contact *list, int count, uint64_t key) {
+    int lo = sx_key_lower_bound(list, count, key);
     return lo < count && list[lo].key == key;
 }
 
@@ -1042,6 +1049,13 @@ static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, c
     return SX_OK;
 }
 
+/* The speculative margin of the pair (ca, cb): the world's, plus how far
+ * each collider reaches over the step. */
+static sx_real sx_pair_margin(const sx_world *world, const sx_collider *ca,
+                              const sx_collider *cb) {
+    return world->margin + ca->reach + cb->reach;
+}
+
 /* The narrowphase of a pair in which at least one collider is a compound:
  * one manifold per part pair within the margin, in (part_a, part_b) order,
  * so each touching part pair is its own contact for the solver, with its
@@ -1067,7 +1081,7 @@ static sx_status sx_collide_parts(sx_world *world, uint64_t key, int old_begin, 
             if (!sx_aabb_overlaps(boxes_a[i], boxes_b[j])) continue;
             if (sx_collide_world(&va.parts[i].shape, xi, &vb.parts[j].shape,
                                  sx_xform_mul(xb, vb.parts[j].offset),
-                                 world->margin + ca->reach + cb->reach, &m) <= 0) {
+                                 sx_pair_margin(world, ca, cb), &m) <= 0) {
                 continue;
             }
             s = sx_add_contact(world, key, i, j, &m, old_begin, old_end, NULL);
@@ -1163,20 +1177,6 @@ static const sx_contact *sx_kept_candidate(const sx_world *world, int old_begin,
     return world->old_contacts[old_begin].kept.valid ? &world->old_contacts[old_begin] : NULL;
 }
 
-/* The first old contact with a key at or above `key` (the old contacts
- * are sorted by key). */
-static int sx_old_lower_bound(const sx_world *world, uint64_t key) {
-    int lo = 0, hi = world->old_contact_count;
-    while (lo < hi) {
-        int mid = lo + (hi - lo) / 2;
-        if (world->old_contacts[mid].key < key)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo;
-}
-
 /* The manifold of broadphase pair `key` (reads the world only): its point
  * count, 0 for a pair that gets no contact, or SX_PAIR_PARTS; with
  * SX_PAIR_KEPT set when old's kept manifold gave it. */
@@ -1193,7 +1193,7 @@ static int sx_pair_manifold(const sx_world *world, uint64_t key, const sx_contac
     if (ca->part_count > 0 || cb->part_count > 0) return SX_PAIR_PARTS;
     xa = world->sims[ca->body].xf;
     xb = world->sims[cb->body].xf;
-    margin = world->margin + ca->reach + cb->reach;
+    margin = sx_pair_margin(world, ca, cb);
     if (old != NULL && old->body_a == ca->body && old->body_b == cb->body &&
         sx_kept_manifold_now(world, old, xa, xb, margin, m)) {
         return m->count | SX_PAIR_KEPT;
@@ -1226,7 +1226,7 @@ static sx_status sx_collide_pair(sx_world *world, int i, uint64_t key, int old_b
         const sx_collider *ca = &world->colliders[key >> 32];
         const sx_collider *cb = &world->colliders[key & 0xFFFFFFFFu];
         sx_keep_manifold(&fresh, m, world->sims[ca->body].xf, world->sims[cb->body].xf,
-                         world->margin + ca->reach + cb->reach);
+                         sx_pair_margin(world, ca, cb));
     }
     return sx_add_contact(world, key, 0, 0, m, old_begin, old_end, &fresh);
 }
@@ -1240,7 +1240,9 @@ static void sx_pairs_task(int start, int end, int worker, void *context) {
     if (end > world->bp.pair_count) end = world->bp.pair_count;
     /* the range's old contacts, walked beside its pairs as the collide's
      * walk does (both in key order): one search for the range */
-    at = start < end ? sx_old_lower_bound(world, world->bp.pairs[start]) : 0;
+    at = start < end ? sx_key_lower_bound(world->old_contacts, world->old_contact_count,
+                                          world->bp.pairs[start])
+                     : 0;
     for (i = start; i < end; ++i) {
         uint64_t key = world->bp.pairs[i];
         int from;
