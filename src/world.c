@@ -689,6 +689,16 @@ static void sx_match_point(sx_contact_point *p, const sx_contact *old) {
     }
 }
 
+/* A frictionless contact's tangent rows are never solved, so a tangent
+ * impulse from when the pair had friction (warm-started, never clamped)
+ * would push the bodies along the surface for ever: none is kept. */
+static void sx_drop_tangent_impulses(sx_contact *c) {
+    int k;
+    if (c->friction > SX_R(0.0)) return;
+    for (k = 0; k < c->count; ++k)
+        c->points[k].tangent_impulse = SX_R(0.0);
+}
+
 /* Appends the event of contact c to an event array. */
 static sx_status sx_push_event(const sx_world *world, const sx_contact *c,
                                sx_contact_event **events, int *count, int *capacity) {
@@ -1044,6 +1054,7 @@ static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, c
         c->kept = *kept;
     else
         c->kept.valid = false;
+    sx_drop_tangent_impulses(c);
     sx_contact_prepare(world, c);
     if (c->restitution > SX_R(0.0)) world->bouncy_contacts++;
     return SX_OK;

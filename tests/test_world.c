@@ -780,6 +780,68 @@ static void a_kept_one_point_manifold_is_found_again_when_the_margin_grows(void 
     sx_world_destroy(w);
 }
 
+/* Six boxes side by side at x = 0, 3, .., 15 (their contacts one colour of
+ * the wide passes), each on a static support of half-width `support` (0:
+ * one wide ground), gravity 10, no sleeping; settled for a second. */
+#define ROW_BOXES 6
+static sx_world *row_world(sx_real support, sx_body_id *boxes, sx_collider_id *colliders) {
+    sx_world_def def = sx_default_world_def();
+    sx_world *w;
+    int i;
+    def.gravity = sx_v2(SX_R(0.0), SX_R(-10.0));
+    def.enable_sleep = false;
+    w = sx_world_create(&def);
+    assert_non_null(w);
+    if (!(support > SX_R(0.0))) {
+        sx_shape ground = sx_box_shape(SX_R(20.0), SX_R(1.0));
+        make_body(w, SX_BODY_STATIC, sx_v2(SX_R(7.5), SX_R(-1.0)), &ground);
+    }
+    for (i = 0; i < ROW_BOXES; ++i) {
+        sx_real x = SX_R(3.0) * (sx_real)i;
+        if (support > SX_R(0.0)) {
+            sx_shape post = sx_box_shape(support, SX_R(0.5));
+            make_body(w, SX_BODY_STATIC, sx_v2(x, SX_R(-0.5)), &post);
+        }
+        boxes[i] = sx_test_body(w, SX_BODY_DYNAMIC, sx_v2(x, SX_R(0.5)),
+                                sx_box_shape(SX_R(0.5), SX_R(0.5)), &colliders[i]);
+    }
+    for (i = 0; i < 60; ++i)
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+    return w;
+}
+
+/* Pushed by 0.3 of its weight, a box that friction 0.6 held slides at once
+ * when its friction goes to 0: 0.05 m/s after one step, and no faster or
+ * slower after a second step without the push. Two ways to miss it: a
+ * solver lane that outlasts the collide while the manifold is kept must
+ * still take the new friction, and the tangent impulse that held the box
+ * must not warm-start a contact whose tangent rows are no longer solved. */
+static void a_box_slides_at_once_when_its_friction_goes_to_zero(void **state) {
+    sx_body_id boxes[ROW_BOXES];
+    sx_collider_id colliders[ROW_BOXES];
+    sx_world *w = row_world(SX_R(0.0), boxes, colliders);
+    sx_real push = SX_R(0.3) * SX_R(10.0) * sx_body_get_mass(w, boxes[0]);
+    int i, s;
+    (void)state;
+    for (s = 0; s < 30; ++s) {
+        for (i = 0; i < ROW_BOXES; ++i)
+            assert_int_equal(sx_body_apply_force(w, boxes[i], sx_v2(push, SX_R(0.0))), SX_OK);
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+    }
+    for (i = 0; i < ROW_BOXES; ++i) {
+        assert_near(sx_body_get_linear_velocity(w, boxes[i]).x, 0.0, 1e-4);
+        assert_int_equal(sx_collider_set_friction(w, colliders[i], SX_R(0.0)), SX_OK);
+        assert_int_equal(sx_body_apply_force(w, boxes[i], sx_v2(push, SX_R(0.0))), SX_OK);
+    }
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    for (i = 0; i < ROW_BOXES; ++i)
+        assert_near(sx_body_get_linear_velocity(w, boxes[i]).x, SX_R(0.3) * SX_R(10.0) * DT, 1e-3);
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    for (i = 0; i < ROW_BOXES; ++i)
+        assert_near(sx_body_get_linear_velocity(w, boxes[i]).x, SX_R(0.3) * SX_R(10.0) * DT, 1e-3);
+    sx_world_destroy(w);
+}
+
 /* manifold_keep_slops: 0 .. 1, finite. */
 static void manifold_keep_slops_is_refused_outside_zero_to_one(void **state) {
     sx_world_def d = sx_default_world_def();
@@ -1896,6 +1958,7 @@ int main(void) {
         cmocka_unit_test(a_kept_manifold_is_found_again_when_the_box_turns_about_its_point),
         cmocka_unit_test(a_kept_one_point_manifold_is_found_again_when_the_margin_grows),
         cmocka_unit_test(manifold_keep_slops_is_refused_outside_zero_to_one),
+        cmocka_unit_test(a_box_slides_at_once_when_its_friction_goes_to_zero),
         cmocka_unit_test(world_queries_find_the_colliders_at_their_current_place),
         cmocka_unit_test(debug_draw_visits_every_collider_and_contact_point),
         cmocka_unit_test(angular_velocity_survives_adding_colliders_and_fixed_rotation_holds),
