@@ -1154,6 +1154,28 @@ static void sx_item_put_gaps(sx_world *world, const sx_colour_item *it, sx_conta
     }
 }
 
+/* Contact ct's accumulated impulses into item it's kept constraint or lane
+ * (as sx_constraint_fill reads them: zeros for a cold start). */
+static void sx_item_put_impulses(sx_world *world, const sx_colour_item *it,
+                                 const sx_contact *ct) {
+    int k;
+    for (k = 0; k < ct->count; ++k) {
+        const sx_contact_point *src = &ct->points[k];
+        sx_real ni = src->normal_impulse, ti = src->tangent_impulse;
+        if (!world->groups_ready) ni = ti = SX_R(0.0);
+        if (it->wide) {
+            sx_bundle *u = &world->bundles[it->at / SX_LANES];
+            int l = it->at % SX_LANES;
+            u->normal_impulse[k][l] = ni;
+            u->tangent_impulse[k][l] = ti;
+        } else {
+            sx_constraint_point *p = &world->constraints[it->at].points[k];
+            p->normal_impulse = ni;
+            p->tangent_impulse = ti;
+        }
+    }
+}
+
 /* Lane l of frame f as padding: no bodies, zero anchors and bases (a gap
  * of 0, as sx_lane_pad's). */
 static void sx_frame_pad(sx_bundle_frame *f, int l) {
@@ -1366,25 +1388,10 @@ static void sx_solver_warm_start(sx_world *world, bool gaps) {
  * scaled some or the solve starts cold; the gaps the gather's walk
  * refreshed. */
 static void sx_solver_refresh(sx_world *world) {
-    int i, k;
+    int i;
     for (i = 0; i < world->fill_count; ++i) {
         const sx_colour_item *it = &world->colour_items[i];
-        const sx_contact *ct = &world->contacts[it->contact];
-        for (k = 0; k < ct->count; ++k) {
-            const sx_contact_point *src = &ct->points[k];
-            sx_real ni = src->normal_impulse, ti = src->tangent_impulse;
-            if (!world->groups_ready) ni = ti = SX_R(0.0);
-            if (it->wide) {
-                sx_bundle *u = &world->bundles[it->at / SX_LANES];
-                int l = it->at % SX_LANES;
-                u->normal_impulse[k][l] = ni;
-                u->tangent_impulse[k][l] = ti;
-            } else {
-                sx_constraint_point *p = &world->constraints[it->at].points[k];
-                p->normal_impulse = ni;
-                p->tangent_impulse = ti;
-            }
-        }
+        sx_item_put_impulses(world, it, &world->contacts[it->contact]);
     }
 }
 
@@ -1440,6 +1447,25 @@ static int sx_min_colour(const sx_world *world) {
     return world->wide_min_colour > 0 ? world->wide_min_colour : SX_WIDE_MIN_COLOUR;
 }
 
+/* Whether item it's lane, filled after the collide before this one, stands
+ * for contact ct (the walk's i-th, naming solver bodies a and b) as it is
+ * (read before the walk writes the item over): the same contact in the
+ * same slot, with the same bodies, masses and friction, and a manifold
+ * this collide kept rather than searched. Its levers, masses and normal
+ * are then those of the same manifold, as the bodies stood when the lane
+ * was filled, which the kept manifold's tolerance says they still nearly
+ * do; its gaps follow the bodies from its frame (sx_solver_gather). */
+static bool sx_item_holds(const sx_world *world, const sx_colour_item *it, const sx_contact *ct,
+                          int i, int a, int b) {
+    const sx_body_sim *sa = &world->sims[ct->body_a], *sb = &world->sims[ct->body_b];
+    return it->wide && ct->held && it->contact == i && it->key == ct->key &&
+           it->part_a == ct->part_a && it->part_b == ct->part_b && it->count == ct->count &&
+           it->body_a == a && it->body_b == b && it->inv_mass_a == sa->inv_mass &&
+           it->inv_inertia_a == sa->inv_inertia && it->inv_mass_b == sb->inv_mass &&
+           it->inv_inertia_b == sb->inv_inertia && it->dynamic_a == sa->dynamic &&
+           it->dynamic_b == sb->dynamic && it->friction == ct->friction;
+}
+
 /* Walks the active contacts into the colour items: each point's gap from the
  * current positions, the bodies named in the solver. Returns the item count
  * and sets *same when every item is the one the kept fill was made from
@@ -1450,19 +1476,26 @@ static int sx_min_colour(const sx_world *world) {
  * a solve after a collide; a later fill writes over them if the pattern
  * breaks). */
 static int sx_gather_items(sx_world *world, bool fill, bool *same_out, bool *pattern_out,
-                           bool *kinds_out) {
+                           bool *kinds_out, bool *any_held) {
     sx_colour_item *items = world->colour_items;
     int i, n = 0;
     bool same = world->fill_valid && world->fill_serial == world->contact_serial;
     bool pattern = world->fill_valid && world->fill_min_colour == sx_min_colour(world);
     bool kinds = true;
+    /* lanes filled after the last collide, with gaps that only their
+     * frames give (no impact pass reads the contacts'); their impulses are
+     * the contacts' unless the energy guard scaled some or the solve
+     * starts cold */
+    bool hold = fill && world->fill_valid && world->fill_collides + 1 == world->collides &&
+                world->bouncy_contacts == 0;
+    bool impulses = !world->fill_fresh || !world->groups_ready;
     for (i = 0; i < world->contact_count; ++i) {
         sx_contact *ct = &world->contacts[i];
         const sx_body_sim *sa = &world->sims[ct->body_a], *sb = &world->sims[ct->body_b];
         sx_colour_item *it = &items[n];
         int a, b;
+        bool held;
         if (!sx_contact_is_active(world, ct)) continue;
-        sx_update_gaps(world, ct);
         a = sx_solver_body_of(world, ct->body_a);
         b = sx_solver_body_of(world, ct->body_b);
         ++n;
@@ -1473,6 +1506,7 @@ static int sx_gather_items(sx_world *world, bool fill, bool *same_out, bool *pat
             it->inv_inertia_b == sb->inv_inertia && it->dynamic_a == sa->dynamic &&
             it->dynamic_b == sb->dynamic) {
             /* the new gaps into the kept fill, while the contact is at hand */
+            sx_update_gaps(world, ct);
             sx_item_put_gaps(world, it, ct);
             continue;
         }
@@ -1483,6 +1517,11 @@ static int sx_gather_items(sx_world *world, bool fill, bool *same_out, bool *pat
         /* (read only where the pattern holds: past the fill's items they
          * were never written) */
         kinds = kinds && pattern && it->dynamic_a == sa->dynamic && it->dynamic_b == sb->dynamic;
+        held = hold && pattern && sx_item_holds(world, it, ct, i, a, b);
+        *any_held = *any_held || held;
+        /* (a held contact's gaps are read by nothing before the next walk,
+         * bar a fill from scratch, which updates them itself) */
+        if (!held) sx_update_gaps(world, ct);
         it->key = ct->key;
         it->contact = i;
         it->part_a = ct->part_a;
@@ -1496,7 +1535,9 @@ static int sx_gather_items(sx_world *world, bool fill, bool *same_out, bool *pat
         it->inv_inertia_b = sb->inv_inertia;
         it->dynamic_a = sa->dynamic;
         it->dynamic_b = sb->dynamic;
-        if (fill && pattern) sx_item_fill(world, it);
+        it->friction = ct->friction;
+        if (held && impulses) sx_item_put_impulses(world, it, ct);
+        if (fill && pattern && !held) sx_item_fill(world, it);
     }
     *same_out = same;
     *pattern_out = pattern && n == world->fill_count;
@@ -1548,7 +1589,7 @@ static int sx_colour_items(sx_world *world, int n) {
 /* Fills the placed colours' constraints and lanes (padding lanes write to
  * a sink body), then makes neighbouring colours of the same kind one span;
  * false when the bundles could not grow. */
-static bool sx_fill_colours(sx_world *world, int n, int colours) {
+static bool sx_fill_colours(sx_world *world, int n, int colours, bool held) {
     sx_colour_item *items = world->colour_items;
     int i, k, sink;
     void *p;
@@ -1567,6 +1608,8 @@ static bool sx_fill_colours(sx_world *world, int n, int colours) {
     world->solver_bodies[sink].pad = SX_R(0.0);
     for (i = 0; i < n; ++i) {
         sx_colour_item *it = &items[i];
+        /* (again the same bits, unless the walk held the item's lane) */
+        if (held) sx_update_gaps(world, &world->contacts[it->contact]);
         it->at = world->colour_cursor[it->colour]++;
         it->wide = world->spans[it->colour].wide;
         if (it->wide) {
@@ -1664,6 +1707,7 @@ static void sx_refill_colours(sx_world *world, int n, bool filled) {
 /* Notes the fill the arrays now hold (n items). */
 static void sx_fill_made(sx_world *world, int n) {
     world->fill_serial = world->contact_serial;
+    world->fill_collides = world->collides;
     world->fill_epoch = world->solver_epoch;
     world->fill_count = n;
     world->fill_body_count = world->solver_body_count;
@@ -1680,7 +1724,8 @@ static void sx_fill_made(sx_world *world, int n) {
  * lanes of the last gather are kept while every item is unchanged. */
 static bool sx_solver_gather(sx_world *world, bool warm) {
     int n;
-    bool same, pattern = false, collide = false, kinds = false;
+    bool same, pattern = false, collide = false, kinds = false, held = false;
+    int i;
     if (!sx_solver_reserve(world)) return false;
     world->solver_bodies[0].v = sx_v2_zero();
     world->solver_bodies[0].w = SX_R(0.0);
@@ -1703,7 +1748,7 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
          * pile's contacts name the same bodies step after step) */
         collide = !(world->fill_valid && world->fill_serial == world->contact_serial);
         if (collide) sx_groups_reserve(world);
-        n = sx_gather_items(world, collide, &same, &pattern, &kinds);
+        n = sx_gather_items(world, collide, &same, &pattern, &kinds, &held);
         if (collide && !sx_groups_stand(world, pattern, kinds)) sx_groups_link(world);
     }
     if (same && n == world->fill_count) {
@@ -1719,11 +1764,15 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
     if (!collide) sx_groups_build(world);
     if (pattern) {
         sx_refill_colours(world, n, collide);
+        /* the held lanes' gaps from their frames (the others' the same
+         * bits as their contacts': sx_frame_gaps) */
+        for (i = 0; i < world->bundle_count && held; ++i)
+            sx_bundle_gaps(world, &world->bundles[i], &world->bundle_frames[i]);
     } else {
         world->fill_valid = false;
         world->constraint_count = 0;
         world->bundle_count = 0;
-        if (!sx_fill_colours(world, n, sx_colour_items(world, n))) {
+        if (!sx_fill_colours(world, n, sx_colour_items(world, n), held)) {
             sx_solver_unname(world);
             return false;
         }

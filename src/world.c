@@ -997,9 +997,13 @@ static sx_status sx_thaw_contacts(sx_world *world) {
 /* Appends the contact of manifold m (m->count >= 1) between part pa of
  * collider key >> 32 and part pb of collider key & 0xFFFFFFFF, matching the
  * warm-starting impulses against the pair's old contacts
- * old_contacts[old_begin, old_end) with the same parts. */
+ * old_contacts[old_begin, old_end) with the same parts. `held`: m came from
+ * the old contact's kept manifold, whose levers, frames and masses then
+ * stand (only the reported points and depths follow m), so the solver's
+ * lane filled from it may stand too (sx_gather_items). */
 static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, const sx_manifold *m,
-                                int old_begin, int old_end, const sx_kept_manifold *kept) {
+                                int old_begin, int old_end, const sx_kept_manifold *kept,
+                                bool held) {
     int ia = (int)(key >> 32), ib = (int)(key & 0xFFFFFFFFu), k;
     const sx_collider *ca = &world->colliders[ia], *cb = &world->colliders[ib];
     const sx_body_sim *ba = &world->sims[ca->body], *bb = &world->sims[cb->body];
@@ -1029,6 +1033,24 @@ static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, c
     c->friction = sx_sqrt(ca->friction * cb->friction);
     c->restitution = sx_maxr(ca->restitution, cb->restitution);
     c->count = m->count;
+    c->held = held && old != NULL && old->count == m->count;
+    if (c->held) {
+        c->normal = old->normal;
+        c->block = old->block;
+        c->block_solve = old->block_solve;
+        for (k = 0; k < m->count; ++k) {
+            sx_contact_point *p = &c->points[k];
+            *p = old->points[k];
+            p->point = m->points[k].point;
+            p->separation = -m->points[k].depth;
+            p->gap = p->separation;
+            p->impact_impulse = SX_R(0.0);
+        }
+        c->kept = *kept;
+        sx_drop_tangent_impulses(c);
+        if (c->restitution > SX_R(0.0)) world->bouncy_contacts++;
+        return SX_OK;
+    }
     for (k = 0; k < m->count; ++k) {
         const sx_manifold_point *mp = &m->points[k];
         sx_contact_point *p = &c->points[k];
@@ -1095,7 +1117,7 @@ static sx_status sx_collide_parts(sx_world *world, uint64_t key, int old_begin, 
                                  sx_pair_margin(world, ca, cb), &m) <= 0) {
                 continue;
             }
-            s = sx_add_contact(world, key, i, j, &m, old_begin, old_end, NULL);
+            s = sx_add_contact(world, key, i, j, &m, old_begin, old_end, NULL, false);
             if (s != SX_OK) return s;
         }
     }
@@ -1232,14 +1254,14 @@ static sx_status sx_collide_pair(sx_world *world, int i, uint64_t key, int old_b
     if (n == SX_PAIR_PARTS) return sx_collide_parts(world, key, old_begin, old_end);
     if (n == 0) return SX_OK;
     if ((n & SX_PAIR_KEPT) && old != NULL)
-        return sx_add_contact(world, key, 0, 0, m, old_begin, old_end, &old->kept);
+        return sx_add_contact(world, key, 0, 0, m, old_begin, old_end, &old->kept, true);
     {
         const sx_collider *ca = &world->colliders[key >> 32];
         const sx_collider *cb = &world->colliders[key & 0xFFFFFFFFu];
         sx_keep_manifold(&fresh, m, world->sims[ca->body].xf, world->sims[cb->body].xf,
                          sx_pair_margin(world, ca, cb));
     }
-    return sx_add_contact(world, key, 0, 0, m, old_begin, old_end, &fresh);
+    return sx_add_contact(world, key, 0, 0, m, old_begin, old_end, &fresh, false);
 }
 
 /* A range of the broadphase's pairs for a worker of the job system. */
@@ -1305,6 +1327,7 @@ sx_status sx_world_collide(sx_world *world) {
     sx_world_purge_contacts(world);
     world->by_body_valid = false;
     world->contact_serial++;
+    world->collides++;
 
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;

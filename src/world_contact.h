@@ -16,8 +16,8 @@ typedef struct sx_block2 {
 
 typedef struct sx_contact_point {
     /* from each centre of mass to the point, world: the levers the solver
-     * applies impulses at (of collide time, then moved through the
-     * sub-steps: sx_slide_levers in contact_solver.c) */
+     * applies impulses at (of the collide that searched the manifold: a
+     * kept manifold keeps them, see sx_contact.held) */
     sx_vec2 anchor_a, anchor_b;
     /* the same two anchors in their body frames: turned with the bodies,
      * they give the point's separation as the bodies move through the
@@ -72,6 +72,11 @@ typedef struct sx_contact {
     sx_block2 block;
     bool block_solve;
     sx_kept_manifold kept;
+    /* this collide answered from the kept manifold: the levers, frames,
+     * masses and normal are the old contact's (the reported points and
+     * depths alone follow the kept manifold), and a solver lane filled
+     * from them may stand (sx_gather_items) */
+    bool held;
 } sx_contact;
 
 /* The solver's compact view of the step (contact_solver.c), rebuilt by each
@@ -170,6 +175,7 @@ typedef struct sx_colour_item {
     bool wide; /* in a bundle (else a one-at-a-time constraint) */
     bool dynamic_a, dynamic_b;
     sx_real inv_mass_a, inv_inertia_a, inv_mass_b, inv_inertia_b;
+    sx_real friction;
 } sx_colour_item;
 
 /* Per body, for the impact pass: the position and angle correction that

@@ -195,6 +195,9 @@ struct sx_world {
      * are the contacts' (the last pass handed them back, and the energy
      * guard scaled none since). */
     unsigned contact_serial, fill_serial;
+    /* collides so far, and their count at the last fill: a lane filled at
+     * the collide before this one may be held by this one (sx_gather_items) */
+    unsigned collides, fill_collides;
     /* every awake moving body's velocity meets the speed limit of a sub-step
      * of limited_h (0: not known); the stages that set velocities keep it,
      * the caller's velocities and new bodies clear it (world.c,

@@ -50,8 +50,8 @@ typedef struct det_pin {
 
 static const det_pin det_pins[] = {
     /* build    state hash             narrowphase hash */
-    {"float", 0xbbd92b3d8d9c7d26ull, 0x4d1bf48ab77e19cbull},
-    {"double", 0xd486575417e6a6fcull, 0x8963162b0ec798e3ull},
+    {"float", 0x25b8b0882412b05bull, 0x4d1bf48ab77e19cbull},
+    {"double", 0x2ebcfcce5fb3da92ull, 0x8963162b0ec798e3ull},
 };
 
 #ifdef SX_DOUBLE

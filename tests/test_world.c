@@ -842,6 +842,55 @@ static void a_box_slides_at_once_when_its_friction_goes_to_zero(void **state) {
     sx_world_destroy(w);
 }
 
+/* Each box's larger normal impulse over its smaller one, after a step. */
+static void assert_support_split(sx_world *w, double ratio, double tol) {
+    int i, n = sx_world_contact_count(w);
+    assert_int_equal(n, ROW_BOXES);
+    for (i = 0; i < n; ++i) {
+        sx_contact_data c;
+        sx_real lo, hi;
+        assert_int_equal(sx_world_get_contact(w, i, &c), SX_OK);
+        assert_int_equal(c.count, 2);
+        /* the point further right carries more (the box is right of the middle) */
+        lo = c.points[0].x < c.points[1].x ? c.normal_impulses[0] : c.normal_impulses[1];
+        hi = c.points[0].x < c.points[1].x ? c.normal_impulses[1] : c.normal_impulses[0];
+        assert_true(lo > SX_R(0.0));
+        assert_near(hi / lo, ratio, tol);
+    }
+}
+
+/* A box moved past the keep tolerance gets its manifold searched again and
+ * its lane filled again, so its levers follow: 0.1 m right of the middle of
+ * a 0.4 m wide post, a box rests 3:1 on the post's corners. So does a box
+ * whose manifold a collide without a solve searched (the next collide keeps
+ * it, but the lane is older than it): moved back, it rests 1:1 again. */
+static void a_lane_is_filled_again_when_its_manifold_was_searched_since(void **state) {
+    sx_body_id boxes[ROW_BOXES];
+    sx_collider_id colliders[ROW_BOXES];
+    sx_world *w = row_world(SX_R(0.2), boxes, colliders);
+    int i;
+    (void)state;
+    assert_support_split(w, 1.0, 0.02);
+    for (i = 0; i < ROW_BOXES; ++i) {
+        sx_vec2 p = sx_body_get_position(w, boxes[i]);
+        assert_int_equal(sx_body_set_transform(w, boxes[i], sx_v2(p.x + SX_R(0.1), p.y),
+                                               sx_body_get_angle(w, boxes[i])),
+                         SX_OK);
+    }
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_support_split(w, 3.0, 0.1);
+    for (i = 0; i < ROW_BOXES; ++i) {
+        sx_vec2 p = sx_body_get_position(w, boxes[i]);
+        assert_int_equal(sx_body_set_transform(w, boxes[i], sx_v2(p.x - SX_R(0.1), p.y),
+                                               sx_body_get_angle(w, boxes[i])),
+                         SX_OK);
+    }
+    assert_int_equal(sx_world_collide(w), SX_OK);
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_support_split(w, 1.0, 0.1);
+    sx_world_destroy(w);
+}
+
 /* manifold_keep_slops: 0 .. 1, finite. */
 static void manifold_keep_slops_is_refused_outside_zero_to_one(void **state) {
     sx_world_def d = sx_default_world_def();
@@ -1959,6 +2008,7 @@ int main(void) {
         cmocka_unit_test(a_kept_one_point_manifold_is_found_again_when_the_margin_grows),
         cmocka_unit_test(manifold_keep_slops_is_refused_outside_zero_to_one),
         cmocka_unit_test(a_box_slides_at_once_when_its_friction_goes_to_zero),
+        cmocka_unit_test(a_lane_is_filled_again_when_its_manifold_was_searched_since),
         cmocka_unit_test(world_queries_find_the_colliders_at_their_current_place),
         cmocka_unit_test(debug_draw_visits_every_collider_and_contact_point),
         cmocka_unit_test(angular_velocity_survives_adding_colliders_and_fixed_rotation_holds),

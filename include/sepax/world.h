@@ -28,7 +28,8 @@
  * the normal stays), so the sub-steps stay accurate without running the
  * narrowphase again; across steps, a touching pair whose bodies moved less
  * than manifold_keep_slops relative to each other keeps its contact points
- * the same way instead of searching them again. This is
+ * the same way instead of searching them again, and its solver constraint
+ * (anchors, effective masses, the lane it was filled into) with them. This is
  * symplectic Euler (velocities first, then positions with the new
  * velocities). Callers such as the flecs systems may run the stages
  * themselves, in this order, with their own code in between; a mass that
@@ -229,10 +230,12 @@ typedef struct sx_world_def {
     sx_real speculative_slops;
     /** How far a touching pair's bodies may move relative to each other, in
      *  linear slops (0 .. 1), before the pair's contact points are found
-     *  again: until then each collide moves the points it kept with the
-     *  bodies (off by at most this much from a fresh search) and skips the
-     *  narrowphase, which a resting pile spends most of its collide on. 0
-     *  searches every touching pair every step. Default 0.25. */
+     *  again: until then each collide moves the reported points with the
+     *  bodies (off by at most this much from a fresh search), keeps the
+     *  solver's anchors and effective masses of the search, and skips the
+     *  narrowphase and the contact's preparation, which a resting pile
+     *  spends most of its collide on. 0 searches every touching pair every
+     *  step. Default 0.25. */
     sx_real manifold_keep_slops;
     /** Length units per metre (> 0): scales the linear slop (5 mm at 1).
      *  Default SX_LENGTH_UNITS_PER_METER. It does not scale SX_HUGE, which
