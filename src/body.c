@@ -771,6 +771,7 @@ sx_status sx_body_set_transform(sx_world *world, sx_body_id body, sx_vec2 positi
     sx_wake_touching(world, slot);
     sim->xf = sx_xform_make(position, angle);
     sim->center = sx_xform_point(sim->xf, sim->local_center);
+    world->lane_gaps_current = false;
     for (c = world->infos[slot].first_collider; c >= 0; c = world->colliders[c].next)
         world->colliders[c].aabb_stale = true;
     world->sets_dirty = true;

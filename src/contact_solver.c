@@ -1256,11 +1256,14 @@ static void sx_bundle_gaps(const sx_world *world, sx_bundle *u, const sx_bundle_
 
 /* The lanes of bundle u (bits, lane l as 1 << l) with a point the position
  * pass may move: a separation not clearly above -slop (the pass looks at
- * each such point itself; the others it would skip). */
-static int sx_bundle_overlaps(const sx_world *world, const sx_bundle *u, const sx_bundle_frame *f,
+ * each such point itself; the others it would skip). The gaps go into the
+ * lanes: the next sub-step's, if the pass moves no body. */
+static int sx_bundle_overlaps(const sx_world *world, sx_bundle *u, const sx_bundle_frame *f,
                               sx_real slop) {
     sx_rw gaps[2], lo = sx_rw_set1(-slop);
     sx_frame_gaps(world, u, f, gaps);
+    sx_rw_store(u->gap[0], gaps[0]);
+    sx_rw_store(u->gap[1], gaps[1]);
     /* a one-point contact's second gap is 0, clear of -slop */
     return (1 << SX_LANES) - 1 -
            sx_mw_bits(sx_mw_and(sx_rw_ge(gaps[0], lo), sx_rw_ge(gaps[1], lo)));
@@ -1671,7 +1674,8 @@ static void sx_gather_kept(sx_world *world) {
             for (j = 0; j < ct->count; ++j)
                 c->points[j].gap = ct->points[j].gap;
         }
-        for (i = 0; i < world->bundle_count; ++i)
+        /* (the position pass that found them moved no body since) */
+        for (i = 0; i < world->bundle_count && !world->lane_gaps_current; ++i)
             sx_bundle_gaps(world, &world->bundles[i], &world->bundle_frames[i]);
         return;
     }
@@ -1732,6 +1736,7 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
     world->solver_bodies[0].pad = SX_R(0.0);
     world->solver_body_count = 1;
     if (!warm || world->def.contact_hertz > SX_R(0.0)) {
+        world->lane_gaps_current = false;
         sx_gather_sequential(world, warm);
         world->solver_gathered = true;
         return true;
@@ -1742,6 +1747,7 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
         n = world->fill_count;
         same = true;
     } else {
+        world->lane_gaps_current = false;
         /* after a collide: the items are filled as the walk goes, which
          * needs room for the groups (a cold start without it); the groups
          * are linked after it, unless the last link still stands (a resting
@@ -1839,17 +1845,19 @@ static void sx_move_body(sx_body_sim *b, sx_vec2 dp, sx_real angle) {
 }
 
 /* The positional correction of contact c's points, one after the other
- * (each sees the moves of the one before). */
-static void sx_push_contact(sx_world *world, sx_contact *c, sx_real slop, sx_real beta,
+ * (each sees the moves of the one before); whether it moved a body. */
+static bool sx_push_contact(sx_world *world, sx_contact *c, sx_real slop, sx_real beta,
                             sx_real max_move) {
     sx_body_sim *a = &world->sims[c->body_a], *b = &world->sims[c->body_b];
     sx_real ma = a->inv_mass, ia = a->inv_inertia, mb = b->inv_mass, ib = b->inv_inertia;
     sx_vec2 n = c->normal;
+    bool moved = false;
     int k;
     for (k = 0; k < c->count; ++k) {
         const sx_contact_point *p = &c->points[k];
         sx_real s = sx_current_gap(a, b, n, p), correction, lambda, rna, rnb;
         if (s >= -slop || !(p->normal_mass > SX_R(0.0))) continue;
+        moved = true;
         correction = sx_maxr(beta * (s + slop), -max_move);
         rna = sx_cross(p->anchor_a, n);
         rnb = sx_cross(p->anchor_b, n);
@@ -1872,6 +1880,7 @@ static void sx_push_contact(sx_world *world, sx_contact *c, sx_real slop, sx_rea
         if (mb > SX_R(0.0) || ib > SX_R(0.0))
             sx_move_body(b, sx_scale(n, lambda * mb), ib * lambda * rnb);
     }
+    return moved;
 }
 
 /* One position pass in the order of the solve's colours, while its fill
@@ -1880,25 +1889,28 @@ static void sx_push_contact(sx_world *world, sx_contact *c, sx_real slop, sx_rea
  * it, and the contacts of a colour share none), and the wide colours'
  * lanes find their separations four or eight at a time from their frames,
  * so only contacts with a point near overlap are looked at one by one. */
-static void sx_push_by_colour(sx_world *world, sx_real slop, sx_real beta, sx_real max_move) {
+static bool sx_push_by_colour(sx_world *world, sx_real slop, sx_real beta, sx_real max_move) {
+    bool moved = false;
     int s, i, l;
     for (s = 0; s < world->span_count; ++s) {
         const sx_colour_span *span = &world->spans[s];
         int end = span->first + span->count;
         for (i = span->first; i < end; ++i) {
             if (span->wide) {
-                const sx_bundle *u = &world->bundles[i];
+                sx_bundle *u = &world->bundles[i];
                 int lanes = sx_bundle_overlaps(world, u, &world->bundle_frames[i], slop);
                 for (l = 0; lanes != 0; ++l, lanes >>= 1) {
-                    if (lanes & 1)
-                        sx_push_contact(world, &world->contacts[u->contact[l]], slop, beta, max_move);
+                    if ((lanes & 1) && sx_push_contact(world, &world->contacts[u->contact[l]], slop,
+                                                       beta, max_move))
+                        moved = true;
                 }
-            } else {
-                sx_push_contact(world, &world->contacts[world->constraints[i].contact], slop, beta,
-                                max_move);
+            } else if (sx_push_contact(world, &world->contacts[world->constraints[i].contact], slop,
+                                       beta, max_move)) {
+                moved = true;
             }
         }
     }
+    return moved;
 }
 
 /* The rigid contacts' positional correction: each overlap beyond the slop
@@ -1917,7 +1929,8 @@ static void sx_contacts_push_out(sx_world *world, sx_real h, int passes) {
     max_move = world->def.max_correction_speed * h / (sx_real)passes;
     for (it = 0; it < passes; ++it) {
         if (by_colour) {
-            sx_push_by_colour(world, slop, beta, max_move);
+            /* the last pass's gaps stand if it moved nothing */
+            world->lane_gaps_current = !sx_push_by_colour(world, slop, beta, max_move);
             continue;
         }
         for (i = 0; i < world->contact_count; ++i) {

@@ -1328,6 +1328,7 @@ sx_status sx_world_collide(sx_world *world) {
     world->by_body_valid = false;
     world->contact_serial++;
     world->collides++;
+    world->lane_gaps_current = false;
 
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
@@ -1467,6 +1468,7 @@ sx_status sx_world_integrate(sx_world *world, sx_real h) {
     l = sx_half_limit_of(h);
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
+    world->lane_gaps_current = false;
     for (i = 0; i < world->active_body_count; ++i) {
         sx_body_sim *b = &world->sims[world->active_bodies[i]];
         if (!b->moving || !b->awake) continue;

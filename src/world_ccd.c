@@ -505,6 +505,7 @@ sx_status sx_world_continuous(sx_world *world) {
     if (!(world->ccd_dt > SX_R(0.0))) return SX_OK;
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;
+    world->lane_gaps_current = false; /* the sweeps move bodies back */
     /* the bodies that strayed, turned or are bullets; of those, the ones
      * that need it are swept, and the bullets last, against the others'
      * final poses */

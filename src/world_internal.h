@@ -220,6 +220,10 @@ struct sx_world {
      * solver bodies in the same order (only their data is filled again) */
     int fill_count, fill_body_count, fill_min_colour;
     bool fill_valid, fill_fresh;
+    /* the wide lanes' gaps are the bodies' current poses' (the position
+     * pass found them and moved no body): the next kept gather takes them
+     * as they are; whatever moves a body ends it */
+    bool lane_gaps_current;
     /* the arrays hold the current solve's gather (from the warm start to
      * the scatter after the passes) */
     bool solver_gathered;
@@ -241,7 +245,10 @@ struct sx_world {
 static inline bool sx_world_locked(const sx_world *world) { return world->lock_depth > 0; }
 
 /* Notes a change to the solver's bodies or active contacts (solver_epoch). */
-static inline void sx_world_solver_changed(sx_world *world) { world->solver_epoch++; }
+static inline void sx_world_solver_changed(sx_world *world) {
+    world->solver_epoch++;
+    world->lane_gaps_current = false;
+}
 
 /* True when the solver must work on a contact: at least one of its bodies
  * is dynamic and awake. */
