@@ -249,6 +249,7 @@ static void sx_groups_measure(sx_world *world, sx_real h) {
         g->credit_sum = SX_R(0.0);
         g->mass_sum = SX_R(0.0);
     }
+    if (world->groups_driven) sx_solver_hand_back(world);
     for (i = 0; i < world->contact_count && world->groups_driven; ++i) {
         const sx_contact *c = &world->contacts[i];
         sx_vec2 t = sx_cross_vs(c->normal, SX_R(1.0));
@@ -334,6 +335,7 @@ static void sx_groups_settle(sx_world *world) {
                         : SX_R(0.0);
         if (!sx_is_finite(g->credit)) g->credit = SX_R(0.0);
     }
+    if (scaled) sx_solver_hand_back(world);
     for (i = 0; i < world->contact_count && scaled; ++i) {
         sx_contact *c = &world->contacts[i];
         sx_real factor;
@@ -807,6 +809,21 @@ static void sx_bundle_hand_back(sx_world *world, const sx_bundle *u) {
     }
 }
 
+/* The wide lanes' impulses onto their contacts, if a last pass left them in
+ * the lanes (hand_back_later): for whatever reads the contacts' impulses
+ * before the next kept fill does (the energy guard's settle and its
+ * kinematic measure, a fill from scratch). */
+void sx_solver_hand_back(sx_world *world) {
+    int s, i;
+    if (!world->impulses_in_lanes) return;
+    world->impulses_in_lanes = false;
+    for (s = 0; s < world->span_count; ++s) {
+        const sx_colour_span *span = &world->spans[s];
+        for (i = span->first; span->wide && i < span->first + span->count; ++i)
+            sx_bundle_hand_back(world, &world->bundles[i]);
+    }
+}
+
 /* A bundle's lanes through a pass: its bodies' velocities and its
  * accumulated impulses. */
 typedef struct sx_bundle_lanes {
@@ -989,6 +1006,8 @@ static void sx_constraints_pass(sx_world *world, sx_real h, bool relax, bool las
     bool soft = !relax && world->def.contact_hertz > SX_R(0.0);
     sx_solver_body *bodies = world->solver_bodies;
     sx_rw inv_h4 = sx_rw_set1(inv_h);
+    /* (a constraint solved one at a time always hands its impulses back) */
+    bool hand_back = last && !world->hand_back_later;
     int s, i;
     for (s = 0; s < world->span_count; ++s) {
         const sx_colour_span *span = &world->spans[s];
@@ -999,9 +1018,9 @@ static void sx_constraints_pass(sx_world *world, sx_real h, bool relax, bool las
              * to the stack and measured slower; eight lanes: one at a
              * time, the pairing measured no faster there) */
             for (i = span->first; SX_LANES <= 4 && i + 2 <= end; i += 2)
-                sx_bundle_solve2(world, &world->bundles[i], inv_h4, last);
+                sx_bundle_solve2(world, &world->bundles[i], inv_h4, hand_back);
             for (; i < end; ++i)
-                sx_bundle_solve(world, &world->bundles[i], inv_h4, last);
+                sx_bundle_solve(world, &world->bundles[i], inv_h4, hand_back);
             continue;
         }
         for (i = span->first; i < end; ++i) {
@@ -1729,7 +1748,13 @@ static void sx_fill_made(sx_world *world, int n) {
 static bool sx_solver_gather(sx_world *world, bool warm) {
     int n;
     bool same, pattern = false, collide = false, kinds = false, held = false;
+    bool kept = warm && !(world->def.contact_hertz > SX_R(0.0)) && world->fill_valid &&
+                world->fill_serial == world->contact_serial &&
+                world->fill_epoch == world->solver_epoch;
     int i;
+    /* a kept fill goes on from the impulses in its lanes; any other gather
+     * reads the contacts' */
+    if (!kept) sx_solver_hand_back(world);
     if (!sx_solver_reserve(world)) return false;
     world->solver_bodies[0].v = sx_v2_zero();
     world->solver_bodies[0].w = SX_R(0.0);
@@ -1741,8 +1766,7 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
         world->solver_gathered = true;
         return true;
     }
-    if (world->fill_valid && world->fill_serial == world->contact_serial &&
-        world->fill_epoch == world->solver_epoch) {
+    if (kept) {
         sx_gather_kept(world);
         n = world->fill_count;
         same = true;
@@ -1826,8 +1850,12 @@ static bool sx_solver_run(sx_world *world, sx_real h, int passes, bool relax) {
     }
     for (it = 0; it < passes; ++it)
         sx_constraints_pass(world, h, relax, it == passes - 1);
-    /* the last pass handed every impulse back: a kept fill holds them */
-    if (passes > 0) world->fill_fresh = true;
+    /* the last pass handed every impulse back, or left the wide lanes'
+     * where they are: either way a kept fill holds the ones to go on from */
+    if (passes > 0) {
+        world->fill_fresh = true;
+        world->impulses_in_lanes = world->hand_back_later && world->bundle_count > 0;
+    }
     sx_solver_scatter(world);
     return true;
 }

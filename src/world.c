@@ -1520,8 +1520,15 @@ sx_status sx_world_step(sx_world *world, sx_real dt) {
     if (s != SX_OK) return s;
     for (i = 0; i < steps; ++i) {
         sx_world_apply_forces(world, h);
+        /* the impulses reach the contacts once, at the last sub-step: the
+         * ones between are read by nothing but the next sub-step's solve */
+        world->hand_back_later = i < steps - 1;
         s = sx_world_solve(world, h);
-        if (s != SX_OK) return s;
+        world->hand_back_later = false;
+        if (s != SX_OK) {
+            sx_solver_hand_back(world);
+            return s;
+        }
         sx_world_integrate(world, h);
         sx_world_separate(world, h);
     }

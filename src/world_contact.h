@@ -235,6 +235,7 @@ bool sx_contacts_gather(sx_world *world);
  * bodies that got more energy from the warm start and the passes than the
  * solver took from it before (its credit), and keeps the credit left. */
 void sx_contacts_energy_guard(sx_world *world, sx_real h);
+void sx_solver_hand_back(sx_world *world);
 /* The impact pass (restitution): false when its scratch could not grow (the
  * pass is then skipped). */
 bool sx_contacts_impacts(sx_world *world, sx_real h);

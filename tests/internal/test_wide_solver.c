@@ -392,6 +392,185 @@ static void lane_gaps_follow_a_box_moved_between_sub_steps(void **state) {
         sx_world_destroy(w[n]);
 }
 
+/* Heavy balls (mass ratio 100) dropped on small ones resting on the ground,
+ * eight side by side, six boxes riding a kinematic platform, six on narrow
+ * posts and eight frictionless capsules spinning on end: wide colours in
+ * which the energy guard scales groups and measures a kinematic body's
+ * work. */
+static sx_world *guarded_scene(void) {
+    sx_world_def wd = sx_default_world_def();
+    sx_body_def bd = sx_default_body_def();
+    sx_collider_def cd = sx_default_collider_def();
+    sx_body_id id;
+    sx_world *w;
+    int i;
+    wd.enable_sleep = false;
+    w = sx_world_create(&wd);
+    assert_non_null(w);
+    sx_test_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-1.0)),
+                 sx_box_shape(SX_R(40.0), SX_R(1.0)), NULL);
+    for (i = 0; i < 8; ++i) {
+        sx_real x = SX_R(3.0) * (sx_real)i;
+        sx_test_body(w, SX_BODY_DYNAMIC, sx_v2(x, SX_R(0.25)),
+                     sx_circle_shape(sx_v2_zero(), SX_R(0.25)), NULL);
+        bd.type = SX_BODY_DYNAMIC;
+        bd.position = sx_v2(x + SX_R(0.4), SX_R(2.0));
+        assert_int_equal(sx_create_body(w, &bd, &id), SX_OK);
+        cd.shape = sx_circle_shape(sx_v2_zero(), SX_R(0.8));
+        cd.density = SX_R(100.0) * SX_R(0.25) * SX_R(0.25) / (SX_R(0.8) * SX_R(0.8));
+        assert_int_equal(sx_body_add_collider(w, id, &cd, NULL), SX_OK);
+    }
+    bd = sx_default_body_def();
+    bd.type = SX_BODY_KINEMATIC;
+    bd.position = sx_v2(SX_R(-20.0), SX_R(1.0));
+    bd.linear_velocity = sx_v2(SX_R(0.5), SX_R(0.0));
+    assert_int_equal(sx_create_body(w, &bd, &id), SX_OK);
+    cd = sx_default_collider_def();
+    cd.shape = sx_box_shape(SX_R(8.0), SX_R(0.25));
+    assert_int_equal(sx_body_add_collider(w, id, &cd, NULL), SX_OK);
+    for (i = 0; i < 6; ++i) {
+        sx_test_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-25.0) + SX_R(2.0) * (sx_real)i, SX_R(1.75)),
+                     sx_box_shape(SX_R(0.5), SX_R(0.5)), NULL);
+        /* and boxes on narrow posts, whose groups the guard scales by a
+         * rounding's worth */
+        sx_test_body(w, SX_BODY_STATIC, sx_v2(SX_R(30.0) + SX_R(3.0) * (sx_real)i, SX_R(0.5)),
+                     sx_box_shape(SX_R(0.2), SX_R(0.5)), NULL);
+        sx_test_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(30.1) + SX_R(3.0) * (sx_real)i, SX_R(1.5)),
+                     sx_box_shape(SX_R(0.5), SX_R(0.5)), NULL);
+    }
+    /* frictionless capsules spinning on end: the warm start at the turned
+     * contact point gives energy the guard takes back */
+    for (i = 0; i < 8; ++i) {
+        bd = sx_default_body_def();
+        bd.type = SX_BODY_DYNAMIC;
+        bd.position = sx_v2(SX_R(-38.0) + SX_R(1.0) * (sx_real)i, SX_R(0.12));
+        bd.angle = SX_R(-1.5707963);
+        bd.angular_velocity = SX_R(-5.0) + SX_R(0.5) * (sx_real)i;
+        assert_int_equal(sx_create_body(w, &bd, &id), SX_OK);
+        cd = sx_default_collider_def();
+        cd.shape = sx_capsule_shape(sx_v2(SX_R(-0.06), SX_R(0.0)), sx_v2(SX_R(0.06), SX_R(0.0)),
+                                    SX_R(0.06));
+        cd.density = SX_R(30.0);
+        cd.friction = SX_R(0.0);
+        assert_int_equal(sx_body_add_collider(w, id, &cd, NULL), SX_OK);
+    }
+    return w;
+}
+
+/* sx_world_step leaves the wide lanes' impulses in the lanes between its
+ * sub-steps (hand_back_later); the same stages called one by one hand them
+ * back every sub-step. Both end in the same bits. */
+static void sx_world_step_and_its_stages_agree_bit_for_bit(void **state) {
+    sx_world *a = guarded_scene(), *b = guarded_scene();
+    sx_real h = DT / (sx_real)sx_default_world_def().sub_steps;
+    int s, i;
+    (void)state;
+    for (s = 0; s < 120; ++s) {
+        assert_int_equal(sx_world_step(a, DT), SX_OK);
+        assert_int_equal(sx_world_begin_step(b, DT), SX_OK);
+        assert_int_equal(sx_world_collide(b), SX_OK);
+        for (i = 0; i < sx_default_world_def().sub_steps; ++i) {
+            assert_int_equal(sx_world_apply_forces(b, h), SX_OK);
+            assert_int_equal(sx_world_solve(b, h), SX_OK);
+            assert_false(b->impulses_in_lanes);
+            assert_int_equal(sx_world_integrate(b, h), SX_OK);
+            assert_int_equal(sx_world_separate(b, h), SX_OK);
+        }
+        assert_int_equal(sx_world_continuous(b), SX_OK);
+        assert_int_equal(sx_world_clear_forces(b), SX_OK);
+        assert_int_equal(sx_world_update_sleep(b, DT), SX_OK);
+        assert_false(a->impulses_in_lanes);
+        for (i = 0; i < a->body_slots; ++i) {
+            const sx_body_sim *x = &a->sims[i], *y = &b->sims[i];
+            assert_memory_equal(&x->xf, &y->xf, sizeof(x->xf));
+            assert_memory_equal(&x->v, &y->v, sizeof(x->v));
+            assert_memory_equal(&x->w, &y->w, sizeof(x->w));
+        }
+    }
+    assert_true(a->bundle_count > 0);
+    sx_world_destroy(a);
+    sx_world_destroy(b);
+}
+
+/* One sub-step of world w by its stages up to the solve, world 1 leaving
+ * the wide lanes' impulses in the lanes (as sx_world_step's early
+ * sub-steps do). */
+static void solve_sub_step(sx_world *w, int n, sx_real h) {
+    assert_int_equal(sx_world_begin_step(w, DT), SX_OK);
+    assert_int_equal(sx_world_collide(w), SX_OK);
+    assert_int_equal(sx_world_apply_forces(w, h), SX_OK);
+    w->hand_back_later = n == 1;
+    assert_int_equal(sx_world_solve(w, h), SX_OK);
+    w->hand_back_later = false;
+}
+
+/* The energy guard reads the contacts' impulses where it measures a
+ * kinematic body's work and where it scales a group: a world whose last
+ * pass left them in the lanes must hand them back first. Two copies of the
+ * scene after 30 steps; one sub-step solved in each, one of them leaving
+ * the impulses in the lanes: the guard's measures (the boxes on the moving
+ * platform) the same bits. Then the guard made to scale every group (each
+ * body 1 m/s faster than before the solve, with a small credit, as
+ * test_energy_guard does): the contacts' scaled impulses the same bits. */
+static void the_energy_guard_takes_the_impulses_from_the_lanes(void **state) {
+    sx_world *w[2];
+    sx_real h = DT / (sx_real)sx_default_world_def().sub_steps;
+    int n, i, k, s;
+    (void)state;
+    for (n = 0; n < 2; ++n) {
+        w[n] = guarded_scene();
+        for (s = 0; s < 30; ++s)
+            assert_int_equal(sx_world_step(w[n], DT), SX_OK);
+        solve_sub_step(w[n], n, h);
+        assert_true(w[n]->groups_driven && w[n]->bundle_count > 0);
+    }
+    assert_int_equal(w[0]->group_member_count, w[1]->group_member_count);
+    for (i = 0; i < w[0]->group_member_count; ++i) {
+        const sx_group_body *x = &w[0]->group_bodies[w[0]->group_members[i]];
+        const sx_group_body *y = &w[1]->group_bodies[w[1]->group_members[i]];
+        assert_memory_equal(&x->f, &y->f, sizeof(x->f));
+        assert_memory_equal(&x->credit, &y->credit, sizeof(x->credit));
+    }
+    for (n = 0; n < 2; ++n) {
+        sx_world_destroy(w[n]);
+        w[n] = NULL;
+    }
+    /* the scaling, on the columns (no kinematic body: no measure before it
+     * hands the impulses back) */
+    {
+        sx_body_id boxes[2][18];
+        columns(w, boxes);
+        w[0]->wide_min_colour = 0; /* both wide now (the same bits so far) */
+        for (n = 0; n < 2; ++n) {
+            solve_sub_step(w[n], n, h);
+            assert_false(w[n]->groups_driven);
+            assert_int_equal(w[n]->impulses_in_lanes, n == 1);
+            for (i = 0; i < w[n]->group_member_count; ++i) {
+                int slot = w[n]->group_members[i];
+                sx_group_body *g = &w[n]->group_bodies[slot];
+                sx_body_sim *b = &w[n]->sims[slot];
+                g->v = b->v;
+                g->w = b->w;
+                b->v = sx_add(b->v, sx_v2(SX_R(0.0), SX_R(1.0)));
+                g->credit = SX_R(0.005) / b->inv_mass;
+            }
+            sx_contacts_energy_guard(w[n], h);
+            assert_false(w[n]->fill_fresh); /* it scaled */
+        }
+        assert_int_equal(w[0]->contact_count, w[1]->contact_count);
+        for (i = 0; i < w[0]->contact_count; ++i) {
+            for (k = 0; k < w[0]->contacts[i].count; ++k) {
+                const sx_contact_point *x = &w[0]->contacts[i].points[k];
+                const sx_contact_point *y = &w[1]->contacts[i].points[k];
+                assert_memory_equal(&x->normal_impulse, &y->normal_impulse, sizeof(sx_real));
+                assert_memory_equal(&x->tangent_impulse, &y->tangent_impulse, sizeof(sx_real));
+            }
+        }
+    }
+    for (n = 0; n < 2; ++n)
+        sx_world_destroy(w[n]);
+}
+
 /* The energy guard's groups, kept from collide to collide while the items
  * name the same bodies of the same kinds, against groups linked afresh at
  * every collide: the same members, roots and credits, and the same bits,
@@ -461,6 +640,8 @@ int main(void) {
         cmocka_unit_test(kept_energy_groups_match_relinked_ones),
         cmocka_unit_test(held_lanes_take_the_impulses_the_guard_scaled),
         cmocka_unit_test(lane_gaps_follow_a_box_moved_between_sub_steps),
+        cmocka_unit_test(sx_world_step_and_its_stages_agree_bit_for_bit),
+        cmocka_unit_test(the_energy_guard_takes_the_impulses_from_the_lanes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
