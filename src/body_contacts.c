@@ -151,6 +151,8 @@ void sx_wake_touching(sx_world *world, int slot) {
 void sx_world_purge_contacts(sx_world *world) {
     int i, n = 0;
     if (world->contact_dead == 0) return;
+    /* the lanes name contacts by index, which the purge moves */
+    sx_solver_hand_back(world);
     for (i = 0; i < world->contact_count; ++i) {
         if (world->contacts[i].count == 0) continue;
         if (n != i) world->contacts[n] = world->contacts[i];

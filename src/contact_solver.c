@@ -824,6 +824,32 @@ void sx_solver_hand_back(sx_world *world) {
     }
 }
 
+/* Contact `contact`'s accumulated impulses while they are in a lane
+ * (impulses_in_lanes): true with them in normal[] and tangent[], false
+ * when the contact's own are current. The fill's items are in contact
+ * order: a binary search finds its item. */
+bool sx_solver_lane_impulses(const sx_world *world, int contact, sx_real normal[2],
+                             sx_real tangent[2]) {
+    const sx_colour_item *items = world->colour_items;
+    int lo = 0, hi = world->fill_count, k;
+    const sx_bundle *u;
+    if (!world->impulses_in_lanes) return false;
+    while (lo < hi) {
+        int mid = lo + (hi - lo) / 2;
+        if (items[mid].contact < contact)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    if (lo == world->fill_count || items[lo].contact != contact || !items[lo].wide) return false;
+    u = &world->bundles[items[lo].at / SX_LANES];
+    for (k = 0; k < 2; ++k) {
+        normal[k] = u->normal_impulse[k][items[lo].at % SX_LANES];
+        tangent[k] = u->tangent_impulse[k][items[lo].at % SX_LANES];
+    }
+    return true;
+}
+
 /* A bundle's lanes through a pass: its bodies' velocities and its
  * accumulated impulses. */
 typedef struct sx_bundle_lanes {

@@ -777,6 +777,7 @@ sx_status sx_world_begin_step(sx_world *world, sx_real dt) {
     sx_status s = sx_check_step(world, dt);
     if (s != SX_OK) return s;
     world->step_dt = dt;
+    world->step_solves = 0;
     return sx_world_clear_events(world);
 }
 
@@ -1323,7 +1324,8 @@ sx_status sx_world_collide(sx_world *world) {
     if (world == NULL) return SX_ERR_INVALID_ARG;
     if (sx_world_locked(world)) return SX_ERR_LOCKED;
     /* the lists move from here on: the per-body chains go, and the
-     * solver's fill with them */
+     * solver's fill with them (the impulses warm-start from the contacts) */
+    sx_solver_hand_back(world);
     sx_world_purge_contacts(world);
     world->by_body_valid = false;
     world->contact_serial++;
@@ -1403,12 +1405,18 @@ int sx_world_contact_count(const sx_world *world) {
 
 sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data *out) {
     const sx_contact *c;
+    sx_real lane_normal[2], lane_tangent[2];
+    bool lanes;
     int k;
     if (world == NULL || out == NULL || index < 0 || index >= sx_world_contact_count(world)) {
         return SX_ERR_INVALID_ARG;
     }
     /* the step's contacts first, then those of sleeping bodies */
     c = sx_world_live_contact(world, index);
+    /* between two sub-steps of a step run by its stages, a wide lane may
+     * hold the impulses (sx_world_solve) */
+    lanes = index < world->contact_count &&
+            sx_solver_lane_impulses(world, index, lane_normal, lane_tangent);
     memset(out, 0, sizeof(*out));
     out->collider_a.index = (uint32_t)c->collider_a;
     out->collider_a.generation = world->collider_generations[c->collider_a];
@@ -1425,14 +1433,21 @@ sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data
     for (k = 0; k < c->count; ++k) {
         out->points[k] = c->points[k].point;
         out->depths[k] = -c->points[k].separation;
-        out->normal_impulses[k] = c->points[k].normal_impulse;
-        out->tangent_impulses[k] = c->points[k].tangent_impulse;
+        out->normal_impulses[k] = lanes ? lane_normal[k] : c->points[k].normal_impulse;
+        out->tangent_impulses[k] = lanes ? lane_tangent[k] : c->points[k].tangent_impulse;
         out->impact_impulses[k] = c->points[k].impact_impulse;
     }
     return SX_OK;
 }
 
 /* ---- stage 3: solve ------------------------------------------------------ */
+
+/* The sub-steps of h the step sx_world_begin_step began has (1 without a
+ * sensible ratio). */
+static int sx_step_sub_steps(const sx_world *world, sx_real h) {
+    sx_real r = world->step_dt / h;
+    return r >= SX_R(1.0) && r <= (sx_real)SX_MAX_SUB_STEPS ? (int)(r + SX_R(0.5)) : 1;
+}
 
 sx_status sx_world_solve(sx_world *world, sx_real h) {
     sx_status s = sx_check_step(world, h);
@@ -1448,9 +1463,14 @@ sx_status sx_world_solve(sx_world *world, sx_real h) {
      * impact by impact in time order, on the bodies' own velocities
      * (contact_solver.c says why); then the warm start and the passes solve
      * what rests and slides */
+    /* the impulses reach the contacts at the step's last sub-step (and
+     * whenever something reads them there before: sx_solver_hand_back);
+     * the ones between are read by nothing but the next sub-step's solve */
+    world->hand_back_later = ++world->step_solves < sx_step_sub_steps(world, h);
     warmed = sx_contacts_gather(world);
     impacts = sx_contacts_impacts(world, h);
     solved = sx_contacts_solve(world, h, world->def.velocity_iterations);
+    world->hand_back_later = false;
     if (solved) sx_contacts_energy_guard(world, h);
     /* what the impulses did stays within the limit too (an impulse at its
      * bound on a light body overflows its velocity) */
@@ -1520,11 +1540,7 @@ sx_status sx_world_step(sx_world *world, sx_real dt) {
     if (s != SX_OK) return s;
     for (i = 0; i < steps; ++i) {
         sx_world_apply_forces(world, h);
-        /* the impulses reach the contacts once, at the last sub-step: the
-         * ones between are read by nothing but the next sub-step's solve */
-        world->hand_back_later = i < steps - 1;
         s = sx_world_solve(world, h);
-        world->hand_back_later = false;
         if (s != SX_OK) {
             sx_solver_hand_back(world);
             return s;

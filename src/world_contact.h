@@ -236,6 +236,8 @@ bool sx_contacts_gather(sx_world *world);
  * solver took from it before (its credit), and keeps the credit left. */
 void sx_contacts_energy_guard(sx_world *world, sx_real h);
 void sx_solver_hand_back(sx_world *world);
+bool sx_solver_lane_impulses(const sx_world *world, int contact, sx_real normal[2],
+                             sx_real tangent[2]);
 /* The impact pass (restitution): false when its scratch could not grow (the
  * pass is then skipped). */
 bool sx_contacts_impacts(sx_world *world, sx_real h);

@@ -220,11 +220,13 @@ struct sx_world {
      * solver bodies in the same order (only their data is filled again) */
     int fill_count, fill_body_count, fill_min_colour;
     bool fill_valid, fill_fresh;
-    /* hand_back_later: set by sx_world_step for all but its last sub-step,
-     * whose last pass leaves the wide lanes' impulses in the lanes
+    /* hand_back_later: set by sx_world_solve for all but the last sub-step
+     * of a step (step_solves of step_dt / h since sx_world_begin_step), whose
+     * last pass leaves the wide lanes' impulses in the lanes
      * (impulses_in_lanes) until a reader needs them on the contacts
      * (sx_solver_hand_back); the next sub-step's kept fill starts from them */
     bool hand_back_later, impulses_in_lanes;
+    int step_solves;
     /* the wide lanes' gaps are the bodies' current poses' (the position
      * pass found them and moved no body): the next kept gather takes them
      * as they are; whatever moves a body ends it */
