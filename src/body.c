@@ -213,7 +213,9 @@ void sx_body_update_mass(sx_world *world, int slot) {
     }
     info->mass = mass;
     info->inertia = inertia;
-    /* keep the body origin where it is; move the centre of mass */
+    /* keep the body origin where it is; move the centre of mass (the
+     * contacts' anchors reach from it: prepared again, like a new mass) */
+    if (lc.x != sim->local_center.x || lc.y != sim->local_center.y) world->masses_changed = true;
     sim->local_center = lc;
     sim->center = sx_xform_point(sim->xf, lc);
     sx_body_refresh_sim(world, slot);

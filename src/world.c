@@ -1034,7 +1034,13 @@ static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, c
     c->friction = sx_sqrt(ca->friction * cb->friction);
     c->restitution = sx_maxr(ca->restitution, cb->restitution);
     c->count = m->count;
-    c->held = held && old != NULL && old->count == m->count;
+    /* (the held normal and anchors are world vectors of the search: A may
+     * not have turned since by more than the keep angle, as B may not
+     * relative to A) */
+    c->held = held && old != NULL && old->count == m->count &&
+              sx_dot(m->normal, old->normal) > SX_R(0.0) &&
+              sx_absr(sx_cross(m->normal, old->normal)) * world->def.length_units_per_meter <=
+                  world->def.manifold_keep_slops * world->linear_slop;
     if (c->held) {
         c->normal = old->normal;
         c->block = old->block;
@@ -1254,8 +1260,11 @@ static sx_status sx_collide_pair(sx_world *world, int i, uint64_t key, int old_b
     }
     if (n == SX_PAIR_PARTS) return sx_collide_parts(world, key, old_begin, old_end);
     if (n == 0) return SX_OK;
+    /* (held unless a mass or centre of mass changed since the contacts
+     * were last prepared: the collide then prepares every contact) */
     if ((n & SX_PAIR_KEPT) && old != NULL)
-        return sx_add_contact(world, key, 0, 0, m, old_begin, old_end, &old->kept, true);
+        return sx_add_contact(world, key, 0, 0, m, old_begin, old_end, &old->kept,
+                              !world->masses_changed);
     {
         const sx_collider *ca = &world->colliders[key >> 32];
         const sx_collider *cb = &world->colliders[key & 0xFFFFFFFFu];

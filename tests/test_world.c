@@ -891,6 +891,68 @@ static void a_lane_is_filled_again_when_its_manifold_was_searched_since(void **s
     sx_world_destroy(w);
 }
 
+/* Two boxes touching face to face in free space, turned together by a
+ * quarter turn about their middle: their relative pose is the same, so the
+ * kept manifold answers, but the contact's normal and levers are world
+ * vectors and must turn with them (a held contact keeps them only while A
+ * turned less than the keep angle). */
+static void a_kept_pair_turned_together_gets_turned_normal(void **state) {
+    sx_world_def def = sx_default_world_def();
+    sx_world *w;
+    sx_body_id a, b;
+    sx_contact_data c;
+    sx_real quarter = SX_R(1.5707963267948966);
+    (void)state;
+    def.gravity = sx_v2_zero();
+    w = sx_world_create(&def);
+    assert_non_null(w);
+    a = sx_test_body(w, SX_BODY_DYNAMIC, sx_v2_zero(), sx_box_shape(SX_R(0.5), SX_R(0.5)), NULL);
+    b = sx_test_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.999)),
+                     sx_box_shape(SX_R(0.5), SX_R(0.5)), NULL);
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_int_equal(sx_world_get_contact(w, 0, &c), SX_OK);
+    assert_near(c.normal.y, 1.0, 1e-6);
+    assert_int_equal(sx_body_set_transform(w, a, sx_v2_zero(), quarter), SX_OK);
+    assert_int_equal(sx_body_set_transform(w, b, sx_v2(SX_R(-0.999), SX_R(0.0)), quarter), SX_OK);
+    assert_int_equal(sx_body_set_linear_velocity(w, a, sx_v2_zero()), SX_OK);
+    assert_int_equal(sx_body_set_linear_velocity(w, b, sx_v2_zero()), SX_OK);
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    assert_int_equal(sx_world_get_contact(w, 0, &c), SX_OK);
+    assert_near(c.normal.x, -1.0, 1e-5);
+    assert_near(c.normal.y, 0.0, 1e-5);
+    /* and the solver pushed them apart along it, not along the old one */
+    assert_true(sx_body_get_linear_velocity(w, b).x <= SX_R(0.0));
+    assert_near(sx_body_get_linear_velocity(w, b).y, 0.0, 1e-4);
+    sx_world_destroy(w);
+}
+
+/* A resting box whose density goes from 1 to 100: the next collide keeps
+ * the pair's manifold, but the contact's effective masses must be the new
+ * body's (a contact that kept its old ones pushed a hundredth of the
+ * support: the box sank, and with huge steps a pair of them left the world
+ * as NaN, fuzz input world-held-contact-stale-masses-nan). The support of
+ * the step's last sub-step is then m g h. */
+static void a_contact_kept_through_a_mass_change_takes_the_new_masses(void **state) {
+    sx_body_id boxes[ROW_BOXES];
+    sx_collider_id colliders[ROW_BOXES];
+    sx_world *w = row_world(SX_R(0.0), boxes, colliders);
+    int i, k;
+    (void)state;
+    for (i = 0; i < ROW_BOXES; ++i)
+        assert_int_equal(sx_collider_set_density(w, colliders[i], SX_R(100.0)), SX_OK);
+    assert_int_equal(sx_world_step(w, DT), SX_OK);
+    for (i = 0; i < sx_world_contact_count(w); ++i) {
+        sx_contact_data c;
+        double support = 0.0, weight;
+        assert_int_equal(sx_world_get_contact(w, i, &c), SX_OK);
+        for (k = 0; k < c.count; ++k)
+            support += (double)c.normal_impulses[k];
+        weight = (double)sx_body_get_mass(w, boxes[i]) * 10.0 * (double)DT / 4.0;
+        assert_near(support, weight, 0.02 * weight);
+    }
+    sx_world_destroy(w);
+}
+
 /* manifold_keep_slops: 0 .. 1, finite. */
 static void manifold_keep_slops_is_refused_outside_zero_to_one(void **state) {
     sx_world_def d = sx_default_world_def();
@@ -2008,6 +2070,8 @@ int main(void) {
         cmocka_unit_test(a_kept_one_point_manifold_is_found_again_when_the_margin_grows),
         cmocka_unit_test(manifold_keep_slops_is_refused_outside_zero_to_one),
         cmocka_unit_test(a_box_slides_at_once_when_its_friction_goes_to_zero),
+        cmocka_unit_test(a_kept_pair_turned_together_gets_turned_normal),
+        cmocka_unit_test(a_contact_kept_through_a_mass_change_takes_the_new_masses),
         cmocka_unit_test(a_lane_is_filled_again_when_its_manifold_was_searched_since),
         cmocka_unit_test(world_queries_find_the_colliders_at_their_current_place),
         cmocka_unit_test(debug_draw_visits_every_collider_and_contact_point),
