@@ -1495,23 +1495,18 @@ static int sx_min_colour(const sx_world *world) {
     return world->wide_min_colour > 0 ? world->wide_min_colour : SX_WIDE_MIN_COLOUR;
 }
 
-/* Whether item it's lane, filled after the collide before this one, stands
- * for contact ct (the walk's i-th, naming solver bodies a and b) as it is
- * (read before the walk writes the item over): the same contact in the
- * same slot, with the same bodies, masses and friction, and a manifold
- * this collide kept rather than searched. Its levers, masses and normal
- * are then those of the same manifold, as the bodies stood when the lane
- * was filled, which the kept manifold's tolerance says they still nearly
- * do; its gaps follow the bodies from its frame (sx_solver_gather). */
-static bool sx_item_holds(const sx_world *world, const sx_colour_item *it, const sx_contact *ct,
-                          int i, int a, int b) {
+/* Whether item it (as the last walk wrote it) was made from contact ct as
+ * it is now: the walk's i-th contact, naming solver bodies a and b, with
+ * the same key, parts, point count, masses and kinds. */
+static bool sx_item_is(const sx_world *world, const sx_colour_item *it, const sx_contact *ct,
+                       int i, int a, int b) {
     const sx_body_sim *sa = &world->sims[ct->body_a], *sb = &world->sims[ct->body_b];
-    return it->wide && ct->held && it->contact == i && it->key == ct->key &&
-           it->part_a == ct->part_a && it->part_b == ct->part_b && it->count == ct->count &&
-           it->body_a == a && it->body_b == b && it->inv_mass_a == sa->inv_mass &&
+    return it->contact == i && it->key == ct->key && it->part_a == ct->part_a &&
+           it->part_b == ct->part_b && it->count == ct->count && it->body_a == a &&
+           it->body_b == b && it->inv_mass_a == sa->inv_mass &&
            it->inv_inertia_a == sa->inv_inertia && it->inv_mass_b == sb->inv_mass &&
            it->inv_inertia_b == sb->inv_inertia && it->dynamic_a == sa->dynamic &&
-           it->dynamic_b == sb->dynamic && it->friction == ct->friction;
+           it->dynamic_b == sb->dynamic;
 }
 
 /* Walks the active contacts into the colour items: each point's gap from the
@@ -1547,12 +1542,7 @@ static int sx_gather_items(sx_world *world, bool fill, bool *same_out, bool *pat
         a = sx_solver_body_of(world, ct->body_a);
         b = sx_solver_body_of(world, ct->body_b);
         ++n;
-        if (same && n <= world->fill_count && it->contact == i && it->key == ct->key &&
-            it->part_a == ct->part_a && it->part_b == ct->part_b && it->count == ct->count &&
-            it->body_a == a && it->body_b == b && it->inv_mass_a == sa->inv_mass &&
-            it->inv_inertia_a == sa->inv_inertia && it->inv_mass_b == sb->inv_mass &&
-            it->inv_inertia_b == sb->inv_inertia && it->dynamic_a == sa->dynamic &&
-            it->dynamic_b == sb->dynamic) {
+        if (same && n <= world->fill_count && sx_item_is(world, it, ct, i, a, b)) {
             /* the new gaps into the kept fill, while the contact is at hand */
             sx_update_gaps(world, ct);
             sx_item_put_gaps(world, it, ct);
@@ -1565,7 +1555,14 @@ static int sx_gather_items(sx_world *world, bool fill, bool *same_out, bool *pat
         /* (read only where the pattern holds: past the fill's items they
          * were never written) */
         kinds = kinds && pattern && it->dynamic_a == sa->dynamic && it->dynamic_b == sb->dynamic;
-        held = hold && pattern && sx_item_holds(world, it, ct, i, a, b);
+        /* a wide lane filled after the collide before this one stands for
+         * the same contact in the same slot, with the same friction, whose
+         * manifold this collide kept (held): its levers, masses and normal
+         * are the search's, which the kept manifold's tolerance says still
+         * nearly hold; its gaps follow the bodies from its frame
+         * (sx_solver_gather) */
+        held = hold && pattern && it->wide && ct->held && it->friction == ct->friction &&
+               sx_item_is(world, it, ct, i, a, b);
         *any_held = *any_held || held;
         /* (a held contact's gaps are read by nothing before the next walk,
          * bar a fill from scratch, which updates them itself) */
@@ -1787,7 +1784,6 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
     world->solver_bodies[0].pad = SX_R(0.0);
     world->solver_body_count = 1;
     if (!warm || world->def.contact_hertz > SX_R(0.0)) {
-        world->lane_gaps_current = false;
         sx_gather_sequential(world, warm);
         world->solver_gathered = true;
         return true;
@@ -1797,7 +1793,6 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
         n = world->fill_count;
         same = true;
     } else {
-        world->lane_gaps_current = false;
         /* after a collide: the items are filled as the walk goes, which
          * needs room for the groups (a cold start without it); the groups
          * are linked after it, unless the last link still stands (a resting

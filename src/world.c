@@ -1053,12 +1053,8 @@ static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, c
             p->gap = p->separation;
             p->impact_impulse = SX_R(0.0);
         }
-        c->kept = *kept;
-        sx_drop_tangent_impulses(c);
-        if (c->restitution > SX_R(0.0)) world->bouncy_contacts++;
-        return SX_OK;
     }
-    for (k = 0; k < m->count; ++k) {
+    for (k = 0; k < m->count && !c->held; ++k) {
         const sx_manifold_point *mp = &m->points[k];
         sx_contact_point *p = &c->points[k];
         sx_vec2 d;
@@ -1084,7 +1080,7 @@ static sx_status sx_add_contact(sx_world *world, uint64_t key, int pa, int pb, c
     else
         c->kept.valid = false;
     sx_drop_tangent_impulses(c);
-    sx_contact_prepare(world, c);
+    if (!c->held) sx_contact_prepare(world, c);
     if (c->restitution > SX_R(0.0)) world->bouncy_contacts++;
     return SX_OK;
 }
@@ -1339,7 +1335,6 @@ sx_status sx_world_collide(sx_world *world) {
     world->by_body_valid = false;
     world->contact_serial++;
     world->collides++;
-    world->lane_gaps_current = false;
 
     s = sx_world_refresh_sets(world);
     if (s != SX_OK) return s;

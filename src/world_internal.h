@@ -229,7 +229,9 @@ struct sx_world {
     int step_solves;
     /* the wide lanes' gaps are the bodies' current poses' (the position
      * pass found them and moved no body): the next kept gather takes them
-     * as they are; whatever moves a body ends it */
+     * as they are; whatever moves a body ends it (integrate, continuous,
+     * sx_body_set_transform; a collide or a change of the solver's bodies
+     * ends the kept fill itself) */
     bool lane_gaps_current;
     /* the arrays hold the current solve's gather (from the warm start to
      * the scatter after the passes) */
@@ -252,10 +254,7 @@ struct sx_world {
 static inline bool sx_world_locked(const sx_world *world) { return world->lock_depth > 0; }
 
 /* Notes a change to the solver's bodies or active contacts (solver_epoch). */
-static inline void sx_world_solver_changed(sx_world *world) {
-    world->solver_epoch++;
-    world->lane_gaps_current = false;
-}
+static inline void sx_world_solver_changed(sx_world *world) { world->solver_epoch++; }
 
 /* True when the solver must work on a contact: at least one of its bodies
  * is dynamic and awake. */
