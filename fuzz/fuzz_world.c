@@ -171,6 +171,19 @@ static bool wld_nan_checked(const wld_state *s) {
     return s->sane || (WLD_STRICT_NAN >= 1 && s->bounded) || WLD_STRICT_NAN >= 2;
 }
 
+/* The light contact read gives the full read's pair, normal and points,
+ * bit for bit. */
+static bool wld_pair_is(const sx_contact_pair *p, const sx_contact_data *d) {
+    return sx_body_id_to_u64(p->body_a) == sx_body_id_to_u64(d->body_a) &&
+           sx_body_id_to_u64(p->body_b) == sx_body_id_to_u64(d->body_b) &&
+           sx_collider_id_to_u64(p->collider_a) == sx_collider_id_to_u64(d->collider_a) &&
+           sx_collider_id_to_u64(p->collider_b) == sx_collider_id_to_u64(d->collider_b) &&
+           p->part_a == d->part_a && p->part_b == d->part_b && p->count == d->count &&
+           d->count >= 0 && d->count <= 2 &&
+           memcmp(&p->normal, &d->normal, sizeof(d->normal)) == 0 &&
+           memcmp(p->points, d->points, (size_t)d->count * sizeof(d->points[0])) == 0;
+}
+
 static void wld_check_world(const wld_state *s) {
     int i;
     FZ_CHECK(sx_world_body_count(s->w) == s->body_count);
@@ -222,11 +235,22 @@ static void wld_check_world(const wld_state *s) {
     {
         int n = sx_world_contact_count(s->w), k, j;
         sx_contact_data cd;
+        sx_contact_pair pairs[8];
         FZ_CHECK(n >= 0);
         FZ_CHECK(sx_world_get_contact(s->w, n, &cd) == SX_ERR_INVALID_ARG);
         FZ_CHECK(sx_world_get_contact(s->w, -1, &cd) == SX_ERR_INVALID_ARG);
+        FZ_CHECK(sx_world_get_contact_pairs(s->w, n, pairs, 8) == 0);
+        FZ_CHECK(sx_world_get_contact_pairs(s->w, -1, pairs, 8) == 0);
+        if (n > 0) {
+            /* the list's tail, past any tombstones, read both ways */
+            FZ_CHECK(sx_world_get_contact_pairs(s->w, n - 1, pairs, 8) == 1);
+            FZ_CHECK(sx_world_get_contact(s->w, n - 1, &cd) == SX_OK);
+            FZ_CHECK(wld_pair_is(&pairs[0], &cd));
+        }
+        FZ_CHECK(sx_world_get_contact_pairs(s->w, 0, pairs, 8) == (n < 8 ? n : 8));
         for (k = 0; k < n && k < 8; ++k) {
             FZ_CHECK(sx_world_get_contact(s->w, k, &cd) == SX_OK);
+            FZ_CHECK(wld_pair_is(&pairs[k], &cd));
             FZ_CHECK(cd.count >= 1 && cd.count <= 2);
             if (!wld_nan_checked(s)) continue;
             FZ_CHECK(!fz_is_nan(cd.normal.x) && !fz_is_nan(cd.normal.y));

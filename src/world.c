@@ -1444,6 +1444,48 @@ sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data
     return SX_OK;
 }
 
+int sx_world_get_contact_pairs(const sx_world *world, int first, sx_contact_pair *out,
+                               int capacity) {
+    int total, p, skip, n = 0;
+    bool dense;
+    if (world == NULL || out == NULL || capacity < 1 || first < 0 ||
+        first >= sx_world_contact_count(world)) {
+        return 0;
+    }
+    /* the live list as sx_world_live_contact numbers it, walked once: the
+     * step's contacts, then the frozen ones, tombstones (count 0) skipped */
+    total = world->contact_count + world->frozen_count;
+    dense = world->contact_dead + world->frozen_dead == 0;
+    p = dense ? first : 0;
+    skip = dense ? 0 : first;
+    for (; p < total && n < capacity; ++p) {
+        const sx_contact *c = p < world->contact_count ? &world->contacts[p]
+                                                       : &world->frozen[p - world->contact_count];
+        sx_contact_pair *o = &out[n];
+        if (c->count == 0) continue;
+        if (skip > 0) {
+            --skip;
+            continue;
+        }
+        o->collider_a.index = (uint32_t)c->collider_a;
+        o->collider_a.generation = world->collider_generations[c->collider_a];
+        o->collider_b.index = (uint32_t)c->collider_b;
+        o->collider_b.generation = world->collider_generations[c->collider_b];
+        o->body_a.index = (uint32_t)c->body_a;
+        o->body_a.generation = world->infos[c->body_a].generation;
+        o->body_b.index = (uint32_t)c->body_b;
+        o->body_b.generation = world->infos[c->body_b].generation;
+        o->part_a = c->part_a;
+        o->part_b = c->part_b;
+        o->normal = c->normal;
+        o->count = c->count;
+        o->points[0] = c->points[0].point;
+        o->points[1] = c->count > 1 ? c->points[1].point : sx_v2_zero();
+        ++n;
+    }
+    return n;
+}
+
 /* ---- stage 3: solve ------------------------------------------------------ */
 
 /* The sub-steps of h the step sx_world_begin_step began has (1 without a

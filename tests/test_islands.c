@@ -3,6 +3,7 @@
  * waking its body's island), the collision filter's
  * truth table, sensors that never push, and a sleeping world that costs no
  * contacts in the solver's list. */
+#include <limits.h>
 #include <stdio.h>
 
 #include "test_support.h"
@@ -83,6 +84,108 @@ static void sleeping_pyramid_wakes_when_a_ball_hits_it_and_sleeps_again(void **s
     assert_true(steps > 10);
     /* a 0.3 m ball at 6 m/s pushes the base; the pyramid must still stand */
     assert_near(sx_body_get_position(w, ids[PYRAMID - 1]).y, top_y, 0.05);
+    sx_world_destroy(w);
+}
+
+/* Reads the whole contact list with sx_world_get_contact_pairs in batches
+ * of `batch` from `first` on and checks each pair against
+ * sx_world_get_contact; returns how many it read. */
+static int pairs_match_full_reads(const sx_world *w, int first, int batch) {
+    sx_contact_pair got[5];
+    int n = sx_world_contact_count(w), i = first, k;
+    while (i < n) {
+        int read = sx_world_get_contact_pairs(w, i, got, batch);
+        assert_int_equal(read, n - i < batch ? n - i : batch);
+        for (k = 0; k < read; ++k) {
+            sx_contact_data d;
+            assert_int_equal(sx_world_get_contact(w, i + k, &d), SX_OK);
+            assert_true(sx_body_id_to_u64(got[k].body_a) == sx_body_id_to_u64(d.body_a));
+            assert_true(sx_body_id_to_u64(got[k].body_b) == sx_body_id_to_u64(d.body_b));
+            assert_true(sx_collider_id_to_u64(got[k].collider_a) ==
+                        sx_collider_id_to_u64(d.collider_a));
+            assert_true(sx_collider_id_to_u64(got[k].collider_b) ==
+                        sx_collider_id_to_u64(d.collider_b));
+            assert_int_equal(got[k].part_a, d.part_a);
+            assert_int_equal(got[k].part_b, d.part_b);
+            assert_int_equal(got[k].count, d.count);
+            assert_memory_equal(&got[k].normal, &d.normal, sizeof(d.normal));
+            assert_memory_equal(&got[k].points[0], &d.points[0], sizeof(d.points[0]));
+            if (d.count == 2) {
+                assert_memory_equal(&got[k].points[1], &d.points[1], sizeof(d.points[1]));
+            }
+        }
+        i += read;
+    }
+    return i - first;
+}
+
+/* The light read walks the same list as sx_world_get_contact, the frozen
+ * contacts of a sleeping pile and the tombstones of a destroyed body
+ * included, and answers bad arguments with 0. */
+static void the_light_contact_read_walks_the_list_of_the_full_one(void **state) {
+    sx_world_def def = sx_default_world_def();
+    sx_shape ground = sx_box_shape(SX_R(20.0), SX_R(0.5)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    sx_compound_part parts[2];
+    sx_compound dumbbell;
+    sx_collider_def cd = sx_default_collider_def();
+    sx_body_def bd = sx_default_body_def();
+    sx_body_id ids[PYRAMID], bar;
+    sx_contact_pair out[2];
+    sx_world *w;
+    int row, col, n = 0, count, i, parted = 0;
+    (void)state;
+    w = sx_world_create(&def);
+    assert_non_null(w);
+    add_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-0.5)), &ground, true);
+    for (row = 0; row < BASE; ++row) {
+        for (col = 0; col < BASE - row; ++col) {
+            sx_real x = SX_R(1.05) * ((sx_real)col - SX_R(0.5) * (sx_real)(BASE - row - 1));
+            ids[n++] = add_body(w, SX_BODY_DYNAMIC, sx_v2(x, SX_R(0.5) + (sx_real)row), &box, true);
+        }
+    }
+    assert_int_equal(step_until_asleep(w, 600) < 600, true);
+    /* a compound that stays awake beside the sleeping pyramid: two part
+     * pairs with the ground, listed one after the other */
+    parts[0].shape = sx_box_shape(SX_R(0.3), SX_R(0.3));
+    parts[0].offset = sx_xform_make(sx_v2(SX_R(-1.0), SX_R(0.0)), SX_R(0.0));
+    parts[1].shape = sx_circle_shape(sx_v2_zero(), SX_R(0.3));
+    parts[1].offset = sx_xform_make(sx_v2(SX_R(1.0), SX_R(0.0)), SX_R(0.0));
+    dumbbell.parts = parts;
+    dumbbell.count = 2;
+    bd.type = SX_BODY_DYNAMIC;
+    bd.position = sx_v2(SX_R(10.0), SX_R(0.35));
+    bd.enable_sleep = false;
+    assert_int_equal(sx_create_body(w, &bd, &bar), SX_OK);
+    assert_int_equal(sx_body_add_compound(w, bar, &dumbbell, &cd, NULL), SX_OK);
+    for (i = 0; i < 30; ++i)
+        assert_int_equal(sx_world_step(w, DT), SX_OK);
+    count = sx_world_contact_count(w);
+    assert_true(count >= PYRAMID + 2);
+    for (i = 0; i < count; ++i) {
+        sx_contact_data d;
+        assert_int_equal(sx_world_get_contact(w, i, &d), SX_OK);
+        parted += d.part_a + d.part_b > 0;
+    }
+    assert_true(parted >= 1);
+    assert_int_equal(pairs_match_full_reads(w, 0, 5), count);
+    assert_int_equal(pairs_match_full_reads(w, 3, 2), count - 3);
+    assert_int_equal(pairs_match_full_reads(w, count - 1, 5), 1);
+    /* a destroyed box (the first: its contacts lead the list) leaves
+     * tombstones in the sleeping contacts until the next collide: the light
+     * read skips them as the full one does */
+    assert_int_equal(sx_destroy_body(w, ids[0]), SX_OK);
+    assert_true(sx_world_contact_count(w) < count);
+    count = sx_world_contact_count(w);
+    for (i = 0; i < count; i += 3)
+        assert_int_equal(pairs_match_full_reads(w, i, 4), count - i);
+    /* bad arguments */
+    assert_int_equal(sx_world_get_contact_pairs(NULL, 0, out, 2), 0);
+    assert_int_equal(sx_world_get_contact_pairs(w, 0, NULL, 2), 0);
+    assert_int_equal(sx_world_get_contact_pairs(w, 0, out, 0), 0);
+    assert_int_equal(sx_world_get_contact_pairs(w, 0, out, -1), 0);
+    assert_int_equal(sx_world_get_contact_pairs(w, -1, out, 2), 0);
+    assert_int_equal(sx_world_get_contact_pairs(w, count, out, 2), 0);
+    assert_int_equal(sx_world_get_contact_pairs(w, INT_MAX, out, 2), 0);
     sx_world_destroy(w);
 }
 
@@ -510,6 +613,7 @@ int main(void) {
         cmocka_unit_test(a_sleeping_pile_reports_no_end_and_no_begin_when_it_wakes),
         cmocka_unit_test(sleeping_pyramid_wakes_when_a_ball_hits_it_and_sleeps_again),
         cmocka_unit_test(a_pile_falling_asleep_keeps_every_contact_and_its_impulses),
+        cmocka_unit_test(the_light_contact_read_walks_the_list_of_the_full_one),
         cmocka_unit_test(a_body_with_sleep_off_keeps_its_island_awake),
         cmocka_unit_test(every_force_and_impulse_wakes_a_sleeping_body_and_its_island),
         cmocka_unit_test(a_ball_in_flight_longer_than_time_to_sleep_stays_awake),

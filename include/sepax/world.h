@@ -520,6 +520,25 @@ SX_API int sx_world_contact_count(const sx_world *world);
  *  NULL or an index out of range. */
 SX_API sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data *out);
 
+/** A contact's pair, normal and points without its depths and impulses: the
+ *  light read for copying every contact each step. */
+typedef struct sx_contact_pair {
+    sx_collider_id collider_a, collider_b;
+    sx_body_id body_a, body_b;
+    /** As sx_contact_data. */
+    int part_a, part_b;
+    sx_vec2 normal;
+    int count;
+    sx_vec2 points[2];
+} sx_contact_pair;
+
+/** Copies contacts first, first + 1, ... (the indices of sx_world_get_contact)
+ *  into out[0 .. capacity-1] and returns how many it copied: fewer than
+ *  capacity at the end of the list, 0 for NULL, capacity < 1 or first
+ *  outside 0 .. count-1. One call walks the list once. */
+SX_API int sx_world_get_contact_pairs(const sx_world *world, int first, sx_contact_pair *out,
+                                      int capacity);
+
 /* ---- contact events ------------------------------------------------------ */
 
 /** Two colliders that started or stopped touching. "Touching" is having a
