@@ -50,24 +50,32 @@ ECS_DECLARE(SxSensorEnd);
  * 0.1 / (1/60) rounds either way in binary. */
 #define SX_ECS_TICK_TOLERANCE 1e-6
 
+/* Contacts read from the world per call when publishing SxContacts (a
+ * buffer on the stack, under 13 KiB in the double build). */
+#define SX_ECS_CONTACT_BATCH 128
+
 /* Most systems one physics tag runs per step (ours and the game's). */
 #define SX_ECS_MAX_PHASE_SYSTEMS 64
 
 /* What the module created in the world for one entity, and the body
- * parameters it was built with (those without a world setter rebuild it). */
+ * parameters it was built with (those without a world setter rebuild it).
+ * Every step reads each link twice (push, copy-out): it holds only the
+ * SxBody fields it compares, to stay near one cache line. */
 typedef struct sx_ecs_link {
-    ecs_entity_t entity;
+    ecs_entity_t entity; /* 0: a free slot */
     sx_body_id body;
     sx_collider_id collider;
-    bool has_collider;
-    bool collider_dirty;
-    SxBody built;
     /* What the world holds, as of the last build, push or copy-out: a
      * component equal to it was not written by the game, and an unchanged
      * rotation keeps its angle (no atan2 per resting body and step). */
     sx_vec2 position, velocity;
     sx_rot rotation;
     sx_real angle, angular_velocity;
+    sx_real mass, linear_damping, angular_damping, gravity_scale;
+    sx_body_type type;
+    bool fixed_rotation, bullet;
+    bool has_collider;
+    bool collider_dirty;
 } sx_ecs_link;
 
 typedef struct sx_ecs_doomed {
@@ -77,10 +85,17 @@ typedef struct sx_ecs_doomed {
 
 typedef struct sx_ecs_state {
     sx_world *world;
-    /* entity -> link, indexed by the entity's index (its low 32 bits, dense
-     * in flecs): one load per entity and step instead of a hash lookup */
-    sx_ecs_link **links;
-    uint32_t link_cap;
+    /* entity -> link: link_of, indexed by the entity's index (its low 32
+     * bits, dense in flecs), holds 1 + the link's place in `links` (0:
+     * none), 4 bytes for each entity of the game; the links lie together,
+     * made in the order the module first met the entities (a table's
+     * order), so a step streams through them; freed places are reused */
+    int32_t *link_of;
+    uint32_t link_of_cap;
+    sx_ecs_link *links;
+    int32_t link_count, link_cap;
+    int32_t *free_links;
+    int32_t free_count, free_cap;
     ecs_entity_t *body_entity; /* by body slot index */
     int32_t body_entity_cap;
     double accumulator;
@@ -99,8 +114,23 @@ typedef struct sx_ecs_state {
 
 static sx_ecs_link *sx_ecs_find(const sx_ecs_state *st, ecs_entity_t e) {
     uint32_t index = (uint32_t)e;
-    sx_ecs_link *link = index < st->link_cap ? st->links[index] : NULL;
-    return link != NULL && link->entity == e ? link : NULL;
+    int32_t at = index < st->link_of_cap ? st->link_of[index] : 0;
+    return at > 0 && st->links[at - 1].entity == e ? &st->links[at - 1] : NULL;
+}
+
+/* Grows an int32 array to hold `need` entries (new ones zeroed). */
+static bool sx_ecs_grow_ints(int32_t **items, uint32_t *cap, uint32_t need) {
+    uint32_t n = *cap ? *cap : 1024;
+    int32_t *grown;
+    if (need <= *cap) return true;
+    while (n < need)
+        n *= 2;
+    grown = (int32_t *)realloc(*items, (size_t)n * sizeof(*grown));
+    if (grown == NULL) return false;
+    memset(grown + *cap, 0, (size_t)(n - *cap) * sizeof(*grown));
+    *items = grown;
+    *cap = n;
+    return true;
 }
 
 /* Remembers what the world now holds for the link's body. */
@@ -188,9 +218,13 @@ static void sx_ecs_build(sx_ecs_state *st, ecs_entity_t e, sx_ecs_link *link, co
         def.gravity_scale = b->gravity_scale;
         def.fixed_rotation = b->fixed_rotation;
         def.bullet = b->bullet;
-        link->built = *b;
-    } else {
-        memset(&link->built, 0, sizeof(link->built));
+        link->type = b->type;
+        link->mass = b->mass;
+        link->linear_damping = b->linear_damping;
+        link->angular_damping = b->angular_damping;
+        link->gravity_scale = b->gravity_scale;
+        link->fixed_rotation = b->fixed_rotation;
+        link->bullet = b->bullet;
     }
     link->has_collider = false;
     link->collider_dirty = false;
@@ -206,24 +240,29 @@ static void sx_ecs_unlink(sx_ecs_state *st, ecs_entity_t e);
 
 static sx_ecs_link *sx_ecs_link_new(sx_ecs_state *st, ecs_entity_t e) {
     uint32_t index = (uint32_t)e;
+    int32_t at;
     sx_ecs_link *link;
-    if (index >= st->link_cap) {
-        uint32_t cap = st->link_cap ? st->link_cap : 1024;
-        sx_ecs_link **grown;
-        while (cap <= index)
-            cap *= 2;
-        grown = (sx_ecs_link **)realloc(st->links, (size_t)cap * sizeof(*grown));
-        if (grown == NULL) return NULL;
-        memset(grown + st->link_cap, 0, (size_t)(cap - st->link_cap) * sizeof(*grown));
-        st->links = grown;
-        st->link_cap = cap;
-    }
+    if (!sx_ecs_grow_ints(&st->link_of, &st->link_of_cap, index + 1u)) return NULL;
     /* a recycled index whose previous entity left without its hooks */
-    if (st->links[index] != NULL) sx_ecs_unlink(st, st->links[index]->entity);
-    link = (sx_ecs_link *)calloc(1, sizeof(*link));
-    if (link == NULL) return NULL;
+    at = st->link_of[index];
+    if (at > 0 && st->links[at - 1].entity != 0) sx_ecs_unlink(st, st->links[at - 1].entity);
+    if (st->free_count > 0) {
+        at = st->free_links[--st->free_count];
+    } else {
+        if (st->link_count == st->link_cap) {
+            /* moves the links: no caller holds one across this call */
+            int32_t cap = st->link_cap ? 2 * st->link_cap : 1024;
+            sx_ecs_link *grown = (sx_ecs_link *)realloc(st->links, (size_t)cap * sizeof(*grown));
+            if (grown == NULL) return NULL;
+            st->links = grown;
+            st->link_cap = cap;
+        }
+        at = st->link_count++;
+    }
+    link = &st->links[at];
+    memset(link, 0, sizeof(*link));
     link->entity = e;
-    st->links[index] = link;
+    st->link_of[index] = at + 1;
     return link;
 }
 
@@ -249,12 +288,19 @@ static void sx_ecs_destroy(sx_ecs_state *st, uint64_t id, bool collider) {
 static void sx_ecs_unlink(sx_ecs_state *st, ecs_entity_t e) {
     sx_ecs_link *link = sx_ecs_find(st, e);
     if (link == NULL) return;
-    st->links[(uint32_t)e] = NULL;
     if (sx_body_is_valid(st->world, link->body)) {
         if ((int32_t)link->body.index < st->body_entity_cap) st->body_entity[link->body.index] = 0;
         sx_ecs_destroy(st, sx_body_id_to_u64(link->body), false);
     }
-    free(link);
+    link->entity = 0;
+    st->link_of[(uint32_t)e] = 0;
+    /* the place is reused; out of memory, it stays unused */
+    if (st->free_count == st->free_cap) {
+        uint32_t cap = (uint32_t)st->free_cap;
+        if (!sx_ecs_grow_ints(&st->free_links, &cap, cap + 1u)) return;
+        st->free_cap = (int32_t)cap;
+    }
+    st->free_links[st->free_count++] = (int32_t)(link - st->links);
 }
 
 /* ---- hooks: an entity's body lives as long as its components ------------- */
@@ -358,10 +404,9 @@ static void sx_ecs_collider_move(void *dst_ptr, void *src_ptr, int32_t count,
 
 static void sx_ecs_state_free(void *ctx) {
     sx_ecs_state *st = (sx_ecs_state *)ctx;
-    uint32_t i;
-    for (i = 0; i < st->link_cap; ++i)
-        free(st->links[i]);
+    free(st->link_of);
     free(st->links);
+    free(st->free_links);
     sx_world_destroy(st->world);
     free(st->body_entity);
     free(st->contacts);
@@ -373,28 +418,28 @@ static void sx_ecs_state_free(void *ctx) {
 
 /* ---- PreStep: components -> world ---------------------------------------- */
 
-static bool sx_ecs_params_differ(const SxBody *a, const SxBody *b) {
-    return a->mass != b->mass || a->linear_damping != b->linear_damping ||
-           a->angular_damping != b->angular_damping || a->gravity_scale != b->gravity_scale ||
-           a->fixed_rotation != b->fixed_rotation;
+static bool sx_ecs_params_differ(const SxBody *b, const sx_ecs_link *link) {
+    return b->mass != link->mass || b->linear_damping != link->linear_damping ||
+           b->angular_damping != link->angular_damping || b->gravity_scale != link->gravity_scale ||
+           b->fixed_rotation != link->fixed_rotation;
 }
 
 /* Pushes what the game changed since the last copy-out into the world. */
 static void sx_ecs_push(sx_ecs_state *st, ecs_entity_t e, sx_ecs_link *link, const SxTransform *t,
                         SxBody *b, const SxCollider *c) {
     sx_world *w = st->world;
-    if (b != NULL && sx_ecs_params_differ(b, &link->built)) {
+    if (b != NULL && sx_ecs_params_differ(b, link)) {
         sx_destroy_body(w, link->body);
         sx_ecs_build(st, e, link, t, b, c);
         return;
     }
-    if (b != NULL && b->type != link->built.type) {
+    if (b != NULL && b->type != link->type) {
         sx_body_set_type(w, link->body, b->type);
-        link->built.type = b->type;
+        link->type = b->type;
     }
-    if (b != NULL && b->bullet != link->built.bullet) {
+    if (b != NULL && b->bullet != link->bullet) {
         sx_body_set_bullet(w, link->body, b->bullet);
-        link->built.bullet = b->bullet;
+        link->bullet = b->bullet;
     }
     if (t->position.x != link->position.x || t->position.y != link->position.y ||
         t->angle != link->angle) {
@@ -675,36 +720,43 @@ static void sx_ecs_publish_contacts(ecs_iter_t *it) {
     st->contact_cap = swap_cap;
     st->contact_count = 0;
     if (!sx_ecs_reserve(&st->contacts, &st->contact_cap, n)) n = 0;
-    for (i = 0; i < n; ++i) {
-        sx_contact_data d;
-        SxContact *c = &st->contacts[kept];
-        ecs_entity_t ea, eb;
-        if (sx_world_get_contact(w, i, &d) != SX_OK) continue;
-        /* a compound's part pairs follow one another: one SxContact per
-         * collider pair, with the first part pair's normal and point and
-         * every part pair's points counted */
-        if (kept > 0 && d.collider_a.index == prev_a.index &&
-            d.collider_a.generation == prev_a.generation && d.collider_b.index == prev_b.index &&
-            d.collider_b.generation == prev_b.generation) {
-            st->contacts[kept - 1].point_count += d.count;
-            continue;
+    for (i = 0; i < n;) {
+        /* in batches: the light read walks the world's list once */
+        sx_contact_pair batch[SX_ECS_CONTACT_BATCH];
+        int32_t got = sx_world_get_contact_pairs(w, i, batch, SX_ECS_CONTACT_BATCH), k;
+        if (got == 0) break;
+        i += got;
+        for (k = 0; k < got; ++k) {
+            const sx_contact_pair *d = &batch[k];
+            SxContact *c = &st->contacts[kept];
+            ecs_entity_t ea, eb;
+            /* a compound's part pairs follow one another: one SxContact per
+             * collider pair, with the first part pair's normal and point and
+             * every part pair's points counted */
+            if (kept > 0 && d->collider_a.index == prev_a.index &&
+                d->collider_a.generation == prev_a.generation &&
+                d->collider_b.index == prev_b.index &&
+                d->collider_b.generation == prev_b.generation) {
+                st->contacts[kept - 1].point_count += d->count;
+                continue;
+            }
+            prev_a = d->collider_a;
+            prev_b = d->collider_b;
+            ea = sx_ecs_entity_at(st, d->body_a);
+            eb = sx_ecs_entity_at(st, d->body_b);
+            c->point_count = d->count;
+            c->point = d->points[0];
+            if (ea <= eb) {
+                c->entity_a = ea;
+                c->entity_b = eb;
+                c->normal = d->normal;
+            } else {
+                c->entity_a = eb;
+                c->entity_b = ea;
+                c->normal = sx_neg(d->normal);
+            }
+            ++kept;
         }
-        prev_a = d.collider_a;
-        prev_b = d.collider_b;
-        ea = sx_ecs_entity_at(st, d.body_a);
-        eb = sx_ecs_entity_at(st, d.body_b);
-        c->point_count = d.count;
-        c->point = d.points[0];
-        if (ea <= eb) {
-            c->entity_a = ea;
-            c->entity_b = eb;
-            c->normal = d.normal;
-        } else {
-            c->entity_a = eb;
-            c->entity_b = ea;
-            c->normal = sx_neg(d.normal);
-        }
-        ++kept;
     }
     if (kept > 1) {
         if (sx_ecs_reserve(&st->scratch, &st->scratch_cap, kept)) {

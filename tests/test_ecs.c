@@ -842,6 +842,78 @@ static void a_box_on_two_teeth_is_one_sx_contact(void **state) {
     ecs_fini(world);
 }
 
+/* 70 combs with a wide box on two teeth each (two part contacts a pair)
+ * and a box on the ground: the module reads the world's 141 contacts in
+ * batches, and one comb pair's two part contacts lie across the first
+ * batch's end. SxContacts has one entry per entity pair, each the world's
+ * first part contact (normal from entity_a to entity_b, point) with every
+ * part's points counted. */
+static void sx_contacts_follow_the_world_across_read_batches(void **state) {
+    enum { COMBS = 70 };
+    ecs_world_t *world = make_world();
+    ecs_entity_t combs[COMBS], boxes[COMBS];
+    SxTransform t;
+    sx_vec2 p[12];
+    const SxContacts *contacts;
+    sx_world *w;
+    int n, i, k, straddling = 0;
+    (void)state;
+    add_ground(world);
+    n = sx_test_comb_outline(p, 3);
+    for (i = 0; i < COMBS; ++i) {
+        combs[i] = ecs_new(world);
+        t.position = sx_v2((sx_real)(7 * i) - SX_R(240.0), SX_R(30.0));
+        t.angle = SX_R(0.0);
+        ecs_set_ptr(world, combs[i], SxTransform, &t);
+        assert_int_equal(sx_ecs_set_outline(world, combs[i], p, n, NULL), SX_OK);
+        boxes[i] = add_dynamic(world, sx_v2(t.position.x + SX_R(1.5), SX_R(34.0)),
+                               sx_box_shape(SX_R(1.2), SX_R(0.5)));
+    }
+    add_dynamic(world, sx_v2(SX_R(0.0), SX_R(0.5)), sx_box_shape(SX_R(0.5), SX_R(0.5)));
+    progress(world, 60, 1.0 / 60.0);
+    w = sx_ecs_world(world);
+    assert_int_equal(sx_world_contact_count(w), 2 * COMBS + 1);
+    contacts = ecs_singleton_get(world, SxContacts);
+    assert_int_equal(contacts->count, COMBS + 1);
+    for (i = 0; i < sx_world_contact_count(w); ++i) {
+        sx_contact_data d, next;
+        ecs_entity_t a, b;
+        const SxContact *c = NULL;
+        int points;
+        assert_int_equal(sx_world_get_contact(w, i, &d), SX_OK);
+        points = d.count;
+        if (i + 1 < sx_world_contact_count(w)) {
+            assert_int_equal(sx_world_get_contact(w, i + 1, &next), SX_OK);
+            if (sx_collider_id_to_u64(next.collider_a) == sx_collider_id_to_u64(d.collider_a) &&
+                sx_collider_id_to_u64(next.collider_b) == sx_collider_id_to_u64(d.collider_b)) {
+                /* a comb pair's second part contact */
+                points += next.count;
+                straddling += i == 127;
+                ++i;
+            }
+        }
+        a = sx_ecs_entity_of(world, d.body_a);
+        b = sx_ecs_entity_of(world, d.body_b);
+        for (k = 0; k < contacts->count; ++k) {
+            const SxContact *e = &contacts->items[k];
+            if (e->entity_a == (a < b ? a : b) && e->entity_b == (a < b ? b : a)) c = e;
+        }
+        assert_non_null(c);
+        assert_int_equal(c->point_count, points);
+        assert_memory_equal(&c->point, &d.points[0], sizeof(c->point));
+        if (a < b) {
+            assert_memory_equal(&c->normal, &d.normal, sizeof(c->normal));
+        } else {
+            sx_vec2 flipped = sx_neg(d.normal);
+            assert_memory_equal(&c->normal, &flipped, sizeof(c->normal));
+        }
+    }
+    /* the scene puts a pair across the module's first batch of 128 */
+    assert_int_equal(straddling, 1);
+    (void)boxes;
+    ecs_fini(world);
+}
+
 static void bad_outlines_leave_the_entity_untouched(void **state) {
     ecs_world_t *world = make_world();
     ecs_entity_t e = ecs_new(world);
@@ -1089,6 +1161,7 @@ int main(void) {
         cmocka_unit_test(a_concave_outline_entity_collides_as_one_collider),
         cmocka_unit_test(a_dynamic_compound_collider_from_parts_rests_on_the_ground),
         cmocka_unit_test(a_box_on_two_teeth_is_one_sx_contact),
+        cmocka_unit_test(sx_contacts_follow_the_world_across_read_batches),
         cmocka_unit_test(bad_outlines_leave_the_entity_untouched),
         cmocka_unit_test(a_ray_cast_names_the_entity_hit),
         cmocka_unit_test(the_interpolation_fraction_is_the_accumulator_over_the_step),
