@@ -39,6 +39,9 @@ typedef struct sx_broadphase {
     sx_aabb_tree tree;
     bool tree_valid;
     int calm_calls; /* sweeping calls in a row with few colliders out of their fat box */
+    /* the last sweep: its boxes and how many times one met another on x */
+    int64_t sweep_visits;
+    int sweep_boxes;
     int *order;
     int order_count, order_capacity;
     sx_sorted_box *sorted;

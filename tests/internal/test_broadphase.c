@@ -350,9 +350,75 @@ static void broadphase_pairs_equal_brute_force_through_sleep_teleport_create_des
     sx_world_destroy(w);
 }
 
+/* Two towers of 300 boxes side by side: a sweep on x meets about 150
+ * boxes per box (the rest of its tower) for 2-3 pairs, which costs as much
+ * as a tree call per box. The first collide sweeps and finds that; the
+ * tree serves from the third on (two calm calls), also through the
+ * sub-steps that throw half the boxes out of their fat box (a calm world
+ * sweeps above a quarter); the pairs stay exact. */
+static void a_crowded_world_keeps_the_tree_with_exact_pairs(void **state) {
+    enum { TOWER = 300 };
+    sx_world_def def = sx_default_world_def();
+    sx_shape ground = sx_box_shape(SX_R(10.0), SX_R(0.5)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    static unsigned char kinds[2 * TOWER + 1];
+    static sx_aabb fat[2 * TOWER + 1];
+    sx_body_id ids[2 * TOWER];
+    sx_world *w;
+    int i, step, sub, kinematic_asleep = 0, tree_calls = 0, calls = 0, thrown = 0;
+    (void)state;
+    def.enable_sleep = false;
+    w = sx_world_create(&def);
+    assert_non_null(w);
+    add(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-0.5)), &ground);
+    for (i = 0; i < 2 * TOWER; ++i) {
+        sx_real x = i % 2 ? SX_R(0.55) : SX_R(-0.55);
+        ids[i] = add(w, SX_BODY_DYNAMIC, sx_v2(x, SX_R(0.5) + (sx_real)(i / 2)), &box);
+    }
+    for (step = 0; step < 12; ++step) {
+        if (step == 6) {
+            /* the towers' upper halves 0.5 m up in a sub-step: half the
+             * boxes leave their fat boxes by the second collide */
+            for (i = TOWER; i < 2 * TOWER; ++i) {
+                assert_int_equal(
+                    sx_body_set_linear_velocity(w, ids[i], sx_v2(SX_R(0.0), SX_R(120.0))), SX_OK);
+            }
+        }
+        for (sub = 0; sub < def.sub_steps; ++sub) {
+            sx_real h = DT / (sx_real)def.sub_steps;
+            int k;
+            assert_int_equal(sx_world_apply_forces(w, h), SX_OK);
+            for (k = 0; k < w->collider_slots; ++k)
+                kinds[k] = expected_kind(w, k);
+            if (step == 6 && sub == 1) memcpy(fat, w->bp.fat, sizeof(fat));
+            assert_int_equal(sx_world_collide(w), SX_OK);
+            if (step == 6 && sub == 1) {
+                for (k = 0; k < w->collider_slots; ++k)
+                    thrown += memcmp(&fat[k], &w->bp.fat[k], sizeof(fat[k])) != 0;
+            }
+            assert_true(check_pairs(w, kinds, &kinematic_asleep) >= TOWER);
+            if (calls == 0) {
+                assert_false(w->bp.tree_valid);
+                assert_true(w->bp.sweep_visits >= (int64_t)140 * w->bp.sweep_boxes);
+            }
+            tree_calls += w->bp.tree_valid;
+            ++calls;
+            assert_int_equal(sx_world_solve(w, h), SX_OK);
+            assert_int_equal(sx_world_integrate(w, h), SX_OK);
+            assert_int_equal(sx_world_separate(w, h), SX_OK);
+        }
+        assert_int_equal(sx_world_clear_forces(w), SX_OK);
+    }
+    /* half the boxes (and a few settling below) left their fat box at the
+     * throw; only the first two collides swept */
+    assert_true(thrown >= TOWER && thrown < TOWER + TOWER / 10);
+    assert_int_equal(tree_calls, calls - 2);
+    sx_world_destroy(w);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(broadphase_pairs_equal_brute_force_through_sleep_teleport_create_destroy),
+        cmocka_unit_test(a_crowded_world_keeps_the_tree_with_exact_pairs),
     };
     return cmocka_run_group_tests_name("broadphase", tests, sx_test_group_setup,
                                        sx_test_group_teardown);
