@@ -21,10 +21,9 @@
  * x instead, in an order kept from call to call so its insertion sort costs
  * about one pass, and queries the fixed set with each; the tree and the
  * candidates are rebuilt when the world calms down (with hysteresis: the
- * rebuild costs a query per collider). A crowded sweep (many boxes in each
- * x range: a tall pile, pyramids in a grid) costs more than that query per
- * collider, so such a world takes the tree at its next call and keeps it
- * however many boxes leave their fat box. Either way the answer is the pairs
+ * rebuild costs a query per collider; sooner when the sweep is crowded:
+ * many boxes in each x range, a tall pile, pyramids in a grid). Either way
+ * the answer is the pairs
  * whose bounds overlap, the same as testing every collider against every
  * other, in key order, so contacts, solver order and the determinism
  * hashes depend on neither the margin, nor the tree's shape, nor the mode.
@@ -304,17 +303,18 @@ static const sx_sorted_box *sx_fixed_next(const sx_broadphase *bp, sx_aabb box, 
 }
 
 /* Above one in this many moving colliders out of their fat box in one
- * call (or the share a crowded sweep allows, below), the call sweeps
- * instead of using the tree. */
+ * call, the call sweeps instead of using the tree. */
 #define SX_SWEEP_SHARE 4
 #define SX_CALM_CALLS 8
 /* What the tree costs per collider out of its fat box (out, in, a query of
  * both sets, the merge), in the sweep's visits of one box by another: a
- * tree call re-inserting 10,000 took about 300 times a visit. The sweep's
- * cost per box grows with the visits its boxes make (a base-100 pyramid's
- * meet about 80 others on x for 3 pairs; 400 pyramids in a grid, 170), so a
- * crowded world keeps the tree through more departures and comes back to
- * it sooner. */
+ * tree call re-inserting 10,000 falling boxes took about 300 times a visit,
+ * more in a dense pile (its queries meet more neighbours). A sweep's cost
+ * per box grows with the visits its boxes make (a base-100 pyramid's meet
+ * about 80 others on x for 3 pairs; 400 pyramids in a grid, 170), so a
+ * crowded world comes back to the tree after fewer calm calls; it leaves
+ * the tree at the same share as any (a wider share, tried, made a pile in
+ * motion query the tree at 2 us a box where a sweep took 0.3). */
 #define SX_QUERY_VISITS 300
 
 /* Grows the per-slot arrays to slot_count: new proxies -1, new marks 0. */
@@ -658,27 +658,21 @@ sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const un
         if (s != SX_OK) return s;
         ++escaped;
     }
-    /* The tree serves while at most `limit` leave their fat box: a quarter,
-     * or twice the share at which a tree call costs a sweep (leaving the
-     * tree costs a rebuild later). Hysteresis: going back to the tree costs
-     * a build and a query per moving collider, so a sweeping world returns
-     * only after `calm` calls in a row with under a quarter of the limit
-     * out (bodies falling from rest in step leave their fat boxes every
-     * other call at first): SX_CALM_CALLS, fewer as sweeps cost more. */
+    /* Hysteresis: going back to the tree costs a build and a query per
+     * moving collider, so a sweeping world returns only after `calm` calls
+     * in a row calmer than the share that makes a tree world sweep (bodies
+     * falling from rest in step leave their fat boxes every other call at
+     * first): SX_CALM_CALLS, or as many as pay for the return when a
+     * sweep costs more (SX_QUERY_VISITS visits per box in all). */
     {
-        int64_t limit = moving_count / SX_SWEEP_SHARE, calm = SX_CALM_CALLS;
-        if (bp->sweep_boxes > 0) {
-            int64_t crowd = 2 * bp->sweep_visits * moving_count /
-                            ((int64_t)SX_QUERY_VISITS * bp->sweep_boxes);
-            if (crowd > limit) limit = crowd;
-            if (bp->sweep_visits * calm > (int64_t)SX_QUERY_VISITS * bp->sweep_boxes) {
-                calm = (int64_t)SX_QUERY_VISITS * bp->sweep_boxes / bp->sweep_visits;
-                if (calm < 1) calm = 1;
-            }
+        int64_t calm = SX_CALM_CALLS;
+        if (bp->sweep_visits * calm > (int64_t)SX_QUERY_VISITS * bp->sweep_boxes) {
+            calm = (int64_t)SX_QUERY_VISITS * bp->sweep_boxes / bp->sweep_visits;
+            if (calm < 1) calm = 1;
         }
         if (bp->tree_valid) {
-            bp->calm_calls = escaped > limit ? 0 : (int)calm;
-        } else if (escaped > limit / 4) {
+            bp->calm_calls = escaped > moving_count / SX_SWEEP_SHARE ? 0 : (int)calm;
+        } else if (escaped > moving_count / (4 * SX_SWEEP_SHARE)) {
             bp->calm_calls = 0;
         } else {
             ++bp->calm_calls;
