@@ -118,10 +118,12 @@ static sx_ecs_link *sx_ecs_find(const sx_ecs_state *st, ecs_entity_t e) {
     return at > 0 && st->links[at - 1].entity == e ? &st->links[at - 1] : NULL;
 }
 
-/* Grows an int32 array to hold `need` entries (new ones zeroed). */
+/* Grows an int32 array to hold `need` entries (new ones zeroed); false
+ * out of memory or for 0 or more than 2^30. */
 static bool sx_ecs_grow_ints(int32_t **items, uint32_t *cap, uint32_t need) {
     uint32_t n = *cap ? *cap : 1024;
     int32_t *grown;
+    if (need == 0 || need > (1u << 30)) return false; /* index + 1 wrapped, or absurd */
     if (need <= *cap) return true;
     while (n < need)
         n *= 2;

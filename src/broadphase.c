@@ -23,10 +23,10 @@
  * candidates are rebuilt when the world calms down (with hysteresis: the
  * rebuild costs a query per collider; sooner when the sweep is crowded:
  * many boxes in each x range, a tall pile, pyramids in a grid). Either way
- * the answer is the pairs
- * whose bounds overlap, the same as testing every collider against every
- * other, in key order, so contacts, solver order and the determinism
- * hashes depend on neither the margin, nor the tree's shape, nor the mode.
+ * the answer is the pairs whose bounds overlap, the same as testing every
+ * collider against every other, in key order, so contacts, solver order and
+ * the determinism hashes depend on neither the margin, nor the tree's shape,
+ * nor the mode.
  * The x sweep alone visited every collider in an x range: a tall pile made
  * that O(n) per collider every step.
  *
