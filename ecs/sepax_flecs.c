@@ -95,7 +95,7 @@ typedef struct sx_ecs_state {
     sx_ecs_link *links;
     int32_t link_count, link_cap;
     int32_t *free_links;
-    int32_t free_count, free_cap;
+    uint32_t free_count, free_cap;
     ecs_entity_t *body_entity; /* by body slot index */
     int32_t body_entity_cap;
     double accumulator;
@@ -297,11 +297,7 @@ static void sx_ecs_unlink(sx_ecs_state *st, ecs_entity_t e) {
     link->entity = 0;
     st->link_of[(uint32_t)e] = 0;
     /* the place is reused; out of memory, it stays unused */
-    if (st->free_count == st->free_cap) {
-        uint32_t cap = (uint32_t)st->free_cap;
-        if (!sx_ecs_grow_ints(&st->free_links, &cap, cap + 1u)) return;
-        st->free_cap = (int32_t)cap;
-    }
+    if (!sx_ecs_grow_ints(&st->free_links, &st->free_cap, st->free_count + 1u)) return;
     st->free_links[st->free_count++] = (int32_t)(link - st->links);
 }
 

@@ -699,6 +699,21 @@ static void sx_drop_tangent_impulses(sx_contact *c) {
         c->points[k].tangent_impulse = SX_R(0.0);
 }
 
+/* The handles of contact c's colliders and bodies, as the public views
+ * (events, sx_world_get_contact, sx_world_get_contact_pairs) give them. */
+static sx_contact_event sx_contact_handles(const sx_world *world, const sx_contact *c) {
+    sx_contact_event e;
+    e.collider_a.index = (uint32_t)c->collider_a;
+    e.collider_a.generation = world->collider_generations[c->collider_a];
+    e.collider_b.index = (uint32_t)c->collider_b;
+    e.collider_b.generation = world->collider_generations[c->collider_b];
+    e.body_a.index = (uint32_t)c->body_a;
+    e.body_a.generation = world->infos[c->body_a].generation;
+    e.body_b.index = (uint32_t)c->body_b;
+    e.body_b.generation = world->infos[c->body_b].generation;
+    return e;
+}
+
 /* Appends the event of contact c to an event array. */
 static sx_status sx_push_event(const sx_world *world, const sx_contact *c,
                                sx_contact_event **events, int *count, int *capacity) {
@@ -710,14 +725,7 @@ static sx_status sx_push_event(const sx_world *world, const sx_contact *c,
         if (s != SX_OK) return s;
     }
     e = &(*events)[(*count)++];
-    e->collider_a.index = (uint32_t)c->collider_a;
-    e->collider_a.generation = world->collider_generations[c->collider_a];
-    e->collider_b.index = (uint32_t)c->collider_b;
-    e->collider_b.generation = world->collider_generations[c->collider_b];
-    e->body_a.index = (uint32_t)c->body_a;
-    e->body_a.generation = world->infos[c->body_a].generation;
-    e->body_b.index = (uint32_t)c->body_b;
-    e->body_b.generation = world->infos[c->body_b].generation;
+    *e = sx_contact_handles(world, c);
     return SX_OK;
 }
 
@@ -1409,6 +1417,7 @@ int sx_world_contact_count(const sx_world *world) {
 
 sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data *out) {
     const sx_contact *c;
+    sx_contact_event handles;
     sx_real lane_normal[2], lane_tangent[2];
     bool lanes;
     int k;
@@ -1422,14 +1431,11 @@ sx_status sx_world_get_contact(const sx_world *world, int index, sx_contact_data
     lanes = index < world->contact_count &&
             sx_solver_lane_impulses(world, index, lane_normal, lane_tangent);
     memset(out, 0, sizeof(*out));
-    out->collider_a.index = (uint32_t)c->collider_a;
-    out->collider_a.generation = world->collider_generations[c->collider_a];
-    out->collider_b.index = (uint32_t)c->collider_b;
-    out->collider_b.generation = world->collider_generations[c->collider_b];
-    out->body_a.index = (uint32_t)c->body_a;
-    out->body_a.generation = world->infos[c->body_a].generation;
-    out->body_b.index = (uint32_t)c->body_b;
-    out->body_b.generation = world->infos[c->body_b].generation;
+    handles = sx_contact_handles(world, c);
+    out->collider_a = handles.collider_a;
+    out->collider_b = handles.collider_b;
+    out->body_a = handles.body_a;
+    out->body_b = handles.body_b;
     out->part_a = c->part_a;
     out->part_b = c->part_b;
     out->normal = c->normal;
@@ -1462,19 +1468,17 @@ int sx_world_get_contact_pairs(const sx_world *world, int first, sx_contact_pair
         const sx_contact *c = p < world->contact_count ? &world->contacts[p]
                                                        : &world->frozen[p - world->contact_count];
         sx_contact_pair *o = &out[n];
+        sx_contact_event handles;
         if (c->count == 0) continue;
         if (skip > 0) {
             --skip;
             continue;
         }
-        o->collider_a.index = (uint32_t)c->collider_a;
-        o->collider_a.generation = world->collider_generations[c->collider_a];
-        o->collider_b.index = (uint32_t)c->collider_b;
-        o->collider_b.generation = world->collider_generations[c->collider_b];
-        o->body_a.index = (uint32_t)c->body_a;
-        o->body_a.generation = world->infos[c->body_a].generation;
-        o->body_b.index = (uint32_t)c->body_b;
-        o->body_b.generation = world->infos[c->body_b].generation;
+        handles = sx_contact_handles(world, c);
+        o->collider_a = handles.collider_a;
+        o->collider_b = handles.collider_b;
+        o->body_a = handles.body_a;
+        o->body_b = handles.body_b;
         o->part_a = c->part_a;
         o->part_b = c->part_b;
         o->normal = c->normal;

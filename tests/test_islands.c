@@ -37,24 +37,34 @@ static int step_until_asleep(sx_world *w, int max_steps) {
 #define BASE 6
 #define PYRAMID (BASE * (BASE + 1) / 2)
 
-static void sleeping_pyramid_wakes_when_a_ball_hits_it_and_sleeps_again(void **state) {
-    sx_world_def def = sx_default_world_def();
-    sx_shape ground = sx_box_shape(SX_R(20.0), SX_R(0.5)), box = sx_box_shape(SX_R(0.5), SX_R(0.5)),
-             ball = sx_circle_shape(sx_v2_zero(), SX_R(0.3));
-    sx_body_id ids[PYRAMID], b;
-    sx_world *w;
-    int row, col, n = 0, steps, i, woken = 0;
-    double top_y;
-    (void)state;
-    w = sx_world_create(&def);
-    assert_non_null(w);
+/* A ground 40 m wide with its top at y = 0 and a pyramid of BASE unit boxes
+ * on it, 5 cm apart in a row; ids (NULL: not kept) gets the boxes bottom
+ * row first. */
+static void add_pyramid(sx_world *w, sx_body_id *ids) {
+    sx_shape ground = sx_box_shape(SX_R(20.0), SX_R(0.5)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
+    int row, col, n = 0;
     add_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-0.5)), &ground, true);
     for (row = 0; row < BASE; ++row) {
         for (col = 0; col < BASE - row; ++col) {
             sx_real x = SX_R(1.05) * ((sx_real)col - SX_R(0.5) * (sx_real)(BASE - row - 1));
-            ids[n++] = add_body(w, SX_BODY_DYNAMIC, sx_v2(x, SX_R(0.5) + (sx_real)row), &box, true);
+            sx_body_id id =
+                add_body(w, SX_BODY_DYNAMIC, sx_v2(x, SX_R(0.5) + (sx_real)row), &box, true);
+            if (ids != NULL) ids[n++] = id;
         }
     }
+}
+
+static void sleeping_pyramid_wakes_when_a_ball_hits_it_and_sleeps_again(void **state) {
+    sx_world_def def = sx_default_world_def();
+    sx_shape ball = sx_circle_shape(sx_v2_zero(), SX_R(0.3));
+    sx_body_id ids[PYRAMID], b;
+    sx_world *w;
+    int steps, i, woken = 0;
+    double top_y;
+    (void)state;
+    w = sx_world_create(&def);
+    assert_non_null(w);
+    add_pyramid(w, ids);
     steps = step_until_asleep(w, 600);
     printf("  pyramid of %d asleep after %d steps\n", PYRAMID, steps);
     assert_int_equal(sx_world_awake_body_count(w), 0);
@@ -124,7 +134,6 @@ static int pairs_match_full_reads(const sx_world *w, int first, int batch) {
  * included, and answers bad arguments with 0. */
 static void the_light_contact_read_walks_the_list_of_the_full_one(void **state) {
     sx_world_def def = sx_default_world_def();
-    sx_shape ground = sx_box_shape(SX_R(20.0), SX_R(0.5)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
     sx_compound_part parts[2];
     sx_compound dumbbell;
     sx_collider_def cd = sx_default_collider_def();
@@ -132,17 +141,11 @@ static void the_light_contact_read_walks_the_list_of_the_full_one(void **state) 
     sx_body_id ids[PYRAMID], bar;
     sx_contact_pair out[2];
     sx_world *w;
-    int row, col, n = 0, count, i, parted = 0;
+    int count, i, parted = 0;
     (void)state;
     w = sx_world_create(&def);
     assert_non_null(w);
-    add_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-0.5)), &ground, true);
-    for (row = 0; row < BASE; ++row) {
-        for (col = 0; col < BASE - row; ++col) {
-            sx_real x = SX_R(1.05) * ((sx_real)col - SX_R(0.5) * (sx_real)(BASE - row - 1));
-            ids[n++] = add_body(w, SX_BODY_DYNAMIC, sx_v2(x, SX_R(0.5) + (sx_real)row), &box, true);
-        }
-    }
+    add_pyramid(w, ids);
     assert_int_equal(step_until_asleep(w, 600) < 600, true);
     /* a compound that stays awake beside the sleeping pyramid: two part
      * pairs with the ground, listed one after the other */
@@ -194,20 +197,13 @@ static void the_light_contact_read_walks_the_list_of_the_full_one(void **state) 
  * wakes): the store takes the step's list over when most of it freezes. */
 static void a_pile_falling_asleep_keeps_every_contact_and_its_impulses(void **state) {
     sx_world_def def = sx_default_world_def();
-    sx_shape ground = sx_box_shape(SX_R(20.0), SX_R(0.5)), box = sx_box_shape(SX_R(0.5), SX_R(0.5));
     static sx_contact_data before[4 * PYRAMID], after;
     sx_world *w;
-    int row, col, s, i, count = 0;
+    int s, i, count = 0;
     (void)state;
     w = sx_world_create(&def);
     assert_non_null(w);
-    add_body(w, SX_BODY_STATIC, sx_v2(SX_R(0.0), SX_R(-0.5)), &ground, true);
-    for (row = 0; row < BASE; ++row) {
-        for (col = 0; col < BASE - row; ++col) {
-            sx_real x = SX_R(1.05) * ((sx_real)col - SX_R(0.5) * (sx_real)(BASE - row - 1));
-            add_body(w, SX_BODY_DYNAMIC, sx_v2(x, SX_R(0.5) + (sx_real)row), &box, true);
-        }
-    }
+    add_pyramid(w, NULL);
     for (s = 0; s < 600 && sx_world_awake_body_count(w) > 0; ++s) {
         assert_int_equal(sx_world_step(w, DT), SX_OK);
         count = sx_world_contact_count(w);
