@@ -27,8 +27,8 @@ int engine_runs(int e);
  *  build of each peer (Box2D v3's default SSE2 build; its other builds give
  *  the same physics and appear in the throughput scenes). */
 int engine_in_sweeps(int e);
-/** Engine e's standard knobs at time step dt: sepax's defaults (4 sub-steps
- *  of 4 velocity and 2 position iterations), Box2D v3's (4 sub-steps),
+/** Engine e's standard knobs at time step dt: sepax's defaults (5 sub-steps
+ *  of 3 velocity passes and 1 position pass), Box2D v3's (4 sub-steps),
  *  Box2D 2.4's 8/3, Chipmunk's 8 iterations. */
 scene_config default_config(int e, double dt);
 void config_name(int e, const scene_config *c, char *buf, size_t size);

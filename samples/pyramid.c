@@ -65,7 +65,7 @@ int main(int argc, char **argv) {
                         "1..16]\n");
         return 2;
     }
-    /* gravity (0, -10), 4 sub-steps; a resting pyramid falls asleep unless
+    /* gravity (0, -10), 5 sub-steps; a resting pyramid falls asleep unless
      * told not to (then the timing is the solver's) */
     def.enable_sleep = sleep;
     if (workers > 1) {

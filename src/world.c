@@ -31,8 +31,8 @@
 sx_world_def sx_default_world_def(void) {
     sx_world_def d;
     d.gravity = sx_v2(SX_R(0.0), SX_R(-10.0));
-    d.sub_steps = 4;
-    d.velocity_iterations = 4;
+    d.sub_steps = 5;
+    d.velocity_iterations = 3;
     d.position_iterations = 1;
     d.correction_factor = SX_R(0.2);
     d.max_correction_speed = SX_R(3.0);

@@ -50,8 +50,8 @@ typedef struct det_pin {
 
 static const det_pin det_pins[] = {
     /* build    state hash             narrowphase hash */
-    {"float", 0xbfff761bf9dec134ull, 0x4d1bf48ab77e19cbull},
-    {"double", 0xc80476df921a6877ull, 0x8963162b0ec798e3ull},
+    {"float", 0xc85f167e445f7786ull, 0x4d1bf48ab77e19cbull},
+    {"double", 0x6e559b13d4de8298ull, 0x8963162b0ec798e3ull},
 };
 
 #ifdef SX_DOUBLE

@@ -182,7 +182,7 @@ static void fixed_tick_runs_whole_steps_and_stages_once_per_sub_step(void **stat
 
     progress(world, 10, 0.1);
     assert_int_equal(sx_ecs_step_count(world), 60);
-    assert_int_equal(solves, 60 * 4);
+    assert_int_equal(solves, 60 * sx_default_world_def().sub_steps);
     ecs_fini(world);
 
     world = make_world();
@@ -535,6 +535,7 @@ static void two_flecs_worlds_step_independently(void **state) {
     ecs_world_t *a = make_world(), *b = make_world();
     ecs_entity_t ea, eb;
     sx_vec2 b_before;
+    const double n = 60.0 * sx_default_world_def().sub_steps, fall = (n + 1.0) / (2.0 * n);
     (void)state;
     set_gravity(b, sx_v2(SX_R(0.0), SX_R(-2.0)));
     ea = add_dynamic(a, sx_v2(0, 0), sx_circle_shape(sx_v2(0, 0), SX_R(0.5)));
@@ -543,10 +544,10 @@ static void two_flecs_worlds_step_independently(void **state) {
     progress(a, 60, 1.0 / 60.0);
     assert_vec2_near(position_of(b, eb), sx_v2(0, 0), 0.0);
     progress(b, 60, 1.0 / 60.0);
-    /* symplectic Euler after n sub-steps of h (4 per 1/60 s step):
-     * y = -g h^2 n (n + 1) / 2 = -g 241 / 480 for n = 240 */
-    assert_near(position_of(a, ea).y, -10.0 * (241.0 / 480.0), 1e-4);
-    assert_near(position_of(b, eb).y, -2.0 * (241.0 / 480.0), 1e-4);
+    /* symplectic Euler after n sub-steps of h = 1 s / n:
+     * y = -g h^2 n (n + 1) / 2 = -g (n + 1) / (2 n) */
+    assert_near(position_of(a, ea).y, -10.0 * fall, 1e-4);
+    assert_near(position_of(b, eb).y, -2.0 * fall, 1e-4);
     b_before = position_of(b, eb);
     ecs_fini(a); /* destroying one world leaves the other working */
     progress(b, 1, 1.0 / 60.0);
@@ -561,6 +562,7 @@ static void ten_thousand_entities_step_and_are_deleted_cleanly(void **state) {
     enum { N = 10000 };
     ecs_world_t *world = make_world();
     ecs_entity_t *es = malloc(N * sizeof *es);
+    const double n = 3.0 * sx_default_world_def().sub_steps, h = 3.0 / 60.0 / n;
     int i;
     (void)state;
     assert_non_null(es);
@@ -572,10 +574,10 @@ static void ten_thousand_entities_step_and_are_deleted_cleanly(void **state) {
     }
     progress(world, 3, 1.0 / 60.0);
     assert_int_equal(sx_world_body_count(sx_ecs_world(world)), N);
-    /* free fall, nothing touches: 12 sub-steps of 1/240 s, -10 h^2 (1 + ... + 12) */
+    /* free fall, nothing touches: n sub-steps of h, -10 h^2 (1 + ... + n) */
     for (i = 0; i < N; ++i)
         assert_near(position_of(world, es[i]).y,
-                    (double)(i / 100) * 1.5 - 10.0 * 78.0 / (240.0 * 240.0), 1e-4);
+                    (double)(i / 100) * 1.5 - 10.0 * h * h * n * (n + 1.0) / 2.0, 1e-4);
     for (i = 0; i < N; i += 2)
         ecs_delete(world, es[i]);
     progress(world, 1, 1.0 / 60.0);

@@ -10,6 +10,8 @@
 #include "test_support.h"
 
 #define DT (SX_R(1.0) / SX_R(60.0))
+/* the default world's sub-step at DT */
+#define SUB_H ((double)DT / (double)sx_default_world_def().sub_steps)
 
 static sx_world *make_world(sx_vec2 gravity) {
     sx_world_def def = sx_default_world_def();
@@ -947,7 +949,7 @@ static void a_contact_kept_through_a_mass_change_takes_the_new_masses(void **sta
         assert_int_equal(sx_world_get_contact(w, i, &c), SX_OK);
         for (k = 0; k < c.count; ++k)
             support += (double)c.normal_impulses[k];
-        weight = (double)sx_body_get_mass(w, boxes[i]) * 10.0 * (double)DT / 4.0;
+        weight = (double)sx_body_get_mass(w, boxes[i]) * 10.0 * SUB_H;
         assert_near(support, weight, 0.02 * weight);
     }
     sx_world_destroy(w);
@@ -1552,7 +1554,7 @@ static void a_finite_torque_that_overflows_the_spin_is_limited(void **state) {
     sx_shape box = sx_box_shape(SX_R(0.175), SX_R(0.175));
     sx_body_id a = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(-97.08), SX_R(10.9375)), &box);
     sx_body_id b;
-    const double h = (double)DT / 4.0; /* the default 4 sub-steps */
+    const double h = SUB_H;
     const double wmax = (double)SX_MAX_ROTATION / h;
     int i;
     (void)state;
@@ -1592,7 +1594,7 @@ static void a_finite_torque_that_overflows_the_spin_is_limited(void **state) {
  * steps that left every velocity within the limit, run 3 makes the spinning
  * body then (the world must not go on trusting the limit it met). */
 static void a_kinematic_body_spinning_at_flt_max_gives_finite_contacts(void **state) {
-    const double h = (double)DT / 4.0;
+    const double h = SUB_H;
     int run;
     (void)state;
     for (run = 0; run < 4; ++run) {
@@ -1884,7 +1886,7 @@ static void a_denormal_time_step_is_one_sub_step(void **state) {
  * SX_REAL_MAX the impulse itself overflowed. The rebound speed is capped by
  * the speed limit now. */
 static void a_huge_restitution_rebounds_at_the_speed_limit(void **state) {
-    const double h = (double)DT / 4.0;
+    const double h = SUB_H;
     int r;
     (void)state;
     for (r = 0; r < 2; ++r) {
@@ -1920,14 +1922,14 @@ static void a_huge_restitution_rebounds_at_the_speed_limit(void **state) {
 
 /* The speed limit bites only above a quarter turn per sub-step: a free spin
  * of 300 rad/s is kept exactly, one of 1000 rad/s becomes SX_MAX_ROTATION /
- * h (377 rad/s at 60 Hz and 4 sub-steps), and a velocity beyond SX_HUGE per
+ * h (565 rad/s at 60 Hz and 6 sub-steps), and a velocity beyond SX_HUGE per
  * sub-step keeps its direction. */
 static void the_speed_limit_keeps_direction_and_spares_ordinary_speeds(void **state) {
     sx_world *w = make_world(sx_v2_zero());
     sx_shape box = sx_box_shape(SX_R(0.5), SX_R(0.5));
     sx_body_id a = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(0.0), SX_R(0.0)), &box);
     sx_body_id b = make_body(w, SX_BODY_DYNAMIC, sx_v2(SX_R(10.0), SX_R(0.0)), &box);
-    const double h = (double)DT / 4.0;
+    const double h = SUB_H;
     sx_vec2 v;
     (void)state;
     assert_int_equal(sx_body_set_angular_velocity(w, a, SX_R(300.0)), SX_OK);

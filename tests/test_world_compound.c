@@ -81,9 +81,10 @@ static void ball_rests_in_the_notch_of_a_static_u(void **state) {
     (void)state;
     ball = make_body(w, SX_BODY_DYNAMIC, 0.0, 1.5);
     add_shape(w, ball, sx_circle_shape(sx_v2_zero(), SX_R(0.4)));
-    /* thrown sideways: it must hit the right wall and stay in the notch */
+    /* thrown sideways: it must hit the right wall and stay in the notch (it
+     * rolls back to the left wall, which it meets at about 4 s) */
     assert_int_equal(sx_body_set_linear_velocity(w, ball, sx_v2(SX_R(4.0), SX_R(0.0))), SX_OK);
-    run(w, 4.0);
+    run(w, 5.0);
     p = sx_body_get_position(w, ball);
     /* resting on the floor (top at y = 0.5) within two slops, inside the
      * notch's walls */
@@ -192,14 +193,18 @@ static void contacts_warm_start_per_part_pair_and_report_one_event(void **state)
     assert_int_equal(sx_world_collide(w), SX_OK);
     assert_int_equal(sx_world_contact_count(w), count);
     for (i = 0; i < count; ++i) {
+        sx_real held = SX_R(0.0);
         int k;
         assert_int_equal(sx_world_get_contact(w, i, &after), SX_OK);
         assert_int_equal(after.part_a, before[i].part_a);
         assert_int_equal(after.count, before[i].count);
+        /* four points on two teeth share the weight in no unique way: a
+         * point may hold nothing, each tooth holds some */
         for (k = 0; k < after.count; ++k) {
-            assert_true(before[i].normal_impulses[k] > SX_R(0.0));
+            held += before[i].normal_impulses[k];
             assert_near(after.normal_impulses[k], before[i].normal_impulses[k], 0.0);
         }
+        assert_true(held > SX_R(0.0));
     }
     assert_true(before[0].part_a != before[1].part_a);
     /* no further event while it rests; lifting it off ends the pair once */
