@@ -19,16 +19,16 @@
  * candidates whose exact bounds overlap. When many leave their fat box (a
  * rain: a query each would cost more), the call sweeps the moving bounds on
  * x instead, in an order kept from call to call so its insertion sort costs
- * about one pass, and queries the fixed set with each; the tree and the
- * candidates are rebuilt when the world calms down (with hysteresis: the
- * rebuild costs a query per collider; sooner when the sweep is crowded:
- * many boxes in each x range, a tall pile, pyramids in a grid). Either way
+ * about one pass, band by horizontal band (a sweep of the whole world met
+ * every box of a column: a rain, a tall pile), and queries the fixed set
+ * with each; the tree and the candidates are rebuilt when the world calms
+ * down (with hysteresis: the rebuild costs a query per collider). Either way
  * the answer is the pairs whose bounds overlap, the same as testing every
  * collider against every other, in key order, so contacts, solver order and
  * the determinism hashes depend on neither the margin, nor the tree's shape,
  * nor the mode.
- * The x sweep alone visited every collider in an x range: a tall pile made
- * that O(n) per collider every step.
+ * A sweep costs every moving collider every call; the tree, only those
+ * that left their fat box.
  *
  * Pairs with no awake dynamic collider (static-static, static-kinematic,
  * kinematic-kinematic, anything with a sleeping body) are not reported:
@@ -50,6 +50,8 @@ void sx_broadphase_free(sx_broadphase *bp) {
     sx_tree_free(&bp->tree);
     sx_free(bp->order, (size_t)bp->order_capacity * sizeof(int));
     sx_free(bp->sorted, (size_t)bp->sorted_capacity * sizeof(sx_sorted_box));
+    sx_free(bp->band_start, (size_t)bp->band_start_capacity * sizeof(int));
+    sx_free(bp->band_items, (size_t)bp->band_items_capacity * sizeof(int));
     sx_free(bp->mark, (size_t)bp->mark_capacity);
     sx_free(bp->proxy, (size_t)bp->proxy_capacity * sizeof(int));
     sx_free(bp->fat, (size_t)bp->fat_capacity * sizeof(sx_aabb));
@@ -305,17 +307,19 @@ static const sx_sorted_box *sx_fixed_next(const sx_broadphase *bp, sx_aabb box, 
 /* Above one in this many moving colliders out of their fat box in one
  * call, the call sweeps instead of using the tree. */
 #define SX_SWEEP_SHARE 4
-#define SX_CALM_CALLS 8
 /* What the tree costs per collider out of its fat box (out, in, a query of
  * both sets, the merge), in the sweep's visits of one box by another: a
  * tree call re-inserting 10,000 falling boxes took about 300 times a visit,
- * more in a dense pile (its queries meet more neighbours). A sweep's cost
- * per box grows with the visits its boxes make (a base-100 pyramid's meet
- * about 80 others on x for 3 pairs; 400 pyramids in a grid, 170), so a
- * crowded world comes back to the tree after fewer calm calls; it leaves
- * the tree at the same share as any (a wider share, tried, made a pile in
- * motion query the tree at 2 us a box where a sweep took 0.3). */
+ * more in a dense pile (its queries meet more neighbours). A sweep costs
+ * its visits plus SX_SWEEP_BASE a box (the x order, the bands, the fixed
+ * set's query: 22,000 resting boxes swept in a third of the time a return
+ * to the tree took), so a sweeping world returns after the calm calls
+ * whose sweeps would cost as much as the return: one or two. It leaves
+ * the tree at the same share whatever its sweep costs (a wider share,
+ * tried, made a pile in motion query the tree at 2 us a box where a sweep
+ * took 0.3). */
 #define SX_QUERY_VISITS 300
+#define SX_SWEEP_BASE 150
 
 /* Grows the per-slot arrays to slot_count: new proxies -1, new marks 0. */
 static sx_status sx_grow_slots(sx_broadphase *bp, int slot_count) {
@@ -514,17 +518,89 @@ static sx_status sx_order_moving(sx_broadphase *bp, const sx_aabb *boxes,
     return SX_OK;
 }
 
+/* Most bands of a sweep (a box in many bands is listed in each). */
+#define SX_MAX_BANDS 65536
+
+/* The band of height y: bands of equal height from `bottom`, the last one
+ * open upwards (monotonic in y, which the pairs' dedup relies on). */
+static int sx_band_of(sx_real y, sx_real bottom, sx_real per_height, int bands) {
+    sx_real b = (y - bottom) * per_height;
+    if (!(b > SX_R(0.0))) return 0;
+    return b < (sx_real)(bands - 1) ? (int)b : bands - 1;
+}
+
+/* Splits the sweep's n boxes into horizontal bands twice their mean height,
+ * each band's boxes in x order (a box in every band it reaches): a box then
+ * visits the boxes of its x range in its own bands only, where a sweep of
+ * the whole world on x visited every box of a column (a rain, a tall pile,
+ * a grid of pyramids). Returns the band count, 0 when the scratch could
+ * not grow; *bottom_out and *per_height_out place the bands. */
+static int sx_sweep_bands(sx_broadphase *bp, int n, sx_real *bottom_out, sx_real *per_height_out) {
+    sx_real bottom = SX_R(0.0), top = SX_R(0.0), heights = SX_R(0.0), per_height = SX_R(0.0);
+    int bands = 1, i, b, total = 0;
+    int *start, *next;
+    void *p;
+    for (i = 0; i < n; ++i) {
+        const sx_aabb *x = &bp->sorted[i].box;
+        if (i == 0 || x->lower.y < bottom) bottom = x->lower.y;
+        if (i == 0 || x->upper.y > top) top = x->upper.y;
+        heights += x->upper.y - x->lower.y;
+    }
+    if (n > 1 && heights > SX_R(0.0) && sx_is_finite(top - bottom) && sx_is_finite(heights)) {
+        sx_real k = (top - bottom) / (SX_R(2.0) * heights / (sx_real)n);
+        sx_real most = (sx_real)(n < SX_MAX_BANDS ? n : SX_MAX_BANDS);
+        if (k >= SX_R(2.0)) {
+            bands = k < most ? (int)k : (int)most;
+            per_height = (sx_real)bands / (top - bottom);
+        }
+    }
+    p = bp->band_start;
+    if (!sx_grow_array(&p, &bp->band_start_capacity, 2 * (bands + 1), sizeof(int))) return 0;
+    bp->band_start = (int *)p;
+    start = bp->band_start;
+    next = start + bands + 1;
+    memset(start, 0, (size_t)(bands + 1) * sizeof(int));
+    for (i = 0; i < n; ++i) {
+        const sx_aabb *x = &bp->sorted[i].box;
+        int lo = sx_band_of(x->lower.y, bottom, per_height, bands);
+        int hi = sx_band_of(x->upper.y, bottom, per_height, bands);
+        for (b = lo; b <= hi; ++b)
+            ++start[b + 1];
+    }
+    for (b = 0; b < bands; ++b) {
+        start[b + 1] += start[b];
+        next[b] = start[b];
+    }
+    total = start[bands];
+    p = bp->band_items;
+    if (!sx_grow_array(&p, &bp->band_items_capacity, total, sizeof(int))) return 0;
+    bp->band_items = (int *)p;
+    for (i = 0; i < n; ++i) {
+        const sx_aabb *x = &bp->sorted[i].box;
+        int lo = sx_band_of(x->lower.y, bottom, per_height, bands);
+        int hi = sx_band_of(x->upper.y, bottom, per_height, bands);
+        for (b = lo; b <= hi; ++b)
+            bp->band_items[next[b]++] = i;
+    }
+    *bottom_out = bottom;
+    *per_height_out = per_height;
+    return bands;
+}
+
 /* Many moving colliders left their fat box (a rain, a scene's first step):
  * re-inserting and querying them all would cost more than a sweep, which
  * finds every pair of moving bounds that overlap, cache-friendly, in one
- * pass over the x order, and then each moving collider's fixed-set pairs.
- * That is the answer itself (no candidates kept: the call that next uses
- * the tree builds it and finds the candidates afresh). */
+ * pass over the x order of each horizontal band, and then each moving
+ * collider's fixed-set pairs. A pair is reported by the band of the higher
+ * of its two lower edges, the one band both boxes are sure to share, so
+ * once. That is the answer itself (no candidates kept: the call that next
+ * uses the tree builds it and finds the candidates afresh). */
 static sx_status sx_sweep_moving(sx_broadphase *bp, const sx_aabb *aabbs,
                                  const unsigned char *kind, int slot_count, const int *moving,
                                  int moving_count) {
-    int i, j, n;
+    int i, j, n, band, bands;
     int64_t visits = 0;
+    sx_real bottom = SX_R(0.0), per_height = SX_R(0.0);
     sx_status s = sx_order_moving(bp, aabbs, kind, slot_count, moving, moving_count);
     if (s != SX_OK) return s;
     bp->tree_valid = false;
@@ -536,19 +612,33 @@ static sx_status sx_sweep_moving(sx_broadphase *bp, const sx_aabb *aabbs,
         bp->proxy[moving[i]] = 0; /* has a fat box; no leaf */
     bp->fresh_count = 0;
     n = bp->order_count;
+    bands = sx_sweep_bands(bp, n, &bottom, &per_height);
+    if (bands == 0) return SX_ERR_NO_MEMORY;
+    for (band = 0; band < bands; ++band) {
+        const int *items = bp->band_items + bp->band_start[band];
+        int m = bp->band_start[band + 1] - bp->band_start[band];
+        for (i = 0; i < m; ++i) {
+            const sx_sorted_box *a = &bp->sorted[items[i]];
+            for (j = i + 1; j < m; ++j) {
+                const sx_sorted_box *b = &bp->sorted[items[j]];
+                if (b->box.lower.x > a->box.upper.x) break;
+                ++visits;
+                if (!sx_kinds_pair(a->kind, b->kind)) continue;
+                if (b->box.lower.y > a->box.upper.y || b->box.upper.y < a->box.lower.y) continue;
+                if (bands > 1 &&
+                    sx_band_of(sx_maxr(a->box.lower.y, b->box.lower.y), bottom, per_height,
+                               bands) != band) {
+                    continue;
+                }
+                s = sx_add_fresh(bp, a->slot, b->slot);
+                if (s != SX_OK) return s;
+            }
+        }
+    }
     for (i = 0; i < n; ++i) {
         const sx_sorted_box *a = &bp->sorted[i];
         const sx_sorted_box *f;
         int at = -1;
-        for (j = i + 1; j < n; ++j) {
-            const sx_sorted_box *b = &bp->sorted[j];
-            if (b->box.lower.x > a->box.upper.x) break;
-            ++visits;
-            if (!sx_kinds_pair(a->kind, b->kind)) continue;
-            if (b->box.lower.y > a->box.upper.y || b->box.upper.y < a->box.lower.y) continue;
-            s = sx_add_fresh(bp, a->slot, b->slot);
-            if (s != SX_OK) return s;
-        }
         while ((f = sx_fixed_next(bp, a->box, &at)) != NULL) {
             if (!sx_kinds_pair(a->kind, f->kind)) continue;
             s = sx_add_fresh(bp, a->slot, f->slot);
@@ -662,14 +752,11 @@ sx_status sx_broadphase_update(sx_broadphase *bp, const sx_aabb *aabbs, const un
      * moving collider, so a sweeping world returns only after `calm` calls
      * in a row calmer than the share that makes a tree world sweep (bodies
      * falling from rest in step leave their fat boxes every other call at
-     * first): SX_CALM_CALLS, or as many as pay for the return when a
-     * sweep costs more (SX_QUERY_VISITS visits per box in all). */
+     * first): as many as pay for the return. */
     {
-        int64_t calm = SX_CALM_CALLS;
-        if (bp->sweep_visits * calm > (int64_t)SX_QUERY_VISITS * bp->sweep_boxes) {
-            calm = (int64_t)SX_QUERY_VISITS * bp->sweep_boxes / bp->sweep_visits;
-            if (calm < 1) calm = 1;
-        }
+        int64_t cost = bp->sweep_visits + (int64_t)SX_SWEEP_BASE * bp->sweep_boxes;
+        int64_t calm = cost > 0 ? (int64_t)SX_QUERY_VISITS * bp->sweep_boxes / cost : 1;
+        if (calm < 1) calm = 1;
         if (bp->tree_valid) {
             bp->calm_calls = escaped > moving_count / SX_SWEEP_SHARE ? 0 : (int)calm;
         } else if (escaped > moving_count / (4 * SX_SWEEP_SHARE)) {

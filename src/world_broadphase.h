@@ -47,6 +47,11 @@ typedef struct sx_broadphase {
     sx_sorted_box *sorted;
     int sorted_capacity;
     sx_real sorted_width; /* the widest box in sorted */
+    /* the sweep's horizontal bands: band b's boxes (indices into sorted, in
+     * x order) are band_items[band_start[b] .. band_start[b + 1]); the
+     * second half of band_start is the scratch that fills them */
+    int *band_start, *band_items;
+    int band_start_capacity, band_items_capacity;
     unsigned char *mark;
     int mark_capacity;
     int *proxy;           /* per collider slot: its tree leaf, -1 when none */
