@@ -1,7 +1,7 @@
 # The "how to choose settings" table of bench/README.md, from a run's
 # scenes.csv (make bench-scenes writes build/bench/scenes.csv):
 #   awk -F, -f scripts/choose_settings.awk build/bench/scenes.csv
-# (-v default='dt=1/60 sub=4 vel=4 pos=1' names sepax's default configuration
+# (-v default='dt=1/60 sub=5 vel=3 pos=1' names sepax's default configuration
 # as the bench writes it, if the defaults change.)
 # For each scene in which sepax ran several configurations with an error
 # metric: sepax's best error, and the cheapest sepax configuration (ms per
@@ -9,9 +9,9 @@
 # default configuration's error and cost. Errors are deterministic; the costs
 # are that run's, so the choice between configurations of similar cost can
 # move from run to run.
-BEGIN { if (default == "") default = "dt=1/60 sub=4 vel=4 pos=1" }
+BEGIN { if (default == "") default = "dt=1/60 sub=5 vel=3 pos=1" }
 NR == 1 { next }
-$2 != "sepax" || $8 == "none" || $8 == "cost_ratio" { next }
+$2 != "sepax" || $8 == "none" || $8 == "cost_ratio" || $1 ~ /_workers$/ { next }
 {
     s = $1; n = ++count[s]
     if (n == 1) { order[++scenes] = s; metric[s] = $8 }
