@@ -182,7 +182,7 @@ typedef struct SxCollider {
 typedef struct SxPhysicsSettings {
     sx_vec2 gravity;         /**< m/s^2; default (0, -10) */
     sx_real fixed_time_step; /**< s, > 0; default 1/60 */
-    /** 1 .. SX_MAX_SUB_STEPS; default 4 (the world's default). Settings
+    /** 1 .. SX_MAX_SUB_STEPS; default 5 (the world's default). Settings
      *  out of range (this, fixed_time_step or max_steps_per_frame) run no
      *  step until they are fixed. */
     int32_t sub_steps;
@@ -195,7 +195,7 @@ typedef struct SxPhysicsSettings {
      *  that already sleep asleep until something touches or moves them. */
     bool enable_sleep;
     /** Solver iterations per sub-step, as sx_world_def: velocity (>= 1,
-     *  default 4) and position (>= 0, default 1). */
+     *  default 3) and position (>= 0, default 1). */
     int32_t velocity_iterations;
     int32_t position_iterations;
     /** Continuous collision, as sx_world_def.enable_continuous (fast
