@@ -562,7 +562,7 @@ static void ten_thousand_entities_step_and_are_deleted_cleanly(void **state) {
     enum { N = 10000 };
     ecs_world_t *world = make_world();
     ecs_entity_t *es = malloc(N * sizeof *es);
-    const double n = 3.0 * sx_default_world_def().sub_steps, h = 3.0 / 60.0 / n;
+    const double sub = sx_default_world_def().sub_steps, n = 3.0 * sub, h = 1.0 / (60.0 * sub);
     int i;
     (void)state;
     assert_non_null(es);

@@ -1922,7 +1922,7 @@ static void a_huge_restitution_rebounds_at_the_speed_limit(void **state) {
 
 /* The speed limit bites only above a quarter turn per sub-step: a free spin
  * of 300 rad/s is kept exactly, one of 1000 rad/s becomes SX_MAX_ROTATION /
- * h (565 rad/s at 60 Hz and 6 sub-steps), and a velocity beyond SX_HUGE per
+ * h (471 rad/s at 60 Hz and 5 sub-steps), and a velocity beyond SX_HUGE per
  * sub-step keeps its direction. */
 static void the_speed_limit_keeps_direction_and_spares_ordinary_speeds(void **state) {
     sx_world *w = make_world(sx_v2_zero());

@@ -257,7 +257,7 @@ static void gravity_scale_and_damping_set_at_run_time_act_at_the_next_step(void 
     assert_near(sx_body_get_linear_damping(w, b), 2.0, 0.0);
     assert_near(sx_body_get_angular_damping(w, b), 3.0, 0.0);
     steps(w, 60);
-    for (i = 0; i < (int)(1.0 / h + 0.5); ++i)
+    for (i = 0; i < 60 * sx_default_world_def().sub_steps; ++i)
         v = (v - h * 10.0) / (1.0 + h * 2.0);
     assert_near(sx_body_get_linear_velocity(w, b).y, v, 1e-3);
     /* bad values change nothing */

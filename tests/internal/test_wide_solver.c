@@ -503,7 +503,7 @@ static int stage_step(sx_world *w, bool hand_back, int subs, sx_real *out, int *
  * at every solve. sx_world_step (a) and the stages (c) end in b's bits, and
  * sx_world_get_contact between two sub-steps of c reports the impulses b's
  * contacts hold; from the sixth step on, every third step of b and c
- * stops after two of its sub-steps (c's impulses are still in its
+ * stops after two of its four sub-steps (c's impulses are still in its
  * lanes when the next collide warm-starts from the contacts, some of them
  * as the heavy balls land). */
 static void impulses_left_in_the_lanes_change_no_answer(void **state) {
