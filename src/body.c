@@ -127,11 +127,45 @@ sx_collider_def sx_default_collider_def(void) {
     return d;
 }
 
-/* ---- mass --------------------------------------------------------------- */
+/* ---- the speed limit ---------------------------------------------------- */
 
-void sx_body_sync_origin(sx_body_sim *sim) {
-    sim->xf.p = sx_sub(sim->center, sx_rotate(sim->xf.q, sim->local_center));
+/* Keeps a body within the speed limit of a sub-step of length h (world.h,
+ * SX_MAX_ROTATION): it turns at most SX_MAX_ROTATION and moves at most
+ * SX_HUGE. A faster velocity keeps its direction and is scaled down to the
+ * limit; so does an infinite one (a finite torque on a tiny inertia, or a
+ * huge h, overflows); a NaN velocity (never expected) becomes 0. Far above
+ * any physical speed, so ordinary scenes never meet it. */
+void sx_body_limit_speed(sx_body_sim *b, sx_real h) {
+    sx_real wmax = sx_minr(SX_MAX_ROTATION / h, SX_REAL_MAX);
+    sx_real vmax = sx_minr(SX_HUGE / h, SX_REAL_MAX);
+    sx_real m = sx_maxr(sx_absr(b->v.x), sx_absr(b->v.y));
+    if (!(sx_absr(b->w) <= wmax)) {
+        b->w = b->w > SX_R(0.0) ? wmax : (b->w < SX_R(0.0) ? -wmax : SX_R(0.0));
+    }
+    if (!(m <= vmax) || b->v.x != b->v.x || b->v.y != b->v.y) {
+        /* the direction, from the components scaled by the largest (or from
+         * the infinite ones alone), then the limit along it */
+        sx_vec2 d;
+        sx_real len;
+        if (sx_is_finite(m)) {
+            d = sx_v2(b->v.x / m, b->v.y / m);
+        } else {
+            d = sx_v2(sx_is_finite(b->v.x) ? SX_R(0.0) : b->v.x,
+                      sx_is_finite(b->v.y) ? SX_R(0.0) : b->v.y);
+            d = sx_v2(d.x > SX_R(0.0) ? SX_R(1.0) : (d.x < SX_R(0.0) ? SX_R(-1.0) : SX_R(0.0)),
+                      d.y > SX_R(0.0) ? SX_R(1.0) : (d.y < SX_R(0.0) ? SX_R(-1.0) : SX_R(0.0)));
+        }
+        len = sx_length(d);
+        b->v = len > SX_R(0.0) ? sx_scale(d, vmax / len) : sx_v2_zero();
+    } else if (m > SX_R(0.5) * vmax) {
+        /* within the limit per component, maybe not in length */
+        sx_vec2 d = sx_v2(b->v.x / m, b->v.y / m);
+        sx_real len = sx_length(d);
+        if (m > vmax / len) b->v = sx_scale(d, vmax / len);
+    }
 }
+
+/* ---- mass --------------------------------------------------------------- */
 
 /* Sets the flags and inverse masses that the stages read from the type,
  * enabled state and mass. */

@@ -242,13 +242,7 @@ static sx_vec2 sx_driven_velocity(const sx_world *world, int slot, sx_vec2 r) {
 static void sx_groups_measure(sx_world *world, sx_real h) {
     sx_group_body *gb = world->group_bodies;
     int i, k;
-    for (i = 0; i < world->group_member_count; ++i) {
-        sx_group_body *g = &gb[world->group_members[i]];
-        g->f = SX_R(0.0);
-        g->a = SX_R(0.0);
-        g->credit_sum = SX_R(0.0);
-        g->mass_sum = SX_R(0.0);
-    }
+    /* (the sums were cleared with the velocities before: sx_contacts_solve) */
     if (world->groups_driven) sx_solver_hand_back(world);
     for (i = 0; i < world->contact_count && world->groups_driven; ++i) {
         const sx_contact *c = &world->contacts[i];
@@ -1836,14 +1830,19 @@ static bool sx_solver_gather(sx_world *world, bool warm) {
 
 /* The velocities of the solver bodies into the dynamic bodies (static and
  * kinematic bodies keep theirs: for them the passes only added 0 x impulse,
- * which is rounding at best and NaN from an overflow). */
-static void sx_solver_store_velocities(sx_world *world) {
+ * which is rounding at best and NaN from an overflow), within the speed
+ * limit of sub-step h (an impulse at its bound on a light body overflows
+ * its velocity): the bodies the passes changed are limited here, so the
+ * step need not walk every body again. */
+static void sx_solver_store_velocities(sx_world *world, sx_real h) {
+    sx_half_limit l = sx_half_limit_of(h);
     int i;
     for (i = 1; i < world->solver_body_count; ++i) {
         sx_body_sim *sim = &world->sims[world->solver_slots[i]];
         if (sim->dynamic) {
             sim->v = world->solver_bodies[i].v;
             sim->w = world->solver_bodies[i].w;
+            sx_limit_speed_past_half(sim, &l);
         }
     }
 }
@@ -1852,9 +1851,9 @@ static void sx_solver_store_velocities(sx_world *world) {
  * bodies keep theirs) and ends the gather; the last pass handed the
  * accumulated impulses to the contacts (warm start of the next sub-step,
  * contact reports). */
-static void sx_solver_scatter(sx_world *world) {
+static void sx_solver_scatter(sx_world *world, sx_real h) {
     int i;
-    sx_solver_store_velocities(world);
+    sx_solver_store_velocities(world, h);
     for (i = 1; i < world->solver_body_count; ++i)
         world->solver_index[world->solver_slots[i]] = 0;
     world->solver_body_count = 0;
@@ -1877,7 +1876,7 @@ static bool sx_solver_run(sx_world *world, sx_real h, int passes, bool relax) {
         world->fill_fresh = true;
         world->impulses_in_lanes = world->hand_back_later && world->bundle_count > 0;
     }
-    sx_solver_scatter(world);
+    sx_solver_scatter(world, h);
     return true;
 }
 
@@ -2002,11 +2001,17 @@ bool sx_contacts_solve(sx_world *world, sx_real h, int passes) {
         }
         sx_solver_warm_start(world, true);
     }
-    /* the energy guard measures from the velocities before the warm start */
+    /* the energy guard measures from the velocities before the warm start
+     * (and its sums start here: one walk of the members fewer) */
     for (i = 0; i < world->group_member_count && world->groups_ready; ++i) {
         int slot = world->group_members[i];
-        world->group_bodies[slot].v = world->sims[slot].v;
-        world->group_bodies[slot].w = world->sims[slot].w;
+        sx_group_body *g = &world->group_bodies[slot];
+        g->v = world->sims[slot].v;
+        g->w = world->sims[slot].w;
+        g->f = SX_R(0.0);
+        g->a = SX_R(0.0);
+        g->credit_sum = SX_R(0.0);
+        g->mass_sum = SX_R(0.0);
     }
     return sx_solver_run(world, h, passes, false);
 }

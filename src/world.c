@@ -529,62 +529,6 @@ sx_status sx_world_refresh_sets(sx_world *world) {
 
 /* ---- the speed limit ---------------------------------------------------- */
 
-/* Keeps a body within the speed limit of a sub-step of length h (world.h,
- * SX_MAX_ROTATION): it turns at most SX_MAX_ROTATION and moves at most
- * SX_HUGE. A faster velocity keeps its direction and is scaled down to the
- * limit; so does an infinite one (a finite torque on a tiny inertia, or a
- * huge h, overflows); a NaN velocity (never expected) becomes 0. Far above
- * any physical speed, so ordinary scenes never meet it. */
-static void sx_limit_speed(sx_body_sim *b, sx_real h) {
-    sx_real wmax = sx_minr(SX_MAX_ROTATION / h, SX_REAL_MAX);
-    sx_real vmax = sx_minr(SX_HUGE / h, SX_REAL_MAX);
-    sx_real m = sx_maxr(sx_absr(b->v.x), sx_absr(b->v.y));
-    if (!(sx_absr(b->w) <= wmax)) {
-        b->w = b->w > SX_R(0.0) ? wmax : (b->w < SX_R(0.0) ? -wmax : SX_R(0.0));
-    }
-    if (!(m <= vmax) || b->v.x != b->v.x || b->v.y != b->v.y) {
-        /* the direction, from the components scaled by the largest (or from
-         * the infinite ones alone), then the limit along it */
-        sx_vec2 d;
-        sx_real len;
-        if (sx_is_finite(m)) {
-            d = sx_v2(b->v.x / m, b->v.y / m);
-        } else {
-            d = sx_v2(sx_is_finite(b->v.x) ? SX_R(0.0) : b->v.x,
-                      sx_is_finite(b->v.y) ? SX_R(0.0) : b->v.y);
-            d = sx_v2(d.x > SX_R(0.0) ? SX_R(1.0) : (d.x < SX_R(0.0) ? SX_R(-1.0) : SX_R(0.0)),
-                      d.y > SX_R(0.0) ? SX_R(1.0) : (d.y < SX_R(0.0) ? SX_R(-1.0) : SX_R(0.0)));
-        }
-        len = sx_length(d);
-        b->v = len > SX_R(0.0) ? sx_scale(d, vmax / len) : sx_v2_zero();
-    } else if (m > SX_R(0.5) * vmax) {
-        /* within the limit per component, maybe not in length */
-        sx_vec2 d = sx_v2(b->v.x / m, b->v.y / m);
-        sx_real len = sx_length(d);
-        if (m > vmax / len) b->v = sx_scale(d, vmax / len);
-    }
-}
-
-/* Half the limit of a sub-step of length h: within it sx_limit_speed leaves
- * a body as it is (its two divisions paid once per stage, not per body). */
-typedef struct sx_half_limit {
-    sx_real h, wmax, vhalf;
-} sx_half_limit;
-
-static sx_half_limit sx_half_limit_of(sx_real h) {
-    sx_half_limit l;
-    l.h = h;
-    l.wmax = sx_minr(SX_MAX_ROTATION / h, SX_REAL_MAX);
-    l.vhalf = SX_R(0.5) * sx_minr(SX_HUGE / h, SX_REAL_MAX);
-    return l;
-}
-
-/* sx_limit_speed, skipped for a body within half the limit. */
-static SX_ALWAYS_INLINE void sx_limit_speed_past_half(sx_body_sim *b, const sx_half_limit *l) {
-    if (!(sx_absr(b->w) <= l->wmax && sx_absr(b->v.x) <= l->vhalf && sx_absr(b->v.y) <= l->vhalf))
-        sx_limit_speed(b, l->h);
-}
-
 /* The speed limit for every awake moving body before the solver reads the
  * velocities: dynamic bodies meet it in sx_world_apply_forces already, but a
  * kinematic body's velocity is whatever the caller set (an angular velocity
@@ -1522,9 +1466,13 @@ sx_status sx_world_solve(sx_world *world, sx_real h) {
     solved = sx_contacts_solve(world, h, world->def.velocity_iterations);
     world->hand_back_later = false;
     if (solved) sx_contacts_energy_guard(world, h);
-    /* what the impulses did stays within the limit too (an impulse at its
-     * bound on a light body overflows its velocity) */
-    sx_limit_speeds(world, h);
+    /* what the impulses did stays within the limit too: the solver's store
+     * limited the bodies it changed, and the guard's blend of two limited
+     * velocities is limited; the impacts' bodies (a rare pass) are walked */
+    if (world->impact_shifts_pending)
+        sx_limit_speeds(world, h);
+    else
+        world->limited_h = sx_minr(world->limited_h, h);
     return warmed && impacts && solved ? SX_OK : SX_ERR_NO_MEMORY;
 }
 

@@ -134,8 +134,35 @@ static inline bool sx_filters_collide(const sx_filter *a, const sx_filter *b) {
 /* body.c */
 /* Recomputes the mass properties of a body from its colliders. */
 void sx_body_update_mass(sx_world *world, int slot);
-/* Recomputes xf.p from the centre of mass and rotation. */
-void sx_body_sync_origin(sx_body_sim *sim);
+/* Recomputes xf.p from the centre of mass and rotation (inline: the
+ * integrate stage calls it for every moving body every sub-step). */
+static inline void sx_body_sync_origin(sx_body_sim *sim) {
+    sim->xf.p = sx_sub(sim->center, sx_rotate(sim->xf.q, sim->local_center));
+}
+/* Keeps a body within the speed limit of a sub-step of length h (see
+ * body.c). */
+void sx_body_limit_speed(sx_body_sim *b, sx_real h);
+
+/* Half the limit of a sub-step of length h: within it sx_body_limit_speed leaves
+ * a body as it is (its two divisions paid once per stage, not per body). */
+typedef struct sx_half_limit {
+    sx_real h, wmax, vhalf;
+} sx_half_limit;
+
+static inline sx_half_limit sx_half_limit_of(sx_real h) {
+    sx_half_limit l;
+    l.h = h;
+    l.wmax = sx_minr(SX_MAX_ROTATION / h, SX_REAL_MAX);
+    l.vhalf = SX_R(0.5) * sx_minr(SX_HUGE / h, SX_REAL_MAX);
+    return l;
+}
+
+/* sx_body_limit_speed, skipped for a body within half the limit. */
+static SX_ALWAYS_INLINE void sx_limit_speed_past_half(sx_body_sim *b, const sx_half_limit *l) {
+    if (!(sx_absr(b->w) <= l->wmax && sx_absr(b->v.x) <= l->vhalf && sx_absr(b->v.y) <= l->vhalf))
+        sx_body_limit_speed(b, l->h);
+}
+
 /* The slot of a live body or collider, or -1 (NULL world, null or stale
  * handle). */
 int sx_body_slot(const sx_world *world, sx_body_id id);
